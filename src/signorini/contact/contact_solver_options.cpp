@@ -1,0 +1,34 @@
+#include "signorini/contact/contact_solver_options.hpp"
+
+#include <cmath>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+namespace {
+void require(bool ok, const std::string& field, double value, const std::string& expected) {
+  if (!ok)
+    throw InputError("solver." + field + " = " + std::to_string(value) + ": expected " + expected);
+}
+bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+}  // namespace
+
+void validate(const ContactSolverOptions& o) {
+  require(positive(o.r), "r", o.r, "a positive number");
+  require(positive(o.uzawa_tolerance), "uzawa_tolerance", o.uzawa_tolerance, "a positive number");
+  require(positive(o.gnm_tolerance), "gnm_tolerance", o.gnm_tolerance, "a positive number");
+  require(o.max_uzawa_iterations >= 1, "max_uzawa_iterations", o.max_uzawa_iterations, ">= 1");
+  require(o.max_gnm_iterations >= 1, "max_gnm_iterations", o.max_gnm_iterations, ">= 1");
+  require(positive(o.armijo_sigma) && o.armijo_sigma < 0.5, "armijo_sigma", o.armijo_sigma,
+          "a number in (0, 0.5)");
+  require(o.max_armijo_halvings >= 1, "max_armijo_halvings", o.max_armijo_halvings, ">= 1");
+  require(std::isfinite(o.classical_step) && o.classical_step >= 0.0, "classical_step",
+          o.classical_step, "a number >= 0 (0: automatic)");
+  require(o.max_classical_iterations >= 1, "max_classical_iterations", o.max_classical_iterations,
+          ">= 1");
+  require(o.max_newton_iterations >= 1, "max_newton_iterations", o.max_newton_iterations, ">= 1");
+  validate(o.linear);
+}
+
+}  // namespace signorini

@@ -1,0 +1,66 @@
+#pragma once
+// Options of the contact solvers. Defaults are the paper's (Section 5 and method.md section 4):
+// r = 1e8, GNM tolerance 1e-10, Uzawa tolerance 1e-8, Armijo sigma = 1e-4, l^0 = 0. Each field
+// name is also the key of the [solver] table in a problem file.
+
+#include <functional>
+#include <string>
+
+#include "signorini/core/enum_names.hpp"
+#include "signorini/core/types.hpp"
+#include "signorini/linalg/linear_solver.hpp"
+
+namespace signorini {
+
+enum class ContactMethod { UzawaGnm, ClassicalUzawa, SemismoothNewton };
+
+inline constexpr EnumNames<ContactMethod, 3> kContactMethodNames{{
+    {ContactMethod::UzawaGnm, "uzawa_gnm"},
+    {ContactMethod::ClassicalUzawa, "classical_uzawa"},
+    {ContactMethod::SemismoothNewton, "semismooth_newton"},
+}};
+
+/// Reported to ContactSolverOptions::observer as the solver goes, for progress logs.
+struct IterationEvent {
+  enum class Kind { Inner, Outer };
+  Kind kind = Kind::Inner;
+  int outer = 0;            ///< Uzawa step k (or Newton iteration of the semismooth method)
+  int inner = 0;            ///< GNM iteration m within step k (Inner events)
+  Index active = 0;         ///< size of the active set
+  double residual = 0.0;    ///< Inner: max(||G||, ||dx||/||x||); Outer: ||l^k - l^{k-1}|| / ||l^k||
+  int armijo = 0;           ///< Armijo halvings in this GNM iteration
+  int linear_iterations = 0;
+};
+
+struct ContactSolverOptions {
+  /// "uzawa_gnm": the paper's modified-Lagrangian Uzawa method (13) with the generalised Newton
+  /// method (17) for step (i); "classical_uzawa": Uzawa on the ordinary Lagrangian (the baseline);
+  /// "semismooth_newton": primal-dual active set method on the KKT system.
+  ContactMethod method = ContactMethod::UzawaGnm;
+  /// Augmentation parameter r > 0 of the modified Lagrangian (10). The solution does not depend
+  /// on it; it changes the iteration path only.
+  double r = 1e8;
+  /// Uzawa (both variants) stops when ||l^k - l^{k-1}||_2 / ||l^k||_2 < uzawa_tolerance.
+  double uzawa_tolerance = 1e-8;
+  int max_uzawa_iterations = 1000;
+  /// GNM stops when max(||G(x_m)||_2, ||x_m - x_{m-1}||_2 / ||x_m||_2) < gnm_tolerance, or when the
+  /// active set repeats after a full Newton step (the minimiser is then exact).
+  double gnm_tolerance = 1e-10;
+  int max_gnm_iterations = 100;
+  /// Armijo rule: Phi(x + a d) <= Phi(x) + armijo_sigma a <G(x), d>, a = 1/2, 1/4, ...
+  double armijo_sigma = 1e-4;
+  int max_armijo_halvings = 60;
+  /// Step rho of the classical Uzawa method; 0 chooses 1.5 / lambda_max of the dual operator.
+  double classical_step = 0.0;
+  int max_classical_iterations = 200000;
+  /// Iteration limit of the semismooth Newton (primal-dual active set) method.
+  int max_newton_iterations = 200;
+  LinearSolverOptions linear;
+  /// Called after every inner and outer iteration; may be empty.
+  std::function<void(const IterationEvent&)> observer;
+};
+
+/// Throws InputError naming the first bad field ("solver.r = -1: expected ...").
+void validate(const ContactSolverOptions& options);
+
+}  // namespace signorini

@@ -1,0 +1,111 @@
+#include "signorini/contact/generalized_newton.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+namespace signorini {
+
+GeneralizedNewton::GeneralizedNewton(const ContactProblem& problem,
+                                     const ContactSolverOptions& options, LinearSolver& solver)
+    : problem_(problem), options_(options), solver_(solver), H_(problem.A) {}
+
+GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, int outer) {
+  const SparseMatrix& N = problem_.contact.N;
+  GnmResult res;
+  Vector Nx = N * x;
+  ActiveSet previous;      // active set that defined the previous Newton step
+  bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
+  double gradient_norm = std::numeric_limits<double>::infinity();
+
+  for (int m = 1; m <= options_.max_gnm_iterations; ++m) {
+    const ActiveSet active = phi.active_set(Nx);
+    IterationEvent ev{IterationEvent::Kind::Inner, outer, m, count_active(active), 0.0, 0, 0};
+
+    // The active set repeats after a full Newton step: x minimises the quadratic piece that is
+    // active at x, so it is the minimiser of Phi and this Newton step would return x itself
+    // (method.md section 4: "the active set repeating at two successive steps"). It is counted as
+    // an iteration, as the paper does, but costs no linear solve.
+    if (m > 1 && previous_full && active == previous) {
+      res.iterations = m;
+      res.residual = gradient_norm;
+      ev.residual = res.residual;
+      if (options_.observer) options_.observer(ev);
+      return res;
+    }
+
+    if (!has_factor_ || active != factored_) {
+      phi.hessian(active, H_);  // H(x_{m-1}) = A + r sum_{active} h_j nu_j nu_j^T
+      solver_.factorize(H_);
+      factored_ = active;
+      has_factor_ = true;
+      ++res.factorizations;
+    }
+    Vector x_new = x;
+    const LinearSolveStats stats = solver_.solve(phi.newton_rhs(active), x_new);
+    res.linear_iterations += stats.iterations;
+    ev.linear_iterations = stats.iterations;
+    if (!stats.converged) {
+      res.termination = Termination::LinearSolverFailure;
+      res.message = fmt::format(
+          "linear solver did not converge in GNM iteration {} of Uzawa step {} (relative "
+          "residual {:.3e})",
+          m, outer, stats.residual);
+      res.iterations = m;
+      return res;
+    }
+
+    // Armijo rule when the Newton point does not decrease Phi (method.md section 4), with the
+    // change of Phi evaluated without cancellation.
+    Vector d = x_new - x;
+    const auto dir = phi.direction(x, Nx, d);
+    bool full = true;
+    if (phi.phi_change(dir, 1.0) >= 0.0) {
+      const Vector hz = problem_.contact.weights.cwiseProduct(dir.z.cwiseMax(0.0));
+      const double slope = dir.residual_dot_d + hz.dot(dir.Nd);  // <G(x), d>
+      if (slope < 0.0) {
+        double alpha = 1.0;
+        int cuts = 0;
+        do {
+          alpha *= 0.5;
+          ++cuts;
+          if (cuts > options_.max_armijo_halvings) {
+            res.termination = Termination::LineSearchFailure;
+            res.message = fmt::format(
+                "Armijo rule found no decrease after {} halvings in GNM iteration {} of Uzawa "
+                "step {} (||G|| = {:.3e})",
+                options_.max_armijo_halvings, m, outer, gradient_norm);
+            res.iterations = m;
+            res.armijo_reductions += cuts;
+            return res;
+          }
+        } while (phi.phi_change(dir, alpha) > options_.armijo_sigma * alpha * slope);
+        res.armijo_reductions += cuts;
+        ev.armijo = cuts;
+        d *= alpha;
+        full = false;
+      }
+      // slope >= 0: d is round-off around a minimiser; take it as it is.
+    }
+    x += d;
+    Nx = N * x;
+    gradient_norm = phi.gradient(x, Nx).norm();
+    const double x_norm = x.norm();
+    const double step = x_norm > 0.0 ? d.norm() / x_norm : d.norm();
+    res.residual = std::max(gradient_norm, step);
+    res.iterations = m;
+    ev.residual = res.residual;
+    if (options_.observer) options_.observer(ev);
+    if (res.residual < options_.gnm_tolerance) return res;  // the paper's stopping rule
+    previous = active;
+    previous_full = full;
+  }
+  res.termination = Termination::IterationLimit;
+  res.message = fmt::format(
+      "GNM did not converge in {} iterations at Uzawa step {} (residual {:.3e}, tolerance {:.1e})",
+      options_.max_gnm_iterations, outer, res.residual, options_.gnm_tolerance);
+  return res;
+}
+
+}  // namespace signorini

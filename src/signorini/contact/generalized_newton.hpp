@@ -1,0 +1,43 @@
+#pragma once
+// The generalised Newton method (17) with the Armijo rule for step (i) of the Uzawa method:
+// minimises Phi for fixed multipliers l (method.md section 4).
+
+#include <string>
+
+#include "signorini/contact/contact_solver_options.hpp"
+#include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/contact/solve_summary.hpp"
+#include "signorini/linalg/linear_solver.hpp"
+
+namespace signorini {
+
+struct GnmResult {
+  Termination termination = Termination::Converged;
+  std::string message;
+  int iterations = 0;
+  int armijo_reductions = 0;
+  int linear_iterations = 0;
+  int factorizations = 0;
+  double residual = 0.0;  ///< max(||G(x_m)||, ||x_m - x_{m-1}|| / ||x_m||) at the last iteration
+};
+
+class GeneralizedNewton {
+ public:
+  /// `solver` must have been analyze()d with the pattern of problem.A.
+  GeneralizedNewton(const ContactProblem& problem, const ContactSolverOptions& options,
+                    LinearSolver& solver);
+
+  /// Minimises Phi (set up in `phi`) starting from x, which holds the minimiser on return.
+  /// `outer` is the Uzawa step number, passed to the observer.
+  GnmResult minimize(const ModifiedLagrangian& phi, Vector& x, int outer);
+
+ private:
+  const ContactProblem& problem_;
+  const ContactSolverOptions& options_;
+  LinearSolver& solver_;
+  SparseMatrix H_;
+  ActiveSet factored_;  // active set of the factorisation held by solver_
+  bool has_factor_ = false;
+};
+
+}  // namespace signorini

@@ -1,0 +1,63 @@
+#pragma once
+// The function Phi of step (i) (method.md section 3) for fixed multipliers l,
+//   Phi(x) = 1/2 <Ax, x> - <b, x> + 1/(2r) sum_j h_j ( ((l_j + r ((N x)_j - g_j))_+)^2 - l_j^2 ),
+// with its gradient G, generalised Hessian H and the Newton right-hand side of (17), and the
+// modified Lagrangian M(u, l) (10) itself.
+
+#include <vector>
+
+#include "signorini/contact/contact_problem.hpp"
+
+namespace signorini {
+
+/// Which contact nodes are active: z_j = l_j + r ((N x)_j - g_j) > 0 (method.md section 4).
+using ActiveSet = std::vector<bool>;
+
+Index count_active(const ActiveSet& active);
+
+class ModifiedLagrangian {
+ public:
+  ModifiedLagrangian(const ContactProblem& problem, double r);
+
+  /// Sets the multipliers l (fixed during one GNM minimisation). Non-movable nodes keep l_j = 0.
+  void set_multipliers(const Vector& l);
+  [[nodiscard]] const Vector& multipliers() const { return l_; }
+  [[nodiscard]] double r() const { return r_; }
+
+  /// z = l + r (N x - g); non-movable nodes get -infinity (never active).
+  [[nodiscard]] Vector shifted_multipliers(const Vector& Nx) const;
+  [[nodiscard]] ActiveSet active_set(const Vector& Nx) const;
+
+  /// G(x) = A x - b + N^T (h z_+): the gradient of Phi.
+  [[nodiscard]] Vector gradient(const Vector& x, const Vector& Nx) const;
+  /// Writes H = A + r N^T diag(h on the active set) N into `H`, which must have A's pattern
+  /// (the node blocks of contact nodes are in it), so one symbolic analysis serves every H.
+  void hessian(const ActiveSet& active, SparseMatrix& H) const;
+  /// Newton right-hand side b - N^T (h (l - r g) on the active set): H x_m = rhs gives the
+  /// minimiser of the quadratic piece active at x_{m-1} (17).
+  [[nodiscard]] Vector newton_rhs(const ActiveSet& active) const;
+
+  /// Phi(x + t d) - Phi(x), evaluated without cancellation (method.md section 4, numerical
+  /// note): t <A x - b, d> + t^2/2 <A d, d> + sum_j h_j/(2r) ((z_j + t r (N d)_j)_+^2 - (z_j)_+^2).
+  struct Direction {
+    double residual_dot_d = 0.0;  ///< <A x - b, d>
+    double d_A_d = 0.0;           ///< <A d, d>
+    Vector z;                     ///< z(x)
+    Vector Nd;                    ///< N d
+  };
+  [[nodiscard]] Direction direction(const Vector& x, const Vector& Nx, const Vector& d) const;
+  [[nodiscard]] double phi_change(const Direction& dir, double t) const;
+
+  /// M(u, l) = J(u) + 1/(2r) sum_j h_j (((l_j + r ((N u)_j - g_j))_+)^2 - l_j^2), equation (10).
+  [[nodiscard]] static double value(const ContactProblem& problem, double r, const Vector& u,
+                                    const Vector& l);
+
+ private:
+  const ContactProblem& p_;
+  double r_;
+  Vector l_;
+  // For each contact node j: positions in A's value array of its node block and nu_a nu_b there.
+  std::vector<std::vector<std::pair<Index, double>>> block_entries_;
+};
+
+}  // namespace signorini

@@ -1,0 +1,76 @@
+#pragma once
+// What a contact solve reports (as Ceres' Solver::Summary): why it stopped, per-step records,
+// the KKT residuals of the result, energies, and where the time went.
+
+#include <string>
+#include <vector>
+
+#include "signorini/contact/contact_solver_options.hpp"
+#include "signorini/core/timing_table.hpp"
+
+namespace signorini {
+
+enum class Termination {
+  Converged,
+  IterationLimit,
+  ActiveSetCycling,
+  LineSearchFailure,
+  LinearSolverFailure,
+};
+
+inline constexpr EnumNames<Termination, 5> kTerminationNames{{
+    {Termination::Converged, "converged"},
+    {Termination::IterationLimit, "iteration_limit"},
+    {Termination::ActiveSetCycling, "active_set_cycling"},
+    {Termination::LineSearchFailure, "line_search_failure"},
+    {Termination::LinearSolverFailure, "linear_solver_failure"},
+}};
+
+/// One outer step: a Uzawa step k (uzawa_gnm, classical_uzawa) or one Newton iteration
+/// (semismooth_newton).
+struct OuterStepRecord {
+  int inner_iterations = 0;    ///< GNM iterations (uzawa_gnm); 1 otherwise
+  Index active_set_size = 0;   ///< at the end of the step
+  int armijo_reductions = 0;   ///< Armijo halvings in this step
+  int linear_iterations = 0;   ///< CG iterations in this step (0 with a direct solver)
+  int factorizations = 0;      ///< numeric factorisations in this step
+  double inner_residual = 0.0; ///< last GNM residual max(||G||, ||dx||/||x||)
+  double dual_change = 0.0;    ///< ||l^k - l^{k-1}||_2 / ||l^k||_2 (0 where l^k = l^{k-1} = 0)
+};
+
+/// KKT residuals of (u, l) for the discrete problem (14), each relative (see docs/solvers.md):
+///   equilibrium     ||A u - b + N^T H l||_2 / ||b||_2            (H = diag(h))
+///   penetration     max_j (N u - g)_j^+ / max(||u||_inf, max|g|)
+///   sign            max_j (-l_j)^+ / ||l||_inf
+///   complementarity max_j |l_j (N u - g)_j| / (||l||_inf max(||u||_inf, max|g|))
+struct KktResiduals {
+  double equilibrium = 0.0;
+  double penetration = 0.0;
+  double sign = 0.0;
+  double complementarity = 0.0;
+  [[nodiscard]] double max() const;
+};
+
+struct SolveSummary {
+  ContactMethod method = ContactMethod::UzawaGnm;
+  Termination termination = Termination::Converged;
+  std::string message;                 ///< one line: why it stopped, with the residuals
+  int outer_iterations = 0;            ///< Uzawa iterations (or Newton iterations)
+  std::vector<OuterStepRecord> steps;  ///< one per outer iteration
+  KktResiduals kkt;
+  double lagrangian = 0.0;     ///< M(u, l), the modified Lagrangian (10) at the result
+  double energy = 0.0;         ///< J(u)
+  double contact_force = 0.0;  ///< sum_j h_j l_j: total normal contact force
+  Eigen::Vector2d contact_force_vector = Eigen::Vector2d::Zero();  ///< -sum_j h_j l_j nu_j
+  Index num_active = 0;        ///< contact nodes with l_j > 0
+  double classical_step = 0.0; ///< rho used by classical_uzawa
+  TimingTable timings;
+
+  [[nodiscard]] bool converged() const { return termination == Termination::Converged; }
+  /// GNM iterations of each Uzawa step (the paper's "7/2" column).
+  [[nodiscard]] std::vector<int> inner_iterations() const;
+  /// A few lines for a terminal.
+  [[nodiscard]] std::string brief_report() const;
+};
+
+}  // namespace signorini

@@ -1,0 +1,37 @@
+#include "signorini/fem/material.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+void validate(const IsotropicMaterial& m) {
+  if (!std::isfinite(m.E) || m.E <= 0.0)
+    throw InputError("material.E = " + std::to_string(m.E) + ": expected a positive modulus");
+  if (!std::isfinite(m.nu) || m.nu <= -1.0 || m.nu >= 0.5)
+    throw InputError("material.nu = " + std::to_string(m.nu) +
+                     ": expected a Poisson ratio in (-1, 0.5)");
+}
+
+Eigen::Matrix3d plane_elasticity_matrix(const IsotropicMaterial& m, PlaneModel model) {
+  validate(m);
+  const double E = m.E;
+  const double nu = m.nu;
+  Eigen::Matrix3d D = Eigen::Matrix3d::Zero();
+  if (model == PlaneModel::PlaneStrain) {
+    const double c = E / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    D << c * (1.0 - nu), c * nu, 0.0,  //
+        c * nu, c * (1.0 - nu), 0.0,   //
+        0.0, 0.0, c * (1.0 - 2.0 * nu) / 2.0;
+  } else {
+    const double c = E / (1.0 - nu * nu);
+    D << c, c * nu, 0.0,  //
+        c * nu, c, 0.0,   //
+        0.0, 0.0, c * (1.0 - nu) / 2.0;
+  }
+  return D;
+}
+
+}  // namespace signorini

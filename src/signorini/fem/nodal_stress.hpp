@@ -1,0 +1,24 @@
+#pragma once
+// Stresses at the nodes, averaged over the cells that share a node, and the von Mises stress
+// (the paper's Figure 4).
+
+#include "signorini/fem/elasticity_assembly.hpp"
+
+namespace signorini {
+
+struct NodalStress {
+  /// 4 x num_nodes: sigma_xx, sigma_yy, sigma_zz, sigma_xy. sigma_zz = nu (sigma_xx + sigma_yy) in
+  /// plane strain and 0 in plane stress.
+  Eigen::MatrixXd sigma;
+  Vector von_mises;  ///< num_nodes
+};
+
+/// Evaluates the strain of every cell at its corners from the full displacement vector
+/// (num_dofs, node-major), converts it to stress and averages at each node.
+NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options,
+                         const Vector& u_full);
+
+/// von Mises stress of (sxx, syy, szz, sxy).
+double von_mises_stress(double sxx, double syy, double szz, double sxy);
+
+}  // namespace signorini

@@ -1,0 +1,30 @@
+#include "signorini/linalg/linear_solver.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "signorini/core/error.hpp"
+#include "signorini/linalg/cg_solver.hpp"
+#include "signorini/linalg/cholmod_solver.hpp"
+
+namespace signorini {
+
+void validate(const LinearSolverOptions& o) {
+  if (!(o.cg_tolerance > 0.0) || !std::isfinite(o.cg_tolerance) || o.cg_tolerance >= 1.0)
+    throw InputError("solver.linear.cg_tolerance = " + std::to_string(o.cg_tolerance) +
+                     ": expected a number in (0, 1)");
+  if (o.cg_max_iterations < 0)
+    throw InputError("solver.linear.cg_max_iterations = " + std::to_string(o.cg_max_iterations) +
+                     ": expected >= 0 (0: automatic)");
+}
+
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options) {
+  validate(options);
+  switch (options.type) {
+    case LinearSolverType::Cholmod: return std::make_unique<CholmodSolver>();
+    case LinearSolverType::ConjugateGradient: return std::make_unique<CgSolver>(options);
+  }
+  throw InputError("unknown linear solver type");
+}
+
+}  // namespace signorini

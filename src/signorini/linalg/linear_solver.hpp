@@ -1,0 +1,63 @@
+#pragma once
+// One interface for the linear solvers of the Newton steps (method.md section 4): a direct sparse
+// Cholesky (CHOLMOD, the default) and preconditioned conjugate gradients (the paper's choice).
+// analyze() does the symbolic work once per sparsity pattern; factorize() the numeric work for
+// each new matrix of that pattern; solve() can then be called any number of times.
+
+#include <memory>
+#include <string_view>
+
+#include "signorini/core/enum_names.hpp"
+#include "signorini/core/timing_table.hpp"
+#include "signorini/core/types.hpp"
+
+namespace signorini {
+
+enum class LinearSolverType { Cholmod, ConjugateGradient };
+
+inline constexpr EnumNames<LinearSolverType, 2> kLinearSolverTypeNames{{
+    {LinearSolverType::Cholmod, "cholmod"},
+    {LinearSolverType::ConjugateGradient, "cg"},
+}};
+
+struct LinearSolverOptions {
+  /// "cholmod": supernodal sparse Cholesky; "cg": Jacobi-preconditioned conjugate gradients.
+  LinearSolverType type = LinearSolverType::Cholmod;
+  /// CG stops when ||H x - rhs||_2 <= cg_tolerance ||rhs||_2.
+  double cg_tolerance = 1e-13;
+  /// CG iteration limit; 0 means 10 times the number of unknowns.
+  int cg_max_iterations = 0;
+};
+
+/// Throws InputError naming the bad field.
+void validate(const LinearSolverOptions& options);
+
+struct LinearSolveStats {
+  int iterations = 0;        ///< CG iterations (0 for a direct solve)
+  double residual = 0.0;     ///< relative residual reached (CG); 0 for a direct solve
+  bool converged = true;     ///< false: CG hit its iteration limit
+};
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  /// Symbolic work for the pattern of `pattern` (values are ignored). Matrices passed to
+  /// factorize() later must have exactly this pattern (same outer/inner index arrays).
+  virtual void analyze(const SparseMatrix& pattern) = 0;
+  /// Numeric work for an SPD matrix (both triangles stored). Throws NumericalError if the matrix
+  /// is not positive definite.
+  virtual void factorize(const SparseMatrix& H) = 0;
+  /// Solves H x = rhs with the last factorised H; x holds the initial guess on entry (used by
+  /// iterative solvers).
+  virtual LinearSolveStats solve(const Vector& rhs, Vector& x) = 0;
+  [[nodiscard]] virtual std::string_view name() const = 0;
+  /// Seconds spent in "linear analysis", "linear factorization" and "linear solve".
+  [[nodiscard]] const TimingTable& timings() const { return timings_; }
+
+ protected:
+  TimingTable timings_;
+};
+
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);
+
+}  // namespace signorini

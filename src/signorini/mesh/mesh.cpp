@@ -1,0 +1,70 @@
+#include "signorini/mesh/mesh.hpp"
+
+#include <algorithm>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+Mesh::Mesh(CellType type, Eigen::MatrixXd coordinates, std::vector<Index> connectivity)
+    : type_(type), coordinates_(std::move(coordinates)), connectivity_(std::move(connectivity)) {
+  if (coordinates_.rows() != cell_dimension(type_))
+    throw InputError("mesh: coordinates have " + std::to_string(coordinates_.rows()) +
+                     " rows, expected the cell dimension " + std::to_string(cell_dimension(type_)));
+  if (connectivity_.size() % static_cast<std::size_t>(nodes_per_cell()) != 0)
+    throw InputError("mesh: connectivity length is not a multiple of the nodes per cell");
+  for (const Index n : connectivity_)
+    if (n < 0 || n >= num_nodes())
+      throw InputError("mesh: cell refers to node " + std::to_string(n) + ", expected 0.." +
+                       std::to_string(num_nodes() - 1));
+}
+
+std::vector<Index> Mesh::facet_nodes(const Facet& f) const {
+  const auto local = facet_local_nodes(type_, f.local);
+  const auto nodes = cell(f.cell);
+  std::vector<Index> out;
+  out.reserve(local.size());
+  for (const int i : local) out.push_back(nodes[static_cast<std::size_t>(i)]);
+  return out;
+}
+
+void Mesh::set_boundary_part(std::string name, std::vector<Facet> facets) {
+  for (const Facet& f : facets)
+    if (f.cell < 0 || f.cell >= num_cells() || f.local < 0 || f.local >= facets_per_cell(type_))
+      throw InputError("mesh: boundary part '" + name + "' names facet (" + std::to_string(f.cell) +
+                       ", " + std::to_string(f.local) + "), which does not exist");
+  BoundaryPart part{name, std::move(facets)};
+  parts_.insert_or_assign(std::move(name), std::move(part));
+}
+
+bool Mesh::has_boundary_part(std::string_view name) const { return parts_.contains(name); }
+
+const BoundaryPart& Mesh::boundary_part(std::string_view name) const {
+  const auto it = parts_.find(name);
+  if (it == parts_.end()) {
+    std::string known;
+    for (const auto& [n, p] : parts_) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("mesh has no boundary part '" + std::string(name) + "' (it has: " + known +
+                     ")");
+  }
+  return it->second;
+}
+
+std::vector<std::string> Mesh::boundary_part_names() const {
+  std::vector<std::string> names;
+  for (const auto& [n, p] : parts_) names.push_back(n);
+  return names;
+}
+
+std::vector<Index> Mesh::boundary_part_nodes(std::string_view name) const {
+  std::vector<Index> nodes;
+  for (const Facet& f : boundary_part(name).facets) {
+    const auto fn = facet_nodes(f);
+    nodes.insert(nodes.end(), fn.begin(), fn.end());
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+}  // namespace signorini

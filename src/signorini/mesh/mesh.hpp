@@ -1,0 +1,70 @@
+#pragma once
+// An unstructured mesh of one cell type, with named boundary parts (sets of boundary facets).
+// Callers go through cell(), facet_nodes() and node(); nothing assumes a structured grid, so
+// meshes read from files, triangles and 3D cells fit the same interface.
+
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "signorini/core/types.hpp"
+#include "signorini/mesh/cell_type.hpp"
+
+namespace signorini {
+
+/// A facet of the mesh, named by the cell it belongs to and its local facet number.
+struct Facet {
+  Index cell = 0;
+  int local = 0;
+};
+
+/// A named part of the boundary. Facets are kept in the order given (the rectangle generator
+/// lists them along the edge), which the contact set uses to order its nodes.
+struct BoundaryPart {
+  std::string name;
+  std::vector<Facet> facets;
+};
+
+class Mesh {
+ public:
+  /// `coordinates` is dim x num_nodes; `connectivity` holds nodes_per_cell(type) node numbers per
+  /// cell. Throws InputError on node numbers out of range or a dimension mismatch.
+  Mesh(CellType type, Eigen::MatrixXd coordinates, std::vector<Index> connectivity);
+
+  [[nodiscard]] int dim() const { return static_cast<int>(coordinates_.rows()); }
+  [[nodiscard]] CellType cell_type() const { return type_; }
+  [[nodiscard]] int nodes_per_cell() const { return signorini::nodes_per_cell(type_); }
+  [[nodiscard]] Index num_nodes() const { return coordinates_.cols(); }
+  [[nodiscard]] Index num_cells() const {
+    return static_cast<Index>(connectivity_.size()) / nodes_per_cell();
+  }
+
+  /// Coordinates of a node (dim entries).
+  [[nodiscard]] auto node(Index i) const { return coordinates_.col(i); }
+  [[nodiscard]] const Eigen::MatrixXd& coordinates() const { return coordinates_; }
+  /// Node numbers of a cell.
+  [[nodiscard]] std::span<const Index> cell(Index c) const {
+    return {connectivity_.data() + c * nodes_per_cell(), static_cast<std::size_t>(nodes_per_cell())};
+  }
+  /// Node numbers of a facet, in the orientation of facet_local_nodes().
+  [[nodiscard]] std::vector<Index> facet_nodes(const Facet& f) const;
+
+  /// Adds (or replaces) a named boundary part. Throws InputError if a facet does not exist.
+  void set_boundary_part(std::string name, std::vector<Facet> facets);
+  [[nodiscard]] bool has_boundary_part(std::string_view name) const;
+  /// Throws InputError naming the known parts if `name` is not one of them.
+  [[nodiscard]] const BoundaryPart& boundary_part(std::string_view name) const;
+  [[nodiscard]] std::vector<std::string> boundary_part_names() const;
+  /// Distinct nodes of a boundary part, sorted by number.
+  [[nodiscard]] std::vector<Index> boundary_part_nodes(std::string_view name) const;
+
+ private:
+  CellType type_;
+  Eigen::MatrixXd coordinates_;
+  std::vector<Index> connectivity_;
+  std::map<std::string, BoundaryPart, std::less<>> parts_;
+};
+
+}  // namespace signorini

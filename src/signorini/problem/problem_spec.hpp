@@ -1,0 +1,53 @@
+#pragma once
+// A complete description of a contact problem, independent of any file format: what a problem
+// file says, in library terms. io/problem_file.hpp builds one from TOML; C++ users fill it in
+// directly.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "signorini/contact/contact_solver_options.hpp"
+#include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/vector_field.hpp"
+#include "signorini/mesh/rectangle_mesh.hpp"
+
+namespace signorini {
+
+/// u_k = 0 on a boundary part for the components marked true (method.md section 1, Gamma_D).
+struct ClampSpec {
+  std::string boundary;
+  std::array<bool, 3> components{true, true, true};
+};
+
+/// sigma(u) n = p on a boundary part (Gamma_N).
+struct TractionSpec {
+  std::string boundary;
+  VectorField p;
+  std::string description;  ///< how p was given (e.g. the expressions), for reports
+};
+
+/// Possible contact with the rigid foundation on a boundary part (Gamma_K), initial gap g(x).
+struct ContactSpec {
+  std::string boundary;
+  ScalarField gap = [](const Point&) { return 0.0; };
+  std::string description = "0";
+};
+
+struct ProblemSpec {
+  std::string name = "problem";
+  RectangleMeshOptions mesh;  ///< the structured rectangle (the only mesh source so far)
+  ElasticityOptions elasticity;
+  int boundary_gauss_points = 2;  ///< Gauss points per boundary facet for tractions
+  std::vector<ClampSpec> clamps;
+  std::vector<TractionSpec> tractions;
+  VectorField body_force;  ///< empty: no body force
+  std::string body_force_description;
+  ContactSpec contact;
+  ContactSolverOptions solver;
+};
+
+/// The paper's benchmark (Section 5, method.md section 5) on an nx x ny mesh.
+ProblemSpec paper_benchmark(Index nx = 60, Index ny = 20);
+
+}  // namespace signorini

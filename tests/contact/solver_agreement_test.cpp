@@ -1,0 +1,91 @@
+// A second and third method on the same discrete problem: the modified-Lagrangian Uzawa-GNM, the
+// semismooth Newton (primal-dual active set) method, which has no penalty parameter, and the
+// classical Uzawa method agree on u and l; the KKT residuals vanish; r changes nothing.
+
+#include <gtest/gtest.h>
+
+#include "signorini/contact/kkt_residuals.hpp"
+#include "test_problems.hpp"
+
+namespace signorini {
+namespace {
+
+using testing::paper_model;
+using testing::relative_difference;
+
+ContactResult solve_with(const ContactProblem& p, ContactMethod method, double tol,
+                         double r = 1e8) {
+  ContactSolverOptions o;
+  o.method = method;
+  o.uzawa_tolerance = tol;
+  o.r = r;
+  o.max_uzawa_iterations = 20000;
+  return solve_contact(p, o);
+}
+
+TEST(SolverAgreement, ThreeMethodsAgreeOnUAndL) {
+  const ContactProblem& p = paper_model(60).problem;
+  const ContactResult ssn = solve_with(p, ContactMethod::SemismoothNewton, 1e-12);
+  const ContactResult gnm = solve_with(p, ContactMethod::UzawaGnm, 1e-12);
+  const ContactResult cla = solve_with(p, ContactMethod::ClassicalUzawa, 1e-14);
+  for (const ContactResult* r : {&ssn, &gnm, &cla}) {
+    ASSERT_TRUE(r->summary.converged()) << r->summary.message;
+    EXPECT_LT(r->summary.kkt.max(), 1e-8) << enum_to_string(kContactMethodNames, r->summary.method);
+  }
+  EXPECT_LT(relative_difference(gnm.u, ssn.u), 1e-8);
+  EXPECT_LT(relative_difference(gnm.l, ssn.l), 1e-8);
+  EXPECT_LT(relative_difference(cla.u, ssn.u), 1e-8);
+  EXPECT_LT(relative_difference(cla.l, ssn.l), 1e-8);
+  // The semismooth Newton active set is exact: l > 0 exactly where the body touches.
+  EXPECT_EQ(ssn.summary.num_active, gnm.summary.num_active);
+  EXPECT_GT(ssn.summary.num_active, 0);
+  EXPECT_LT(ssn.summary.num_active, p.contact.size());
+}
+
+TEST(SolverAgreement, KktResidualsAtDefaultTolerances) {
+  const ContactProblem& p = paper_model(120).problem;
+  for (const auto method : {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton}) {
+    ContactSolverOptions o;
+    o.method = method;
+    const ContactResult r = solve_contact(p, o);
+    ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+    EXPECT_LT(r.summary.kkt.equilibrium, 1e-8);
+    EXPECT_LT(r.summary.kkt.penetration, 1e-8);
+    EXPECT_LT(r.summary.kkt.sign, 1e-8);
+    EXPECT_LT(r.summary.kkt.complementarity, 1e-8);
+    // The summary's residuals are those of the returned (u, l).
+    const KktResiduals k = kkt_residuals(p, r.u, r.l);
+    EXPECT_DOUBLE_EQ(k.equilibrium, r.summary.kkt.equilibrium);
+  }
+}
+
+TEST(SolverAgreement, SolutionDoesNotDependOnR) {
+  const ContactProblem& p = paper_model(60).problem;
+  const ContactResult ref = solve_with(p, ContactMethod::SemismoothNewton, 1e-12);
+  for (const double r : {1e4, 1e8, 1e10}) {
+    const ContactResult res = solve_with(p, ContactMethod::UzawaGnm, 1e-13, r);
+    ASSERT_TRUE(res.summary.converged()) << "r = " << r << ": " << res.summary.message;
+    EXPECT_LT(relative_difference(res.u, ref.u), 1e-8) << "r = " << r;
+    EXPECT_LT(relative_difference(res.l, ref.l), 1e-8) << "r = " << r;
+  }
+}
+
+TEST(SolverAgreement, ConjugateGradientsGiveTheDirectSolution) {
+  const ContactProblem& p = paper_model(60).problem;
+  ContactSolverOptions o;
+  const ContactResult direct = solve_contact(p, o);
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.cg_tolerance = 1e-14;
+  const ContactResult cg = solve_contact(p, o);
+  ASSERT_TRUE(cg.summary.converged()) << cg.summary.message;
+  EXPECT_NEAR(cg.summary.lagrangian, direct.summary.lagrangian,
+              1e-8 * std::abs(direct.summary.lagrangian));
+  EXPECT_LT(relative_difference(cg.u, direct.u), 1e-6);
+  EXPECT_EQ(cg.summary.outer_iterations, direct.summary.outer_iterations);
+  int cg_iterations = 0;
+  for (const auto& s : cg.summary.steps) cg_iterations += s.linear_iterations;
+  EXPECT_GT(cg_iterations, 0);  // the records count CG iterations
+}
+
+}  // namespace
+}  // namespace signorini
