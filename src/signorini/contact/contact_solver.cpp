@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "signorini/contact/condensed_problem.hpp"
 #include "signorini/contact/kkt_residuals.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/core/error.hpp"
@@ -15,6 +16,17 @@ double relative_change(const Vector& l_new, const Vector& l_old) {
   return diff == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
 }
 
+namespace {
+ContactResult run_method(const ContactProblem& problem, const ContactSolverOptions& options) {
+  switch (options.method) {
+    case ContactMethod::UzawaGnm: return solve_uzawa_gnm(problem, options);
+    case ContactMethod::ClassicalUzawa: return solve_classical_uzawa(problem, options);
+    case ContactMethod::SemismoothNewton: return solve_semismooth_newton(problem, options);
+  }
+  throw InputError("unknown contact method");
+}
+}  // namespace
+
 ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& options) {
   validate(options);
   const Index n = problem.A.rows();
@@ -25,12 +37,17 @@ ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOp
   {
     TimingTable solve_time;
     ScopedTimer timer(solve_time, "contact solve");
-    switch (options.method) {
-      case ContactMethod::UzawaGnm: result = solve_uzawa_gnm(problem, options); break;
-      case ContactMethod::ClassicalUzawa: result = solve_classical_uzawa(problem, options); break;
-      case ContactMethod::SemismoothNewton:
-        result = solve_semismooth_newton(problem, options);
-        break;
+    if (options.schur_complement && options.linear.type == LinearSolverType::Cholmod) {
+      const CondensedProblem condensed(problem);
+      ContactSolverOptions reduced_options = options;
+      reduced_options.linear.type = LinearSolverType::Dense;
+      result = run_method(condensed.reduced(), reduced_options);
+      result.u = condensed.expand(result.u);
+      TimingTable t = condensed.timings();
+      t.merge(result.summary.timings);
+      result.summary.timings = std::move(t);
+    } else {
+      result = run_method(problem, options);
     }
     timer.stop();
     result.summary.timings.merge(solve_time);

@@ -56,6 +56,11 @@ struct ContactSolverOptions {
   /// Iteration limit of the semismooth Newton (primal-dual active set) method.
   int max_newton_iterations = 200;
   LinearSolverOptions linear;
+  /// With the "cholmod" linear solver: condense the problem onto the normal displacements of the
+  /// contact nodes by one sparse factorisation (a Schur complement) and iterate on that small
+  /// dense problem (docs/performance.md). The solution is the same; only the cost changes.
+  /// Ignored for "cg" (the paper's configuration) and "dense".
+  bool schur_complement = true;
   /// Called after every inner and outer iteration; may be empty.
   std::function<void(const IterationEvent&)> observer;
 };

@@ -8,12 +8,18 @@
 namespace signorini {
 
 GeneralizedNewton::GeneralizedNewton(const ContactProblem& problem,
-                                     const ContactSolverOptions& options, LinearSolver& solver)
-    : problem_(problem), options_(options), solver_(solver), H_(problem.A) {}
+                                     const ContactSolverOptions& options, NewtonSystem& system)
+    : problem_(problem), options_(options), system_(system) {}
 
 GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, int outer) {
   const SparseMatrix& N = problem_.contact.N;
   GnmResult res;
+  const int factorizations_before = system_.factorizations();
+  const int updates_before = system_.updates();
+  auto count_work = [&] {
+    res.factorizations = system_.factorizations() - factorizations_before;
+    res.factor_updates = system_.updates() - updates_before;
+  };
   Vector Nx = N * x;
   ActiveSet previous;      // active set that defined the previous Newton step
   bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
@@ -32,18 +38,13 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
       res.residual = gradient_norm;
       ev.residual = res.residual;
       if (options_.observer) options_.observer(ev);
+      count_work();
       return res;
     }
 
-    if (!has_factor_ || active != factored_) {
-      phi.hessian(active, H_);  // H(x_{m-1}) = A + r sum_{active} h_j nu_j nu_j^T
-      solver_.factorize(H_);
-      factored_ = active;
-      has_factor_ = true;
-      ++res.factorizations;
-    }
+    system_.set_active(active);  // H(x_{m-1}) = A + r sum_{active} h_j nu_j nu_j^T
     Vector x_new = x;
-    const LinearSolveStats stats = solver_.solve(phi.newton_rhs(active), x_new);
+    const LinearSolveStats stats = system_.solve(phi.newton_rhs(active), x_new);
     res.linear_iterations += stats.iterations;
     ev.linear_iterations = stats.iterations;
     if (!stats.converged) {
@@ -53,6 +54,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
           "residual {:.3e})",
           m, outer, stats.residual);
       res.iterations = m;
+      count_work();
       return res;
     }
 
@@ -78,6 +80,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
                 options_.max_armijo_halvings, m, outer, gradient_norm);
             res.iterations = m;
             res.armijo_reductions += cuts;
+            count_work();
             return res;
           }
         } while (phi.phi_change(dir, alpha) > options_.armijo_sigma * alpha * slope);
@@ -97,7 +100,10 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
     res.iterations = m;
     ev.residual = res.residual;
     if (options_.observer) options_.observer(ev);
-    if (res.residual < options_.gnm_tolerance) return res;  // the paper's stopping rule
+    if (res.residual < options_.gnm_tolerance) {  // the paper's stopping rule
+      count_work();
+      return res;
+    }
     previous = active;
     previous_full = full;
   }
@@ -105,6 +111,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
   res.message = fmt::format(
       "GNM did not converge in {} iterations at Uzawa step {} (residual {:.3e}, tolerance {:.1e})",
       options_.max_gnm_iterations, outer, res.residual, options_.gnm_tolerance);
+  count_work();
   return res;
 }
 

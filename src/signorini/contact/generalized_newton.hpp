@@ -6,8 +6,8 @@
 
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/contact/newton_system.hpp"
 #include "signorini/contact/solve_summary.hpp"
-#include "signorini/linalg/linear_solver.hpp"
 
 namespace signorini {
 
@@ -18,14 +18,14 @@ struct GnmResult {
   int armijo_reductions = 0;
   int linear_iterations = 0;
   int factorizations = 0;
+  int factor_updates = 0;
   double residual = 0.0;  ///< max(||G(x_m)||, ||x_m - x_{m-1}|| / ||x_m||) at the last iteration
 };
 
 class GeneralizedNewton {
  public:
-  /// `solver` must have been analyze()d with the pattern of problem.A.
   GeneralizedNewton(const ContactProblem& problem, const ContactSolverOptions& options,
-                    LinearSolver& solver);
+                    NewtonSystem& system);
 
   /// Minimises Phi (set up in `phi`) starting from x, which holds the minimiser on return.
   /// `outer` is the Uzawa step number, passed to the observer.
@@ -34,10 +34,7 @@ class GeneralizedNewton {
  private:
   const ContactProblem& problem_;
   const ContactSolverOptions& options_;
-  LinearSolver& solver_;
-  SparseMatrix H_;
-  ActiveSet factored_;  // active set of the factorisation held by solver_
-  bool has_factor_ = false;
+  NewtonSystem& system_;
 };
 
 }  // namespace signorini

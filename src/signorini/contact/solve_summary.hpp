@@ -34,6 +34,7 @@ struct OuterStepRecord {
   int armijo_reductions = 0;   ///< Armijo halvings in this step
   int linear_iterations = 0;   ///< CG iterations in this step (0 with a direct solver)
   int factorizations = 0;      ///< numeric factorisations in this step
+  int factor_updates = 0;      ///< rank-one factor updates/downdates in this step (dense systems)
   double inner_residual = 0.0; ///< last GNM residual max(||G||, ||dx||/||x||)
   double dual_change = 0.0;    ///< ||l^k - l^{k-1}||_2 / ||l^k||_2 (0 where l^k = l^{k-1} = 0)
 };

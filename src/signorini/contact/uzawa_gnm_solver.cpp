@@ -5,17 +5,16 @@
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/generalized_newton.hpp"
+#include "signorini/contact/newton_system.hpp"
 
 namespace signorini {
 
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options) {
   ContactResult out;
   SolveSummary& s = out.summary;
-  auto solver = make_linear_solver(options.linear);
-  solver->analyze(problem.A);  // one symbolic analysis: every Hessian has A's pattern
-
   ModifiedLagrangian phi(problem, options.r);
-  GeneralizedNewton gnm(problem, options, *solver);
+  const auto system = make_newton_system(problem, phi, options.linear);
+  GeneralizedNewton gnm(problem, options, *system);
   Vector x = Vector::Zero(problem.A.rows());
   Vector l = Vector::Zero(problem.contact.size());  // l^0 = 0 (method.md "Conventions")
   s.termination = Termination::IterationLimit;
@@ -29,6 +28,7 @@ ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolver
     rec.armijo_reductions = g.armijo_reductions;
     rec.linear_iterations = g.linear_iterations;
     rec.factorizations = g.factorizations;
+    rec.factor_updates = g.factor_updates;
     rec.inner_residual = g.residual;
     if (g.termination != Termination::Converged) {
       rec.active_set_size = (l.array() > 0.0).count();
@@ -61,7 +61,7 @@ ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolver
         "{:.1e})",
         options.max_uzawa_iterations, s.steps.empty() ? 0.0 : s.steps.back().dual_change,
         options.uzawa_tolerance);
-  s.timings.merge(solver->timings());
+  s.timings.merge(system->timings());
   out.u = std::move(x);
   out.l = std::move(l);
   return out;

@@ -6,6 +6,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/linalg/cg_solver.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
+#include "signorini/linalg/dense_cholesky_solver.hpp"
 
 namespace signorini {
 
@@ -23,6 +24,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
   switch (options.type) {
     case LinearSolverType::Cholmod: return std::make_unique<CholmodSolver>();
     case LinearSolverType::ConjugateGradient: return std::make_unique<CgSolver>(options);
+    case LinearSolverType::Dense: return std::make_unique<DenseCholeskySolver>();
   }
   throw InputError("unknown linear solver type");
 }

@@ -13,15 +13,17 @@
 
 namespace signorini {
 
-enum class LinearSolverType { Cholmod, ConjugateGradient };
+enum class LinearSolverType { Cholmod, ConjugateGradient, Dense };
 
-inline constexpr EnumNames<LinearSolverType, 2> kLinearSolverTypeNames{{
+inline constexpr EnumNames<LinearSolverType, 3> kLinearSolverTypeNames{{
     {LinearSolverType::Cholmod, "cholmod"},
     {LinearSolverType::ConjugateGradient, "cg"},
+    {LinearSolverType::Dense, "dense"},
 }};
 
 struct LinearSolverOptions {
-  /// "cholmod": supernodal sparse Cholesky; "cg": Jacobi-preconditioned conjugate gradients.
+  /// "cholmod": supernodal sparse Cholesky; "cg": Jacobi-preconditioned conjugate gradients;
+  /// "dense": dense Cholesky (small problems, and the condensed contact problems).
   LinearSolverType type = LinearSolverType::Cholmod;
   /// CG stops when ||H x - rhs||_2 <= cg_tolerance ||rhs||_2.
   double cg_tolerance = 1e-13;

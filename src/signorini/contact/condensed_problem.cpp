@@ -1,0 +1,94 @@
+#include "signorini/contact/condensed_problem.hpp"
+
+namespace signorini {
+
+CondensedProblem::CondensedProblem(const ContactProblem& full) {
+  const ContactSet& c = full.contact;
+  const Index n = full.A.rows();
+  const Index nc = c.size();
+  Vector scale = Vector::Zero(nc);
+  {
+    ScopedTimer t(timings_, "condensation rotation");
+    // Q: identity, except a Householder reflection on each movable contact node's free dofs
+    // whose first column is nu_j restricted to them, normalised (as in the semismooth Newton
+    // solver): in y = Q^T x that dof is (x . nu)_j / s_j.
+    std::vector<Eigen::Triplet<double, int>> qt;
+    std::vector<bool> in_block(static_cast<std::size_t>(n), false);
+    const SparseMatrix Nt = c.N.transpose();
+    for (Index j = 0; j < nc; ++j) {
+      if (!c.movable[static_cast<std::size_t>(j)]) continue;
+      std::vector<Index> dofs;
+      Vector coef(Nt.col(j).nonZeros());
+      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
+        coef(static_cast<Index>(dofs.size())) = it.value();
+        dofs.push_back(it.row());
+      }
+      scale(j) = coef.norm();
+      Vector v = coef / scale(j);
+      v(0) -= 1.0;
+      const double vv = v.squaredNorm();
+      for (std::size_t a = 0; a < dofs.size(); ++a) {
+        in_block[static_cast<std::size_t>(dofs[a])] = true;
+        for (std::size_t b = 0; b < dofs.size(); ++b) {
+          const double q = (a == b ? 1.0 : 0.0) -
+                           (vv > 1e-28 ? 2.0 * v(static_cast<Index>(a)) * v(static_cast<Index>(b)) / vv : 0.0);
+          qt.emplace_back(static_cast<int>(dofs[a]), static_cast<int>(dofs[b]), q);
+        }
+      }
+      normal_dofs_.push_back(dofs.front());
+    }
+    for (Index i = 0; i < n; ++i)
+      if (!in_block[static_cast<std::size_t>(i)])
+        qt.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+    Q_.resize(n, n);
+    Q_.setFromTriplets(qt.begin(), qt.end());
+    b_rotated_ = Q_.transpose() * full.b;
+  }
+  {
+    const SparseMatrix A_rotated = [&] {
+      ScopedTimer t(timings_, "condensation rotation");
+      return SparseMatrix(Q_.transpose() * full.A * Q_);
+    }();
+    schur_ = std::make_unique<SchurComplement>(A_rotated, normal_dofs_);
+  }
+  ScopedTimer t(timings_, "condensation setup");
+  const auto nm = static_cast<Index>(normal_dofs_.size());
+  // S as a sparse matrix with every entry stored, so that the generic solvers apply to it.
+  const Eigen::MatrixXd& S = schur_->matrix();
+  reduced_.A.resize(nm, nm);
+  reduced_.A.reserve(Eigen::VectorXi::Constant(nm, static_cast<int>(nm)));
+  for (Index col = 0; col < nm; ++col)
+    for (Index row = 0; row < nm; ++row) reduced_.A.insert(row, col) = S(row, col);
+  reduced_.A.makeCompressed();
+  reduced_.b = schur_->condensed_load(b_rotated_);
+
+  ContactSet& rc = reduced_.contact;
+  rc.nodes = c.nodes;
+  rc.normals = c.normals;
+  rc.weights = c.weights;
+  rc.gaps = c.gaps;
+  rc.movable = c.movable;
+  std::vector<Eigen::Triplet<double, int>> nt;
+  Index k = 0;
+  for (Index j = 0; j < nc; ++j)
+    if (c.movable[static_cast<std::size_t>(j)]) nt.emplace_back(static_cast<int>(j), static_cast<int>(k++), scale(j));
+  rc.N.resize(nc, nm);
+  rc.N.setFromTriplets(nt.begin(), nt.end());
+}
+
+Vector CondensedProblem::expand(const Vector& v) const {
+  // A_r y = Q^T b + E (S v - g) has y_C = v and the interior solution y_I = A_II^-1 (b_I - A_IC v).
+  Vector rhs = b_rotated_;
+  const Vector reaction = reduced_.A * v - reduced_.b;
+  for (std::size_t k = 0; k < normal_dofs_.size(); ++k)
+    rhs(normal_dofs_[k]) += reaction(static_cast<Index>(k));
+  return Q_ * schur_->solve(rhs);
+}
+
+TimingTable CondensedProblem::timings() const {
+  TimingTable t = timings_;
+  t.merge(schur_->timings());
+  return t;
+}
+
+}  // namespace signorini

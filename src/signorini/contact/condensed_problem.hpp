@@ -1,0 +1,44 @@
+#pragma once
+// The contact problem condensed onto the normal displacements of its contact nodes.
+//
+// The contact terms of (16) involve only (x . nu)_j. Rotating each contact node's free dofs so
+// that one of them is the normal displacement (a Householder reflection per node) and
+// eliminating every other unknown by a Schur complement turns (14) into a dense problem of the
+// same form with one unknown per movable contact node:
+//   minimise 1/2 v^T S v - g^T v  subject to  s_j v_j <= g_j,
+// where S and g come from one sparse factorisation (linalg/schur_complement.hpp) and s_j is the
+// length of nu_j over the node's free dofs. Every method then iterates on the small dense problem
+// at no cost per iteration beyond the contact boundary, and the displacement is recovered at the
+// end by one solve. The solution is that of the full problem (tested to 1e-10).
+
+#include <memory>
+
+#include "signorini/contact/contact_problem.hpp"
+#include "signorini/core/timing_table.hpp"
+#include "signorini/linalg/schur_complement.hpp"
+
+namespace signorini {
+
+class CondensedProblem {
+ public:
+  /// Rotates, orders, factorises and condenses; see timings() for the phases.
+  explicit CondensedProblem(const ContactProblem& full);
+
+  /// The condensed problem: A = S (dense, stored as a sparse matrix), b = g, and a contact set
+  /// with the same nodes, normals, weights, gaps and movable flags, whose N has s_j in the column
+  /// of node j's normal unknown.
+  [[nodiscard]] const ContactProblem& reduced() const { return reduced_; }
+  /// Displacement in the free dofs of the full problem for condensed unknowns v (one solve).
+  [[nodiscard]] Vector expand(const Vector& v) const;
+  [[nodiscard]] TimingTable timings() const;
+
+ private:
+  ContactProblem reduced_;
+  SparseMatrix Q_;                   // the rotation: x = Q y
+  Vector b_rotated_;                 // Q^T b
+  std::vector<Index> normal_dofs_;   // rotated unknown that is node j's normal displacement
+  std::unique_ptr<SchurComplement> schur_;
+  TimingTable timings_;
+};
+
+}  // namespace signorini

@@ -1,0 +1,36 @@
+#pragma once
+// The linear systems of the generalised Newton method (17): H(P) x = rhs with
+// H(P) = A + r sum_{j in P} h_j n_j n_j^T for active sets P. Consecutive active sets usually differ
+// in a few nodes, so a system is refactorised only when P changes, and the dense variant (for the
+// condensed problems) updates its factor by rank-one updates and downdates instead.
+
+#include <memory>
+
+#include "signorini/contact/contact_solver_options.hpp"
+#include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/linalg/linear_solver.hpp"
+
+namespace signorini {
+
+class NewtonSystem {
+ public:
+  virtual ~NewtonSystem() = default;
+  /// Makes H(P) the current matrix (no work if P is the current active set).
+  virtual void set_active(const ActiveSet& active) = 0;
+  virtual LinearSolveStats solve(const Vector& rhs, Vector& x) = 0;
+  [[nodiscard]] int factorizations() const { return factorizations_; }
+  [[nodiscard]] int updates() const { return updates_; }
+  [[nodiscard]] virtual const TimingTable& timings() const = 0;
+
+ protected:
+  int factorizations_ = 0;  // numeric factorisations so far
+  int updates_ = 0;         // rank-one factor updates and downdates so far
+};
+
+/// A sparse system (CHOLMOD or CG, analysed once) for the "cholmod" and "cg" linear solvers, a
+/// dense updatable one for "dense".
+std::unique_ptr<NewtonSystem> make_newton_system(const ContactProblem& problem,
+                                                 const ModifiedLagrangian& phi,
+                                                 const LinearSolverOptions& options);
+
+}  // namespace signorini

@@ -1,0 +1,31 @@
+#include "signorini/linalg/dense_cholesky_solver.hpp"
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+void DenseCholeskySolver::factorize(const SparseMatrix& H) { factorize_dense(Eigen::MatrixXd(H)); }
+
+void DenseCholeskySolver::factorize_dense(const Eigen::MatrixXd& H) {
+  ScopedTimer timer(timings_, "linear factorization");
+  llt_.compute(H);
+  factorized_ = llt_.info() == Eigen::Success;
+  if (!factorized_) throw NumericalError("dense Cholesky: matrix is not positive definite");
+}
+
+bool DenseCholeskySolver::rank_update(const Vector& v, double sigma) {
+  ScopedTimer timer(timings_, "linear factor update");
+  if (!factorized_) return false;
+  llt_.rankUpdate(v, sigma);
+  factorized_ = llt_.info() == Eigen::Success;
+  return factorized_;
+}
+
+LinearSolveStats DenseCholeskySolver::solve(const Vector& rhs, Vector& x) {
+  ScopedTimer timer(timings_, "linear solve");
+  if (!factorized_) throw NumericalError("dense Cholesky: solve() before factorize()");
+  x = llt_.solve(rhs);
+  return {};
+}
+
+}  // namespace signorini

@@ -1,0 +1,88 @@
+#pragma once
+// Internal to linalg: CHOLMOD's 64-bit interface, a copy of the upper triangle of an Eigen matrix
+// in CHOLMOD's own storage, and status checks that turn CHOLMOD failures into exceptions.
+
+#include <cholmod.h>
+
+#include <string>
+#include <vector>
+
+#include "signorini/core/error.hpp"
+#include "signorini/core/types.hpp"
+
+namespace signorini::detail {
+
+using CholmodInt = SuiteSparse_long;
+
+/// Throws NumericalError if the last CHOLMOD call failed.
+inline void check_cholmod(const cholmod_common& c, const char* what) {
+  if (c.status == CHOLMOD_NOT_POSDEF)
+    throw NumericalError(std::string("CHOLMOD ") + what +
+                         ": matrix is not positive definite (is the body held by clamped "
+                         "boundaries?)");
+  if (c.status == CHOLMOD_OUT_OF_MEMORY)
+    throw NumericalError(std::string("CHOLMOD ") + what + ": out of memory");
+  if (c.status < CHOLMOD_OK)
+    throw NumericalError(std::string("CHOLMOD ") + what + " failed with status " +
+                         std::to_string(c.status));
+}
+
+/// The upper triangle of a symmetric matrix (stype = 1) in CHOLMOD storage, with the positions
+/// of its values in the Eigen matrix so that new values of the same pattern are copied cheaply.
+struct CholmodUpper {
+  cholmod_sparse* matrix = nullptr;
+  std::vector<CholmodInt> value_map;  // entry k of `matrix` is A.valuePtr()[value_map[k]]
+  Index full_nnz = 0;
+
+  /// Copies the values of A (same pattern as at construction) into `matrix`.
+  void copy_values(const SparseMatrix& A) const {
+    auto* vals = static_cast<double*>(matrix->x);
+    const double* av = A.valuePtr();
+    for (std::size_t k = 0; k < value_map.size(); ++k) vals[k] = av[value_map[k]];
+  }
+};
+
+/// Allocates the upper triangle of A (values copied too). Free with cholmod_l_free_sparse.
+inline CholmodUpper make_cholmod_upper(const SparseMatrix& A, cholmod_common& common) {
+  if (A.rows() != A.cols()) throw NumericalError("CHOLMOD: matrix is not square");
+  const Index n = A.rows();
+  CholmodUpper out;
+  out.full_nnz = A.nonZeros();
+  out.value_map.reserve(static_cast<std::size_t>(A.nonZeros() / 2 + n));
+  std::vector<CholmodInt> colptr(static_cast<std::size_t>(n + 1), 0);
+  std::vector<CholmodInt> rows;
+  rows.reserve(out.value_map.capacity());
+  for (Index j = 0; j < n; ++j) {
+    for (int k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k) {
+      const Index i = A.innerIndexPtr()[k];
+      if (i <= j) {
+        rows.push_back(i);
+        out.value_map.push_back(k);
+      }
+    }
+    colptr[static_cast<std::size_t>(j + 1)] = static_cast<CholmodInt>(rows.size());
+  }
+  out.matrix = cholmod_l_allocate_sparse(static_cast<std::size_t>(n), static_cast<std::size_t>(n),
+                                         rows.size(), /*sorted=*/1, /*packed=*/1, /*stype=*/1,
+                                         CHOLMOD_REAL, &common);
+  check_cholmod(common, "allocate");
+  std::copy(colptr.begin(), colptr.end(), static_cast<CholmodInt*>(out.matrix->p));
+  std::copy(rows.begin(), rows.end(), static_cast<CholmodInt*>(out.matrix->i));
+  out.copy_values(A);
+  return out;
+}
+
+/// A read-only dense view of a vector for CHOLMOD (CHOLMOD does not write to its inputs).
+inline cholmod_dense dense_view(const Vector& v) {
+  cholmod_dense d{};
+  d.nrow = static_cast<std::size_t>(v.size());
+  d.ncol = 1;
+  d.nzmax = d.nrow;
+  d.d = d.nrow;
+  d.x = const_cast<double*>(v.data());
+  d.xtype = CHOLMOD_REAL;
+  d.dtype = CHOLMOD_DOUBLE;
+  return d;
+}
+
+}  // namespace signorini::detail

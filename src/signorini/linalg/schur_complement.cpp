@@ -1,0 +1,124 @@
+#include "signorini/linalg/schur_complement.hpp"
+
+#include <numeric>
+
+#include "signorini/linalg/detail/cholmod_matrix.hpp"
+
+namespace signorini {
+
+using detail::check_cholmod;
+using detail::CholmodInt;
+
+struct SchurComplement::Impl {
+  cholmod_common common{};
+  detail::CholmodUpper upper;
+  cholmod_factor* factor = nullptr;
+  Index n = 0;
+};
+
+SchurComplement::SchurComplement(const SparseMatrix& A, const std::vector<Index>& last)
+    : impl_(new Impl), last_(last) {
+  Impl& s = *impl_;
+  cholmod_l_start(&s.common);
+  s.common.print = 0;
+  s.common.error_handler = nullptr;
+  s.n = A.rows();
+  const Index n = s.n;
+  const auto nc = static_cast<Index>(last.size());
+  {
+    ScopedTimer t(timings_, "condensation analysis");
+    s.upper = detail::make_cholmod_upper(A, s.common);
+    // Constrained minimum degree: set 0 (interior) first, set 1 (C) last.
+    std::vector<CholmodInt> member(static_cast<std::size_t>(n), 0);
+    for (const Index i : last) member[static_cast<std::size_t>(i)] = 1;
+    std::vector<CholmodInt> perm(static_cast<std::size_t>(n));
+    cholmod_l_camd(s.upper.matrix, nullptr, 0, member.data(), perm.data(), &s.common);
+    check_cholmod(s.common, "constrained ordering");
+    // Within C, keep the caller's order so that S comes out in it.
+    std::copy(last.begin(), last.end(), perm.end() - nc);
+    s.common.nmethods = 1;
+    s.common.method[0].ordering = CHOLMOD_GIVEN;
+    s.common.postorder = 0;  // a postorder could move interior columns between those of C
+    s.common.supernodal = CHOLMOD_SUPERNODAL;
+    s.factor = cholmod_l_analyze_p(s.upper.matrix, perm.data(), nullptr, 0, &s.common);
+    check_cholmod(s.common, "analysis");
+    const auto* p = static_cast<const CholmodInt*>(s.factor->Perm);
+    for (Index k = 0; k < nc; ++k)
+      if (p[n - nc + k] != last[static_cast<std::size_t>(k)])
+        throw NumericalError("CHOLMOD did not keep the condensed unknowns last");
+  }
+  {
+    ScopedTimer t(timings_, "condensation factorization");
+    cholmod_l_factorize(s.upper.matrix, s.factor, &s.common);
+    check_cholmod(s.common, "factorization");
+    if (!s.factor->is_super) throw NumericalError("CHOLMOD: expected a supernodal factor");
+  }
+  {
+    ScopedTimer t(timings_, "condensation Schur complement");
+    // L_CC from the supernodes that hold columns n - nc ... n - 1. Supernode k holds columns
+    // super[k] ... super[k+1]-1, its row indices at s[pi[k] ...], its values column-major at
+    // x[px[k] ...] with pi[k+1]-pi[k] rows.
+    L_cc_ = Eigen::MatrixXd::Zero(nc, nc);
+    Eigen::MatrixXd& Lcc = L_cc_;
+    const auto* super = static_cast<const CholmodInt*>(s.factor->super);
+    const auto* pi = static_cast<const CholmodInt*>(s.factor->pi);
+    const auto* px = static_cast<const CholmodInt*>(s.factor->px);
+    const auto* rows = static_cast<const CholmodInt*>(s.factor->s);
+    const auto* x = static_cast<const double*>(s.factor->x);
+    const Index first = n - nc;
+    for (std::size_t k = 0; k < s.factor->nsuper; ++k) {
+      const CholmodInt c0 = super[k], c1 = super[k + 1];
+      if (c1 <= first) continue;
+      const CholmodInt nrows = pi[k + 1] - pi[k];
+      for (CholmodInt c = std::max<CholmodInt>(c0, first); c < c1; ++c) {
+        const double* col = x + px[k] + (c - c0) * nrows;
+        for (CholmodInt r = c - c0; r < nrows; ++r) {
+          const CholmodInt row = rows[pi[k] + r];
+          Lcc(row - first, c - first) = col[r];
+        }
+      }
+    }
+    S_.noalias() = Lcc.triangularView<Eigen::Lower>() * Lcc.transpose();
+    S_ = S_.selfadjointView<Eigen::Lower>();  // exactly symmetric
+  }
+}
+
+SchurComplement::~SchurComplement() {
+  cholmod_l_free_factor(&impl_->factor, &impl_->common);
+  cholmod_l_free_sparse(&impl_->upper.matrix, &impl_->common);
+  cholmod_l_finish(&impl_->common);
+  delete impl_;
+}
+
+Vector SchurComplement::condensed_load(const Vector& b) const {
+  ScopedTimer t(timings_, "condensation solve");
+  Impl& s = *impl_;
+  const auto nc = static_cast<Index>(last_.size());
+  // With z = L^-1 P b, the last rows of L z = P b read L_CI z_I + L_CC z_C = b_C, and
+  // L_CI z_I = A_CI A_II^-1 b_I (since L_II z_I = b_I and L_CI = A_CI L_II^-T): so g = L_CC z_C.
+  cholmod_dense bd = detail::dense_view(b);
+  cholmod_dense* pb = cholmod_l_solve(CHOLMOD_P, s.factor, &bd, &s.common);
+  check_cholmod(s.common, "permutation");
+  cholmod_dense* z = cholmod_l_solve(CHOLMOD_L, s.factor, pb, &s.common);
+  check_cholmod(s.common, "forward substitution");
+  const Eigen::Map<const Vector> zc(static_cast<const double*>(z->x) + (s.n - nc), nc);
+  const Vector g = L_cc_.triangularView<Eigen::Lower>() * zc;
+  cholmod_l_free_dense(&pb, &s.common);
+  cholmod_l_free_dense(&z, &s.common);
+  return g;
+}
+
+Vector SchurComplement::solve(const Vector& rhs) const {
+  ScopedTimer t(timings_, "condensation solve");
+  Impl& s = *impl_;
+  cholmod_dense bd = detail::dense_view(rhs);
+  cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, s.factor, &bd, &s.common);
+  check_cholmod(s.common, "solve");
+  Vector out = Eigen::Map<const Vector>(static_cast<const double*>(x->x), s.n);
+  cholmod_l_free_dense(&x, &s.common);
+  return out;
+}
+
+double SchurComplement::factor_nonzeros() const { return impl_->common.lnz; }
+
+}  // namespace signorini

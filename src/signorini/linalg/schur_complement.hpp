@@ -1,0 +1,45 @@
+#pragma once
+// Static condensation of an SPD matrix onto a small set C of unknowns by one sparse Cholesky
+// factorisation: with C ordered last (CAMD, a constrained minimum-degree ordering),
+//   P A P^T = L L^T,  L = [L_II 0; L_CI L_CC],
+// and the Schur complement S = A_CC - A_CI A_II^-1 A_IC equals L_CC L_CC^T. The trailing block of
+// the factor is read out of CHOLMOD's supernodes, so S costs no extra solves. The contact solvers
+// use it to iterate on the contact boundary alone (docs/performance.md).
+
+#include <vector>
+
+#include "signorini/core/timing_table.hpp"
+#include "signorini/core/types.hpp"
+
+namespace signorini {
+
+class SchurComplement {
+ public:
+  /// Orders, analyses and factorises A (SPD, both triangles stored) with the unknowns `last`
+  /// ordered last, then forms S. Throws NumericalError if A is not positive definite.
+  SchurComplement(const SparseMatrix& A, const std::vector<Index>& last);
+  ~SchurComplement();
+  SchurComplement(const SchurComplement&) = delete;
+  SchurComplement& operator=(const SchurComplement&) = delete;
+
+  /// S = A_CC - A_CI A_II^-1 A_IC, |C| x |C|, in the order of `last`.
+  [[nodiscard]] const Eigen::MatrixXd& matrix() const { return S_; }
+  /// The condensed load g = b_C - A_CI A_II^-1 b_I (one forward substitution).
+  [[nodiscard]] Vector condensed_load(const Vector& b) const;
+  /// x = A^-1 rhs with the factorisation (one forward and one back substitution).
+  [[nodiscard]] Vector solve(const Vector& rhs) const;
+  /// Phases: "condensation analysis", "condensation factorization", "condensation Schur
+  /// complement", "condensation solve".
+  [[nodiscard]] const TimingTable& timings() const { return timings_; }
+  [[nodiscard]] double factor_nonzeros() const;
+
+ private:
+  struct Impl;
+  Impl* impl_;
+  Eigen::MatrixXd L_cc_;  // trailing block of the factor: S = L_cc L_cc^T
+  Eigen::MatrixXd S_;
+  std::vector<Index> last_;
+  mutable TimingTable timings_;
+};
+
+}  // namespace signorini
