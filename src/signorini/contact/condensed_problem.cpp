@@ -2,11 +2,83 @@
 
 namespace signorini {
 
+namespace {
+
+// Q^T A Q for the block-diagonal reflection Q (symmetric, so Q^T A Q = Q A Q), computed in place
+// on a copy of A: the dofs of one node are consecutive and their columns share one row pattern in
+// a nodal stiffness matrix, so each block mixes entries that already exist. Falls back to sparse
+// products where that structure is missing.
+SparseMatrix rotate(const SparseMatrix& A, const SparseMatrix& Q,
+                    const std::vector<std::vector<Index>>& blocks) {
+  SparseMatrix R = A;
+  R.makeCompressed();
+  const int* outer = R.outerIndexPtr();
+  const int* inner = R.innerIndexPtr();
+  double* v = R.valuePtr();
+  const Index n = R.rows();
+  std::vector<Index> block_of(static_cast<std::size_t>(n), -1);
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const auto& d = blocks[b];
+    for (std::size_t a = 0; a < d.size(); ++a) {
+      if (d[a] != d.front() + static_cast<Index>(a)) return SparseMatrix(Q * A * Q);
+      block_of[static_cast<std::size_t>(d[a])] = static_cast<Index>(b);
+    }
+    const Index len = outer[d.front() + 1] - outer[d.front()];
+    for (const Index col : d)
+      if (outer[col + 1] - outer[col] != len ||
+          !std::equal(inner + outer[col], inner + outer[col + 1], inner + outer[d.front()]))
+        return SparseMatrix(Q * A * Q);
+  }
+  auto q = [&](Index row, Index col) { return Q.coeff(row, col); };
+  // Columns: R(:, d) <- R(:, d) Q_b.
+  std::vector<double> tmp;
+  for (const auto& d : blocks) {
+    const auto k = d.size();
+    const Index len = outer[d.front() + 1] - outer[d.front()];
+    tmp.assign(k * static_cast<std::size_t>(len), 0.0);
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t c = 0; c < k; ++c) {
+        const double qca = q(d[c], d[a]);
+        if (qca == 0.0) continue;
+        const double* src = v + outer[d[c]];
+        for (Index p = 0; p < len; ++p) tmp[a * static_cast<std::size_t>(len) + static_cast<std::size_t>(p)] += qca * src[p];
+      }
+    for (std::size_t a = 0; a < k; ++a)
+      std::copy(tmp.begin() + static_cast<std::ptrdiff_t>(a * static_cast<std::size_t>(len)),
+                tmp.begin() + static_cast<std::ptrdiff_t>((a + 1) * static_cast<std::size_t>(len)),
+                v + outer[d[a]]);
+  }
+  // Rows: R(d, :) <- Q_b R(d, :); in every column the rows of a block are consecutive entries.
+  double buf[3];
+  for (Index col = 0; col < n; ++col)
+    for (int p = outer[col]; p < outer[col + 1];) {
+      const Index b = block_of[static_cast<std::size_t>(inner[p])];
+      if (b < 0) {
+        ++p;
+        continue;
+      }
+      const auto& d = blocks[static_cast<std::size_t>(b)];
+      const auto k = static_cast<int>(d.size());
+      if (inner[p] != d.front() || p + k > outer[col + 1] || inner[p + k - 1] != d.back())
+        return SparseMatrix(Q * A * Q);
+      for (int a = 0; a < k; ++a) {
+        buf[a] = 0.0;
+        for (int c = 0; c < k; ++c) buf[a] += q(d[static_cast<std::size_t>(a)], d[static_cast<std::size_t>(c)]) * v[p + c];
+      }
+      std::copy(buf, buf + k, v + p);
+      p += k;
+    }
+  return R;
+}
+
+}  // namespace
+
 CondensedProblem::CondensedProblem(const ContactProblem& full) {
   const ContactSet& c = full.contact;
   const Index n = full.A.rows();
   const Index nc = c.size();
   Vector scale = Vector::Zero(nc);
+  std::vector<std::vector<Index>> blocks;  // free dofs of each movable contact node
   {
     ScopedTimer t(timings_, "condensation rotation");
     // Q: identity, except a Householder reflection on each movable contact node's free dofs
@@ -36,6 +108,7 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
         }
       }
       normal_dofs_.push_back(dofs.front());
+      blocks.push_back(std::move(dofs));
     }
     for (Index i = 0; i < n; ++i)
       if (!in_block[static_cast<std::size_t>(i)])
@@ -47,7 +120,7 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
   {
     const SparseMatrix A_rotated = [&] {
       ScopedTimer t(timings_, "condensation rotation");
-      return SparseMatrix(Q_.transpose() * full.A * Q_);
+      return rotate(full.A, Q_, blocks);
     }();
     schur_ = std::make_unique<SchurComplement>(A_rotated, normal_dofs_);
   }

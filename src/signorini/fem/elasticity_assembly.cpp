@@ -1,12 +1,15 @@
 #include "signorini/fem/elasticity_assembly.hpp"
 
 #include <Eigen/LU>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/q1_element.hpp"
 #include "signorini/fem/quadrature.hpp"
+#include "signorini/fem/sparsity_pattern.hpp"
 
 namespace signorini {
 
@@ -49,34 +52,38 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
                                 const ElasticityOptions& options) {
   require_quad4(mesh);
   const Eigen::Matrix3d D = plane_elasticity_matrix(options.material, options.plane_model);
-  std::vector<Eigen::Triplet<double, int>> triplets;
-  triplets.reserve(static_cast<std::size_t>(mesh.num_cells()) * 64);
-  std::array<Index, 8> map{};
+  const SparsityPattern pattern(mesh, dofs);
+  SparseMatrix A = pattern.zero_matrix();
+  double* values = A.valuePtr();
+  // Cells that are translates of the previous one (all of them on a structured mesh) share its
+  // element matrix: compare the node coordinates relative to the first node.
+  Q1Coordinates previous = Q1Coordinates::Constant(std::numeric_limits<double>::quiet_NaN());
+  Q1Stiffness K;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
-    Q1Stiffness K;
-    try {
-      K = q1_stiffness(cell_coordinates(mesh, c), D, options.gauss_points);
-    } catch (const InputError& e) {
-      throw InputError("mesh cell " + std::to_string(c) + ": " + e.what());
+    const Q1Coordinates X = cell_coordinates(mesh, c);
+    const Q1Coordinates relative = X.colwise() - X.col(0);
+    const double size = relative.cwiseAbs().maxCoeff();
+    if (!((relative - previous).cwiseAbs().maxCoeff() <= 1e-13 * size)) {
+      try {
+        K = q1_stiffness(X, D, options.gauss_points);
+      } catch (const InputError& e) {
+        throw InputError("mesh cell " + std::to_string(c) + ": " + e.what());
+      }
+      previous = relative;
     }
     const auto nodes = mesh.cell(c);
-    for (int a = 0; a < 4; ++a)
-      for (int k = 0; k < 2; ++k)
-        map[static_cast<std::size_t>(2 * a + k)] =
-            dofs.free_index(nodes[static_cast<std::size_t>(a)], k);
-    for (int i = 0; i < 8; ++i) {
-      const Index gi = map[static_cast<std::size_t>(i)];
-      if (gi < 0) continue;  // clamped: eliminated (u = 0 there)
-      for (int j = 0; j < 8; ++j) {
-        const Index gj = map[static_cast<std::size_t>(j)];
-        if (gj < 0) continue;
-        triplets.emplace_back(static_cast<int>(gi), static_cast<int>(gj), K(i, j));
+    std::array<Index, 4> block{};
+    for (int b = 0; b < 4; ++b)
+      for (int a = 0; a < 4; ++a) {
+        pattern.block_positions(nodes[static_cast<std::size_t>(a)],
+                                nodes[static_cast<std::size_t>(b)], block.data());
+        for (int ka = 0; ka < 2; ++ka)
+          for (int kb = 0; kb < 2; ++kb) {
+            const Index pos = block[static_cast<std::size_t>(ka * 2 + kb)];
+            if (pos >= 0) values[pos] += K(2 * a + ka, 2 * b + kb);  // clamped: eliminated
+          }
       }
-    }
   }
-  SparseMatrix A(dofs.num_free(), dofs.num_free());
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  A.makeCompressed();
   return A;
 }
 
