@@ -1,0 +1,19 @@
+// `signorini check PROBLEM.toml`: everything a solve does before solving, so that a typo is found
+// in a second and not after the queue wait of a long run.
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "model_loading.hpp"
+
+namespace signorini::app {
+
+int run_check(const CheckArguments& args) {
+  const LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
+  const Model model = build_model_for(loaded);
+  fmt::print("ok: {} dofs, {} contact nodes\n", model.dofs.num_dofs(),
+             model.problem.contact.size());
+  return kSuccess;
+}
+
+}  // namespace signorini::app

@@ -1,0 +1,39 @@
+#pragma once
+// The subcommands of the `signorini` tool and its exit statuses.
+
+#include <string>
+#include <vector>
+
+namespace signorini::app {
+
+/// Exit statuses, documented in `signorini --help` and docs/problem-format.md.
+enum ExitStatus : int {
+  kSuccess = 0,         ///< solved and converged (or: the check passed)
+  kInternalError = 1,   ///< a bug or an unexpected failure (e.g. out of memory)
+  kBadInput = 2,        ///< the problem file, an option or the output folder is unusable
+  kNotConverged = 3,    ///< the solver stopped short; results are written with converged = false
+  kNumericalError = 4,  ///< a numerical failure (e.g. a factorisation of an SPD matrix failed)
+};
+
+struct SolveArguments {
+  std::string problem_file;
+  std::string output_dir;
+  std::vector<std::string> overrides;  ///< --set key=value
+  bool quiet = false;
+};
+
+struct CheckArguments {
+  std::string problem_file;
+  std::vector<std::string> overrides;
+};
+
+/// `signorini solve`: returns kSuccess or kNotConverged; throws InputError or NumericalError.
+int run_solve(const SolveArguments& args);
+
+/// `signorini check`: reads the file and builds the model without solving.
+int run_check(const CheckArguments& args);
+
+/// "signorini 0.1.0" and the compiled backends with their versions, several lines.
+std::string version_text();
+
+}  // namespace signorini::app

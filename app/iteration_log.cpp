@@ -1,0 +1,19 @@
+#include "iteration_log.hpp"
+
+#include <fmt/format.h>
+
+namespace signorini::app {
+
+std::string iteration_line(ContactMethod method, const IterationEvent& e) {
+  const char* outer = method == ContactMethod::SemismoothNewton ? "newton" : "uzawa";
+  if (e.kind == IterationEvent::Kind::Inner)
+    return fmt::format("  {} {}  gnm {}  active {}  residual {:.1e}  armijo {}", outer, e.outer,
+                       e.inner, e.active, e.residual, e.armijo);
+  std::string line =
+      fmt::format("{} {}: ||dl||/||l|| = {:.1e}, active {}", outer, e.outer, e.residual, e.active);
+  if (method == ContactMethod::UzawaGnm) line += fmt::format(", gnm {}", e.inner);
+  if (e.linear_iterations > 0) line += fmt::format(", cg {}", e.linear_iterations);
+  return line;
+}
+
+}  // namespace signorini::app

@@ -1,0 +1,99 @@
+// signorini: the command-line front end of the library.
+//
+//   signorini --version
+//   signorini check examples/paper.toml
+//   signorini solve examples/paper.toml -o results/paper
+//   signorini solve examples/paper.toml -o results/paper --set mesh.nx=120 --set mesh.ny=40
+//   signorini solve examples/paper.toml -o results/ssn --set solver.method=semismooth_newton
+//
+// Exit status: 0 solved (or checked), 2 bad input, 3 not converged (results written anyway),
+// 4 numerical failure, 1 anything else. Errors are one line on stderr: "signorini: error: ...".
+
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <new>
+
+#include "commands.hpp"
+#include "signorini/core/error.hpp"
+
+namespace {
+
+using namespace signorini::app;
+
+int fail(int status, const std::string& message) {
+  std::fflush(stdout);  // keep the order of what was printed when both go to one terminal
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  fmt::print(stderr, "signorini: error: {}\n", line);
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Frictionless contact of a linear elastic body with a rigid foundation (Signorini "
+      "problem), by the modified-Lagrangian Uzawa method with generalised Newton steps.\n"
+      "Exit status: 0 ok, 2 bad input, 3 not converged (results still written), "
+      "4 numerical failure, 1 other errors.",
+      "signorini"};
+  bool show_version = false;
+  app.add_flag("--version", show_version, "Print the version and the compiled backends");
+  app.require_subcommand(0, 1);
+
+  SolveArguments solve;
+  CLI::App* solve_cmd = app.add_subcommand("solve", "Solve a problem file and write the results");
+  solve_cmd
+      ->add_option("PROBLEM", solve.problem_file,
+                   "Problem file (TOML, see "
+                   "docs/problem-format.md)")
+      ->required();
+  solve_cmd
+      ->add_option("-o,--output", solve.output_dir,
+                   "Folder for summary.json and contact.csv (created if needed)")
+      ->required();
+  solve_cmd
+      ->add_option("--set", solve.overrides,
+                   "Override a setting of the file, e.g. --set mesh.nx=480 (repeatable)")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+  solve_cmd->add_flag("-q,--quiet", solve.quiet,
+                      "Print nothing but errors (no settings, progress, report)");
+
+  CheckArguments check;
+  CLI::App* check_cmd =
+      app.add_subcommand("check", "Validate a problem file and build its model, without solving");
+  check_cmd->add_option("PROBLEM", check.problem_file, "Problem file (TOML)")->required();
+  check_cmd->add_option("--set", check.overrides, "Override a setting of the file (repeatable)")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    return fail(kBadInput, e.what());
+  }
+
+  try {
+    if (show_version) {
+      fmt::print("{}", version_text());
+      return kSuccess;
+    }
+    if (*solve_cmd) return run_solve(solve);
+    if (*check_cmd) return run_check(check);
+    return fail(kBadInput, "expected a command: solve or check (see signorini --help)");
+  } catch (const signorini::InputError& e) {
+    return fail(kBadInput, e.what());
+  } catch (const signorini::NumericalError& e) {
+    return fail(kNumericalError, std::string("numerical failure: ") + e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(kInternalError, "out of memory");
+  } catch (const std::exception& e) {
+    return fail(kInternalError, std::string("internal error: ") + e.what());
+  }
+}

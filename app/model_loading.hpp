@@ -1,0 +1,13 @@
+#pragma once
+// Building the model of a problem file, with the file named in the errors build_model() finds
+// (an unknown boundary name is a mistake in the file).
+
+#include "signorini/io/problem_file.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini::app {
+
+/// build_model(loaded.spec); an InputError gets the prefix "<file>: ".
+Model build_model_for(const LoadedProblem& loaded);
+
+}  // namespace signorini::app

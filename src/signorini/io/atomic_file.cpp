@@ -1,0 +1,93 @@
+#include "signorini/io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+namespace {
+
+// Owns the temporary file until it has been renamed, so that every failure path removes it.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(const std::filesystem::path& target) {
+    // A name no other writer uses (process id and a per-process counter; O_EXCL guards against
+    // leftovers), so that two runs writing the same folder cannot clobber each other's
+    // temporaries. The leading dot hides it from casual listings. Mode 0666 less the umask, as
+    // any file the user creates.
+    static std::atomic<unsigned> counter{0};
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      // fmt rather than operator+ chains: GCC 12 warns falsely (-Wrestrict) on "." + string.
+      const std::string name =
+          fmt::format(".{}.tmp.{}.{}", target.filename().string(), ::getpid(), counter++);
+      const std::string candidate = (target.parent_path() / name).string();
+      fd_ = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if (fd_ >= 0) {
+        path_ = candidate;
+        return;
+      }
+      if (errno != EEXIST) return;
+    }
+  }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  ~TemporaryFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!path_.empty()) ::unlink(path_.c_str());
+  }
+
+  [[nodiscard]] int fd() const { return fd_; }
+  [[nodiscard]] const std::string& path() const { return path_; }
+  /// Closes the descriptor; returns false (errno set) if the data could not be flushed.
+  bool close() {
+    const int rc = ::close(fd_);
+    fd_ = -1;
+    return rc == 0;
+  }
+  /// The file has been renamed: nothing left to remove.
+  void release() { path_.clear(); }
+
+ private:
+  int fd_ = -1;
+  std::string path_;
+};
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
+  const auto fail = [&](int error) {
+    return InputError("cannot write '" + path.string() + "': " + std::strerror(error));
+  };
+  if (path.filename().empty())
+    throw InputError("cannot write '" + path.string() + "': not a file name");
+
+  TemporaryFile tmp(path);
+  if (tmp.fd() < 0) throw fail(errno);
+
+  const char* data = contents.data();
+  std::size_t left = contents.size();
+  while (left > 0) {
+    const ssize_t n = ::write(tmp.fd(), data, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw fail(errno);
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  // The data must be on disk before the rename makes it visible under the final name; otherwise
+  // a crash right after could leave an empty file in place of the earlier results.
+  if (::fsync(tmp.fd()) != 0) throw fail(errno);
+  if (!tmp.close()) throw fail(errno);
+  if (::rename(tmp.path().c_str(), path.c_str()) != 0) throw fail(errno);
+  tmp.release();
+}
+
+}  // namespace signorini

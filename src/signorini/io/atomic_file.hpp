@@ -1,0 +1,16 @@
+#pragma once
+// Writing result files so that readers only ever see a complete file: the contents go to a
+// temporary file in the same folder, which is then renamed over the target (rename() within one
+// file system is atomic). A run that fails part-way leaves no half-written file and keeps the
+// results of an earlier run.
+
+#include <filesystem>
+#include <string>
+
+namespace signorini {
+
+/// Replaces `path` by a file holding `contents`. The folder must exist. Throws InputError
+/// "cannot write '<path>': <reason>"; the earlier file, if any, is then left as it was.
+void write_file_atomically(const std::filesystem::path& path, const std::string& contents);
+
+}  // namespace signorini

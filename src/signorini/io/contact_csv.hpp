@@ -1,0 +1,19 @@
+#pragma once
+// contact.csv: the solution along the contact boundary Gamma_K, one row per contact node in the
+// order of the ContactSet (along the boundary part): what the paper's Figures 2 and 3 plot.
+
+#include <string>
+
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini {
+
+/// Header "x,y,u_n,u_t,pressure,gap", then per contact node j: its coordinates, the normal
+/// displacement u.nu_j, the tangential displacement u.tau_j with tau_j = (-nu_y, nu_x) (nu turned
+/// a quarter counterclockwise: on a bottom edge, nu = (0, -1) and tau = (1, 0)), the contact
+/// pressure l_j >= 0 and the gap g_j. Numbers with 17 significant digits, so that they read back
+/// exactly. 2D only (throws InputError otherwise).
+std::string contact_csv(const ContactResult& result, const Model& model);
+
+}  // namespace signorini

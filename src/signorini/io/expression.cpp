@@ -1,0 +1,78 @@
+#include "signorini/io/expression.hpp"
+
+#include <muParser.h>
+
+#include <numbers>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+struct ScalarExpression::State {
+  std::string text;
+  mu::Parser parser;
+  // muParser reads the variables through these addresses at every Eval().
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+};
+
+ScalarExpression::ScalarExpression(const std::string& expression, const std::string& key)
+    : state_(std::make_shared<State>()) {
+  State& s = *state_;
+  s.text = expression;
+  const auto fail = [&](const std::string& why) {
+    return InputError(key + ": cannot parse expression '" + expression + "': " + why);
+  };
+  try {
+    s.parser.DefineVar("x", &s.x);
+    s.parser.DefineVar("y", &s.y);
+    s.parser.DefineVar("z", &s.z);
+    s.parser.DefineConst("pi", std::numbers::pi);
+    s.parser.SetExpr(expression);
+    // muParser parses lazily, at the first Eval(): evaluate once now so that syntax errors and
+    // unknown names surface here, while the problem file is read.
+    s.parser.Eval();
+  } catch (const mu::Parser::exception_type& e) {
+    throw fail(e.GetMsg());
+  }
+  // "1, 2" is valid muParser (several results); as one component it is surely a mistake.
+  if (s.parser.GetNumResults() != 1) throw fail("expected a single value, got a list");
+}
+
+double ScalarExpression::operator()(double x, double y, double z) const {
+  State& s = *state_;
+  s.x = x;
+  s.y = y;
+  s.z = z;
+  // Parsing succeeded at construction, so Eval() can only fail on numerics, which muParser
+  // reports as NaN/inf: the assembly checks those and names the field.
+  return s.parser.Eval();
+}
+
+const std::string& ScalarExpression::text() const {
+  return state_->text;
+}
+
+ScalarField make_scalar_field(const std::string& expression, const std::string& key) {
+  ScalarExpression e(expression, key);
+  return [e](const Point& p) { return e(p); };
+}
+
+VectorField make_vector_field(const std::vector<std::string>& expressions, const std::string& key) {
+  if (expressions.empty() || expressions.size() > 3)
+    throw InputError(key + ": expected 2 or 3 component expressions, got " +
+                     std::to_string(expressions.size()));
+  std::vector<ScalarExpression> components;
+  components.reserve(expressions.size());
+  for (std::size_t i = 0; i < expressions.size(); ++i)
+    components.emplace_back(expressions[i], key + "[" + std::to_string(i) + "]");
+  return [components](const Point& p) {
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < components.size(); ++i)
+      v(static_cast<Eigen::Index>(i)) = components[i](p);
+    return v;
+  };
+}
+
+}  // namespace signorini

@@ -1,0 +1,703 @@
+#include "signorini/io/problem_file.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "signorini/core/error.hpp"
+#include "signorini/io/expression.hpp"
+#include "signorini/io/suggestion.hpp"
+#include "signorini/io/toml_emitter.hpp"
+
+namespace signorini {
+
+namespace {
+
+// Messages from other libraries (toml++, muParser) may span lines; ours are one line each.
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  return text;
+}
+
+std::string join(const std::string& path, std::string_view key) {
+  return path.empty() ? std::string(key) : path + "." + std::string(key);
+}
+
+std::string element(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+// The names a user sees in "must be an integer, got string".
+const char* type_name(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table:
+      return "table";
+    case toml::node_type::array:
+      return "array";
+    case toml::node_type::string:
+      return "string";
+    case toml::node_type::integer:
+      return "integer";
+    case toml::node_type::floating_point:
+      return "float";
+    case toml::node_type::boolean:
+      return "boolean";
+    case toml::node_type::date:
+      return "date";
+    case toml::node_type::time:
+      return "time";
+    case toml::node_type::date_time:
+      return "date-time";
+    case toml::node_type::none:
+      break;
+  }
+  return "nothing";
+}
+
+// Expressions may be written as TOML numbers ("p = [0, 1]"); muParser gets their text.
+std::optional<std::string> expression_text(const toml::node& n) {
+  if (const auto* s = n.as_string()) return s->get();
+  if (const auto* i = n.as_integer()) return std::to_string(i->get());
+  if (const auto* f = n.as_floating_point()) return toml_float(f->get());
+  return std::nullopt;
+}
+
+// How a file is read: its name for messages, and which keys came from --set (an unknown key says
+// so, since the user would otherwise look for it in the file).
+class Reader {
+ public:
+  Reader(std::string file, std::set<std::string> overridden)
+      : file_(std::move(file)), overridden_(std::move(overridden)) {}
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw InputError(file_ + ": " + one_line(message));
+  }
+
+  // Unknown keys are checked before the values of a table are read, so that a misspelt required
+  // key reports "unknown key 'mesh.nxx' (did you mean 'mesh.nx'?)", not "missing 'mesh.nx'".
+  void check_keys(const toml::table& t, const std::string& path,
+                  const std::vector<std::string>& known) const {
+    for (auto&& [k, v] : t) {
+      const std::string key(k.str());
+      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      std::string message = "unknown key '" + join(path, key) + "'";
+      const std::string guess = closest_match(key, known);
+      if (!guess.empty()) message += " (did you mean '" + join(path, guess) + "'?)";
+      if (overridden_.contains(join(path, key))) message += ", given by --set";
+      fail(message);
+    }
+  }
+
+  [[noreturn]] void wrong_type(const std::string& key, const std::string& expected,
+                               const toml::node& n) const {
+    fail("key '" + key + "' must be " + expected + ", got " + type_name(n));
+  }
+
+  [[noreturn]] void missing(const std::string& key, const std::string& what) const {
+    fail("missing required key '" + key + "' (" + what + ")");
+  }
+
+  [[noreturn]] void out_of_range(const std::string& key, const std::string& value,
+                                 const std::string& expected) const {
+    fail("key '" + key + "' = " + value + ": expected " + expected);
+  }
+
+  std::optional<double> number(const toml::table& t, const std::string& path,
+                               std::string_view key) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return std::nullopt;
+    // TOML keeps 1 and 1.0 apart; where a float is expected, "E = 210000" is meant as a number.
+    if (const auto* i = n->as_integer()) return static_cast<double>(i->get());
+    if (const auto* f = n->as_floating_point()) return f->get();
+    wrong_type(join(path, key), "a number", *n);
+  }
+
+  std::optional<std::int64_t> integer(const toml::table& t, const std::string& path,
+                                      std::string_view key) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return std::nullopt;
+    if (const auto* i = n->as_integer()) return i->get();
+    wrong_type(join(path, key), "an integer", *n);
+  }
+
+  // An integer option stored as int in the library structs.
+  std::optional<int> small_integer(const toml::table& t, const std::string& path,
+                                   std::string_view key) const {
+    const auto v = integer(t, path, key);
+    if (!v) return std::nullopt;
+    if (*v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max())
+      out_of_range(join(path, key), std::to_string(*v), "an integer that fits in 32 bits");
+    return static_cast<int>(*v);
+  }
+
+  std::optional<bool> boolean(const toml::table& t, const std::string& path,
+                              std::string_view key) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return std::nullopt;
+    if (const auto* b = n->as_boolean()) return b->get();
+    wrong_type(join(path, key), "true or false", *n);
+  }
+
+  std::optional<std::string> string(const toml::table& t, const std::string& path,
+                                    std::string_view key) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return std::nullopt;
+    if (const auto* s = n->as_string()) return s->get();
+    wrong_type(join(path, key), "a string", *n);
+  }
+
+  std::optional<std::string> expression(const toml::table& t, const std::string& path,
+                                        std::string_view key) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return std::nullopt;
+    auto text = expression_text(*n);
+    if (!text) wrong_type(join(path, key), "an expression (a string or a number)", *n);
+    return text;
+  }
+
+  std::optional<std::vector<std::string>> expressions(const toml::table& t, const std::string& path,
+                                                      std::string_view key,
+                                                      std::size_t count) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return std::nullopt;
+    const std::string full = join(path, key);
+    const auto* a = n->as_array();
+    const std::string expected =
+        "an array of " + std::to_string(count) + " expressions (strings or numbers)";
+    if (a == nullptr) wrong_type(full, expected, *n);
+    if (a->size() != count)
+      fail("key '" + full + "' must have " + std::to_string(count) + " entries (x and y " +
+           "components), got " + std::to_string(a->size()));
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      auto text = expression_text(*a->get(i));
+      if (!text) wrong_type(element(full, i), "an expression (a string or a number)", *a->get(i));
+      out.push_back(*text);
+    }
+    return out;
+  }
+
+  const toml::table* table(const toml::table& t, const std::string& path,
+                           std::string_view key) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return nullptr;
+    if (const auto* tt = n->as_table()) return tt;
+    wrong_type(join(path, key), "a table ([" + join(path, key) + "])", *n);
+  }
+
+  // The entries of an array of tables ([[clamp]]); empty if the key is absent.
+  std::vector<const toml::table*> array_of_tables(const toml::table& t,
+                                                  std::string_view key) const {
+    std::vector<const toml::table*> out;
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return out;
+    const std::string expected = "an array of tables ([[" + std::string(key) + "]] sections)";
+    const auto* a = n->as_array();
+    if (a == nullptr) wrong_type(std::string(key), expected, *n);
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const auto* e = a->get(i)->as_table();
+      if (e == nullptr) wrong_type(element(std::string(key), i), "a table", *a->get(i));
+      out.push_back(e);
+    }
+    return out;
+  }
+
+  template <class Enum, std::size_t N>
+  Enum enumeration(const toml::table& t, const std::string& path, std::string_view key,
+                   const EnumNames<Enum, N>& names, Enum fallback) const {
+    const auto text = string(t, path, key);
+    if (!text) return fallback;
+    if (const auto e = enum_from_string(names, *text)) return *e;
+    std::vector<std::string> choices;
+    for (const auto& [e, name] : names) choices.emplace_back(name);
+    std::string message =
+        "key '" + join(path, key) + "' must be " + enum_choices(names) + ", got '" + *text + "'";
+    const std::string guess = closest_match(*text, choices);
+    if (!guess.empty()) message += " (did you mean '" + guess + "'?)";
+    fail(message);
+  }
+
+  // Calls a library validate() and names the file in its message.
+  template <class Options>
+  void validated(const Options& options) const {
+    try {
+      validate(options);
+    } catch (const InputError& e) {
+      fail(e.what());
+    }
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+  std::set<std::string> overridden_;
+};
+
+template <class T>
+T required(const Reader& r, std::optional<T> value, const std::string& key,
+           const std::string& what) {
+  if (!value) r.missing(key, what);
+  return *value;
+}
+
+std::string as_text(double x) {
+  return toml_float(x);
+}
+
+// The expressions as written, for the effective settings (the spec keeps only callables).
+struct ExpressionTexts {
+  std::vector<std::vector<std::string>> tractions;
+  std::vector<std::string> body_force;
+  std::string gap = "0";
+};
+
+void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const toml::table* t = r.table(root, "", "mesh");
+  if (t == nullptr) r.missing("mesh", "a [mesh] section with length, height, nx and ny");
+  r.check_keys(*t, "mesh", {"type", "origin", "length", "height", "nx", "ny"});
+  const std::string type = r.string(*t, "mesh", "type").value_or("rectangle");
+  if (type != "rectangle")
+    r.fail("key 'mesh.type' must be \"rectangle\" (the only mesh type so far), got '" + type + "'");
+  RectangleMeshOptions& m = spec.mesh;
+  if (const toml::node* n = t->get("origin")) {
+    const auto* a = n->as_array();
+    if (a == nullptr || a->size() != 2) {
+      if (a == nullptr) r.wrong_type("mesh.origin", "an array of 2 numbers", *n);
+      r.fail("key 'mesh.origin' must have 2 entries (x and y), got " + std::to_string(a->size()));
+    }
+    double xy[2] = {0.0, 0.0};
+    for (std::size_t i = 0; i < 2; ++i) {
+      const toml::node& e = *a->get(i);
+      if (const auto* v = e.as_integer())
+        xy[i] = static_cast<double>(v->get());
+      else if (const auto* f = e.as_floating_point())
+        xy[i] = f->get();
+      else
+        r.wrong_type(element("mesh.origin", i), "a number", e);
+      if (!std::isfinite(xy[i]))
+        r.out_of_range(element("mesh.origin", i), as_text(xy[i]), "a finite number");
+    }
+    m.x0 = xy[0];
+    m.y0 = xy[1];
+  } else {
+    m.x0 = 0.0;
+    m.y0 = 0.0;
+  }
+  m.length = required(r, r.number(*t, "mesh", "length"), "mesh.length", "number > 0, metres");
+  m.height = required(r, r.number(*t, "mesh", "height"), "mesh.height", "number > 0, metres");
+  const auto positive = [&](const char* key, double value) {
+    if (!std::isfinite(value) || value <= 0.0)
+      r.out_of_range(key, as_text(value), "a positive number (metres)");
+  };
+  positive("mesh.length", m.length);
+  positive("mesh.height", m.height);
+  m.nx = required(r, r.integer(*t, "mesh", "nx"), "mesh.nx", "integer >= 1");
+  m.ny = required(r, r.integer(*t, "mesh", "ny"), "mesh.ny", "integer >= 1");
+  if (m.nx < 1) r.out_of_range("mesh.nx", std::to_string(m.nx), "an integer >= 1");
+  if (m.ny < 1) r.out_of_range("mesh.ny", std::to_string(m.ny), "an integer >= 1");
+}
+
+void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const toml::table* t = r.table(root, "", "material");
+  if (t == nullptr) r.missing("material", "a [material] section with E and nu");
+  r.check_keys(*t, "material", {"E", "nu", "plane_model"});
+  IsotropicMaterial& m = spec.elasticity.material;
+  m.E = required(r, r.number(*t, "material", "E"), "material.E", "Young's modulus > 0, MPa");
+  m.nu = required(r, r.number(*t, "material", "nu"), "material.nu", "Poisson's ratio in (-1, 0.5)");
+  spec.elasticity.plane_model =
+      r.enumeration(*t, "material", "plane_model", kPlaneModelNames, PlaneModel::PlaneStrain);
+  r.validated(m);
+}
+
+void read_fem(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  spec.elasticity.gauss_points = 2;
+  spec.boundary_gauss_points = 2;
+  const toml::table* t = r.table(root, "", "fem");
+  if (t == nullptr) return;
+  r.check_keys(*t, "fem", {"gauss_points", "boundary_gauss_points"});
+  const auto points = [&](std::string_view key, int& target) {
+    if (const auto v = r.integer(*t, "fem", key)) {
+      // quadrature.hpp has the Gauss-Legendre rules with 1 to 5 points.
+      if (*v < 1 || *v > 5) r.out_of_range(join("fem", key), std::to_string(*v), "1 to 5");
+      target = static_cast<int>(*v);
+    }
+  };
+  points("gauss_points", spec.elasticity.gauss_points);
+  points("boundary_gauss_points", spec.boundary_gauss_points);
+}
+
+void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const auto entries = r.array_of_tables(root, "clamp");
+  if (entries.empty())
+    r.missing("clamp", "a [[clamp]] section with the boundary where u = 0; at least one");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const toml::table& t = *entries[i];
+    const std::string path = element("clamp", i);
+    r.check_keys(t, path, {"boundary", "components"});
+    ClampSpec c;
+    c.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
+                          "name of a boundary part");
+    if (const toml::node* n = t.get("components")) {
+      const std::string key = join(path, "components");
+      const auto* a = n->as_array();
+      if (a == nullptr) r.wrong_type(key, "an array of component names (\"x\", \"y\")", *n);
+      if (a->empty()) r.fail("key '" + key + "' must list at least one of \"x\", \"y\"");
+      c.components = {false, false, false};
+      for (std::size_t k = 0; k < a->size(); ++k) {
+        const auto* s = a->get(k)->as_string();
+        if (s == nullptr) r.wrong_type(element(key, k), "\"x\" or \"y\"", *a->get(k));
+        if (s->get() == "x")
+          c.components[0] = true;
+        else if (s->get() == "y")
+          c.components[1] = true;
+        else
+          r.fail("key '" + element(key, k) + "' must be \"x\" or \"y\", got '" + s->get() + "'");
+      }
+    }
+    spec.clamps.push_back(std::move(c));
+  }
+}
+
+// "(0, -2/3*(3 - x))": how a field was given, for reports.
+std::string describe(const std::vector<std::string>& exprs) {
+  std::string out = "(";
+  for (std::size_t i = 0; i < exprs.size(); ++i) out += (i > 0 ? ", " : "") + exprs[i];
+  return out + ")";
+}
+
+// Expression errors name the key; the file is added here.
+template <class Make>
+auto with_file(const Reader& r, Make make) {
+  try {
+    return make();
+  } catch (const InputError& e) {
+    r.fail(e.what());
+  }
+}
+
+void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
+                    ExpressionTexts& texts) {
+  const auto entries = r.array_of_tables(root, "traction");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const toml::table& t = *entries[i];
+    const std::string path = element("traction", i);
+    r.check_keys(t, path, {"boundary", "p"});
+    TractionSpec tr;
+    tr.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
+                           "name of a boundary part");
+    const auto p = required(r, r.expressions(t, path, "p", 2), join(path, "p"),
+                            "2 expressions of x, y: the traction in MPa");
+    tr.p = with_file(r, [&] { return make_vector_field(p, join(path, "p")); });
+    tr.description = describe(p);
+    texts.tractions.push_back(p);
+    spec.tractions.push_back(std::move(tr));
+  }
+}
+
+void read_body_force(const Reader& r, const toml::table& root, ProblemSpec& spec,
+                     ExpressionTexts& texts) {
+  const toml::table* t = r.table(root, "", "body_force");
+  if (t == nullptr) return;
+  r.check_keys(*t, "body_force", {"f"});
+  const auto f = required(r, r.expressions(*t, "body_force", "f", 2), "body_force.f",
+                          "2 expressions of x, y: the force per volume in MN/m^3");
+  spec.body_force = with_file(r, [&] { return make_vector_field(f, "body_force.f"); });
+  spec.body_force_description = describe(f);
+  texts.body_force = f;
+}
+
+void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
+                  ExpressionTexts& texts) {
+  const toml::table* t = r.table(root, "", "contact");
+  if (t == nullptr) r.missing("contact", "a [contact] section with the contact boundary");
+  r.check_keys(*t, "contact", {"boundary", "gap"});
+  spec.contact.boundary = required(r, r.string(*t, "contact", "boundary"), "contact.boundary",
+                                   "name of a boundary part");
+  texts.gap = r.expression(*t, "contact", "gap").value_or("0");
+  spec.contact.gap = with_file(r, [&] { return make_scalar_field(texts.gap, "contact.gap"); });
+  spec.contact.description = texts.gap;
+}
+
+void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  ContactSolverOptions& o = spec.solver;
+  o = ContactSolverOptions{};
+  if (const toml::table* t = r.table(root, "", "solver")) {
+    r.check_keys(
+        *t, "solver",
+        {"method", "r", "uzawa_tolerance", "max_uzawa_iterations", "gnm_tolerance",
+         "max_gnm_iterations", "armijo_sigma", "max_armijo_halvings", "classical_step",
+         "max_classical_iterations", "max_newton_iterations", "schur_complement", "linear"});
+    o.method = r.enumeration(*t, "solver", "method", kContactMethodNames, o.method);
+    const auto real = [&](std::string_view key, double& target) {
+      if (const auto v = r.number(*t, "solver", key)) target = *v;
+    };
+    const auto whole = [&](std::string_view key, int& target) {
+      if (const auto v = r.small_integer(*t, "solver", key)) target = *v;
+    };
+    real("r", o.r);
+    real("uzawa_tolerance", o.uzawa_tolerance);
+    whole("max_uzawa_iterations", o.max_uzawa_iterations);
+    real("gnm_tolerance", o.gnm_tolerance);
+    whole("max_gnm_iterations", o.max_gnm_iterations);
+    real("armijo_sigma", o.armijo_sigma);
+    whole("max_armijo_halvings", o.max_armijo_halvings);
+    real("classical_step", o.classical_step);
+    whole("max_classical_iterations", o.max_classical_iterations);
+    whole("max_newton_iterations", o.max_newton_iterations);
+    if (const auto v = r.boolean(*t, "solver", "schur_complement")) o.schur_complement = *v;
+    if (const toml::table* lt = r.table(*t, "solver", "linear")) {
+      r.check_keys(*lt, "solver.linear", {"type", "cg_tolerance", "cg_max_iterations"});
+      LinearSolverOptions& l = o.linear;
+      l.type = r.enumeration(*lt, "solver.linear", "type", kLinearSolverTypeNames, l.type);
+      if (const auto v = r.number(*lt, "solver.linear", "cg_tolerance")) l.cg_tolerance = *v;
+      if (const auto v = r.small_integer(*lt, "solver.linear", "cg_max_iterations"))
+        l.cg_max_iterations = *v;
+    }
+  }
+  r.validated(o);
+}
+
+// A mesh that cannot fit is refused now rather than after minutes of assembly, or by the
+// out-of-memory killer.
+void check_memory(const Reader& r, const ProblemSpec& spec) {
+  const double nodes =
+      (static_cast<double>(spec.mesh.nx) + 1.0) * (static_cast<double>(spec.mesh.ny) + 1.0);
+  const double need = estimated_memory_bytes(nodes, spec.solver.linear.type);
+  const double have = physical_memory_bytes();
+  if (have > 0.0 && need > have)
+    r.fail(fmt::format(
+        "mesh {}x{} has {:.3g} nodes and needs about {:.3g} GB of memory with the {} solver, "
+        "more than this machine's {:.3g} GB: use a smaller mesh.nx, mesh.ny",
+        spec.mesh.nx, spec.mesh.ny, nodes, need / 1e9,
+        enum_to_string(kLinearSolverTypeNames, spec.solver.linear.type), have / 1e9));
+}
+
+std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts) {
+  TomlEmitter out;
+  out.value("name", spec.name);
+  out.table("mesh");
+  out.value("type", "rectangle");
+  out.value("origin", std::vector<double>{spec.mesh.x0, spec.mesh.y0});
+  out.value("length", spec.mesh.length);
+  out.value("height", spec.mesh.height);
+  out.value("nx", std::int64_t{spec.mesh.nx});
+  out.value("ny", std::int64_t{spec.mesh.ny});
+  out.table("material");
+  out.value("E", spec.elasticity.material.E);
+  out.value("nu", spec.elasticity.material.nu);
+  out.value("plane_model", enum_to_string(kPlaneModelNames, spec.elasticity.plane_model));
+  out.table("fem");
+  out.value("gauss_points", spec.elasticity.gauss_points);
+  out.value("boundary_gauss_points", spec.boundary_gauss_points);
+  for (const ClampSpec& c : spec.clamps) {
+    out.array_table("clamp");
+    out.value("boundary", c.boundary);
+    std::vector<std::string> components;
+    if (c.components[0]) components.emplace_back("x");
+    if (c.components[1]) components.emplace_back("y");
+    out.value("components", components);
+  }
+  for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
+    out.array_table("traction");
+    out.value("boundary", spec.tractions[i].boundary);
+    out.value("p", texts.tractions[i]);
+  }
+  if (!texts.body_force.empty()) {
+    out.table("body_force");
+    out.value("f", texts.body_force);
+  }
+  out.table("contact");
+  out.value("boundary", spec.contact.boundary);
+  out.value("gap", texts.gap);
+  const ContactSolverOptions& o = spec.solver;
+  out.table("solver");
+  out.value("method", enum_to_string(kContactMethodNames, o.method));
+  out.value("r", o.r);
+  out.value("uzawa_tolerance", o.uzawa_tolerance);
+  out.value("max_uzawa_iterations", o.max_uzawa_iterations);
+  out.value("gnm_tolerance", o.gnm_tolerance);
+  out.value("max_gnm_iterations", o.max_gnm_iterations);
+  out.value("armijo_sigma", o.armijo_sigma);
+  out.value("max_armijo_halvings", o.max_armijo_halvings);
+  out.value("classical_step", o.classical_step);
+  out.value("max_classical_iterations", o.max_classical_iterations);
+  out.value("max_newton_iterations", o.max_newton_iterations);
+  out.value("schur_complement", o.schur_complement);
+  out.table("solver.linear");
+  out.value("type", enum_to_string(kLinearSolverTypeNames, o.linear.type));
+  out.value("cg_tolerance", o.linear.cg_tolerance);
+  out.value("cg_max_iterations", o.linear.cg_max_iterations);
+  return out.text();
+}
+
+// --set overrides --------------------------------------------------------------------------
+
+std::string trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t");
+  return std::string(s.substr(first, last - first + 1));
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const auto pos = s.find(sep, start);
+    parts.push_back(s.substr(start, pos == std::string::npos ? std::string::npos : pos - start));
+    if (pos == std::string::npos) break;
+    start = pos + 1;
+  }
+  return parts;
+}
+
+std::optional<std::size_t> array_index(const std::string& s) {
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (s.empty() || s.size() > 9 || !std::all_of(s.begin(), s.end(), digit)) return std::nullopt;
+  return static_cast<std::size_t>(std::stoul(s));
+}
+
+// Applies "dotted.key=value" to the parsed file; returns the key as check_keys() names it
+// ("clamp[0].boundary").
+std::string apply_override(const Reader& r, toml::table& root, const std::string& text) {
+  const auto eq = text.find('=');
+  const std::string key = eq == std::string::npos ? std::string() : trim(text.substr(0, eq));
+  if (key.empty()) r.fail("--set '" + text + "': expected key=value, e.g. --set mesh.nx=480");
+  const std::string value = trim(text.substr(eq + 1));
+  const std::vector<std::string> segments = split(key, '.');
+  if (std::any_of(segments.begin(), segments.end(), [](const auto& s) { return trim(s).empty(); }))
+    r.fail("--set '" + text + "': empty part in key '" + key + "'");
+
+  toml::table* table = &root;
+  std::string path;
+  for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
+    const std::string& seg = segments[i];
+    path = join(path, seg);
+    toml::node* next = table->get(seg);
+    if (next == nullptr) next = &table->insert_or_assign(seg, toml::table{}).first->second;
+    if (auto* t = next->as_table()) {
+      table = t;
+    } else if (auto* a = next->as_array()) {
+      // clamp.0.boundary: the entry of an array of tables.
+      const auto index = i + 2 < segments.size() ? array_index(segments[i + 1]) : std::nullopt;
+      if (!index)
+        r.fail("--set '" + text + "': '" + path + "' is an array: name an entry, as " + path +
+               ".0." + segments.back());
+      if (*index >= a->size() || !a->get(*index)->is_table())
+        r.fail("--set '" + text + "': '" + path + "' has no table entry " + std::to_string(*index));
+      table = a->get(*index)->as_table();
+      path = element(path, *index);
+      ++i;
+    } else {
+      const std::string type = type_name(*next);
+      const char* article = type.find_first_of("aeiou") == 0 ? "an " : "a ";
+      r.fail("--set '" + text + "': '" + path + "' is " + article + type + ", not a table");
+    }
+  }
+
+  // The value is TOML if it parses as one ("480", "1e8", "[0, 1]", "\"x\""); a bare word such as
+  // semismooth_newton or an expression such as 0.5*x is not, and is taken as the string it reads.
+  std::optional<toml::table> parsed;
+  try {
+    parsed = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+  }
+  const std::string& last = segments.back();
+  if (parsed && parsed->size() == 1 && parsed->get("v") != nullptr) {
+    parsed->get("v")->visit([&](auto& node) { table->insert_or_assign(last, std::move(node)); });
+  } else {
+    table->insert_or_assign(last, value);
+  }
+  return join(path, last);
+}
+
+}  // namespace
+
+double estimated_memory_bytes(double num_nodes, LinearSolverType solver) {
+  switch (solver) {
+    case LinearSolverType::Cholmod:
+      return 4096.0 * num_nodes;
+    case LinearSolverType::ConjugateGradient:
+      return 2048.0 * num_nodes;
+    case LinearSolverType::Dense: {
+      const double n = 2.0 * num_nodes;  // 2D: two unknowns per node
+      return 2048.0 * num_nodes + 8.0 * n * n;
+    }
+  }
+  return 4096.0 * num_nodes;
+}
+
+double physical_memory_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return 0.0;
+  return static_cast<double>(pages) * static_cast<double>(page_size);
+}
+
+LoadedProblem parse_problem_string(const std::string& toml_text, const std::string& name_for_errors,
+                                   const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, name_for_errors);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", name_for_errors,
+                                 e.source().begin.line, e.source().begin.column,
+                                 one_line(std::string(e.description()))));
+  }
+
+  std::set<std::string> overridden;
+  {
+    const Reader pre(name_for_errors, {});
+    for (const std::string& o : overrides) overridden.insert(apply_override(pre, root, o));
+  }
+  const Reader r(name_for_errors, std::move(overridden));
+  r.check_keys(
+      root, "",
+      {"name", "mesh", "material", "fem", "clamp", "traction", "body_force", "contact", "solver"});
+
+  LoadedProblem out;
+  out.path = name_for_errors;
+  ProblemSpec& spec = out.spec;
+  spec.name =
+      r.string(root, "", "name").value_or(std::filesystem::path(name_for_errors).stem().string());
+  ExpressionTexts texts;
+  read_mesh(r, root, spec);
+  read_material(r, root, spec);
+  read_fem(r, root, spec);
+  read_clamps(r, root, spec);
+  read_tractions(r, root, spec, texts);
+  read_body_force(r, root, spec, texts);
+  read_contact(r, root, spec, texts);
+  read_solver(r, root, spec);
+  check_memory(r, spec);
+  out.effective_toml = effective_toml(spec, texts);
+  return out;
+}
+
+LoadedProblem read_problem_file(const std::string& path,
+                                const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("cannot read '" + path + "': is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read '" + path + "': " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError("cannot read '" + path + "': " + std::strerror(errno));
+  return parse_problem_string(text.str(), path, overrides);
+}
+
+}  // namespace signorini

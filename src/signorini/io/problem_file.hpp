@@ -1,0 +1,54 @@
+#pragma once
+// Problem files: a TOML description of a contact problem (docs/problem-format.md), read into a
+// ProblemSpec. Keys equal the option names of the library structs; every key is checked (unknown
+// keys, types, ranges) before any work starts, and every error is one line naming the file and
+// the key.
+
+#include <string>
+#include <vector>
+
+#include "signorini/problem/problem_spec.hpp"
+
+namespace signorini {
+
+struct LoadedProblem {
+  ProblemSpec spec;
+  /// The settings of the run, after --set overrides and with every default filled in, as TOML
+  /// text that reads back to the same spec: echoed at the start of a run so that a log says
+  /// exactly what was solved.
+  std::string effective_toml;
+  /// The file name, as given (used in messages).
+  std::string path;
+};
+
+/// Reads a problem file and applies overrides, each "dotted.key=value", e.g. "mesh.nx=480" or
+/// "solver.method=semismooth_newton". The value is read as a TOML value ("1e8", "[\"0\", \"1\"]",
+/// "true"); text that is not valid TOML is taken as a string. Missing tables on the way are
+/// created; "clamp.0.boundary" indexes an array of tables. Throws InputError: "cannot read
+/// '<path>': <reason>", "<path>:<line>:<column>: TOML syntax error: ...", or "<path>: ..." for
+/// unknown keys, missing keys, wrong types and values out of range.
+LoadedProblem read_problem_file(const std::string& path,
+                                const std::vector<std::string>& overrides = {});
+
+/// As read_problem_file, from the text of a file; `name_for_errors` stands for the file name in
+/// messages (and gives the default problem name, its stem).
+LoadedProblem parse_problem_string(const std::string& toml_text, const std::string& name_for_errors,
+                                   const std::vector<std::string>& overrides = {});
+
+/// The effective settings of a loaded problem as TOML text (same as loaded.effective_toml).
+inline const std::string& effective_settings(const LoadedProblem& loaded) {
+  return loaded.effective_toml;
+}
+
+/// Rough peak memory of a 2D solve with `num_nodes` mesh nodes: 4 KB per node with the sparse
+/// Cholesky factor, 2 KB with CG, and the full dense matrix (8 bytes per entry) on top with the
+/// dense solver. Measured peaks on the paper's meshes: 3.4 KB/node (240 x 80)
+/// and 3.8 KB/node (480 x 160) with CHOLMOD, the factor's fill growing slowly with the mesh;
+/// 2.2 KB/node with CG, mostly the assembly. Used only to refuse meshes that surely cannot fit,
+/// before any time is spent on them: a mesh below the limit may still be too large.
+double estimated_memory_bytes(double num_nodes, LinearSolverType solver);
+
+/// Physical memory of this machine in bytes, or 0 if unknown.
+double physical_memory_bytes();
+
+}  // namespace signorini

@@ -1,0 +1,23 @@
+#pragma once
+// The result files of a run, written together once the solve is over: <outdir>/summary.json and
+// <outdir>/contact.csv, each atomically (io/atomic_file.hpp), so that a failed run leaves the
+// results of an earlier one intact.
+
+#include <filesystem>
+
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/problem/model.hpp"
+#include "signorini/problem/problem_spec.hpp"
+
+namespace signorini {
+
+/// Creates `outdir` if needed (InputError "cannot create output folder '<dir>': <reason>") and
+/// writes summary.json and contact.csv into it (InputError "cannot write '<path>': <reason>").
+void write_results(const std::filesystem::path& outdir, const ContactResult& result,
+                   const Model& model, const ProblemSpec& spec);
+
+/// Creates a folder and its parents; throws InputError "cannot create output folder ...". Called
+/// by write_results; the tool also calls it before the solve, so that a bad -o fails fast.
+void create_output_folder(const std::filesystem::path& outdir);
+
+}  // namespace signorini

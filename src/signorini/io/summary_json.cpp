@@ -1,0 +1,120 @@
+#include "signorini/io/summary_json.hpp"
+
+#include <algorithm>
+
+namespace signorini {
+
+TimingTable run_timings(const Model& model, const SolveSummary& summary) {
+  TimingTable t = model.timings;
+  t.merge(summary.timings);
+  return t;
+}
+
+double run_total_seconds(const Model& model, const SolveSummary& summary) {
+  // solve_contact() times the whole solve as "contact solve"; without it (a summary from a
+  // method called directly) the solver's own phases are all there is.
+  const bool has_solve =
+      std::any_of(summary.timings.phases().begin(), summary.timings.phases().end(),
+                  [](const auto& p) { return p.first == "contact solve"; });
+  return model.timings.total() +
+         (has_solve ? summary.timings.seconds("contact solve") : summary.timings.total());
+}
+
+nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
+                               const ProblemSpec& spec) {
+  using nlohmann::json;
+  json j;
+  j["signorini_version"] = SIGNORINI_VERSION;
+  j["converged"] = summary.converged();
+  j["termination"] = std::string(enum_to_string(kTerminationNames, summary.termination));
+  j["message"] = summary.message;
+  j["method"] = std::string(enum_to_string(kContactMethodNames, summary.method));
+  j["M"] = summary.lagrangian;
+  j["energy"] = summary.energy;
+  j["uzawa_iterations"] = summary.outer_iterations;
+
+  json gnm = json::array(), armijo = json::array(), active = json::array(), dual = json::array(),
+       linear = json::array(), factorizations = json::array();
+  for (const OuterStepRecord& s : summary.steps) {
+    gnm.push_back(s.inner_iterations);
+    armijo.push_back(s.armijo_reductions);
+    active.push_back(s.active_set_size);
+    dual.push_back(s.dual_change);
+    linear.push_back(s.linear_iterations);
+    factorizations.push_back(s.factorizations);
+  }
+  j["gnm_iterations"] = gnm;
+  j["armijo_reductions"] = armijo;
+  j["active_set_sizes"] = active;
+  j["dual_changes"] = dual;
+  j["linear_iterations"] = linear;
+  j["factorizations"] = factorizations;
+  if (summary.method == ContactMethod::ClassicalUzawa) j["classical_step"] = summary.classical_step;
+
+  j["n_dofs"] = model.dofs.num_dofs();
+  j["n_free_dofs"] = model.dofs.num_free();
+  j["n_contact_nodes"] = model.problem.contact.size();
+  j["n_active"] = summary.num_active;
+  j["contact_force"] = summary.contact_force;
+  // + 0.0 turns a negative zero (from -(0 * l)) into 0: "-0.0" in a file looks like a sign error.
+  j["contact_force_vector"] = {summary.contact_force_vector(0) + 0.0,
+                               summary.contact_force_vector(1) + 0.0};
+  j["kkt"] = {{"equilibrium", summary.kkt.equilibrium},
+              {"penetration", summary.kkt.penetration},
+              {"sign", summary.kkt.sign},
+              {"complementarity", summary.kkt.complementarity}};
+
+  json timings = json::object();
+  const TimingTable phases = run_timings(model, summary);  // named: phases() refers into it
+  for (const auto& [phase, seconds] : phases.phases()) timings[phase] = seconds;
+  timings["total"] = run_total_seconds(model, summary);
+  j["timings"] = timings;
+
+  const ContactSolverOptions& o = spec.solver;
+  json problem;
+  problem["name"] = spec.name;
+  problem["mesh"] = {{"type", "rectangle"},        {"origin", {spec.mesh.x0, spec.mesh.y0}},
+                     {"length", spec.mesh.length}, {"height", spec.mesh.height},
+                     {"nx", spec.mesh.nx},         {"ny", spec.mesh.ny}};
+  problem["material"] = {
+      {"E", spec.elasticity.material.E},
+      {"nu", spec.elasticity.material.nu},
+      {"plane_model", std::string(enum_to_string(kPlaneModelNames, spec.elasticity.plane_model))}};
+  problem["fem"] = {{"gauss_points", spec.elasticity.gauss_points},
+                    {"boundary_gauss_points", spec.boundary_gauss_points}};
+  json clamps = json::array();
+  for (const ClampSpec& c : spec.clamps) {
+    json components = json::array();
+    if (c.components[0]) components.push_back("x");
+    if (c.components[1]) components.push_back("y");
+    clamps.push_back({{"boundary", c.boundary}, {"components", components}});
+  }
+  problem["clamp"] = clamps;
+  json tractions = json::array();
+  for (const TractionSpec& t : spec.tractions)
+    tractions.push_back({{"boundary", t.boundary}, {"p", t.description}});
+  problem["traction"] = tractions;
+  if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
+  problem["contact"] = {{"boundary", spec.contact.boundary}, {"gap", spec.contact.description}};
+  problem["solver"] = {
+      {"method", std::string(enum_to_string(kContactMethodNames, o.method))},
+      {"r", o.r},
+      {"uzawa_tolerance", o.uzawa_tolerance},
+      {"max_uzawa_iterations", o.max_uzawa_iterations},
+      {"gnm_tolerance", o.gnm_tolerance},
+      {"max_gnm_iterations", o.max_gnm_iterations},
+      {"armijo_sigma", o.armijo_sigma},
+      {"max_armijo_halvings", o.max_armijo_halvings},
+      {"classical_step", o.classical_step},
+      {"max_classical_iterations", o.max_classical_iterations},
+      {"max_newton_iterations", o.max_newton_iterations},
+      {"schur_complement", o.schur_complement},
+      {"linear",
+       {{"type", std::string(enum_to_string(kLinearSolverTypeNames, o.linear.type))},
+        {"cg_tolerance", o.linear.cg_tolerance},
+        {"cg_max_iterations", o.linear.cg_max_iterations}}}};
+  j["problem"] = problem;
+  return j;
+}
+
+}  // namespace signorini

@@ -1,0 +1,245 @@
+// The command-line tool end to end: run `signorini` on the examples in a temporary folder and
+// check exit statuses, messages and result files.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/expect_contains.hpp"
+#include "io/temporary_folder.hpp"
+
+namespace signorini {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ToolRun {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quoted(const std::string& s) {
+  return "'" + s + "'";
+}
+
+// Runs the tool with `arguments` (already quoted where needed), capturing both streams.
+ToolRun run_tool(const testing::TemporaryFolder& dir, const std::string& arguments) {
+  const fs::path out = dir / "stdout.txt";
+  const fs::path err = dir / "stderr.txt";
+  const std::string command = quoted(SIGNORINI_APP_PATH) + " " + arguments + " > " +
+                              quoted(out.string()) + " 2> " + quoted(err.string()) + " < /dev/null";
+  const int raw = std::system(command.c_str());
+  ToolRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = read(out);
+  r.err = read(err);
+  return r;
+}
+
+std::size_t count_lines(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+const std::string kSmall = quoted(SIGNORINI_EXAMPLES_DIR "/paper_small.toml");
+
+TEST(SignoriniApp, Version) {
+  const testing::TemporaryFolder dir;
+  const ToolRun r = run_tool(dir, "--version");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind(std::string("signorini ") + SIGNORINI_VERSION + "\n", 0), 0U) << r.out;
+  EXPECT_CONTAINS(r.out, "CHOLMOD: ");
+  EXPECT_CONTAINS(r.out, "Eigen: ");
+  EXPECT_CONTAINS(r.out, "OpenMP: ");
+  EXPECT_CONTAINS(r.out, "CUDA: not built");
+  EXPECT_CONTAINS(r.out, "PETSc: not built");
+}
+
+TEST(SignoriniApp, SolvesTheSmallPaperExample) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  const ToolRun r = run_tool(dir, "solve " + kSmall + " -o " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_EQ(r.err, "");
+  // The effective settings, the iteration log, the report and the timing table.
+  EXPECT_CONTAINS(r.out, "[solver]\nmethod = \"uzawa_gnm\"\nr = 100000000.0\n");
+  EXPECT_CONTAINS(r.out, "  uzawa 1  gnm 1  active ");
+  EXPECT_CONTAINS(r.out, "uzawa 1: ||dl||/||l|| = ");
+  EXPECT_CONTAINS(r.out, "converged");
+  EXPECT_CONTAINS(r.out, "contact solve");
+
+  const nlohmann::json j = nlohmann::json::parse(read(out / "summary.json"));
+  for (const char* key : {"converged",
+                          "termination",
+                          "message",
+                          "method",
+                          "M",
+                          "energy",
+                          "uzawa_iterations",
+                          "gnm_iterations",
+                          "armijo_reductions",
+                          "active_set_sizes",
+                          "dual_changes",
+                          "n_dofs",
+                          "n_free_dofs",
+                          "n_contact_nodes",
+                          "n_active",
+                          "contact_force",
+                          "contact_force_vector",
+                          "kkt",
+                          "timings",
+                          "problem",
+                          "signorini_version"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["converged"], true);
+  EXPECT_EQ(j["n_dofs"], 2562);
+  EXPECT_EQ(j["n_contact_nodes"], 61);
+  // Table 1 of the paper, 60 x 20: M(u*, l*) = -6.700472e-05 (7 digits printed).
+  EXPECT_NEAR(j["M"].get<double>(), -6.700472e-05, 1e-11);
+
+  const std::string csv = read(out / "contact.csv");
+  EXPECT_EQ(count_lines(csv), 62U);  // header + 61 contact nodes
+  EXPECT_EQ(csv.rfind("x,y,u_n,u_t,pressure,gap\n", 0), 0U);
+}
+
+TEST(SignoriniApp, PaperExampleReproducesTheLastRowOfTable1) {
+  // examples/paper.toml as it is: 480 x 160, the paper's largest mesh (Table 1: n_p = 154882,
+  // GNM 10 at the first Uzawa step, 11 Uzawa steps, M(u*, l*) = -6.715744e-05 to 7 digits).
+  const testing::TemporaryFolder dir;
+  const ToolRun r = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml") +
+                                      " --quiet -o " + quoted((dir / "out").string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(read(dir / "out" / "summary.json"));
+  EXPECT_TRUE(j["converged"].get<bool>());
+  EXPECT_EQ(j["n_dofs"].get<long>(), 154882);
+  EXPECT_EQ(j["n_contact_nodes"].get<long>(), 481);
+  EXPECT_EQ(j["uzawa_iterations"].get<int>(), 11);
+  EXPECT_EQ(j["gnm_iterations"][0].get<int>(), 10);
+  EXPECT_NEAR(j["M"].get<double>(), -6.715744e-05, 2e-7 * 6.715744e-05);
+  EXPECT_LT(j["kkt"]["equilibrium"].get<double>(), 1e-8);
+}
+
+TEST(SignoriniApp, QuietPrintsNothingAndOverridesApply) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  const ToolRun r =
+      run_tool(dir, "solve " + kSmall + " --set mesh.nx=30 --set mesh.ny=10 " +
+                        "--set solver.method=semismooth_newton -q -o " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  const nlohmann::json j = nlohmann::json::parse(read(out / "summary.json"));
+  EXPECT_EQ(j["method"], "semismooth_newton");
+  EXPECT_EQ(j["problem"]["mesh"]["nx"], 30);
+  EXPECT_EQ(count_lines(read(out / "contact.csv")), 32U);
+}
+
+TEST(SignoriniApp, BadFileGivesStatus2AndOneLine) {
+  const testing::TemporaryFolder dir;
+  const fs::path bad = dir / "bad.toml";
+  std::ofstream(bad) << read(SIGNORINI_EXAMPLES_DIR "/paper_small.toml") << "\n[solver.linear]\n"
+                     << "typ = \"cg\"\n";
+  const fs::path out = dir / "results";
+  const ToolRun r = run_tool(dir, "solve " + quoted(bad.string()) + " -o " + quoted(out.string()));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "signorini: error: " + bad.string() +
+                       ": unknown key 'solver.linear.typ' (did you mean 'solver.linear.type'?)\n");
+  EXPECT_FALSE(fs::exists(out));  // nothing is written for bad input
+}
+
+TEST(SignoriniApp, MissingFileUnknownBoundaryAndBadOptions) {
+  const testing::TemporaryFolder dir;
+  const std::string out = quoted((dir / "results").string());
+  ToolRun r = run_tool(dir, "solve /no/such.toml -o " + out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "signorini: error: cannot read '/no/such.toml': No such file or directory\n");
+
+  r = run_tool(dir, "solve " + kSmall + " --set contact.boundary=floor -o " + out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+  EXPECT_CONTAINS(r.err, "signorini: error: ");
+  EXPECT_CONTAINS(r.err, "floor");
+
+  r = run_tool(dir, "solve " + kSmall);  // no -o
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+
+  r = run_tool(dir, "frobnicate");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+}
+
+TEST(SignoriniApp, OutputFolderThatCannotBeCreated) {
+  const testing::TemporaryFolder dir;
+  std::ofstream(dir / "file") << "x\n";
+  const ToolRun r = run_tool(dir, "solve " + kSmall + " -q -o " + quoted((dir / "file").string()));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_CONTAINS(r.err, "signorini: error: cannot create output folder '");
+  EXPECT_EQ(count_lines(r.err), 1U);
+}
+
+TEST(SignoriniApp, NotConvergedGivesStatus3AndStillWrites) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  const ToolRun r =
+      run_tool(dir, "solve " + kSmall + " -q --set solver.max_uzawa_iterations=2 -o " +
+                        quoted(out.string()));
+  EXPECT_EQ(r.status, 3);
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+  EXPECT_CONTAINS(r.err, "not converged (iteration_limit)");
+  const nlohmann::json j = nlohmann::json::parse(read(out / "summary.json"));
+  EXPECT_EQ(j["converged"], false);
+  EXPECT_EQ(j["termination"], "iteration_limit");
+  EXPECT_EQ(count_lines(read(out / "contact.csv")), 62U);
+}
+
+TEST(SignoriniApp, NumericalFailureGivesStatus4) {
+  // Clamped in x only: the body can slide along y, the stiffness is singular.
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  const ToolRun r = run_tool(
+      dir, "solve " + kSmall + " -q --set 'clamp.0.components=[\"x\"]' -o " + quoted(out.string()));
+  EXPECT_EQ(r.status, 4);
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+  EXPECT_CONTAINS(r.err, "signorini: error: numerical failure: ");
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+TEST(SignoriniApp, FailedRunKeepsEarlierResults) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  ASSERT_EQ(run_tool(dir, "solve " + kSmall + " -q -o " + quoted(out.string())).status, 0);
+  const std::string before = read(out / "summary.json");
+  const ToolRun r =
+      run_tool(dir, "solve " + kSmall + " -q --set material.nu=0.5 -o " + quoted(out.string()));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(read(out / "summary.json"), before);
+}
+
+TEST(SignoriniApp, Check) {
+  const testing::TemporaryFolder dir;
+  ToolRun r = run_tool(dir, "check " + kSmall);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "ok: 2562 dofs, 61 contact nodes\n");
+  r = run_tool(dir, "check " + kSmall + " --set mesh.nx=0");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "signorini: error: " SIGNORINI_EXAMPLES_DIR
+                   "/paper_small.toml: key 'mesh.nx' = 0: expected an integer >= 1\n");
+  r = run_tool(dir, "check " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "ok: 154882 dofs, 481 contact nodes\n");  // the paper's n_p and n_d, 480 x 160
+}
+
+}  // namespace
+}  // namespace signorini

@@ -1,0 +1,418 @@
+// Problem files: the paper's example reads into the paper's spec, defaults are filled in,
+// overrides work, and every class of mistake gives a one-line message naming file and key.
+
+#include "signorini/io/problem_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "io/expect_contains.hpp"
+#include "io/temporary_folder.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini {
+namespace {
+
+// The paper's benchmark on a 6 x 2 mesh, every section present.
+const std::string kBase = R"toml(
+name = "base"
+[mesh]
+type = "rectangle"
+origin = [0.0, 0.0]
+length = 3.0
+height = 1.0
+nx = 6
+ny = 2
+[material]
+E = 21.19e4
+nu = 0.277
+plane_model = "plane_strain"
+[fem]
+gauss_points = 2
+boundary_gauss_points = 2
+[[clamp]]
+boundary = "left"
+components = ["x", "y"]
+[[traction]]
+boundary = "right"
+p = ["0", "1"]
+[[traction]]
+boundary = "top"
+p = ["0", "-2/3*(3 - x)"]
+[contact]
+boundary = "bottom"
+gap = "0"
+[solver]
+method = "uzawa_gnm"
+r = 1e8
+[solver.linear]
+type = "cholmod"
+)toml";
+
+// kBase with one line replaced (the line must be there, so that a test cannot go stale).
+std::string with(const std::string& line, const std::string& replacement) {
+  std::string text = kBase;
+  const auto pos = text.find("\n" + line + "\n");
+  if (pos == std::string::npos) throw std::logic_error("kBase has no line '" + line + "'");
+  text.replace(pos + 1, line.size(), replacement);
+  return text;
+}
+std::string without(const std::string& line) {
+  return with(line, "");
+}
+
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_problem_string(text, "test.toml", overrides);
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "not one line: " << m;
+    return m;
+  }
+  return "no error";
+}
+
+TEST(ProblemFile, BaseParses) {
+  const LoadedProblem p = parse_problem_string(kBase, "base.toml");
+  EXPECT_EQ(p.path, "base.toml");
+  EXPECT_EQ(p.spec.name, "base");
+  EXPECT_EQ(p.spec.mesh.nx, 6);
+  EXPECT_EQ(p.spec.tractions.size(), 2U);
+}
+
+TEST(ProblemFile, PaperExampleIsThePapersBenchmark) {
+  const LoadedProblem p = read_problem_file(SIGNORINI_EXAMPLES_DIR "/paper.toml");
+  const ProblemSpec expected = paper_benchmark(480, 160);
+  const ProblemSpec& s = p.spec;
+  EXPECT_EQ(s.name, "paper");
+  EXPECT_EQ(s.mesh.x0, expected.mesh.x0);
+  EXPECT_EQ(s.mesh.y0, expected.mesh.y0);
+  EXPECT_EQ(s.mesh.length, expected.mesh.length);
+  EXPECT_EQ(s.mesh.height, expected.mesh.height);
+  EXPECT_EQ(s.mesh.nx, 480);
+  EXPECT_EQ(s.mesh.ny, 160);
+  EXPECT_EQ(s.elasticity.material.E, 21.19e4);
+  EXPECT_EQ(s.elasticity.material.nu, 0.277);
+  EXPECT_EQ(s.elasticity.plane_model, PlaneModel::PlaneStrain);
+  EXPECT_EQ(s.elasticity.gauss_points, 2);
+  EXPECT_EQ(s.boundary_gauss_points, 2);
+  ASSERT_EQ(s.clamps.size(), 1U);
+  EXPECT_EQ(s.clamps[0].boundary, "left");
+  EXPECT_TRUE(s.clamps[0].components[0]);
+  EXPECT_TRUE(s.clamps[0].components[1]);
+  ASSERT_EQ(s.tractions.size(), expected.tractions.size());
+  for (std::size_t i = 0; i < s.tractions.size(); ++i) {
+    EXPECT_EQ(s.tractions[i].boundary, expected.tractions[i].boundary);
+    for (const double x : {0.0, 0.7, 1.5, 3.0}) {
+      const Point at(x, 1.0, 0.0);
+      const Eigen::Vector3d got = s.tractions[i].p(at);
+      const Eigen::Vector3d want = expected.tractions[i].p(at);
+      EXPECT_NEAR(got(0), want(0), 1e-15);
+      EXPECT_NEAR(got(1), want(1), 1e-15) << "traction " << i << " at x = " << x;
+    }
+  }
+  EXPECT_FALSE(static_cast<bool>(s.body_force));
+  EXPECT_EQ(s.contact.boundary, "bottom");
+  EXPECT_EQ(s.contact.gap(Point(1.0, 0.0, 0.0)), 0.0);
+  EXPECT_EQ(s.solver.method, ContactMethod::UzawaGnm);
+  EXPECT_EQ(s.solver.r, 1e8);
+  EXPECT_EQ(s.solver.uzawa_tolerance, 1e-8);
+  EXPECT_EQ(s.solver.gnm_tolerance, 1e-10);
+  EXPECT_EQ(s.solver.armijo_sigma, 1e-4);
+  EXPECT_EQ(s.solver.linear.type, LinearSolverType::Cholmod);
+  EXPECT_TRUE(s.solver.schur_complement);
+}
+
+TEST(ProblemFile, SmallPaperExampleBuildsTheTable1Model) {
+  const LoadedProblem p = read_problem_file(SIGNORINI_EXAMPLES_DIR "/paper_small.toml");
+  EXPECT_EQ(p.spec.name, "paper_small");
+  const Model m = build_model(p.spec);
+  EXPECT_EQ(m.dofs.num_dofs(), 2562);  // the paper's n_p for 60 x 20
+  EXPECT_EQ(m.problem.contact.size(), 61);
+}
+
+TEST(ProblemFile, DefaultsAreFilledIn) {
+  const std::string minimal = R"toml(
+[mesh]
+length = 2
+height = 1
+nx = 4
+ny = 2
+[material]
+E = 1000
+nu = 0.3
+[[clamp]]
+boundary = "left"
+[contact]
+boundary = "bottom"
+)toml";
+  const LoadedProblem p = parse_problem_string(minimal, "some/folder/minimal.toml");
+  const ProblemSpec& s = p.spec;
+  EXPECT_EQ(s.name, "minimal");  // the file stem
+  EXPECT_EQ(s.mesh.x0, 0.0);
+  EXPECT_EQ(s.mesh.y0, 0.0);
+  EXPECT_EQ(s.mesh.length, 2.0);  // an integer where a float is expected
+  EXPECT_EQ(s.elasticity.material.E, 1000.0);
+  EXPECT_EQ(s.elasticity.plane_model, PlaneModel::PlaneStrain);
+  EXPECT_EQ(s.elasticity.gauss_points, 2);
+  EXPECT_EQ(s.boundary_gauss_points, 2);
+  EXPECT_TRUE(s.clamps[0].components[0] && s.clamps[0].components[1]);
+  EXPECT_TRUE(s.tractions.empty());
+  EXPECT_EQ(s.contact.gap(Point(1.0, 0.0, 0.0)), 0.0);
+  const ContactSolverOptions defaults;
+  EXPECT_EQ(s.solver.method, defaults.method);
+  EXPECT_EQ(s.solver.r, defaults.r);
+  EXPECT_EQ(s.solver.max_uzawa_iterations, defaults.max_uzawa_iterations);
+  EXPECT_EQ(s.solver.linear.type, defaults.linear.type);
+  EXPECT_EQ(s.solver.linear.cg_tolerance, defaults.linear.cg_tolerance);
+  // The effective settings spell out the defaults.
+  EXPECT_CONTAINS(p.effective_toml, "plane_model = \"plane_strain\"");
+  EXPECT_CONTAINS(p.effective_toml, "max_uzawa_iterations = 1000");
+  EXPECT_CONTAINS(p.effective_toml, "components = [\"x\", \"y\"]");
+  EXPECT_CONTAINS(p.effective_toml, "gap = \"0\"");
+}
+
+TEST(ProblemFile, EveryOptionIsRead) {
+  std::string text = kBase;
+  text.replace(text.find("[solver]\n"), 9, R"toml([solver]
+uzawa_tolerance = 1e-9
+max_uzawa_iterations = 50
+gnm_tolerance = 1e-11
+max_gnm_iterations = 20
+armijo_sigma = 1e-3
+max_armijo_halvings = 30
+classical_step = 0.5
+max_classical_iterations = 1000
+max_newton_iterations = 40
+schur_complement = false
+)toml");
+  text.replace(text.find("type = \"cholmod\""), 16,
+               "type = \"cg\"\ncg_tolerance = 1e-12\ncg_max_iterations = 500");
+  text += "[body_force]\nf = [0, \"-9.81e-3*y\"]\n";
+  const ContactSolverOptions o = parse_problem_string(text, "t.toml").spec.solver;
+  EXPECT_EQ(o.uzawa_tolerance, 1e-9);
+  EXPECT_EQ(o.max_uzawa_iterations, 50);
+  EXPECT_EQ(o.gnm_tolerance, 1e-11);
+  EXPECT_EQ(o.max_gnm_iterations, 20);
+  EXPECT_EQ(o.armijo_sigma, 1e-3);
+  EXPECT_EQ(o.max_armijo_halvings, 30);
+  EXPECT_EQ(o.classical_step, 0.5);
+  EXPECT_EQ(o.max_classical_iterations, 1000);
+  EXPECT_EQ(o.max_newton_iterations, 40);
+  EXPECT_FALSE(o.schur_complement);
+  EXPECT_EQ(o.linear.type, LinearSolverType::ConjugateGradient);
+  EXPECT_EQ(o.linear.cg_tolerance, 1e-12);
+  EXPECT_EQ(o.linear.cg_max_iterations, 500);
+  const ProblemSpec s = parse_problem_string(text, "t.toml").spec;
+  ASSERT_TRUE(static_cast<bool>(s.body_force));
+  EXPECT_DOUBLE_EQ(s.body_force(Point(0.0, 2.0, 0.0))(1), -2 * 9.81e-3);
+}
+
+TEST(ProblemFile, ClampComponentsAndOrigin) {
+  std::string text = with("components = [\"x\", \"y\"]", "components = [\"y\"]");
+  text = text.replace(text.find("origin = [0.0, 0.0]"), 19, "origin = [1, -0.5]");
+  const ProblemSpec s = parse_problem_string(text, "t.toml").spec;
+  EXPECT_FALSE(s.clamps[0].components[0]);
+  EXPECT_TRUE(s.clamps[0].components[1]);
+  EXPECT_EQ(s.mesh.x0, 1.0);
+  EXPECT_EQ(s.mesh.y0, -0.5);
+}
+
+TEST(ProblemFile, EffectiveSettingsReadBackToTheSameSettings) {
+  const LoadedProblem p = read_problem_file(SIGNORINI_EXAMPLES_DIR "/paper.toml",
+                                            {"mesh.nx=60", "mesh.ny=20", "solver.r=1e6"});
+  const LoadedProblem again = parse_problem_string(p.effective_toml, "effective.toml");
+  EXPECT_EQ(again.effective_toml, p.effective_toml);
+  EXPECT_EQ(again.spec.mesh.nx, 60);
+  EXPECT_EQ(again.spec.solver.r, 1e6);
+  EXPECT_EQ(again.spec.name, "paper");
+  EXPECT_EQ(effective_settings(p), p.effective_toml);
+}
+
+// Errors, one class at a time --------------------------------------------------------------
+
+TEST(ProblemFileErrors, SyntaxErrorGivesLineAndColumn) {
+  const std::string m = error_of(with("nx = 6", "nx = = 6"));
+  EXPECT_EQ(m.rfind("test.toml:8:6: TOML syntax error: ", 0), 0U) << m;  // line 1 is empty
+  EXPECT_CONTAINS(m, ": TOML syntax error: ");
+  EXPECT_EQ(error_of("[mesh]\nlength = 3.0\nlength = 4.0\n").rfind("test.toml:3:", 0), 0U);
+}
+
+TEST(ProblemFileErrors, UnknownKeySuggestsTheKnownOne) {
+  EXPECT_EQ(error_of(with("r = 1e8", "uzawa_tol = 1e-8")),
+            "test.toml: unknown key 'solver.uzawa_tol' (did you mean 'solver.uzawa_tolerance'?)");
+  EXPECT_EQ(error_of(with("nx = 6", "nxx = 6")),
+            "test.toml: unknown key 'mesh.nxx' (did you mean 'mesh.nx'?)");
+  EXPECT_EQ(error_of(with("[solver]", "[solvers]")),
+            "test.toml: unknown key 'solvers' (did you mean 'solver'?)");
+  EXPECT_EQ(error_of(with("components = [\"x\", \"y\"]", "component = [\"x\"]")),
+            "test.toml: unknown key 'clamp[0].component' (did you mean 'clamp[0].components'?)");
+  EXPECT_EQ(error_of(with("type = \"cholmod\"", "typ = \"cholmod\"")),
+            "test.toml: unknown key 'solver.linear.typ' (did you mean 'solver.linear.type'?)");
+  EXPECT_EQ(error_of(with("r = 1e8", "colour = 1")), "test.toml: unknown key 'solver.colour'");
+}
+
+TEST(ProblemFileErrors, MissingRequiredKey) {
+  EXPECT_EQ(error_of(without("nx = 6")),
+            "test.toml: missing required key 'mesh.nx' (integer >= 1)");
+  EXPECT_CONTAINS(error_of(without("E = 21.19e4")), "test.toml: missing required key 'material.E'");
+  EXPECT_CONTAINS(error_of(with("[contact]", "[other]")), "unknown key 'other'");
+  std::string no_contact = kBase;
+  no_contact.erase(no_contact.find("[contact]"),
+                   no_contact.find("[solver]") - no_contact.find("[contact]"));
+  EXPECT_CONTAINS(error_of(no_contact), "test.toml: missing required key 'contact'");
+  std::string no_clamp = kBase;
+  no_clamp.erase(no_clamp.find("[[clamp]]"),
+                 no_clamp.find("[[traction]]") - no_clamp.find("[[clamp]]"));
+  EXPECT_CONTAINS(error_of(no_clamp), "test.toml: missing required key 'clamp'");
+  EXPECT_CONTAINS(error_of(without("boundary = \"bottom\"")),
+                  "missing required key 'contact.boundary'");
+}
+
+TEST(ProblemFileErrors, WrongType) {
+  EXPECT_EQ(error_of(with("nx = 6", "nx = \"6\"")),
+            "test.toml: key 'mesh.nx' must be an integer, got string");
+  EXPECT_EQ(error_of(with("nx = 6", "nx = 6.0")),
+            "test.toml: key 'mesh.nx' must be an integer, got float");
+  EXPECT_EQ(error_of(with("E = 21.19e4", "E = \"21.19e4\"")),
+            "test.toml: key 'material.E' must be a number, got string");
+  EXPECT_EQ(error_of(with("r = 1e8", "r = true")),
+            "test.toml: key 'solver.r' must be a number, got boolean");
+  EXPECT_EQ(error_of(with("r = 1e8", "schur_complement = 1")),
+            "test.toml: key 'solver.schur_complement' must be true or false, got integer");
+  EXPECT_CONTAINS(error_of(with("[[clamp]]", "[clamp]")), "key 'clamp' must be an array of tables");
+  EXPECT_CONTAINS(error_of(with("p = [\"0\", \"1\"]", "p = \"1\"")),
+                  "key 'traction[0].p' must be an array of 2 expressions");
+  EXPECT_CONTAINS(error_of(with("p = [\"0\", \"1\"]", "p = [\"0\", \"1\", \"2\"]")),
+                  "key 'traction[0].p' must have 2 entries");
+  EXPECT_CONTAINS(error_of(with("p = [\"0\", \"1\"]", "p = [\"0\", true]")),
+                  "key 'traction[0].p[1]' must be an expression");
+}
+
+TEST(ProblemFileErrors, BadEnumListsTheChoices) {
+  EXPECT_EQ(error_of(with("method = \"uzawa_gnm\"", "method = \"uzawa\"")),
+            "test.toml: key 'solver.method' must be \"uzawa_gnm\", \"classical_uzawa\" or "
+            "\"semismooth_newton\", got 'uzawa' (did you mean 'uzawa_gnm'?)");
+  EXPECT_CONTAINS(
+      error_of(with("plane_model = \"plane_strain\"", "plane_model = \"plane-strain\"")),
+      "(did you mean 'plane_strain'?)");
+  EXPECT_EQ(error_of(with("type = \"cholmod\"", "type = \"lu\"")),
+            "test.toml: key 'solver.linear.type' must be " + enum_choices(kLinearSolverTypeNames) +
+                ", got 'lu'");
+  EXPECT_CONTAINS(error_of(with("type = \"rectangle\"", "type = \"disk\"")),
+                  "key 'mesh.type' must be \"rectangle\"");
+  EXPECT_CONTAINS(error_of(with("components = [\"x\", \"y\"]", "components = [\"z\"]")),
+                  "key 'clamp[0].components[0]' must be \"x\" or \"y\", got 'z'");
+}
+
+TEST(ProblemFileErrors, OutOfRangeValues) {
+  const std::string e_zero = error_of(with("E = 21.19e4", "E = 0"));
+  EXPECT_EQ(e_zero.rfind("test.toml: material.E = ", 0), 0U) << e_zero;
+  EXPECT_CONTAINS(e_zero, "positive");
+  EXPECT_CONTAINS(error_of(with("E = 21.19e4", "E = -5.0")), "test.toml: material.E = ");
+  const std::string nu = error_of(with("nu = 0.277", "nu = 0.5"));
+  EXPECT_EQ(nu.rfind("test.toml: material.nu = ", 0), 0U) << nu;
+  EXPECT_CONTAINS(nu, "(-1, 0.5)");
+  EXPECT_EQ(error_of(with("nx = 6", "nx = 0")),
+            "test.toml: key 'mesh.nx' = 0: expected an integer >= 1");
+  EXPECT_CONTAINS(error_of(with("ny = 2", "ny = -3")), "key 'mesh.ny' = -3");
+  EXPECT_CONTAINS(error_of(with("length = 3.0", "length = 0")), "key 'mesh.length' = 0.0");
+  EXPECT_CONTAINS(error_of(with("gauss_points = 2", "gauss_points = 9")),
+                  "key 'fem.gauss_points' = 9: expected 1 to 5");
+  EXPECT_CONTAINS(error_of(with("r = 1e8", "r = -1")), "test.toml: solver.r = ");
+  EXPECT_CONTAINS(error_of(with("r = 1e8", "max_uzawa_iterations = 0")),
+                  "test.toml: solver.max_uzawa_iterations");
+  EXPECT_CONTAINS(error_of(with("r = 1e8", "max_uzawa_iterations = 10000000000")),
+                  "key 'solver.max_uzawa_iterations' = 10000000000");
+}
+
+TEST(ProblemFileErrors, MeshTooLargeForThisMachine) {
+  const std::string m = error_of(with("nx = 6", "nx = 10000000000"), {"mesh.ny=10000000"});
+  EXPECT_CONTAINS(m, "test.toml: mesh 10000000000x10000000 has ");
+  EXPECT_CONTAINS(m, "GB of memory");
+  EXPECT_CONTAINS(m, "use a smaller mesh");
+}
+
+TEST(ProblemFileErrors, ExpressionErrorsNameFileAndKey) {
+  EXPECT_CONTAINS(error_of(with("p = [\"0\", \"-2/3*(3 - x)\"]", "p = [\"0\", \"-2/3*(3 - t)\"]")),
+                  "test.toml: traction[1].p[1]: cannot parse expression '-2/3*(3 - t)'");
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "gap = \"0.1*(x\"")),
+                  "test.toml: contact.gap: cannot parse expression '0.1*(x'");
+}
+
+TEST(ProblemFileErrors, FileThatCannotBeRead) {
+  try {
+    read_problem_file("/no/such/problem.toml");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "cannot read '/no/such/problem.toml': No such file or directory");
+  }
+  const testing::TemporaryFolder dir;
+  EXPECT_THROW(read_problem_file(dir.path().string()), InputError);
+}
+
+TEST(ProblemFileErrors, UnknownBoundaryIsFoundByBuildModel) {
+  const LoadedProblem p =
+      parse_problem_string(with("boundary = \"bottom\"", "boundary = \"floor\""), "t.toml");
+  EXPECT_THROW(build_model(p.spec), InputError);
+}
+
+// Overrides --------------------------------------------------------------------------------
+
+TEST(ProblemFileOverrides, ReplaceValues) {
+  const LoadedProblem p = parse_problem_string(
+      kBase, "t.toml",
+      {"mesh.nx=480", "mesh.ny = 160", "solver.method=semismooth_newton", "solver.r=1e6",
+       "material.E=1000", "name=renamed", "contact.gap=0.01*x"});
+  EXPECT_EQ(p.spec.mesh.nx, 480);
+  EXPECT_EQ(p.spec.mesh.ny, 160);
+  EXPECT_EQ(p.spec.solver.method, ContactMethod::SemismoothNewton);
+  EXPECT_EQ(p.spec.solver.r, 1e6);
+  EXPECT_EQ(p.spec.elasticity.material.E, 1000.0);
+  EXPECT_EQ(p.spec.name, "renamed");
+  EXPECT_DOUBLE_EQ(p.spec.contact.gap(Point(2.0, 0.0, 0.0)), 0.02);
+  EXPECT_CONTAINS(p.effective_toml, "nx = 480\n");
+  EXPECT_CONTAINS(p.effective_toml, "method = \"semismooth_newton\"\n");
+}
+
+TEST(ProblemFileOverrides, QuotedStringsArraysAndLaterWins) {
+  const LoadedProblem p =
+      parse_problem_string(kBase, "t.toml",
+                           {"solver.method=\"classical_uzawa\"", "traction.1.p=[\"0\", \"-1\"]",
+                            "clamp.0.components=[\"x\"]", "mesh.nx=10", "mesh.nx=12"});
+  EXPECT_EQ(p.spec.solver.method, ContactMethod::ClassicalUzawa);
+  EXPECT_EQ(p.spec.tractions[1].p(Point(1.0, 1.0, 0.0))(1), -1.0);
+  EXPECT_TRUE(p.spec.clamps[0].components[0]);
+  EXPECT_FALSE(p.spec.clamps[0].components[1]);
+  EXPECT_EQ(p.spec.mesh.nx, 12);
+}
+
+TEST(ProblemFileOverrides, CreateMissingTables) {
+  std::string text = kBase;
+  text.erase(text.find("[solver]"));  // no [solver] nor [solver.linear]
+  const LoadedProblem p =
+      parse_problem_string(text, "t.toml", {"solver.linear.type=cg", "body_force.f=[0, -1]"});
+  EXPECT_EQ(p.spec.solver.linear.type, LinearSolverType::ConjugateGradient);
+  ASSERT_TRUE(static_cast<bool>(p.spec.body_force));
+  EXPECT_EQ(p.spec.body_force(Point(0.0, 0.0, 0.0))(1), -1.0);
+}
+
+TEST(ProblemFileOverrides, Errors) {
+  EXPECT_EQ(error_of(kBase, {"solver.uzawa_tol=1e-9"}),
+            "test.toml: unknown key 'solver.uzawa_tol' (did you mean 'solver.uzawa_tolerance'?), "
+            "given by --set");
+  EXPECT_CONTAINS(error_of(kBase, {"mesh.nx"}), "--set 'mesh.nx': expected key=value");
+  EXPECT_CONTAINS(error_of(kBase, {"=3"}), "expected key=value");
+  EXPECT_CONTAINS(error_of(kBase, {"mesh..nx=3"}), "empty part in key");
+  EXPECT_CONTAINS(error_of(kBase, {"mesh.nx.a=3"}), "'mesh.nx' is an integer, not a table");
+  EXPECT_CONTAINS(error_of(kBase, {"traction.5.p=[0, 1]"}), "'traction' has no table entry 5");
+  EXPECT_CONTAINS(error_of(kBase, {"traction.p=[0, 1]"}), "'traction' is an array");
+  EXPECT_EQ(error_of(kBase, {"mesh.nx=abc"}),
+            "test.toml: key 'mesh.nx' must be an integer, got string");
+}
+
+}  // namespace
+}  // namespace signorini

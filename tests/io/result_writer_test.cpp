@@ -1,0 +1,147 @@
+// summary.json and contact.csv of a solved problem: the keys scripts rely on, one CSV row per
+// contact node with the documented sign conventions, and files written only whole.
+
+#include "signorini/io/result_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/expect_contains.hpp"
+#include "io/temporary_folder.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/io/contact_csv.hpp"
+#include "signorini/io/summary_json.hpp"
+
+namespace signorini {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Solved {
+  ProblemSpec spec = paper_benchmark(12, 4);
+  Model model = build_model(spec);
+  ContactResult result = solve_contact(model.problem, spec.solver);
+};
+
+const Solved& solved() {
+  static const Solved s;
+  return s;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<double> fields_of(const std::string& line) {
+  std::vector<double> out;
+  std::istringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) out.push_back(std::stod(f));
+  return out;
+}
+
+TEST(SummaryJson, HasTheDocumentedKeys) {
+  const Solved& s = solved();
+  ASSERT_TRUE(s.result.summary.converged()) << s.result.summary.message;
+  const nlohmann::json j = summary_to_json(s.result.summary, s.model, s.spec);
+  for (const char* key : {"converged",
+                          "termination",
+                          "message",
+                          "method",
+                          "M",
+                          "energy",
+                          "uzawa_iterations",
+                          "gnm_iterations",
+                          "armijo_reductions",
+                          "active_set_sizes",
+                          "dual_changes",
+                          "n_dofs",
+                          "n_free_dofs",
+                          "n_contact_nodes",
+                          "n_active",
+                          "contact_force",
+                          "contact_force_vector",
+                          "kkt",
+                          "timings",
+                          "problem",
+                          "signorini_version"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["converged"], true);
+  EXPECT_EQ(j["termination"], "converged");
+  EXPECT_EQ(j["method"], "uzawa_gnm");
+  EXPECT_EQ(j["M"].get<double>(), s.result.summary.lagrangian);
+  EXPECT_EQ(j["uzawa_iterations"].get<int>(), s.result.summary.outer_iterations);
+  EXPECT_EQ(j["gnm_iterations"].get<std::vector<int>>(), s.result.summary.inner_iterations());
+  EXPECT_EQ(j["gnm_iterations"].size(), j["dual_changes"].size());
+  EXPECT_EQ(j["n_dofs"].get<Index>(), 2 * 13 * 5);
+  EXPECT_EQ(j["n_contact_nodes"].get<Index>(), 13);
+  EXPECT_EQ(j["contact_force_vector"].size(), 2U);
+  for (const char* k : {"equilibrium", "penetration", "sign", "complementarity"})
+    EXPECT_TRUE(j["kkt"].contains(k)) << k;
+  EXPECT_TRUE(j["timings"].contains("assembly"));
+  EXPECT_TRUE(j["timings"].contains("contact solve"));
+  EXPECT_GE(j["timings"]["total"].get<double>(), j["timings"]["contact solve"].get<double>());
+  EXPECT_EQ(j["problem"]["name"], "paper");
+  EXPECT_EQ(j["problem"]["mesh"]["nx"], 12);
+  EXPECT_EQ(j["problem"]["material"]["E"].get<double>(), 21.19e4);
+  EXPECT_EQ(j["problem"]["solver"]["r"].get<double>(), 1e8);
+  EXPECT_EQ(j["problem"]["solver"]["linear"]["type"], "cholmod");
+  EXPECT_EQ(j["signorini_version"], SIGNORINI_VERSION);
+}
+
+TEST(ContactCsv, OneRowPerContactNodeWithConventions) {
+  const Solved& s = solved();
+  const std::vector<std::string> lines = lines_of(contact_csv(s.result, s.model));
+  ASSERT_EQ(lines.size(), 14U);
+  EXPECT_EQ(lines[0], "x,y,u_n,u_t,pressure,gap");
+  const Vector u = s.model.dofs.expand(s.result.u);
+  const ContactSet& c = s.model.problem.contact;
+  for (Index j = 0; j < c.size(); ++j) {
+    const std::vector<double> f = fields_of(lines[static_cast<std::size_t>(j + 1)]);
+    ASSERT_EQ(f.size(), 6U);
+    const Index node = c.nodes[static_cast<std::size_t>(j)];
+    EXPECT_EQ(f[0], s.model.mesh.node(node)(0));  // 17 digits: exact round trip
+    EXPECT_EQ(f[1], 0.0);
+    // The bottom edge: nu = (0, -1), tau = (-nu_y, nu_x) = (1, 0).
+    EXPECT_DOUBLE_EQ(f[2], -u(2 * node + 1));
+    EXPECT_DOUBLE_EQ(f[3], u(2 * node));
+    EXPECT_EQ(f[4], s.result.l(j));
+    EXPECT_GE(f[4], 0.0);
+    EXPECT_EQ(f[5], 0.0);
+  }
+}
+
+TEST(ResultWriter, WritesBothFilesIntoANewFolder) {
+  const Solved& s = solved();
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "a" / "b";
+  write_results(out, s.result, s.model, s.spec);
+  std::ifstream json_file(out / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(json_file);
+  EXPECT_EQ(j["converged"], true);
+  std::ifstream csv(out / "contact.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "x,y,u_n,u_t,pressure,gap");
+}
+
+TEST(ResultWriter, FolderThatCannotBeCreated) {
+  const Solved& s = solved();
+  const testing::TemporaryFolder dir;
+  std::ofstream(dir / "file") << "a file, not a folder\n";
+  try {
+    write_results(dir / "file", s.result, s.model, s.spec);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_CONTAINS(e.what(), "cannot create output folder '" + (dir / "file").string() + "': ");
+  }
+  EXPECT_THROW(write_results(dir / "file" / "below", s.result, s.model, s.spec), InputError);
+}
+
+}  // namespace
+}  // namespace signorini
