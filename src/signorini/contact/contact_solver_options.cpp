@@ -1,5 +1,7 @@
 #include "signorini/contact/contact_solver_options.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "signorini/core/error.hpp"
@@ -7,9 +9,12 @@
 namespace signorini {
 
 namespace {
-void require(bool ok, const std::string& field, double value, const std::string& expected) {
-  if (!ok)
-    throw InputError("solver." + field + " = " + std::to_string(value) + ": expected " + expected);
+std::string text(double v) { return fmt::format("{:g}", v); }
+std::string text(int v) { return std::to_string(v); }
+
+template <class T>
+void require(bool ok, const std::string& field, T value, const std::string& expected) {
+  if (!ok) throw InputError("solver." + field + " = " + text(value) + ": expected " + expected);
 }
 bool positive(double v) { return std::isfinite(v) && v > 0.0; }
 }  // namespace
