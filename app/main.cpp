@@ -5,6 +5,7 @@
 //   signorini solve examples/paper.toml -o results/paper
 //   signorini solve examples/paper.toml -o results/paper --set mesh.nx=120 --set mesh.ny=40
 //   signorini solve examples/paper.toml -o results/ssn --set solver.method=semismooth_newton
+//   signorini bench --repeats 3 --json results/bench.json
 //
 // Exit status: 0 solved (or checked), 2 bad input, 3 not converged (results written anyway),
 // 4 numerical failure, 1 anything else. Errors are one line on stderr: "signorini: error: ...".
@@ -72,6 +73,19 @@ int main(int argc, char** argv) {
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);
 
+  BenchArguments bench;
+  CLI::App* bench_cmd = app.add_subcommand(
+      "bench", "Time the paper's benchmark on several meshes and solvers (docs/performance.md)");
+  bench_cmd->add_option("--repeats", bench.repeats, "Best of N runs (default 3)")
+      ->check(CLI::PositiveNumber);
+  bench_cmd->add_flag("--huge", bench.huge, "Add the 3840x1280 mesh (9.8 million unknowns)");
+  bench_cmd->add_option("--mesh", bench.meshes, "Mesh NXxNY, e.g. 480x160 (repeatable)");
+  bench_cmd->add_option("--method", bench.methods,
+                        "Contact method on the condensed problem (repeatable)");
+  bench_cmd->add_flag("--no-cg", bench.no_cg, "Skip the paper's configuration (CG)");
+  bench_cmd->add_flag("--no-plain", bench.no_plain, "Skip the plain sparse path");
+  bench_cmd->add_option("--json", bench.json_file, "Also write the results as JSON to this file");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -86,6 +100,7 @@ int main(int argc, char** argv) {
     }
     if (*solve_cmd) return run_solve(solve);
     if (*check_cmd) return run_check(check);
+    if (*bench_cmd) return run_bench(bench);
     return fail(kBadInput, "expected a command: solve or check (see signorini --help)");
   } catch (const signorini::InputError& e) {
     return fail(kBadInput, e.what());

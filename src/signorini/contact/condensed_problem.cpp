@@ -118,11 +118,11 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
     b_rotated_ = Q_.transpose() * full.b;
   }
   {
-    const SparseMatrix A_rotated = [&] {
+    SparseMatrix A_rotated = [&] {
       ScopedTimer t(timings_, "condensation rotation");
       return rotate(full.A, Q_, blocks);
     }();
-    schur_ = std::make_unique<SchurComplement>(A_rotated, normal_dofs_);
+    schur_ = std::make_unique<SchurComplement>(std::move(A_rotated), normal_dofs_);
   }
   ScopedTimer t(timings_, "condensation setup");
   const auto nm = static_cast<Index>(normal_dofs_.size());

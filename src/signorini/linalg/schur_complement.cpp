@@ -16,7 +16,7 @@ struct SchurComplement::Impl {
   Index n = 0;
 };
 
-SchurComplement::SchurComplement(const SparseMatrix& A, const std::vector<Index>& last)
+SchurComplement::SchurComplement(SparseMatrix A, const std::vector<Index>& last)
     : impl_(new Impl), last_(last) {
   Impl& s = *impl_;
   cholmod_l_start(&s.common);
@@ -27,7 +27,8 @@ SchurComplement::SchurComplement(const SparseMatrix& A, const std::vector<Index>
   const auto nc = static_cast<Index>(last.size());
   {
     ScopedTimer t(timings_, "condensation analysis");
-    s.upper = detail::make_cholmod_upper(A, s.common);
+    s.upper = detail::make_cholmod_upper(A, s.common, /*keep_value_map=*/false);
+    A = SparseMatrix();  // CHOLMOD has its own copy now
     // Constrained minimum degree: set 0 (interior) first, set 1 (C) last.
     std::vector<CholmodInt> member(static_cast<std::size_t>(n), 0);
     for (const Index i : last) member[static_cast<std::size_t>(i)] = 1;
@@ -52,6 +53,7 @@ SchurComplement::SchurComplement(const SparseMatrix& A, const std::vector<Index>
     cholmod_l_factorize(s.upper.matrix, s.factor, &s.common);
     check_cholmod(s.common, "factorization");
     if (!s.factor->is_super) throw NumericalError("CHOLMOD: expected a supernodal factor");
+    cholmod_l_free_sparse(&s.upper.matrix, &s.common);  // only the factor is used from here on
   }
   {
     ScopedTimer t(timings_, "condensation Schur complement");

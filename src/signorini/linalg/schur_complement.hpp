@@ -16,8 +16,9 @@ namespace signorini {
 class SchurComplement {
  public:
   /// Orders, analyses and factorises A (SPD, both triangles stored) with the unknowns `last`
-  /// ordered last, then forms S. Throws NumericalError if A is not positive definite.
-  SchurComplement(const SparseMatrix& A, const std::vector<Index>& last);
+  /// ordered last, then forms S. A is released as soon as CHOLMOD holds its copy, so that the
+  /// largest problems fit in memory. Throws NumericalError if A is not positive definite.
+  SchurComplement(SparseMatrix A, const std::vector<Index>& last);
   ~SchurComplement();
   SchurComplement(const SchurComplement&) = delete;
   SchurComplement& operator=(const SchurComplement&) = delete;

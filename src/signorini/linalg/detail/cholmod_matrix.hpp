@@ -43,32 +43,31 @@ struct CholmodUpper {
 };
 
 /// Allocates the upper triangle of A (values copied too). Free with cholmod_l_free_sparse.
-inline CholmodUpper make_cholmod_upper(const SparseMatrix& A, cholmod_common& common) {
+/// `keep_value_map`: remember where the values came from, for copy_values() later.
+inline CholmodUpper make_cholmod_upper(const SparseMatrix& A, cholmod_common& common,
+                                       bool keep_value_map = true) {
   if (A.rows() != A.cols()) throw NumericalError("CHOLMOD: matrix is not square");
   const Index n = A.rows();
   CholmodUpper out;
   out.full_nnz = A.nonZeros();
   out.value_map.reserve(static_cast<std::size_t>(A.nonZeros() / 2 + n));
   std::vector<CholmodInt> colptr(static_cast<std::size_t>(n + 1), 0);
-  std::vector<CholmodInt> rows;
-  rows.reserve(out.value_map.capacity());
   for (Index j = 0; j < n; ++j) {
-    for (int k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k) {
-      const Index i = A.innerIndexPtr()[k];
-      if (i <= j) {
-        rows.push_back(i);
-        out.value_map.push_back(k);
-      }
-    }
-    colptr[static_cast<std::size_t>(j + 1)] = static_cast<CholmodInt>(rows.size());
+    for (int k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k)
+      if (A.innerIndexPtr()[k] <= j) out.value_map.push_back(k);
+    colptr[static_cast<std::size_t>(j + 1)] = static_cast<CholmodInt>(out.value_map.size());
   }
   out.matrix = cholmod_l_allocate_sparse(static_cast<std::size_t>(n), static_cast<std::size_t>(n),
-                                         rows.size(), /*sorted=*/1, /*packed=*/1, /*stype=*/1,
-                                         CHOLMOD_REAL, &common);
+                                         out.value_map.size(), /*sorted=*/1, /*packed=*/1,
+                                         /*stype=*/1, CHOLMOD_REAL, &common);
   check_cholmod(common, "allocate");
   std::copy(colptr.begin(), colptr.end(), static_cast<CholmodInt*>(out.matrix->p));
-  std::copy(rows.begin(), rows.end(), static_cast<CholmodInt*>(out.matrix->i));
+  auto* ri = static_cast<CholmodInt*>(out.matrix->i);
+  for (Index j = 0; j < n; ++j)
+    for (int k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k)
+      if (A.innerIndexPtr()[k] <= j) *ri++ = A.innerIndexPtr()[k];
   out.copy_values(A);
+  if (!keep_value_map) out.value_map = {};
   return out;
 }
 

@@ -1,0 +1,165 @@
+// `signorini bench`: runs the benchmark suite of the library and prints two tables, timings and
+// accuracy, with the paper's figures beside ours; optionally writes every row as JSON.
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "commands.hpp"
+#include "signorini/benchmark/paper_benchmark_suite.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/io/atomic_file.hpp"
+
+namespace signorini::app {
+
+namespace {
+
+std::pair<Index, Index> parse_mesh(const std::string& text) {
+  const auto x = text.find('x');
+  try {
+    if (x != std::string::npos) {
+      std::size_t used1 = 0, used2 = 0;
+      const long nx = std::stol(text.substr(0, x), &used1);
+      const long ny = std::stol(text.substr(x + 1), &used2);
+      if (used1 == x && used2 == text.size() - x - 1 && nx >= 1 && ny >= 1) return {nx, ny};
+    }
+  } catch (const std::exception&) {
+  }
+  throw InputError("--mesh '" + text + "': expected NXxNY with positive integers, e.g. 480x160");
+}
+
+std::string seconds(double s) { return s >= 100.0 ? fmt::format("{:.1f}", s) : fmt::format("{:.3f}", s); }
+
+nlohmann::json to_json(const BenchmarkRow& r) {
+  nlohmann::json j;
+  j["mesh"] = fmt::format("{}x{}", r.nx, r.ny);
+  j["configuration"] = r.configuration;
+  j["method"] = enum_to_string(kContactMethodNames, r.method);
+  j["linear_solver"] = enum_to_string(kLinearSolverTypeNames, r.linear);
+  j["schur_complement"] = r.schur_complement;
+  j["n_dofs"] = r.n_dofs;
+  j["n_contact_nodes"] = r.n_contact;
+  j["converged"] = r.converged;
+  j["termination"] = r.termination;
+  j["outer_iterations"] = r.outer_iterations;
+  j["gnm_first"] = r.gnm_first;
+  j["gnm_later"] = r.gnm_later;
+  j["gnm_later_max"] = r.gnm_later_max;
+  j["cg_iterations"] = r.linear_iterations;
+  j["factorizations"] = r.factorizations;
+  j["factor_updates"] = r.factor_updates;
+  j["seconds"] = {{"mesh", r.t_mesh},         {"assembly", r.t_assembly},
+                  {"analysis", r.t_analysis}, {"factorization", r.t_factorization},
+                  {"solves", r.t_solves},     {"contact_solve", r.t_contact},
+                  {"total", r.t_total},       {"linear_solve", r.t_linear}};
+  j["contact_over_linear"] = r.ratio;
+  j["peak_memory_bytes"] = r.peak_bytes;
+  j["M"] = r.energy;
+  j["kkt"] = {{"equilibrium", r.kkt.equilibrium},
+              {"penetration", r.kkt.penetration},
+              {"sign", r.kkt.sign},
+              {"complementarity", r.kkt.complementarity}};
+  if (r.diff_plain_u >= 0.0) j["difference_to_plain"] = {{"u", r.diff_plain_u}, {"l", r.diff_plain_l}};
+  if (r.paper)
+    j["paper"] = {{"cpu_seconds", r.paper->cpu_seconds},
+                  {"gpu_seconds", r.paper->gpu_seconds},
+                  {"M", r.paper->energy},
+                  {"gnm_first", r.paper->gnm_first},
+                  {"uzawa_iterations", r.paper->uzawa}};
+  return j;
+}
+
+}  // namespace
+
+int run_bench(const BenchArguments& args) {
+  BenchmarkOptions options;
+  options.repeats = args.repeats;
+  if (!args.meshes.empty()) {
+    options.meshes.clear();
+    for (const auto& m : args.meshes) options.meshes.push_back(parse_mesh(m));
+  }
+  if (args.huge) options.meshes.emplace_back(3840, 1280);
+  if (!args.methods.empty()) {
+    std::vector<BenchmarkConfiguration> configs;
+    for (const auto& name : args.methods) {
+      const auto m = enum_from_string(kContactMethodNames, name);
+      if (!m)
+        throw InputError("--method '" + name + "': expected " + enum_choices(kContactMethodNames));
+      configs.push_back({*m, LinearSolverType::Cholmod, true});
+    }
+    for (const auto& c : options.configurations)
+      if (c.linear == LinearSolverType::ConjugateGradient || !c.schur_complement) configs.push_back(c);
+    options.configurations = configs;
+  }
+  std::erase_if(options.configurations, [&](const BenchmarkConfiguration& c) {
+    return (args.no_cg && c.linear == LinearSolverType::ConjugateGradient) ||
+           (args.no_plain && c.linear == LinearSolverType::Cholmod && !c.schur_complement);
+  });
+  if (args.no_plain) options.compare_plain_max_nx = 0;
+  options.progress = [](const std::string& line) {
+    fmt::print(stderr, "  running {}\n", line);
+    std::fflush(stderr);
+  };
+
+  fmt::print(
+      "signorini bench: the paper's problem (Section 5), best of {} (meshes above 1e6 unknowns "
+      "once), {} hardware threads\n",
+      options.repeats, std::thread::hardware_concurrency());
+  const auto rows = run_paper_benchmark(options);
+
+  fmt::print("\nTimings (seconds; contact = everything after assembly; linear = one linear-elastic "
+             "solve of the same mesh with the same linear solver)\n");
+  fmt::print("{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
+             "{:>8} {:>6} {:>8} {:>8} {:>8}\n",
+             "mesh", "configuration", "unknowns", "n_d", "GNM", "outer", "CG it", "mesh", "assembly",
+             "analysis", "factor", "solves", "contact", "total", "linear", "ratio", "peak MB",
+             "paperCPU", "paperGPU");
+  for (const auto& r : rows) {
+    const std::string gnm = r.method == ContactMethod::UzawaGnm
+                                ? (r.gnm_later_max > r.gnm_later
+                                       ? fmt::format("{}/{}({})", r.gnm_first, r.gnm_later, r.gnm_later_max)
+                                       : fmt::format("{}/{}", r.gnm_first, r.gnm_later))
+                                : "-";
+    fmt::print("{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
+               "{:>8} {:>6.2f} {:>8.0f} {:>8} {:>8}\n",
+               fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.n_dofs, r.n_contact, gnm,
+               r.outer_iterations, r.linear_iterations, seconds(r.t_mesh), seconds(r.t_assembly),
+               seconds(r.t_analysis), seconds(r.t_factorization), seconds(r.t_solves),
+               seconds(r.t_contact), seconds(r.t_total), seconds(r.t_linear), r.ratio,
+               r.peak_bytes / 1048576.0, r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
+               r.paper ? fmt::format("{:.2f}", r.paper->gpu_seconds) : "-");
+  }
+  fmt::print("\nAccuracy (KKT residuals relative, see docs/solvers.md; difference to the plain sparse "
+             "path, relative 2-norms)\n");
+  fmt::print("{:>9} {:<31} {:>10} {:>16} {:>13} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}\n", "mesh",
+             "configuration", "converged", "M(u*,l*)", "paper M", "equil.", "penetr.", "sign",
+             "compl.", "du plain", "dl plain");
+  bool ok = true;
+  for (const auto& r : rows) {
+    ok = ok && r.converged;
+    fmt::print("{:>9} {:<31} {:>10} {:>16.8e} {:>13} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9} {:>9}\n",
+               fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.converged ? "yes" : r.termination,
+               r.energy, r.paper ? fmt::format("{:.6e}", r.paper->energy) : "-", r.kkt.equilibrium,
+               r.kkt.penetration, r.kkt.sign, r.kkt.complementarity,
+               r.diff_plain_u >= 0 ? fmt::format("{:.1e}", r.diff_plain_u) : "-",
+               r.diff_plain_l >= 0 ? fmt::format("{:.1e}", r.diff_plain_l) : "-");
+  }
+  fmt::print("\nGNM: iterations at the first Uzawa step / usual count at later ones (largest in "
+             "parentheses); the paper: 7/2, 8/2, 9/2, 10/2 and 6, 7, 8, 11 Uzawa iterations.\n");
+
+  if (!args.json_file.empty()) {
+    nlohmann::json j;
+    j["benchmark"] = "paper";
+    j["repeats"] = options.repeats;
+    j["hardware_threads"] = std::thread::hardware_concurrency();
+    j["rows"] = nlohmann::json::array();
+    for (const auto& r : rows) j["rows"].push_back(to_json(r));
+    write_file_atomically(args.json_file, j.dump(2) + "\n");
+    fmt::print("rows written to {}\n", args.json_file);
+  }
+  return ok ? kSuccess : kNotConverged;
+}
+
+}  // namespace signorini::app

@@ -1,0 +1,13 @@
+#pragma once
+// Peak resident memory of this process, resettable so that a benchmark can measure one case at a
+// time (Linux: VmHWM in /proc/self/status, reset by writing 5 to /proc/self/clear_refs).
+
+namespace signorini {
+
+/// Peak resident set size in bytes since the last reset (or the start); 0 if unknown.
+double peak_resident_bytes();
+/// Starts a new peak measurement from the current resident size. Returns false where the system
+/// cannot reset it (the peak then covers the whole run so far).
+bool reset_peak_resident();
+
+}  // namespace signorini
