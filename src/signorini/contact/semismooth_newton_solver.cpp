@@ -4,99 +4,234 @@
 //   S <- { j in S : l_j > 0 } u { j not in S : (N x)_j > g_j },
 // until S repeats. It uses no penalty parameter, so it checks the Uzawa methods independently.
 //
-// The constraint (N x)_j = g_j involves the free dofs of node j along nu_j. Each contact node's
-// free dofs are rotated by a Householder reflection Q_j whose first column is nu_j restricted to
-// them (scaled to unit length, s_j = its norm before scaling); in the rotated unknowns y = Q^T x
-// the constraint fixes one unknown, y_{a_j} = g_j / s_j, which is eliminated by replacing its row
-// and column with the diagonal: the pattern never changes, so one symbolic analysis serves all.
+// Two ways to solve the equality-constrained problem:
+// - sparse (any problem): each contact node's free dofs are rotated by a Householder reflection
+//   Q_j whose first column is nu_j restricted to them (s_j = its norm before normalising); in
+//   y = Q^T x the constraint fixes one unknown, y_{a_j} = g_j / s_j, which is eliminated by
+//   replacing its row and column with the diagonal, so one symbolic analysis serves all;
+// - dense (the condensed problems, one unknown per contact node): with W = A^-1 computed once,
+//   x = x0 - W N^T H l, and the active multipliers solve the small system W_SS y_S = x0_S - t_S
+//   (y = s h l, t = g / s): a Newton iteration then costs O(n |S|) plus |S|^3 / 3.
 
 #include <fmt/format.h>
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/linalg/linear_solver.hpp"
 
 namespace signorini {
+
+namespace {
+
+// Solves the equality-constrained problem of an active set S: returns l (0 off S) and
+// (N x - g) for every contact node.
+class ActiveSetSolver {
+ public:
+  virtual ~ActiveSetSolver() = default;
+  virtual LinearSolveStats solve(const ActiveSet& S, Vector& l, Vector& gap_residual) = 0;
+  [[nodiscard]] virtual Vector displacement() const = 0;
+  [[nodiscard]] const TimingTable& timings() const { return timings_; }
+
+ protected:
+  TimingTable timings_;
+};
+
+class RotatedEliminationSolver final : public ActiveSetSolver {
+ public:
+  RotatedEliminationSolver(const ContactProblem& p, const LinearSolverOptions& linear) : p_(p) {
+    const ContactSet& c = p.contact;
+    const Index n = p.A.rows();
+    const Index nc = c.size();
+    normal_dof_.assign(static_cast<std::size_t>(nc), -1);
+    scale_ = Vector::Zero(nc);
+    std::vector<bool> in_block(static_cast<std::size_t>(n), false);
+    std::vector<Eigen::Triplet<double, int>> qt;
+    const SparseMatrix Nt = c.N.transpose();
+    for (Index j = 0; j < nc; ++j) {
+      if (!c.movable[static_cast<std::size_t>(j)]) continue;
+      std::vector<Index> dofs;
+      std::vector<double> coef;
+      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
+        dofs.push_back(it.row());
+        coef.push_back(it.value());
+      }
+      const Eigen::Map<const Vector> cv(coef.data(), static_cast<Index>(coef.size()));
+      scale_(j) = cv.norm();
+      Vector v = cv / scale_(j);
+      v(0) -= 1.0;  // Householder vector: Q = I - 2 v v^T / (v.v) maps e_1 to cv / |cv|
+      const double vv = v.squaredNorm();
+      const auto k = static_cast<Index>(dofs.size());
+      for (Index a = 0; a < k; ++a) {
+        in_block[static_cast<std::size_t>(dofs[static_cast<std::size_t>(a)])] = true;
+        for (Index b = 0; b < k; ++b) {
+          const double q = (a == b ? 1.0 : 0.0) - (vv > 1e-28 ? 2.0 * v(a) * v(b) / vv : 0.0);
+          qt.emplace_back(static_cast<int>(dofs[static_cast<std::size_t>(a)]),
+                          static_cast<int>(dofs[static_cast<std::size_t>(b)]), q);
+        }
+      }
+      normal_dof_[static_cast<std::size_t>(j)] = dofs.front();
+    }
+    for (Index i = 0; i < n; ++i)
+      if (!in_block[static_cast<std::size_t>(i)])
+        qt.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+    Q_.resize(n, n);
+    Q_.setFromTriplets(qt.begin(), qt.end());
+    Ar_ = SparseMatrix(Q_.transpose() * p.A * Q_);
+    br_ = Q_.transpose() * p.b;
+    K_ = Ar_;
+    y_ = Vector::Zero(n);
+    solver_ = make_linear_solver(linear);
+    solver_->analyze(Ar_);
+  }
+
+  LinearSolveStats solve(const ActiveSet& S, Vector& l, Vector& gap_residual) override {
+    const ContactSet& c = p_.contact;
+    const Index n = Ar_.rows();
+    std::vector<bool> fixed(static_cast<std::size_t>(n), false);
+    Vector y_fixed = Vector::Zero(n);
+    for (Index j = 0; j < c.size(); ++j)
+      if (S[static_cast<std::size_t>(j)]) {
+        const Index a = normal_dof_[static_cast<std::size_t>(j)];
+        fixed[static_cast<std::size_t>(a)] = true;
+        y_fixed(a) = c.gaps(j) / scale_(j);
+      }
+    for (Index col = 0; col < n; ++col)
+      for (int k = K_.outerIndexPtr()[col]; k < K_.outerIndexPtr()[col + 1]; ++k) {
+        const Index row = K_.innerIndexPtr()[k];
+        const bool cut =
+            fixed[static_cast<std::size_t>(row)] || fixed[static_cast<std::size_t>(col)];
+        K_.valuePtr()[k] = !cut ? Ar_.valuePtr()[k] : (row == col ? Ar_.valuePtr()[k] : 0.0);
+      }
+    Vector rhs = br_ - Ar_ * y_fixed;
+    for (Index i = 0; i < n; ++i)
+      if (fixed[static_cast<std::size_t>(i)]) rhs(i) = Ar_.coeff(i, i) * y_fixed(i);
+    solver_->factorize(K_);
+    const LinearSolveStats st = solver_->solve(rhs, y_);
+    timings_ = solver_->timings();
+    // Multipliers from the reactions: (A_r y)_{a_j} + s_j h_j l_j = (b_r)_{a_j} on S.
+    const Vector reaction = br_ - Ar_ * y_;
+    l = Vector::Zero(c.size());
+    gap_residual = Vector::Zero(c.size());
+    for (Index j = 0; j < c.size(); ++j) {
+      if (!c.movable[static_cast<std::size_t>(j)]) continue;
+      const Index a = normal_dof_[static_cast<std::size_t>(j)];
+      if (S[static_cast<std::size_t>(j)]) l(j) = reaction(a) / (scale_(j) * c.weights(j));
+      gap_residual(j) = scale_(j) * y_(a) - c.gaps(j);
+    }
+    return st;
+  }
+  [[nodiscard]] Vector displacement() const override { return Q_ * y_; }
+
+ private:
+  const ContactProblem& p_;
+  std::vector<Index> normal_dof_;
+  Vector scale_;
+  SparseMatrix Q_, Ar_, K_;
+  Vector br_, y_;
+  std::unique_ptr<LinearSolver> solver_;
+};
+
+class DelassusSolver final : public ActiveSetSolver {
+ public:
+  explicit DelassusSolver(const ContactProblem& p) : p_(p) {
+    ScopedTimer t(timings_, "linear factorization");
+    const ContactSet& c = p.contact;
+    const Eigen::LLT<Eigen::MatrixXd> llt{Eigen::MatrixXd(p.A)};
+    if (llt.info() != Eigen::Success)
+      throw NumericalError("dense Cholesky: matrix is not positive definite");
+    W_ = llt.solve(Eigen::MatrixXd::Identity(p.A.rows(), p.A.cols()));
+    x0_ = llt.solve(p.b);
+    column_.assign(static_cast<std::size_t>(c.size()), -1);
+    scale_ = Vector::Zero(c.size());
+    const SparseMatrix Nt = c.N.transpose();
+    for (Index j = 0; j < c.size(); ++j)
+      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
+        column_[static_cast<std::size_t>(j)] = it.row();
+        scale_(j) = it.value();
+      }
+    x_ = x0_;
+  }
+  // True where every row of N has at most one entry, with a positive coefficient.
+  static bool applies(const ContactProblem& p) {
+    const SparseMatrix Nt = p.contact.N.transpose();
+    for (Index j = 0; j < Nt.cols(); ++j) {
+      if (Nt.col(j).nonZeros() > 1) return false;
+      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it)
+        if (!(it.value() > 0.0)) return false;
+    }
+    return true;
+  }
+
+  LinearSolveStats solve(const ActiveSet& S, Vector& l, Vector& gap_residual) override {
+    ScopedTimer t(timings_, "linear solve");
+    const ContactSet& c = p_.contact;
+    std::vector<Index> nodes, cols;
+    for (Index j = 0; j < c.size(); ++j)
+      if (S[static_cast<std::size_t>(j)] && column_[static_cast<std::size_t>(j)] >= 0) {
+        nodes.push_back(j);
+        cols.push_back(column_[static_cast<std::size_t>(j)]);
+      }
+    const auto k = static_cast<Index>(cols.size());
+    Vector y = Vector::Zero(k);
+    if (k > 0) {
+      Vector rhs(k);
+      for (Index a = 0; a < k; ++a) {
+        const Index j = nodes[static_cast<std::size_t>(a)];
+        rhs(a) = x0_(cols[static_cast<std::size_t>(a)]) - c.gaps(j) / scale_(j);
+      }
+      const Eigen::MatrixXd Wss = W_(cols, cols);
+      y = Wss.llt().solve(rhs);
+      x_ = x0_ - W_(Eigen::all, cols) * y;
+    } else {
+      x_ = x0_;
+    }
+    l = Vector::Zero(c.size());
+    for (Index a = 0; a < k; ++a) {
+      const Index j = nodes[static_cast<std::size_t>(a)];
+      l(j) = y(a) / (scale_(j) * c.weights(j));
+    }
+    gap_residual = Vector::Zero(c.size());
+    for (Index j = 0; j < c.size(); ++j) {
+      const Index col = column_[static_cast<std::size_t>(j)];
+      if (col >= 0) gap_residual(j) = scale_(j) * x_(col) - c.gaps(j);
+    }
+    return {};
+  }
+  [[nodiscard]] Vector displacement() const override { return x_; }
+
+ private:
+  const ContactProblem& p_;
+  Eigen::MatrixXd W_;  // A^-1
+  Vector x0_, x_, scale_;
+  std::vector<Index> column_;  // unknown of contact node j, -1 if none
+};
+
+}  // namespace
 
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options) {
   ContactResult out;
   SolveSummary& s = out.summary;
   const ContactSet& c = problem.contact;
-  const Index n = problem.A.rows();
   const Index nc = c.size();
-
-  // Rotation Q (block diagonal, identity away from contact nodes).
-  std::vector<Index> normal_dof(static_cast<std::size_t>(nc), -1);
-  Vector scale = Vector::Zero(nc);
-  std::vector<bool> in_block(static_cast<std::size_t>(n), false);
-  std::vector<Eigen::Triplet<double, int>> qt;
-  const SparseMatrix Nt = c.N.transpose();
-  for (Index j = 0; j < nc; ++j) {
-    if (!c.movable[static_cast<std::size_t>(j)]) continue;
-    std::vector<Index> dofs;
-    std::vector<double> coef;
-    for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
-      dofs.push_back(it.row());
-      coef.push_back(it.value());
-    }
-    const Eigen::Map<const Vector> cv(coef.data(), static_cast<Index>(coef.size()));
-    scale(j) = cv.norm();
-    Vector v = cv / scale(j);
-    v(0) -= 1.0;  // Householder vector: Q = I - 2 v v^T / (v.v) maps e_1 to cv / |cv|
-    const double vv = v.squaredNorm();
-    const auto k = static_cast<Index>(dofs.size());
-    for (Index a = 0; a < k; ++a) {
-      in_block[static_cast<std::size_t>(dofs[static_cast<std::size_t>(a)])] = true;
-      for (Index b = 0; b < k; ++b) {
-        const double q = (a == b ? 1.0 : 0.0) - (vv > 1e-28 ? 2.0 * v(a) * v(b) / vv : 0.0);
-        if (q != 0.0 || a == b)
-          qt.emplace_back(static_cast<int>(dofs[static_cast<std::size_t>(a)]),
-                          static_cast<int>(dofs[static_cast<std::size_t>(b)]), q);
-      }
-    }
-    normal_dof[static_cast<std::size_t>(j)] = dofs.front();
-  }
-  for (Index i = 0; i < n; ++i)
-    if (!in_block[static_cast<std::size_t>(i)]) qt.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
-  SparseMatrix Q(n, n);
-  Q.setFromTriplets(qt.begin(), qt.end());
-  const SparseMatrix Ar = SparseMatrix(Q.transpose() * problem.A * Q);
-  const Vector br = Q.transpose() * problem.b;
-
-  auto solver = make_linear_solver(options.linear);
-  solver->analyze(Ar);
-  SparseMatrix K = Ar;
-  std::vector<bool> fixed(static_cast<std::size_t>(n), false);
+  std::unique_ptr<ActiveSetSolver> solver;
+  if (options.linear.type == LinearSolverType::Dense && DelassusSolver::applies(problem))
+    solver = std::make_unique<DelassusSolver>(problem);
+  else
+    solver = std::make_unique<RotatedEliminationSolver>(problem, options.linear);
 
   ActiveSet active(static_cast<std::size_t>(nc), false);
   std::vector<ActiveSet> history;
-  Vector y = Vector::Zero(n);
   Vector l = Vector::Zero(nc);
   s.termination = Termination::IterationLimit;
 
   for (int it = 1; it <= options.max_newton_iterations; ++it) {
-    // Equality-constrained solve for the active set.
-    std::fill(fixed.begin(), fixed.end(), false);
-    Vector y_fixed = Vector::Zero(n);
-    for (Index j = 0; j < nc; ++j)
-      if (active[static_cast<std::size_t>(j)]) {
-        const Index a = normal_dof[static_cast<std::size_t>(j)];
-        fixed[static_cast<std::size_t>(a)] = true;
-        y_fixed(a) = c.gaps(j) / scale(j);
-      }
-    for (Index col = 0; col < n; ++col)
-      for (int k = K.outerIndexPtr()[col]; k < K.outerIndexPtr()[col + 1]; ++k) {
-        const Index row = K.innerIndexPtr()[k];
-        const bool cut = fixed[static_cast<std::size_t>(row)] || fixed[static_cast<std::size_t>(col)];
-        K.valuePtr()[k] = !cut ? Ar.valuePtr()[k] : (row == col ? Ar.valuePtr()[k] : 0.0);
-      }
-    Vector rhs = br - Ar * y_fixed;
-    for (Index i = 0; i < n; ++i)
-      if (fixed[static_cast<std::size_t>(i)]) rhs(i) = Ar.coeff(i, i) * y_fixed(i);
-    solver->factorize(K);
-    const LinearSolveStats st = solver->solve(rhs, y);
+    Vector l_new, gap_residual;
+    const LinearSolveStats st = solver->solve(active, l_new, gap_residual);
     OuterStepRecord rec;
     rec.inner_iterations = 1;
     rec.factorizations = 1;
@@ -104,23 +239,16 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
     if (!st.converged) {
       s.steps.push_back(rec);
       s.termination = Termination::LinearSolverFailure;
-      s.message = fmt::format("linear solver did not converge at Newton iteration {} (residual {:.3e})",
-                              it, st.residual);
+      s.message = fmt::format(
+          "linear solver did not converge at Newton iteration {} (residual {:.3e})", it,
+          st.residual);
       break;
     }
-    // Multipliers from the reactions: (A_r y)_{a_j} + s_j h_j l_j = (b_r)_{a_j} on S.
-    const Vector reaction = br - Ar * y;
-    Vector l_new = Vector::Zero(nc);
     ActiveSet next(static_cast<std::size_t>(nc), false);
     for (Index j = 0; j < nc; ++j) {
       if (!c.movable[static_cast<std::size_t>(j)]) continue;
-      const Index a = normal_dof[static_cast<std::size_t>(j)];
-      if (active[static_cast<std::size_t>(j)]) {
-        l_new(j) = reaction(a) / (scale(j) * c.weights(j));
-        next[static_cast<std::size_t>(j)] = l_new(j) > 0.0;
-      } else {
-        next[static_cast<std::size_t>(j)] = scale(j) * y(a) - c.gaps(j) > 0.0;
-      }
+      next[static_cast<std::size_t>(j)] =
+          active[static_cast<std::size_t>(j)] ? l_new(j) > 0.0 : gap_residual(j) > 0.0;
     }
     rec.dual_change = relative_change(l_new, l);
     rec.active_set_size = count_active(active);
@@ -149,7 +277,7 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
     s.message = fmt::format("active set still changing after {} Newton iterations",
                             options.max_newton_iterations);
   s.timings.merge(solver->timings());
-  out.u = Q * y;
+  out.u = solver->displacement();
   out.l = std::move(l);
   return out;
 }
