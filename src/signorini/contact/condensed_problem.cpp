@@ -77,24 +77,33 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
   const ContactSet& c = full.contact;
   const Index n = full.A.rows();
   const Index nc = c.size();
-  Vector scale = Vector::Zero(nc);
-  std::vector<std::vector<Index>> blocks;  // free dofs of each movable contact node
+  Vector scale = Vector::Zero(nc);  // (N x)_j = scale_j * (normal unknown of j)
+  std::vector<std::vector<Index>> blocks;  // free dofs of each rotated contact node
   {
     ScopedTimer t(timings_, "condensation rotation");
-    // Q: identity, except a Householder reflection on each movable contact node's free dofs
-    // whose first column is nu_j restricted to them, normalised (as in the semismooth Newton
-    // solver): in y = Q^T x that dof is (x . nu)_j / s_j.
+    // Where nu_j has a single nonzero component over node j's free dofs (edges along the axes),
+    // that dof is the normal unknown as it is, with the signed component as scale. Elsewhere a
+    // Householder reflection on the node's free dofs, whose first column is nu_j restricted to
+    // them and normalised (as in the semismooth Newton solver), makes y = Q^T x hold
+    // (x . nu)_j / s_j in the first dof.
     std::vector<Eigen::Triplet<double, int>> qt;
     std::vector<bool> in_block(static_cast<std::size_t>(n), false);
     const SparseMatrix Nt = c.N.transpose();
     for (Index j = 0; j < nc; ++j) {
       if (!c.movable[static_cast<std::size_t>(j)]) continue;
       std::vector<Index> dofs;
-      Vector coef(Nt.col(j).nonZeros());
-      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
-        coef(static_cast<Index>(dofs.size())) = it.value();
-        dofs.push_back(it.row());
+      std::vector<double> values;
+      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it)
+        if (it.value() != 0.0) {
+          dofs.push_back(it.row());
+          values.push_back(it.value());
+        }
+      if (dofs.size() == 1) {
+        scale(j) = values.front();
+        normal_dofs_.push_back(dofs.front());
+        continue;
       }
+      const Eigen::Map<const Vector> coef(values.data(), static_cast<Index>(values.size()));
       scale(j) = coef.norm();
       Vector v = coef / scale(j);
       v(0) -= 1.0;
@@ -103,21 +112,27 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
         in_block[static_cast<std::size_t>(dofs[a])] = true;
         for (std::size_t b = 0; b < dofs.size(); ++b) {
           const double q = (a == b ? 1.0 : 0.0) -
-                           (vv > 1e-28 ? 2.0 * v(static_cast<Index>(a)) * v(static_cast<Index>(b)) / vv : 0.0);
+                           2.0 * v(static_cast<Index>(a)) * v(static_cast<Index>(b)) / vv;
           qt.emplace_back(static_cast<int>(dofs[a]), static_cast<int>(dofs[b]), q);
         }
       }
       normal_dofs_.push_back(dofs.front());
       blocks.push_back(std::move(dofs));
     }
-    for (Index i = 0; i < n; ++i)
-      if (!in_block[static_cast<std::size_t>(i)])
-        qt.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
-    Q_.resize(n, n);
-    Q_.setFromTriplets(qt.begin(), qt.end());
-    b_rotated_ = Q_.transpose() * full.b;
+    if (!blocks.empty()) {
+      for (Index i = 0; i < n; ++i)
+        if (!in_block[static_cast<std::size_t>(i)])
+          qt.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+      Q_.resize(n, n);
+      Q_.setFromTriplets(qt.begin(), qt.end());
+      b_rotated_ = Q_.transpose() * full.b;
+    } else {
+      b_rotated_ = full.b;  // no rotation: Q = I, and A is used as it is (no copy)
+    }
   }
-  {
+  if (blocks.empty()) {
+    schur_ = std::make_unique<SchurComplement>(full.A, normal_dofs_);
+  } else {
     SparseMatrix A_rotated = [&] {
       ScopedTimer t(timings_, "condensation rotation");
       return rotate(full.A, Q_, blocks);
@@ -155,7 +170,7 @@ Vector CondensedProblem::expand(const Vector& v) const {
   const Vector reaction = reduced_.A * v - reduced_.b;
   for (std::size_t k = 0; k < normal_dofs_.size(); ++k)
     rhs(normal_dofs_[k]) += reaction(static_cast<Index>(k));
-  return Q_ * schur_->solve(rhs);
+  return Q_.rows() > 0 ? Vector(Q_ * schur_->solve(rhs)) : schur_->solve(rhs);
 }
 
 TimingTable CondensedProblem::timings() const {

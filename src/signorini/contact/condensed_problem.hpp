@@ -7,7 +7,8 @@
 // same form with one unknown per movable contact node:
 //   minimise 1/2 v^T S v - g^T v  subject to  s_j v_j <= g_j,
 // where S and g come from one sparse factorisation (linalg/schur_complement.hpp) and s_j is the
-// length of nu_j over the node's free dofs. Every method then iterates on the small dense problem
+// length of nu_j over the node's free dofs (signed where nu_j is along one axis and that dof is
+// taken as it is, without rotation). Every method then iterates on the small dense problem
 // at no cost per iteration beyond the contact boundary, and the displacement is recovered at the
 // end by one solve. The solution is that of the full problem (tested to 1e-10).
 
@@ -34,7 +35,7 @@ class CondensedProblem {
 
  private:
   ContactProblem reduced_;
-  SparseMatrix Q_;                   // the rotation: x = Q y
+  SparseMatrix Q_;                   // the rotation, x = Q y; empty when no node needs one
   Vector b_rotated_;                 // Q^T b
   std::vector<Index> normal_dofs_;   // rotated unknown that is node j's normal displacement
   std::unique_ptr<SchurComplement> schur_;

@@ -9,9 +9,10 @@
 //   Q_j whose first column is nu_j restricted to them (s_j = its norm before normalising); in
 //   y = Q^T x the constraint fixes one unknown, y_{a_j} = g_j / s_j, which is eliminated by
 //   replacing its row and column with the diagonal, so one symbolic analysis serves all;
-// - dense (the condensed problems, one unknown per contact node): with W = A^-1 computed once,
-//   x = x0 - W N^T H l, and the active multipliers solve the small system W_SS y_S = x0_S - t_S
-//   (y = s h l, t = g / s): a Newton iteration then costs O(n |S|) plus |S|^3 / 3.
+// - dense (the condensed problems, one unknown per contact node, (N x)_j = s_j x_{c(j)}): with
+//   W = A^-1 computed once, x = x0 - W N^T H l, and the active multipliers solve the small system
+//   W_SS y_S = x0_S - t_S (y = s h l, t = g / s): a Newton iteration then costs O(n |S|) plus
+//   |S|^3 / 3.
 
 #include <fmt/format.h>
 
@@ -155,13 +156,13 @@ class DelassusSolver final : public ActiveSetSolver {
       }
     x_ = x0_;
   }
-  // True where every row of N has at most one entry, with a positive coefficient.
+  // True where every row of N has at most one entry, nonzero.
   static bool applies(const ContactProblem& p) {
     const SparseMatrix Nt = p.contact.N.transpose();
     for (Index j = 0; j < Nt.cols(); ++j) {
       if (Nt.col(j).nonZeros() > 1) return false;
       for (SparseMatrix::InnerIterator it(Nt, j); it; ++it)
-        if (!(it.value() > 0.0)) return false;
+        if (it.value() == 0.0) return false;
     }
     return true;
   }

@@ -7,6 +7,8 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <memory>
+#include <vector>
 
 #include "signorini/core/error.hpp"
 
@@ -59,22 +61,22 @@ class TemporaryFile {
   std::string path_;
 };
 
-}  // namespace
-
-void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
+// Writes and flushes `contents` into a fresh temporary file beside `path`; the caller renames it.
+std::unique_ptr<TemporaryFile> write_temporary(const std::filesystem::path& path,
+                                               const std::string& contents) {
   const auto fail = [&](int error) {
     return InputError("cannot write '" + path.string() + "': " + std::strerror(error));
   };
   if (path.filename().empty())
     throw InputError("cannot write '" + path.string() + "': not a file name");
 
-  TemporaryFile tmp(path);
-  if (tmp.fd() < 0) throw fail(errno);
+  auto tmp = std::make_unique<TemporaryFile>(path);
+  if (tmp->fd() < 0) throw fail(errno);
 
   const char* data = contents.data();
   std::size_t left = contents.size();
   while (left > 0) {
-    const ssize_t n = ::write(tmp.fd(), data, left);
+    const ssize_t n = ::write(tmp->fd(), data, left);
     if (n < 0) {
       if (errno == EINTR) continue;
       throw fail(errno);
@@ -84,10 +86,32 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   }
   // The data must be on disk before the rename makes it visible under the final name; otherwise
   // a crash right after could leave an empty file in place of the earlier results.
-  if (::fsync(tmp.fd()) != 0) throw fail(errno);
-  if (!tmp.close()) throw fail(errno);
-  if (::rename(tmp.path().c_str(), path.c_str()) != 0) throw fail(errno);
+  if (::fsync(tmp->fd()) != 0) throw fail(errno);
+  if (!tmp->close()) throw fail(errno);
+  return tmp;
+}
+
+void rename_into_place(TemporaryFile& tmp, const std::filesystem::path& path) {
+  if (::rename(tmp.path().c_str(), path.c_str()) != 0)
+    throw InputError("cannot write '" + path.string() + "': " + std::strerror(errno));
   tmp.release();
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
+  const auto tmp = write_temporary(path, contents);
+  rename_into_place(*tmp, path);
+}
+
+void write_files_atomically(
+    const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+  std::vector<std::unique_ptr<TemporaryFile>> temporaries;
+  temporaries.reserve(files.size());
+  for (const auto& [path, contents] : files) temporaries.push_back(write_temporary(path, contents));
+  // Only renames are left, which fail only if the folder changed under us since the temporaries
+  // were created in it.
+  for (std::size_t i = 0; i < files.size(); ++i) rename_into_place(*temporaries[i], files[i].first);
 }
 
 }  // namespace signorini

@@ -6,11 +6,20 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace signorini {
 
 /// Replaces `path` by a file holding `contents`. The folder must exist. Throws InputError
 /// "cannot write '<path>': <reason>"; the earlier file, if any, is then left as it was.
 void write_file_atomically(const std::filesystem::path& path, const std::string& contents);
+
+/// Replaces several files together: every temporary file is written and flushed before the first
+/// is renamed, so that a failure while writing (a full disk, a folder that cannot be written)
+/// leaves every earlier file as it was, never a mix of old and new results. Errors as
+/// write_file_atomically.
+void write_files_atomically(
+    const std::vector<std::pair<std::filesystem::path, std::string>>& files);
 
 }  // namespace signorini

@@ -3,6 +3,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/io/atomic_file.hpp"
 #include "signorini/io/contact_csv.hpp"
+#include "signorini/io/solution_vtu.hpp"
 #include "signorini/io/summary_json.hpp"
 
 namespace signorini {
@@ -20,11 +21,15 @@ void create_output_folder(const std::filesystem::path& outdir) {
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec) {
   create_output_folder(outdir);
-  // Both contents are made before either file is touched: an error in one leaves both as they were.
-  const std::string json = summary_to_json(result.summary, model, spec).dump(2) + "\n";
-  const std::string csv = contact_csv(result, model);
-  write_file_atomically(outdir / "summary.json", json);
-  write_file_atomically(outdir / "contact.csv", csv);
+  // Every content is made before any file is touched, and the files are replaced together: an
+  // error leaves the results of an earlier run as they were, never a mix of old and new.
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  files.emplace_back(outdir / "summary.json",
+                     summary_to_json(result.summary, model, spec).dump(2) + "\n");
+  files.emplace_back(outdir / "contact.csv", contact_csv(result, model));
+  files.emplace_back(outdir / "solution.vtu", solution_vtu(result, model, spec));
+  files.emplace_back(outdir / "contact.vtu", contact_vtu(result, model, spec));
+  write_files_atomically(files);
 }
 
 }  // namespace signorini

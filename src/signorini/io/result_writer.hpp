@@ -1,7 +1,7 @@
 #pragma once
-// The result files of a run, written together once the solve is over: <outdir>/summary.json and
-// <outdir>/contact.csv, each atomically (io/atomic_file.hpp), so that a failed run leaves the
-// results of an earlier one intact.
+// The result files of a run, written together once the solve is over: <outdir>/summary.json,
+// contact.csv, solution.vtu and contact.vtu (docs/output.md), atomically and as a set
+// (io/atomic_file.hpp), so that a failed run leaves the results of an earlier one intact.
 
 #include <filesystem>
 
@@ -12,7 +12,8 @@
 namespace signorini {
 
 /// Creates `outdir` if needed (InputError "cannot create output folder '<dir>': <reason>") and
-/// writes summary.json and contact.csv into it (InputError "cannot write '<path>': <reason>").
+/// writes summary.json, contact.csv, solution.vtu and contact.vtu into it (InputError "cannot
+/// write '<path>': <reason>").
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec);
 

@@ -2,6 +2,8 @@
 
 #include <numeric>
 
+#include "signorini/linalg/fill_reducing_ordering.hpp"
+
 #include "signorini/linalg/detail/cholmod_matrix.hpp"
 
 namespace signorini {
@@ -16,8 +18,18 @@ struct SchurComplement::Impl {
   Index n = 0;
 };
 
-SchurComplement::SchurComplement(SparseMatrix A, const std::vector<Index>& last)
+SchurComplement::SchurComplement(const SparseMatrix& A, const std::vector<Index>& last)
     : impl_(new Impl), last_(last) {
+  build(A, nullptr);
+}
+
+SchurComplement::SchurComplement(SparseMatrix&& A, const std::vector<Index>& last)
+    : impl_(new Impl), last_(last) {
+  build(A, &A);
+}
+
+void SchurComplement::build(const SparseMatrix& A, SparseMatrix* owned) {
+  const std::vector<Index>& last = last_;
   Impl& s = *impl_;
   cholmod_l_start(&s.common);
   s.common.print = 0;
@@ -28,19 +40,15 @@ SchurComplement::SchurComplement(SparseMatrix A, const std::vector<Index>& last)
   {
     ScopedTimer t(timings_, "condensation analysis");
     s.upper = detail::make_cholmod_upper(A, s.common, /*keep_value_map=*/false);
-    A = SparseMatrix();  // CHOLMOD has its own copy now
-    // Constrained minimum degree: set 0 (interior) first, set 1 (C) last.
-    std::vector<CholmodInt> member(static_cast<std::size_t>(n), 0);
-    for (const Index i : last) member[static_cast<std::size_t>(i)] = 1;
-    std::vector<CholmodInt> perm(static_cast<std::size_t>(n));
-    cholmod_l_camd(s.upper.matrix, nullptr, 0, member.data(), perm.data(), &s.common);
-    check_cholmod(s.common, "constrained ordering");
-    // Within C, keep the caller's order so that S comes out in it.
-    std::copy(last.begin(), last.end(), perm.end() - nc);
+    // Interior ordered on the node graph (nested dissection for large meshes), C last in the
+    // caller's order so that S comes out in it.
+    const std::vector<Index> order = fill_reducing_ordering(A, last);
+    std::vector<CholmodInt> perm(order.begin(), order.end());
     s.common.nmethods = 1;
     s.common.method[0].ordering = CHOLMOD_GIVEN;
     s.common.postorder = 0;  // a postorder could move interior columns between those of C
     s.common.supernodal = CHOLMOD_SUPERNODAL;
+    if (owned != nullptr) *owned = SparseMatrix();  // CHOLMOD has its own copy now
     s.factor = cholmod_l_analyze_p(s.upper.matrix, perm.data(), nullptr, 0, &s.common);
     check_cholmod(s.common, "analysis");
     const auto* p = static_cast<const CholmodInt*>(s.factor->Perm);

@@ -16,9 +16,11 @@ namespace signorini {
 class SchurComplement {
  public:
   /// Orders, analyses and factorises A (SPD, both triangles stored) with the unknowns `last`
-  /// ordered last, then forms S. A is released as soon as CHOLMOD holds its copy, so that the
-  /// largest problems fit in memory. Throws NumericalError if A is not positive definite.
-  SchurComplement(SparseMatrix A, const std::vector<Index>& last);
+  /// ordered last, then forms S. Throws NumericalError if A is not positive definite.
+  SchurComplement(const SparseMatrix& A, const std::vector<Index>& last);
+  /// The same, releasing A as soon as CHOLMOD holds its copy, so that the largest problems fit
+  /// in memory.
+  SchurComplement(SparseMatrix&& A, const std::vector<Index>& last);
   ~SchurComplement();
   SchurComplement(const SchurComplement&) = delete;
   SchurComplement& operator=(const SchurComplement&) = delete;
@@ -35,6 +37,7 @@ class SchurComplement {
   [[nodiscard]] double factor_nonzeros() const;
 
  private:
+  void build(const SparseMatrix& A, SparseMatrix* owned);
   struct Impl;
   Impl* impl_;
   Eigen::MatrixXd L_cc_;  // trailing block of the factor: S = L_cc L_cc^T

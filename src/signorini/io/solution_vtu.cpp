@@ -1,0 +1,133 @@
+#include "signorini/io/solution_vtu.hpp"
+
+#include <map>
+
+#include "signorini/core/error.hpp"
+#include "signorini/fem/nodal_stress.hpp"
+#include "signorini/io/vtu_file.hpp"
+
+namespace signorini {
+
+namespace {
+
+void require_2d(const Model& model, const char* file) {
+  if (model.mesh.dim() != 2)
+    throw InputError(std::string(file) + ": only 2D problems can be written so far");
+}
+
+// (u_x, u_y, 0) per node, from the full node-major displacement.
+std::vector<double> displacement_xyz(const Vector& u_full, Index num_nodes) {
+  std::vector<double> out(static_cast<std::size_t>(3 * num_nodes), 0.0);
+  for (Index n = 0; n < num_nodes; ++n) {
+    out[static_cast<std::size_t>(3 * n)] = u_full(2 * n);
+    out[static_cast<std::size_t>(3 * n + 1)] = u_full(2 * n + 1);
+  }
+  return out;
+}
+
+std::uint8_t flag(bool b) { return b ? std::uint8_t{1} : std::uint8_t{0}; }
+
+}  // namespace
+
+std::string solution_vtu(const ContactResult& result, const Model& model,
+                         const ProblemSpec& spec) {
+  require_2d(model, "solution.vtu");
+  const Mesh& mesh = model.mesh;
+  const Index n = mesh.num_nodes();
+  const Vector u = model.dofs.expand(result.u);  // clamped dofs are 0
+
+  VtuFile vtu(mesh.coordinates());
+  const VtkCellType type = vtk_cell_type(mesh.cell_type());
+  for (Index c = 0; c < mesh.num_cells(); ++c) vtu.add_cell(type, mesh.cell(c));
+
+  vtu.add_point_data("displacement", 3, displacement_xyz(u, n), {"X", "Y", "Z"});
+
+  const NodalStress stress = nodal_stress(mesh, spec.elasticity, u);
+  std::vector<double> tensor(static_cast<std::size_t>(6 * n), 0.0);  // YZ, XZ stay 0 in 2D
+  for (Index k = 0; k < n; ++k) {
+    double* t = &tensor[static_cast<std::size_t>(6 * k)];
+    t[0] = stress.sigma(0, k);  // XX
+    t[1] = stress.sigma(1, k);  // YY
+    t[2] = stress.sigma(2, k);  // ZZ
+    t[3] = stress.sigma(3, k);  // XY
+  }
+  vtu.add_point_data("stress", 6, tensor, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+  vtu.add_point_data("von_mises", 1,
+                     std::vector<double>(stress.von_mises.data(), stress.von_mises.data() + n));
+
+  const ContactSet& c = model.problem.contact;
+  std::vector<double> pressure(static_cast<std::size_t>(n), 0.0);
+  std::vector<double> gap(static_cast<std::size_t>(n), 0.0);
+  std::vector<std::uint8_t> active(static_cast<std::size_t>(n), 0);
+  std::vector<std::uint8_t> on_boundary(static_cast<std::size_t>(n), 0);
+  for (Index j = 0; j < c.size(); ++j) {
+    const auto node = static_cast<std::size_t>(c.nodes[static_cast<std::size_t>(j)]);
+    pressure[node] = result.l(j);
+    gap[node] = c.gaps(j);
+    active[node] = flag(result.l(j) > 0.0);  // as SolveSummary::num_active counts them
+    on_boundary[node] = 1;
+  }
+  vtu.add_point_data("contact_pressure", 1, pressure);
+  vtu.add_point_data("gap", 1, gap);
+  vtu.add_point_data("contact_active", active);
+  vtu.add_point_data("contact_boundary", on_boundary);
+  return vtu.text();
+}
+
+std::string contact_vtu(const ContactResult& result, const Model& model,
+                        const ProblemSpec& spec) {
+  require_2d(model, "contact.vtu");
+  const Mesh& mesh = model.mesh;
+  const ContactSet& c = model.problem.contact;
+  const Index m = c.size();
+  const Vector u = model.dofs.expand(result.u);
+
+  Eigen::MatrixXd points(2, m);
+  std::map<Index, Index> position;  // mesh node -> point of this file
+  for (Index j = 0; j < m; ++j) {
+    const Index node = c.nodes[static_cast<std::size_t>(j)];
+    points.col(j) = mesh.node(node);
+    position[node] = j;
+  }
+  VtuFile vtu(points);
+  for (const Facet& f : mesh.boundary_part(spec.contact.boundary).facets) {
+    std::vector<Index> line;
+    for (const Index node : mesh.facet_nodes(f)) line.push_back(position.at(node));
+    vtu.add_cell(VtkCellType::Line, line);
+  }
+
+  std::vector<double> displacement(static_cast<std::size_t>(3 * m), 0.0);
+  std::vector<double> normal(static_cast<std::size_t>(3 * m), 0.0);
+  std::vector<double> un(static_cast<std::size_t>(m)), ut(static_cast<std::size_t>(m));
+  std::vector<double> pressure(static_cast<std::size_t>(m)), gap(static_cast<std::size_t>(m));
+  std::vector<double> deformed_gap(static_cast<std::size_t>(m));
+  std::vector<std::uint8_t> active(static_cast<std::size_t>(m));
+  for (Index j = 0; j < m; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const Index node = c.nodes[k];
+    const double ux = u(2 * node), uy = u(2 * node + 1);
+    const double nx = c.normals(0, j), ny = c.normals(1, j);
+    displacement[3 * k] = ux;
+    displacement[3 * k + 1] = uy;
+    normal[3 * k] = nx;
+    normal[3 * k + 1] = ny;
+    // As contact.csv: tau is nu turned a quarter counterclockwise.
+    un[k] = ux * nx + uy * ny;
+    ut[k] = -ux * ny + uy * nx;
+    pressure[k] = result.l(j);
+    gap[k] = c.gaps(j);
+    deformed_gap[k] = c.gaps(j) - un[k];
+    active[k] = flag(result.l(j) > 0.0);
+  }
+  vtu.add_point_data("displacement", 3, displacement, {"X", "Y", "Z"});
+  vtu.add_point_data("normal", 3, normal, {"X", "Y", "Z"});
+  vtu.add_point_data("normal_displacement", 1, un);
+  vtu.add_point_data("tangential_displacement", 1, ut);
+  vtu.add_point_data("contact_pressure", 1, pressure);
+  vtu.add_point_data("gap", 1, gap);
+  vtu.add_point_data("deformed_gap", 1, deformed_gap);
+  vtu.add_point_data("contact_active", active);
+  return vtu.text();
+}
+
+}  // namespace signorini

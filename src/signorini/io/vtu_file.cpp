@@ -1,0 +1,133 @@
+#include "signorini/io/vtu_file.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cstring>
+#include <stdexcept>
+
+namespace signorini {
+
+namespace {
+
+template <class T>
+std::string bytes_of(const T* data, std::size_t count) {
+  std::string out(count * sizeof(T), '\0');
+  if (count > 0) std::memcpy(out.data(), data, out.size());
+  return out;
+}
+
+// Names are ours (identifiers), but an attribute value must stay well-formed whatever it holds.
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+VtkCellType vtk_cell_type(CellType type) {
+  switch (type) {
+    case CellType::Quad4: return VtkCellType::Quad;
+    case CellType::Tri3: return VtkCellType::Triangle;
+    case CellType::Hex8: return VtkCellType::Hexahedron;
+    case CellType::Tet4: return VtkCellType::Tetra;
+  }
+  return VtkCellType::Quad;
+}
+
+VtuFile::VtuFile(const Eigen::MatrixXd& points) : num_points_(points.cols()) {
+  if (points.rows() < 1 || points.rows() > 3)
+    throw std::invalid_argument("VtuFile: points must have 1 to 3 coordinates");
+  Eigen::MatrixXd xyz = Eigen::MatrixXd::Zero(3, points.cols());
+  xyz.topRows(points.rows()) = points;
+  point_bytes_ = bytes_of(xyz.data(), static_cast<std::size_t>(xyz.size()));
+}
+
+void VtuFile::add_cell(VtkCellType type, std::span<const Index> points) {
+  for (const Index p : points) {
+    if (p < 0 || p >= num_points_) throw std::invalid_argument("VtuFile: point number out of range");
+    connectivity_.push_back(p);
+  }
+  offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
+  types_.push_back(static_cast<std::uint8_t>(type));
+}
+
+void VtuFile::add_point_data(const std::string& name, int components,
+                             const std::vector<double>& values,
+                             const std::vector<std::string>& component_names) {
+  if (components < 1 || static_cast<Index>(values.size()) != components * num_points_)
+    throw std::invalid_argument("VtuFile: point data '" + name + "' has the wrong size");
+  if (!component_names.empty() && static_cast<int>(component_names.size()) != components)
+    throw std::invalid_argument("VtuFile: point data '" + name + "' has the wrong component names");
+  point_data_.push_back(
+      {name, "Float64", components, component_names, bytes_of(values.data(), values.size())});
+}
+
+void VtuFile::add_point_data(const std::string& name, const std::vector<std::uint8_t>& values) {
+  if (static_cast<Index>(values.size()) != num_points_)
+    throw std::invalid_argument("VtuFile: point data '" + name + "' has the wrong size");
+  point_data_.push_back({name, "UInt8", 1, {}, bytes_of(values.data(), values.size())});
+}
+
+std::string VtuFile::text() const {
+  std::string xml;
+  std::string appended;
+  // Each array in the appended block is its byte count (UInt64) followed by its bytes; `offset`
+  // counts from the byte after the '_' that opens the block.
+  const auto data_array = [&](const std::string& indent, const std::string& name,
+                              const std::string& type, int components,
+                              const std::vector<std::string>& component_names,
+                              const std::string& bytes) {
+    xml += fmt::format("{}<DataArray type=\"{}\"", indent, type);
+    if (!name.empty()) xml += fmt::format(" Name=\"{}\"", xml_escaped(name));
+    xml += fmt::format(" NumberOfComponents=\"{}\"", components);
+    for (std::size_t i = 0; i < component_names.size(); ++i)
+      xml += fmt::format(" ComponentName{}=\"{}\"", i, xml_escaped(component_names[i]));
+    xml += fmt::format(" format=\"appended\" offset=\"{}\"/>\n", appended.size());
+    const std::uint64_t size = bytes.size();
+    appended += bytes_of(&size, 1);
+    appended += bytes;
+  };
+
+  const char* byte_order =
+      std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+  xml += "<?xml version=\"1.0\"?>\n";
+  xml += fmt::format(
+      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
+      "header_type=\"UInt64\">\n",
+      byte_order);
+  xml += "  <UnstructuredGrid>\n";
+  xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", num_points_,
+                     types_.size());
+  xml += "      <PointData>\n";
+  for (const Array& a : point_data_)
+    data_array("        ", a.name, a.type, a.components, a.component_names, a.bytes);
+  xml += "      </PointData>\n";
+  xml += "      <Points>\n";
+  data_array("        ", "Points", "Float64", 3, {}, point_bytes_);
+  xml += "      </Points>\n";
+  xml += "      <Cells>\n";
+  data_array("        ", "connectivity", "Int64", 1, {},
+             bytes_of(connectivity_.data(), connectivity_.size()));
+  data_array("        ", "offsets", "Int64", 1, {}, bytes_of(offsets_.data(), offsets_.size()));
+  data_array("        ", "types", "UInt8", 1, {}, bytes_of(types_.data(), types_.size()));
+  xml += "      </Cells>\n";
+  xml += "    </Piece>\n";
+  xml += "  </UnstructuredGrid>\n";
+  // meshio drops everything after the last newline of the block, so the data ends with one.
+  xml += "  <AppendedData encoding=\"raw\">\n   _";
+  xml += appended;
+  xml += "\n  </AppendedData>\n</VTKFile>\n";
+  return xml;
+}
+
+}  // namespace signorini
