@@ -3,6 +3,7 @@
 #include <string>
 
 #include "signorini/linalg/detail/cholmod_matrix.hpp"
+#include "signorini/linalg/fill_reducing_ordering.hpp"
 
 namespace signorini {
 
@@ -44,7 +45,14 @@ void CholmodSolver::analyze(const SparseMatrix& pattern) {
   s.release();
   s.n = pattern.rows();
   s.upper = detail::make_cholmod_upper(pattern, s.common);
-  s.factor = cholmod_l_analyze(s.upper.matrix, &s.common);
+  // AMD on the graph of the nodes rather than of the dofs: the same fill for a fraction of the
+  // ordering time (and no trial of METIS on the dof graph, which CHOLMOD's default may add).
+  const std::vector<Index> order = fill_reducing_ordering(pattern, {});
+  std::vector<detail::CholmodInt> perm(order.begin(), order.end());
+  s.common.nmethods = 1;
+  s.common.method[0].ordering = CHOLMOD_GIVEN;
+  s.common.postorder = 1;
+  s.factor = cholmod_l_analyze_p(s.upper.matrix, perm.data(), nullptr, 0, &s.common);
   check_cholmod(s.common, "analysis");
 }
 
@@ -78,7 +86,7 @@ std::string_view CholmodSolver::ordering_name() const {
   if (impl_->factor == nullptr) return "none";
   switch (impl_->factor->ordering) {
     case CHOLMOD_NATURAL: return "natural";
-    case CHOLMOD_GIVEN: return "given";
+    case CHOLMOD_GIVEN: return "AMD (node graph)";
     case CHOLMOD_AMD: return "AMD";
     case CHOLMOD_METIS: return "METIS";
     case CHOLMOD_NESDIS: return "NESDIS";

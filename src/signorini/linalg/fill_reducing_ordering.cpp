@@ -64,8 +64,7 @@ std::vector<Index> fill_reducing_ordering(const SparseMatrix& A, const std::vect
     graph.sorted = 1;
     graph.packed = 1;
     std::vector<CholmodInt> perm(static_cast<std::size_t>(ng));
-    const bool metis =
-        method == OrderingMethod::Metis || (method == OrderingMethod::Auto && ng > 20000);
+    const bool metis = method == OrderingMethod::Metis;
     if (metis)
       cholmod_l_metis(&graph, nullptr, 0, /*postorder=*/1, perm.data(), &common);
     else
