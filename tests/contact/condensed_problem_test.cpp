@@ -39,7 +39,7 @@ TEST(SchurComplement, MatchesTheDenseFormulas) {
   SparseMatrix A(n, n);
   A.setFromTriplets(t.begin(), t.end());
   const std::vector<Index> last{3, 17, 29, 8};
-  const SchurComplement sc(A, last);
+  SchurComplement sc(A, last);
   std::vector<Index> interior;
   for (Index i = 0; i < n; ++i)
     if (std::find(last.begin(), last.end(), i) == last.end()) interior.push_back(i);
@@ -51,6 +51,11 @@ TEST(SchurComplement, MatchesTheDenseFormulas) {
   const Vector g = b(last) - Aic.transpose() * Aii.llt().solve(Vector(b(interior)));
   EXPECT_LT((sc.condensed_load(b) - g).norm(), 1e-12 * g.norm());
   EXPECT_LT((A * sc.solve(b) - b).norm(), 1e-12 * b.norm());
+  // x = A^-1 (b + E_C f) by a back substitution after condensed_load(b).
+  const Vector f = Vector::LinSpaced(static_cast<Index>(last.size()), 1.0, -3.0);
+  Vector rhs = b;
+  for (std::size_t k = 0; k < last.size(); ++k) rhs(last[k]) += f(static_cast<Index>(k));
+  EXPECT_LT((A * sc.solve_with_condensed_forces(f) - rhs).norm(), 1e-12 * rhs.norm());
 }
 
 class CondensedVsPlain : public ::testing::TestWithParam<ContactMethod> {};

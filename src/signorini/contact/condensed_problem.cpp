@@ -78,6 +78,7 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
   const Index n = full.A.rows();
   const Index nc = c.size();
   Vector scale = Vector::Zero(nc);  // (N x)_j = scale_j * (normal unknown of j)
+  Vector b_rotated;                 // Q^T b
   std::vector<std::vector<Index>> blocks;  // free dofs of each rotated contact node
   {
     ScopedTimer t(timings_, "condensation rotation");
@@ -125,9 +126,9 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
           qt.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
       Q_.resize(n, n);
       Q_.setFromTriplets(qt.begin(), qt.end());
-      b_rotated_ = Q_.transpose() * full.b;
+      b_rotated = Q_.transpose() * full.b;
     } else {
-      b_rotated_ = full.b;  // no rotation: Q = I, and A is used as it is (no copy)
+      b_rotated = full.b;  // no rotation: Q = I, and A is used as it is (no copy)
     }
   }
   if (blocks.empty()) {
@@ -148,7 +149,7 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
   for (Index col = 0; col < nm; ++col)
     for (Index row = 0; row < nm; ++row) reduced_.A.insert(row, col) = S(row, col);
   reduced_.A.makeCompressed();
-  reduced_.b = schur_->condensed_load(b_rotated_);
+  reduced_.b = schur_->condensed_load(b_rotated);
 
   ContactSet& rc = reduced_.contact;
   rc.nodes = c.nodes;
@@ -165,12 +166,10 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
 }
 
 Vector CondensedProblem::expand(const Vector& v) const {
-  // A_r y = Q^T b + E (S v - g) has y_C = v and the interior solution y_I = A_II^-1 (b_I - A_IC v).
-  Vector rhs = b_rotated_;
-  const Vector reaction = reduced_.A * v - reduced_.b;
-  for (std::size_t k = 0; k < normal_dofs_.size(); ++k)
-    rhs(normal_dofs_[k]) += reaction(static_cast<Index>(k));
-  return Q_.rows() > 0 ? Vector(Q_ * schur_->solve(rhs)) : schur_->solve(rhs);
+  // A_r y = Q^T b + E (S v - g) has y_C = v and the interior solution y_I = A_II^-1 (b_I - A_IC v);
+  // the forward substitution of Q^T b was done for g already.
+  const Vector y = schur_->solve_with_condensed_forces(reduced_.A * v - reduced_.b);
+  return Q_.rows() > 0 ? Vector(Q_ * y) : y;
 }
 
 TimingTable CondensedProblem::timings() const {

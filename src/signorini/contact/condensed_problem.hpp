@@ -36,7 +36,6 @@ class CondensedProblem {
  private:
   ContactProblem reduced_;
   SparseMatrix Q_;                   // the rotation, x = Q y; empty when no node needs one
-  Vector b_rotated_;                 // Q^T b
   std::vector<Index> normal_dofs_;   // rotated unknown that is node j's normal displacement
   std::unique_ptr<SchurComplement> schur_;
   TimingTable timings_;

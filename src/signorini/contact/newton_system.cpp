@@ -48,8 +48,9 @@ class DenseNewtonSystem final : public NewtonSystem {
     // A rank-one update costs about 2 n^2 flops, a factorisation n^3 / 3; updates also
     // accumulate round-off, so refactorise after many.
     const auto n = static_cast<double>(A_.rows());
+    const auto max_updates = std::max<std::size_t>(200, static_cast<std::size_t>(n / 3.0));
     const bool update = has_factor_ && 6.0 * static_cast<double>(changed.size()) < n &&
-                        updates_since_factorization_ + changed.size() < 200;
+                        updates_since_factorization_ + changed.size() < max_updates;
     bool ok = update;
     if (update) {
       for (const Index j : changed) {

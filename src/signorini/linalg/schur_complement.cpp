@@ -100,7 +100,7 @@ SchurComplement::~SchurComplement() {
   delete impl_;
 }
 
-Vector SchurComplement::condensed_load(const Vector& b) const {
+Vector SchurComplement::condensed_load(const Vector& b) {
   ScopedTimer t(timings_, "condensation solve");
   Impl& s = *impl_;
   const auto nc = static_cast<Index>(last_.size());
@@ -111,11 +111,29 @@ Vector SchurComplement::condensed_load(const Vector& b) const {
   check_cholmod(s.common, "permutation");
   cholmod_dense* z = cholmod_l_solve(CHOLMOD_L, s.factor, pb, &s.common);
   check_cholmod(s.common, "forward substitution");
-  const Eigen::Map<const Vector> zc(static_cast<const double*>(z->x) + (s.n - nc), nc);
-  const Vector g = L_cc_.triangularView<Eigen::Lower>() * zc;
+  forward_load_ = Eigen::Map<const Vector>(static_cast<const double*>(z->x), s.n);
   cholmod_l_free_dense(&pb, &s.common);
   cholmod_l_free_dense(&z, &s.common);
-  return g;
+  return L_cc_.triangularView<Eigen::Lower>() * forward_load_.tail(nc);
+}
+
+Vector SchurComplement::solve_with_condensed_forces(const Vector& f) const {
+  ScopedTimer t(timings_, "condensation solve");
+  Impl& s = *impl_;
+  const auto nc = static_cast<Index>(last_.size());
+  if (forward_load_.size() != s.n)
+    throw NumericalError("SchurComplement: solve_with_condensed_forces() before condensed_load()");
+  Vector w = forward_load_;
+  w.tail(nc) += L_cc_.triangularView<Eigen::Lower>().solve(f);
+  cholmod_dense wd = detail::dense_view(w);
+  cholmod_dense* y = cholmod_l_solve(CHOLMOD_Lt, s.factor, &wd, &s.common);
+  check_cholmod(s.common, "back substitution");
+  cholmod_dense* x = cholmod_l_solve(CHOLMOD_Pt, s.factor, y, &s.common);
+  check_cholmod(s.common, "permutation");
+  Vector out = Eigen::Map<const Vector>(static_cast<const double*>(x->x), s.n);
+  cholmod_l_free_dense(&y, &s.common);
+  cholmod_l_free_dense(&x, &s.common);
+  return out;
 }
 
 Vector SchurComplement::solve(const Vector& rhs) const {

@@ -27,8 +27,13 @@ class SchurComplement {
 
   /// S = A_CC - A_CI A_II^-1 A_IC, |C| x |C|, in the order of `last`.
   [[nodiscard]] const Eigen::MatrixXd& matrix() const { return S_; }
-  /// The condensed load g = b_C - A_CI A_II^-1 b_I (one forward substitution).
-  [[nodiscard]] Vector condensed_load(const Vector& b) const;
+  /// The condensed load g = b_C - A_CI A_II^-1 b_I (one forward substitution, whose result is
+  /// kept for solve_with_condensed_forces()).
+  [[nodiscard]] Vector condensed_load(const Vector& b);
+  /// x = A^-1 (b + E_C f) for the b of the last condensed_load() and forces f on C (in the order
+  /// of `last`): only a back substitution, since the forward substitution of E_C f touches the
+  /// trailing block alone, L^-1 P E_C f = [0; L_CC^-1 f].
+  [[nodiscard]] Vector solve_with_condensed_forces(const Vector& f) const;
   /// x = A^-1 rhs with the factorisation (one forward and one back substitution).
   [[nodiscard]] Vector solve(const Vector& rhs) const;
   /// Phases: "condensation analysis", "condensation factorization", "condensation Schur
@@ -43,6 +48,7 @@ class SchurComplement {
   Eigen::MatrixXd L_cc_;  // trailing block of the factor: S = L_cc L_cc^T
   Eigen::MatrixXd S_;
   std::vector<Index> last_;
+  Vector forward_load_;  // z = L^-1 P b of the last condensed_load()
   mutable TimingTable timings_;
 };
 
