@@ -10,6 +10,7 @@ namespace signorini::app {
 
 int run_check(const CheckArguments& args) {
   const LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
+  print_warnings(loaded);
   const Model model = build_model_for(loaded);
   fmt::print("ok: {} dofs, {} contact nodes\n", model.dofs.num_dofs(),
              model.problem.contact.size());

@@ -10,7 +10,8 @@ namespace signorini::app {
 enum ExitStatus : int {
   kSuccess = 0,         ///< solved and converged (or: the check passed)
   kInternalError = 1,   ///< a bug or an unexpected failure (e.g. out of memory)
-  kBadInput = 2,        ///< the problem file, an option or the output folder is unusable
+  kBadInput = 2,        ///< the problem file, an option or the output folder is unusable, or
+                        ///< plotting lacks python3/matplotlib
   kNotConverged = 3,    ///< the solver stopped short; results are written with converged = false
   kNumericalError = 4,  ///< a numerical failure (e.g. a factorisation of an SPD matrix failed)
 };
@@ -20,6 +21,14 @@ struct SolveArguments {
   std::string output_dir;
   std::vector<std::string> overrides;  ///< --set key=value
   bool quiet = false;
+  std::string log_format = "text";  ///< "text" or "json" (one JSON object per line)
+  bool plot = false;                ///< also draw the figures (as `signorini plot`)
+  double plot_scale = 0.0;          ///< magnification of the deformed body; 0: automatic
+};
+
+struct PlotArguments {
+  std::string output_dir;
+  double scale = 0.0;  ///< magnification of the deformed body; 0: automatic
 };
 
 struct CheckArguments {
@@ -45,6 +54,9 @@ int run_solve(const SolveArguments& args);
 
 /// `signorini check`: reads the file and builds the model without solving.
 int run_check(const CheckArguments& args);
+
+/// `signorini plot OUTDIR`: draws the figures of a solve's output folder (tools/plot_results.py).
+int run_plot(const PlotArguments& args);
 
 /// "signorini 0.1.0" and the compiled backends with their versions, several lines.
 std::string version_text();

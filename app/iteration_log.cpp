@@ -16,4 +16,12 @@ std::string iteration_line(ContactMethod method, const IterationEvent& e) {
   return line;
 }
 
+nlohmann::json iteration_json(const IterationEvent& e) {
+  const bool inner = e.kind == IterationEvent::Kind::Inner;
+  return {{"event", "iteration"}, {"level", inner ? "inner" : "outer"},
+          {"outer", e.outer},     {"inner", e.inner},
+          {"active", e.active},   {"residual", e.residual},
+          {"armijo", e.armijo},   {"linear_iterations", e.linear_iterations}};
+}
+
 }  // namespace signorini::app

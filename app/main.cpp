@@ -5,6 +5,8 @@
 //   signorini solve examples/paper.toml -o results/paper
 //   signorini solve examples/paper.toml -o results/paper --set mesh.nx=120 --set mesh.ny=40
 //   signorini solve examples/paper.toml -o results/ssn --set solver.method=semismooth_newton
+//   signorini solve examples/paper.toml -o results/paper --plot --log-format json
+//   signorini plot results/paper
 //   signorini bench --repeats 3 --json results/bench.json
 //
 // Exit status: 0 solved (or checked), 2 bad input, 3 not converged (results written anyway),
@@ -55,7 +57,7 @@ int main(int argc, char** argv) {
       ->required();
   solve_cmd
       ->add_option("-o,--output", solve.output_dir,
-                   "Folder for summary.json and contact.csv (created if needed)")
+                   "Folder for the results (created if needed; docs/output.md)")
       ->required();
   solve_cmd
       ->add_option("--set", solve.overrides,
@@ -63,7 +65,19 @@ int main(int argc, char** argv) {
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);
   solve_cmd->add_flag("-q,--quiet", solve.quiet,
-                      "Print nothing but errors (no settings, progress, report)");
+                      "Print nothing but errors and warnings (no settings, progress, report)");
+  solve_cmd
+      ->add_option("--log-format", solve.log_format,
+                   "text (default; a status line on a terminal) or json (one JSON object per "
+                   "line, docs/output.md)")
+      ->type_name("FORMAT");
+  CLI::Option* plot_flag = solve_cmd->add_flag(
+      "--plot", solve.plot, "Also draw the figures into the output folder (as signorini plot)");
+  solve_cmd
+      ->add_option("--scale", solve.plot_scale,
+                   "With --plot: magnification of the deformed body (default: automatic)")
+      ->check(CLI::PositiveNumber)
+      ->needs(plot_flag);
 
   CheckArguments check;
   CLI::App* check_cmd =
@@ -72,6 +86,14 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--set", check.overrides, "Override a setting of the file (repeatable)")
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);
+
+  PlotArguments plot;
+  CLI::App* plot_cmd = app.add_subcommand(
+      "plot", "Draw the figures of a solve's output folder as PNG and SVG (needs matplotlib)");
+  plot_cmd->add_option("OUTDIR", plot.output_dir, "Output folder of signorini solve")->required();
+  plot_cmd
+      ->add_option("--scale", plot.scale, "Magnification of the deformed body (default: automatic)")
+      ->check(CLI::PositiveNumber);
 
   BenchArguments bench;
   CLI::App* bench_cmd = app.add_subcommand(
@@ -100,8 +122,10 @@ int main(int argc, char** argv) {
     }
     if (*solve_cmd) return run_solve(solve);
     if (*check_cmd) return run_check(check);
+    if (*plot_cmd) return run_plot(plot);
     if (*bench_cmd) return run_bench(bench);
-    return fail(kBadInput, "expected a command: solve or check (see signorini --help)");
+    return fail(kBadInput,
+                "expected a command: solve, check, plot or bench (see signorini --help)");
   } catch (const signorini::InputError& e) {
     return fail(kBadInput, e.what());
   } catch (const signorini::NumericalError& e) {

@@ -1,5 +1,9 @@
 #include "model_loading.hpp"
 
+#include <fmt/format.h>
+
+#include <cstdio>
+
 #include "signorini/core/error.hpp"
 
 namespace signorini::app {
@@ -10,6 +14,11 @@ Model build_model_for(const LoadedProblem& loaded) {
   } catch (const InputError& e) {
     throw InputError(loaded.path + ": " + e.what());
   }
+}
+
+void print_warnings(const LoadedProblem& loaded) {
+  std::fflush(stdout);  // in order with what was printed before, on a shared terminal
+  for (const std::string& w : loaded.warnings) fmt::print(stderr, "signorini: warning: {}\n", w);
 }
 
 }  // namespace signorini::app

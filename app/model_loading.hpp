@@ -10,4 +10,8 @@ namespace signorini::app {
 /// build_model(loaded.spec); an InputError gets the prefix "<file>: ".
 Model build_model_for(const LoadedProblem& loaded);
 
+/// "signorini: warning: <message>" on stderr for each of loaded.warnings (also with --quiet:
+/// stderr is for what needs attention).
+void print_warnings(const LoadedProblem& loaded);
+
 }  // namespace signorini::app

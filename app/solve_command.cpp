@@ -1,52 +1,111 @@
 // `signorini solve PROBLEM.toml -o OUTDIR`: read, echo the settings, build, solve with a progress
-// log, report, write the results.
+// log, report, write the results, and with --plot draw the figures.
 
 #include <fmt/format.h>
 
 #include <cstdio>
 
 #include "commands.hpp"
-#include "iteration_log.hpp"
 #include "model_loading.hpp"
+#include "plotting.hpp"
+#include "progress.hpp"
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/core/error.hpp"
 #include "signorini/io/result_writer.hpp"
+#include "signorini/io/summary_json.hpp"
 #include "timing_report.hpp"
 
 namespace signorini::app {
 
-int run_solve(const SolveArguments& args) {
+namespace {
+
+const std::vector<std::string> kResultFiles = {"summary.json", "contact.csv", "solution.vtu",
+                                               "contact.vtu"};
+
+std::string listed(const std::string& folder, const std::vector<std::string>& files) {
+  std::string s;
+  for (const std::string& f : files) s += (s.empty() ? "" : ", ") + folder + "/" + f;
+  return s;
+}
+
+nlohmann::json paths(const std::string& folder, const std::vector<std::string>& files) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const std::string& f : files) j.push_back(folder + "/" + f);
+  return j;
+}
+
+// The script's one-line message (captured, so that it cannot land in the middle of a status
+// line), and our exit status.
+int failed_plot(Progress& progress, const PlotRun& run) {
+  const int status = exit_status_of(run);
+  std::string message = run.errors;
+  const std::string prefix = "signorini: error: ";
+  if (message.starts_with(prefix)) message.erase(0, prefix.size());
+  while (!message.empty() && message.back() == '\n') message.pop_back();
+  progress.report("", {{"event", "error"}, {"status", status}, {"message", message}});
+  progress.suspend();
+  std::fflush(stdout);
+  std::fputs(run.errors.c_str(), stderr);
+  return status;
+}
+
+int solve(const SolveArguments& args, LogFormat format) {
   LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
   ProblemSpec& spec = loaded.spec;
-  const bool verbose = !args.quiet;
-  if (verbose) {
-    // The effective settings, as TOML: the log of a run is enough to repeat it.
-    fmt::print("# {}: effective settings\n{}\n", loaded.path, loaded.effective_toml);
+  print_warnings(loaded);
+
+  Progress::Options options;
+  options.quiet = args.quiet;
+  options.format = format;
+  options.terminal = format == LogFormat::Text && Progress::is_terminal(stdout);
+  Progress progress(spec.solver.method, options);
+  if (format == LogFormat::Json)
+    for (const std::string& w : loaded.warnings)
+      progress.report("", {{"event", "warning"}, {"message", w}});
+  // The effective settings, as TOML: the log of a run is enough to repeat it.
+  progress.report(fmt::format("# {}: effective settings\n{}\n", loaded.path, loaded.effective_toml),
+                  {{"event", "settings"}, {"file", loaded.path}, {"toml", loaded.effective_toml}});
+
+  // Before the solve, so that a missing matplotlib fails in a second and not after a long run.
+  if (args.plot) {
+    progress.phase("checking the plotting tools");
+    const PlotRun run = check_plotting();
+    if (run.status != 0) return failed_plot(progress, run);
   }
+
+  progress.phase("building the model");
   const Model model = build_model_for(loaded);
-  if (verbose)
-    fmt::print("model: {} dofs ({} free), {} contact nodes\n", model.dofs.num_dofs(),
-               model.dofs.num_free(), model.problem.contact.size());
+  progress.report(fmt::format("model: {} dofs ({} free), {} contact nodes\n", model.dofs.num_dofs(),
+                              model.dofs.num_free(), model.problem.contact.size()),
+                  {{"event", "model"},
+                   {"n_dofs", model.dofs.num_dofs()},
+                   {"n_free_dofs", model.dofs.num_free()},
+                   {"n_contact_nodes", model.problem.contact.size()}});
   // Before the solve, so that an unusable -o fails in a second and not after a long run. The
   // files themselves are written only once the solve is over.
   create_output_folder(args.output_dir);
 
-  if (verbose) {
-    const ContactMethod method = spec.solver.method;
-    spec.solver.observer = [method](const IterationEvent& e) {
-      fmt::print("{}\n", iteration_line(method, e));
-      std::fflush(stdout);  // progress is for watching a long run as it goes
-    };
-  }
+  progress.phase("contact solve");
+  spec.solver.observer = [&progress](const IterationEvent& e) { progress.iteration(e); };
   const ContactResult result = solve_contact(model.problem, spec.solver);
+  progress.finish_iterations();
   const SolveSummary& summary = result.summary;
-  if (verbose)
-    fmt::print("\n{}\ntimings:\n{}", summary.brief_report(), timing_report(model, summary));
+  {
+    nlohmann::json event = summary_to_json(summary, model, spec);
+    event.erase("problem");  // the settings event has it
+    event["event"] = "summary";
+    progress.report(
+        fmt::format("\n{}\ntimings:\n{}", summary.brief_report(), timing_report(model, summary)),
+        event);
+  }
 
+  progress.phase("writing the results");
   write_results(args.output_dir, result, model, spec);
-  if (verbose)
-    fmt::print("results: {}/summary.json, {}/contact.csv\n", args.output_dir, args.output_dir);
+  progress.report(fmt::format("results: {}\n", listed(args.output_dir, kResultFiles)),
+                  {{"event", "results"}, {"files", paths(args.output_dir, kResultFiles)}});
 
   if (!summary.converged()) {
+    progress.suspend();
     std::fflush(stdout);
     fmt::print(stderr,
                "signorini: not converged ({}): {}; KKT residuals: equilibrium {:.2e}, "
@@ -55,9 +114,45 @@ int run_solve(const SolveArguments& args) {
                enum_to_string(kTerminationNames, summary.termination), summary.message,
                summary.kkt.equilibrium, summary.kkt.penetration, summary.kkt.sign,
                summary.kkt.complementarity, args.output_dir);
-    return kNotConverged;
   }
-  return kSuccess;
+
+  if (args.plot) {
+    progress.phase("plotting");
+    const std::optional<double> scale =
+        args.plot_scale > 0.0 ? std::optional<double>(args.plot_scale) : std::nullopt;
+    const PlotRun run = plot_results(args.output_dir, scale, true);
+    if (run.status != 0) return failed_plot(progress, run);
+    progress.report(fmt::format("figures: {}\n", listed(args.output_dir, figure_files())),
+                    {{"event", "figures"}, {"files", paths(args.output_dir, figure_files())}});
+  }
+  return summary.converged() ? kSuccess : kNotConverged;
+}
+
+}  // namespace
+
+int run_solve(const SolveArguments& args) {
+  const auto format = enum_from_string(kLogFormatNames, args.log_format);
+  if (!format)
+    throw InputError("--log-format '" + args.log_format + "': expected " +
+                     enum_choices(kLogFormatNames));
+  if (*format != LogFormat::Json || args.quiet) return solve(args, *format);
+  // A program reading the JSON log learns of a failure from the log too (the one-line message
+  // still goes to stderr, from main()).
+  const auto error_event = [](int status, const std::string& message) {
+    std::fflush(stdout);
+    fmt::print("{}\n",
+               nlohmann::json{{"event", "error"}, {"status", status}, {"message", message}}.dump());
+    std::fflush(stdout);
+  };
+  try {
+    return solve(args, *format);
+  } catch (const InputError& e) {
+    error_event(kBadInput, e.what());
+    throw;
+  } catch (const NumericalError& e) {
+    error_event(kNumericalError, std::string("numerical failure: ") + e.what());
+    throw;
+  }
 }
 
 }  // namespace signorini::app

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages that signorini needs to build and test, and only those that are
-# missing (so a second run does nothing). Runs as root, or through sudo when it is available.
+# Installs the Debian 12 packages that signorini needs to build, test and plot, and only those
+# that are missing (so a second run does nothing). Runs as root, or through sudo when it is
+# available. (The fuzzing of tests/fuzz/run.sh also needs clang, which that script installs.)
 set -euo pipefail
 
 packages=(
@@ -8,6 +9,9 @@ packages=(
   libeigen3-dev libsuitesparse-dev libopenblas-dev
   libtomlplusplus-dev libmuparser-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  # `signorini plot` and `solve --plot` draw with matplotlib; the tests read the .vtu files with
+  # meshio as a second, independent reader (both for /usr/bin/python3).
+  python3-matplotlib python3-meshio
 )
 
 missing=()
@@ -18,7 +22,7 @@ for p in "${packages[@]}"; do
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "setup: all ${#packages[@]} build packages are installed"
+  echo "setup: all ${#packages[@]} packages are installed"
   exit 0
 fi
 

@@ -2,54 +2,25 @@
 // check exit statuses, messages and result files.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "app/tool_run.hpp"
 #include "io/expect_contains.hpp"
-#include "io/temporary_folder.hpp"
 
 namespace signorini {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
+using testing::count_lines;
+using testing::quoted;
+using testing::run_tool;
+using testing::ToolRun;
 
 std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quoted(const std::string& s) {
-  return "'" + s + "'";
-}
-
-// Runs the tool with `arguments` (already quoted where needed), capturing both streams.
-ToolRun run_tool(const testing::TemporaryFolder& dir, const std::string& arguments) {
-  const fs::path out = dir / "stdout.txt";
-  const fs::path err = dir / "stderr.txt";
-  const std::string command = quoted(SIGNORINI_APP_PATH) + " " + arguments + " > " +
-                              quoted(out.string()) + " 2> " + quoted(err.string()) + " < /dev/null";
-  const int raw = std::system(command.c_str());
-  ToolRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = read(out);
-  r.err = read(err);
-  return r;
-}
-
-std::size_t count_lines(const std::string& text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  return testing::read_text(p);
 }
 
 const std::string kSmall = quoted(SIGNORINI_EXAMPLES_DIR "/paper_small.toml");
@@ -111,6 +82,14 @@ TEST(SignoriniApp, SolvesTheSmallPaperExample) {
   const std::string csv = read(out / "contact.csv");
   EXPECT_EQ(count_lines(csv), 62U);  // header + 61 contact nodes
   EXPECT_EQ(csv.rfind("x,y,u_n,u_t,pressure,gap\n", 0), 0U);
+  // The ParaView files (their contents: tests/io/solution_vtu_test.cpp).
+  for (const char* vtu : {"solution.vtu", "contact.vtu"})
+    EXPECT_EQ(
+        read(out / vtu).rfind("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\"", 0), 0U)
+        << vtu;
+  EXPECT_CONTAINS(r.out, "results: " + out.string() + "/summary.json, " + out.string() +
+                             "/contact.csv, " + out.string() + "/solution.vtu, " + out.string() +
+                             "/contact.vtu\n");
 }
 
 TEST(SignoriniApp, PaperExampleReproducesTheLastRowOfTable1) {

@@ -65,5 +65,21 @@ TEST(ContactSet, NonFiniteGapIsRejected) {
                InputError);
 }
 
+TEST(ContactSet, EmptyBoundaryPartIsRejected) {
+  // Not possible from a problem file today (every edge of a rectangle has facets), but a mesh read
+  // from a file may name a part that has none.
+  Mesh mesh = make_rectangle_mesh({0.0, 0.0, 1.0, 1.0, 2, 2});
+  mesh.set_boundary_part("nothing", {});
+  const DofMap dofs = make_dof_map(mesh, {{"left"}});
+  try {
+    (void)make_contact_set(mesh, mesh.boundary_part("nothing"), dofs,
+                           [](const Point&) { return 0.0; });
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "contact.boundary = 'nothing': the boundary part has no facets");
+  }
+}
+
 }  // namespace
 }  // namespace signorini

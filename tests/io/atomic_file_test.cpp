@@ -82,5 +82,24 @@ TEST(AtomicFile, MissingFolderIsAnError) {
   }
 }
 
+TEST(AtomicFile, SeveralFilesAreReplacedTogether) {
+  const testing::TemporaryFolder dir;
+  write_files_atomically({{dir / "a.json", "new a\n"}, {dir / "b.csv", "new b\n"}});
+  EXPECT_EQ(read(dir / "a.json"), "new a\n");
+  EXPECT_EQ(read(dir / "b.csv"), "new b\n");
+  EXPECT_EQ(count_entries(dir.path()), 2U);
+  // The second file cannot be written: the first keeps its earlier contents too, and no
+  // temporary is left behind.
+  const fs::path missing = dir / "no_such_folder" / "c.vtu";
+  try {
+    write_files_atomically({{dir / "a.json", "newer a\n"}, {missing, "c\n"}});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_CONTAINS(e.what(), "cannot write '" + missing.string() + "': No such file");
+  }
+  EXPECT_EQ(read(dir / "a.json"), "new a\n");
+  EXPECT_EQ(count_entries(dir.path()), 2U);
+}
+
 }  // namespace
 }  // namespace signorini

@@ -76,6 +76,15 @@ TEST(Expression, EmptyAndListExpressionsAreErrors) {
   EXPECT_CONTAINS(error_of("1, 2"), "expected a single value");
 }
 
+TEST(Expression, ErrorsAreOneLineWhateverTheFormulaHolds) {
+  // Found by tests/fuzz: a formula from a TOML multi-line string holds line breaks.
+  const std::string m = error_of("1 +\n2 +\t\x01");
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  EXPECT_CONTAINS(m, "cannot parse expression '1 +\\n2 +\\t\\x01': ");
+  const std::string long_formula(5000, '(');
+  EXPECT_LT(error_of(long_formula).size(), 400U);
+}
+
 TEST(Expression, VectorFieldErrorsNameTheComponent) {
   try {
     make_vector_field({"0", "1 +"}, "traction[0].p");

@@ -116,7 +116,7 @@ TEST(ContactCsv, OneRowPerContactNodeWithConventions) {
   }
 }
 
-TEST(ResultWriter, WritesBothFilesIntoANewFolder) {
+TEST(ResultWriter, WritesEveryFileIntoANewFolder) {
   const Solved& s = solved();
   const testing::TemporaryFolder dir;
   const fs::path out = dir / "a" / "b";
@@ -128,6 +128,10 @@ TEST(ResultWriter, WritesBothFilesIntoANewFolder) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header, "x,y,u_n,u_t,pressure,gap");
+  for (const char* vtu : {"solution.vtu", "contact.vtu"}) EXPECT_TRUE(fs::exists(out / vtu)) << vtu;
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;
+  EXPECT_EQ(entries, 4U);  // and no temporary file
 }
 
 TEST(ResultWriter, FolderThatCannotBeCreated) {

@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/normal_rotation.hpp"
 #include "signorini/core/timing_table.hpp"
 #include "signorini/linalg/schur_complement.hpp"
 
@@ -35,7 +36,7 @@ class CondensedProblem {
 
  private:
   ContactProblem reduced_;
-  SparseMatrix Q_;                   // the rotation, x = Q y; empty when no node needs one
+  NormalRotation rotation_;          // x = Q y
   std::vector<Index> normal_dofs_;   // rotated unknown that is node j's normal displacement
   std::unique_ptr<SchurComplement> schur_;
   TimingTable timings_;

@@ -5,10 +5,10 @@
 // until S repeats. It uses no penalty parameter, so it checks the Uzawa methods independently.
 //
 // Two ways to solve the equality-constrained problem:
-// - sparse (any problem): each contact node's free dofs are rotated by a Householder reflection
-//   Q_j whose first column is nu_j restricted to them (s_j = its norm before normalising); in
-//   y = Q^T x the constraint fixes one unknown, y_{a_j} = g_j / s_j, which is eliminated by
-//   replacing its row and column with the diagonal, so one symbolic analysis serves all;
+// - sparse (any problem): the contact nodes' free dofs are rotated so that each normal
+//   displacement is one unknown (contact/normal_rotation.hpp); in y = Q^T x the constraint fixes
+//   it, y_{a_j} = g_j / s_j, and it is eliminated by replacing its row and column with the
+//   diagonal, so one symbolic analysis serves all;
 // - dense (the condensed problems, one unknown per contact node, (N x)_j = s_j x_{c(j)}): with
 //   W = A^-1 computed once, x = x0 - W N^T H l, and the active multipliers solve the small system
 //   W_SS y_S = x0_S - t_S (y = s h l, t = g / s): a Newton iteration then costs O(n |S|) plus
@@ -21,6 +21,7 @@
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/contact/normal_rotation.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 
@@ -43,48 +44,12 @@ class ActiveSetSolver {
 
 class RotatedEliminationSolver final : public ActiveSetSolver {
  public:
-  RotatedEliminationSolver(const ContactProblem& p, const LinearSolverOptions& linear) : p_(p) {
-    const ContactSet& c = p.contact;
-    const Index n = p.A.rows();
-    const Index nc = c.size();
-    normal_dof_.assign(static_cast<std::size_t>(nc), -1);
-    scale_ = Vector::Zero(nc);
-    std::vector<bool> in_block(static_cast<std::size_t>(n), false);
-    std::vector<Eigen::Triplet<double, int>> qt;
-    const SparseMatrix Nt = c.N.transpose();
-    for (Index j = 0; j < nc; ++j) {
-      if (!c.movable[static_cast<std::size_t>(j)]) continue;
-      std::vector<Index> dofs;
-      std::vector<double> coef;
-      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
-        dofs.push_back(it.row());
-        coef.push_back(it.value());
-      }
-      const Eigen::Map<const Vector> cv(coef.data(), static_cast<Index>(coef.size()));
-      scale_(j) = cv.norm();
-      Vector v = cv / scale_(j);
-      v(0) -= 1.0;  // Householder vector: Q = I - 2 v v^T / (v.v) maps e_1 to cv / |cv|
-      const double vv = v.squaredNorm();
-      const auto k = static_cast<Index>(dofs.size());
-      for (Index a = 0; a < k; ++a) {
-        in_block[static_cast<std::size_t>(dofs[static_cast<std::size_t>(a)])] = true;
-        for (Index b = 0; b < k; ++b) {
-          const double q = (a == b ? 1.0 : 0.0) - (vv > 1e-28 ? 2.0 * v(a) * v(b) / vv : 0.0);
-          qt.emplace_back(static_cast<int>(dofs[static_cast<std::size_t>(a)]),
-                          static_cast<int>(dofs[static_cast<std::size_t>(b)]), q);
-        }
-      }
-      normal_dof_[static_cast<std::size_t>(j)] = dofs.front();
-    }
-    for (Index i = 0; i < n; ++i)
-      if (!in_block[static_cast<std::size_t>(i)])
-        qt.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
-    Q_.resize(n, n);
-    Q_.setFromTriplets(qt.begin(), qt.end());
-    Ar_ = SparseMatrix(Q_.transpose() * p.A * Q_);
-    br_ = Q_.transpose() * p.b;
+  RotatedEliminationSolver(const ContactProblem& p, const LinearSolverOptions& linear)
+      : p_(p), rotation_(make_normal_rotation(p.contact, p.A.rows())) {
+    Ar_ = rotate_matrix(p.A, rotation_);
+    br_ = rotation_.to_rotated(p.b);
     K_ = Ar_;
-    y_ = Vector::Zero(n);
+    y_ = Vector::Zero(p.A.rows());
     solver_ = make_linear_solver(linear);
     solver_->analyze(Ar_);
   }
@@ -96,9 +61,9 @@ class RotatedEliminationSolver final : public ActiveSetSolver {
     Vector y_fixed = Vector::Zero(n);
     for (Index j = 0; j < c.size(); ++j)
       if (S[static_cast<std::size_t>(j)]) {
-        const Index a = normal_dof_[static_cast<std::size_t>(j)];
+        const Index a = rotation_.normal_dof[static_cast<std::size_t>(j)];
         fixed[static_cast<std::size_t>(a)] = true;
-        y_fixed(a) = c.gaps(j) / scale_(j);
+        y_fixed(a) = c.gaps(j) / rotation_.scale(j);
       }
     for (Index col = 0; col < n; ++col)
       for (int k = K_.outerIndexPtr()[col]; k < K_.outerIndexPtr()[col + 1]; ++k) {
@@ -119,19 +84,19 @@ class RotatedEliminationSolver final : public ActiveSetSolver {
     gap_residual = Vector::Zero(c.size());
     for (Index j = 0; j < c.size(); ++j) {
       if (!c.movable[static_cast<std::size_t>(j)]) continue;
-      const Index a = normal_dof_[static_cast<std::size_t>(j)];
-      if (S[static_cast<std::size_t>(j)]) l(j) = reaction(a) / (scale_(j) * c.weights(j));
-      gap_residual(j) = scale_(j) * y_(a) - c.gaps(j);
+      const Index a = rotation_.normal_dof[static_cast<std::size_t>(j)];
+      const double s = rotation_.scale(j);
+      if (S[static_cast<std::size_t>(j)]) l(j) = reaction(a) / (s * c.weights(j));
+      gap_residual(j) = s * y_(a) - c.gaps(j);
     }
     return st;
   }
-  [[nodiscard]] Vector displacement() const override { return Q_ * y_; }
+  [[nodiscard]] Vector displacement() const override { return rotation_.from_rotated(y_); }
 
  private:
   const ContactProblem& p_;
-  std::vector<Index> normal_dof_;
-  Vector scale_;
-  SparseMatrix Q_, Ar_, K_;
+  NormalRotation rotation_;
+  SparseMatrix Ar_, K_;
   Vector br_, y_;
   std::unique_ptr<LinearSolver> solver_;
 };

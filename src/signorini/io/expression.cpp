@@ -1,5 +1,6 @@
 #include "signorini/io/expression.hpp"
 
+#include <fmt/format.h>
 #include <muParser.h>
 
 #include <numbers>
@@ -7,6 +8,35 @@
 #include "signorini/core/error.hpp"
 
 namespace signorini {
+
+namespace {
+
+// Error messages are one line (core/error.hpp), but a formula from a TOML multi-line string may
+// hold line breaks, and muParser quotes the offending token: control characters are written as
+// escapes, and a very long formula is shortened.
+std::string one_line(const std::string& text, std::size_t max_length = 200) {
+  std::string out;
+  for (const char c : text) {
+    if (out.size() >= max_length) {
+      out += "...";
+      break;
+    }
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else if (c == '\t')
+      out += "\\t";
+    else if (u < 0x20 || u == 0x7f)
+      out += fmt::format("\\x{:02x}", u);
+    else
+      out += c;
+  }
+  return out;
+}
+
+}  // namespace
 
 struct ScalarExpression::State {
   std::string text;
@@ -22,7 +52,8 @@ ScalarExpression::ScalarExpression(const std::string& expression, const std::str
   State& s = *state_;
   s.text = expression;
   const auto fail = [&](const std::string& why) {
-    return InputError(key + ": cannot parse expression '" + expression + "': " + why);
+    return InputError(key + ": cannot parse expression '" + one_line(expression) +
+                      "': " + one_line(why));
   };
   try {
     s.parser.DefineVar("x", &s.x);

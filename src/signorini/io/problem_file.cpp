@@ -310,7 +310,8 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   if (m.ny < 1) r.out_of_range("mesh.ny", std::to_string(m.ny), "an integer >= 1");
 }
 
-void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec,
+                   std::vector<std::string>& warnings) {
   const toml::table* t = r.table(root, "", "material");
   if (t == nullptr) r.missing("material", "a [material] section with E and nu");
   r.check_keys(*t, "material", {"E", "nu", "plane_model"});
@@ -320,6 +321,12 @@ void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec) 
   spec.elasticity.plane_model =
       r.enumeration(*t, "material", "plane_model", kPlaneModelNames, PlaneModel::PlaneStrain);
   r.validated(m);
+  // Valid, but bilinear elements lock as nu approaches 1/2: the displacements come out too small
+  // by a factor that grows without bound, which the solver cannot detect.
+  if (m.nu > 0.49)
+    warnings.push_back(r.file() + ": material.nu = " + as_text(m.nu) +
+                       " > 0.49: nearly incompressible; Q1 elements lock, so displacements and "
+                       "stresses may be far too small");
 }
 
 void read_fem(const Reader& r, const toml::table& root, ProblemSpec& spec) {
@@ -371,6 +378,38 @@ void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   }
 }
 
+// The assembly refuses a non-finite load or gap too, but names the boundary part only; these
+// wrappers name the key, the formula and the position:
+//   traction[1].p[1] = '1/(x-3)' is infinite at x = (3, 0.5)
+std::string not_finite(const std::string& key, const std::string& formula, double value,
+                       const Point& x) {
+  return fmt::format(
+      "{} = '{}' is {} at x = ({:g}, {:g}): expected finite values everywhere "
+      "it is used",
+      key, one_line(formula), std::isnan(value) ? "NaN" : "infinite", x(0), x(1));
+}
+
+VectorField finite_vector_field(VectorField f, const std::string& key,
+                                const std::vector<std::string>& formulas) {
+  return [f = std::move(f), key, formulas](const Point& x) {
+    const Eigen::Vector3d v = f(x);
+    for (std::size_t i = 0; i < formulas.size(); ++i) {
+      const double value = v(static_cast<Eigen::Index>(i));
+      if (!std::isfinite(value))
+        throw InputError(not_finite(element(key, i), formulas[i], value, x));
+    }
+    return v;
+  };
+}
+
+ScalarField finite_scalar_field(ScalarField f, const std::string& key, const std::string& formula) {
+  return [f = std::move(f), key, formula](const Point& x) {
+    const double value = f(x);
+    if (!std::isfinite(value)) throw InputError(not_finite(key, formula, value, x));
+    return value;
+  };
+}
+
 // "(0, -2/3*(3 - x))": how a field was given, for reports.
 std::string describe(const std::vector<std::string>& exprs) {
   std::string out = "(";
@@ -400,7 +439,8 @@ void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
                            "name of a boundary part");
     const auto p = required(r, r.expressions(t, path, "p", 2), join(path, "p"),
                             "2 expressions of x, y: the traction in MPa");
-    tr.p = with_file(r, [&] { return make_vector_field(p, join(path, "p")); });
+    tr.p = finite_vector_field(with_file(r, [&] { return make_vector_field(p, join(path, "p")); }),
+                               join(path, "p"), p);
     tr.description = describe(p);
     texts.tractions.push_back(p);
     spec.tractions.push_back(std::move(tr));
@@ -414,7 +454,8 @@ void read_body_force(const Reader& r, const toml::table& root, ProblemSpec& spec
   r.check_keys(*t, "body_force", {"f"});
   const auto f = required(r, r.expressions(*t, "body_force", "f", 2), "body_force.f",
                           "2 expressions of x, y: the force per volume in MN/m^3");
-  spec.body_force = with_file(r, [&] { return make_vector_field(f, "body_force.f"); });
+  spec.body_force = finite_vector_field(
+      with_file(r, [&] { return make_vector_field(f, "body_force.f"); }), "body_force.f", f);
   spec.body_force_description = describe(f);
   texts.body_force = f;
 }
@@ -427,7 +468,9 @@ void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
   spec.contact.boundary = required(r, r.string(*t, "contact", "boundary"), "contact.boundary",
                                    "name of a boundary part");
   texts.gap = r.expression(*t, "contact", "gap").value_or("0");
-  spec.contact.gap = with_file(r, [&] { return make_scalar_field(texts.gap, "contact.gap"); });
+  spec.contact.gap =
+      finite_scalar_field(with_file(r, [&] { return make_scalar_field(texts.gap, "contact.gap"); }),
+                          "contact.gap", texts.gap);
   spec.contact.description = texts.gap;
 }
 
@@ -675,7 +718,7 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
       r.string(root, "", "name").value_or(std::filesystem::path(name_for_errors).stem().string());
   ExpressionTexts texts;
   read_mesh(r, root, spec);
-  read_material(r, root, spec);
+  read_material(r, root, spec, out.warnings);
   read_fem(r, root, spec);
   read_clamps(r, root, spec);
   read_tractions(r, root, spec, texts);

@@ -19,6 +19,9 @@ struct LoadedProblem {
   std::string effective_toml;
   /// The file name, as given (used in messages).
   std::string path;
+  /// Settings that are valid but probably not what was meant, one line each, naming the file and
+  /// the key (e.g. a Poisson ratio above 0.49, where Q1 elements lock): printed as warnings.
+  std::vector<std::string> warnings;
 };
 
 /// Reads a problem file and applies overrides, each "dotted.key=value", e.g. "mesh.nx=480" or

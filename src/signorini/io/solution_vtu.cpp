@@ -25,12 +25,13 @@ std::vector<double> displacement_xyz(const Vector& u_full, Index num_nodes) {
   return out;
 }
 
-std::uint8_t flag(bool b) { return b ? std::uint8_t{1} : std::uint8_t{0}; }
+std::uint8_t flag(bool b) {
+  return b ? std::uint8_t{1} : std::uint8_t{0};
+}
 
 }  // namespace
 
-std::string solution_vtu(const ContactResult& result, const Model& model,
-                         const ProblemSpec& spec) {
+std::string solution_vtu(const ContactResult& result, const Model& model, const ProblemSpec& spec) {
   require_2d(model, "solution.vtu");
   const Mesh& mesh = model.mesh;
   const Index n = mesh.num_nodes();
@@ -74,8 +75,7 @@ std::string solution_vtu(const ContactResult& result, const Model& model,
   return vtu.text();
 }
 
-std::string contact_vtu(const ContactResult& result, const Model& model,
-                        const ProblemSpec& spec) {
+std::string contact_vtu(const ContactResult& result, const Model& model, const ProblemSpec& spec) {
   require_2d(model, "contact.vtu");
   const Mesh& mesh = model.mesh;
   const ContactSet& c = model.problem.contact;

@@ -22,11 +22,20 @@ std::string xml_escaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -36,10 +45,14 @@ std::string xml_escaped(const std::string& text) {
 
 VtkCellType vtk_cell_type(CellType type) {
   switch (type) {
-    case CellType::Quad4: return VtkCellType::Quad;
-    case CellType::Tri3: return VtkCellType::Triangle;
-    case CellType::Hex8: return VtkCellType::Hexahedron;
-    case CellType::Tet4: return VtkCellType::Tetra;
+    case CellType::Quad4:
+      return VtkCellType::Quad;
+    case CellType::Tri3:
+      return VtkCellType::Triangle;
+    case CellType::Hex8:
+      return VtkCellType::Hexahedron;
+    case CellType::Tet4:
+      return VtkCellType::Tetra;
   }
   return VtkCellType::Quad;
 }
@@ -54,7 +67,8 @@ VtuFile::VtuFile(const Eigen::MatrixXd& points) : num_points_(points.cols()) {
 
 void VtuFile::add_cell(VtkCellType type, std::span<const Index> points) {
   for (const Index p : points) {
-    if (p < 0 || p >= num_points_) throw std::invalid_argument("VtuFile: point number out of range");
+    if (p < 0 || p >= num_points_)
+      throw std::invalid_argument("VtuFile: point number out of range");
     connectivity_.push_back(p);
   }
   offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));

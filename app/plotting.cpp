@@ -1,0 +1,146 @@
+#include "plotting.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+#include "commands.hpp"
+#include "signorini/core/error.hpp"
+
+extern char** environ;
+
+namespace signorini::app {
+
+namespace {
+
+bool executable(const std::string& path) {
+  std::error_code ec;
+  return !path.empty() && std::filesystem::is_regular_file(path, ec) &&
+         ::access(path.c_str(), X_OK) == 0;
+}
+
+// The Debian interpreter first: `python3` on PATH may be a virtual environment or a pyenv shim
+// without the Debian packages (python3-matplotlib) that setup.sh installs.
+std::string find_python() {
+  if (const char* chosen = std::getenv("SIGNORINI_PYTHON")) {
+    if (!executable(chosen))
+      throw InputError(fmt::format(
+          "plotting: SIGNORINI_PYTHON = '{}' is not an executable file: expected a Python 3 "
+          "interpreter with numpy and matplotlib",
+          chosen));
+    return chosen;
+  }
+  if (executable("/usr/bin/python3")) return "/usr/bin/python3";
+  if (const char* path = std::getenv("PATH")) {
+    std::string dirs = path;
+    std::size_t start = 0;
+    while (start <= dirs.size()) {
+      const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+      const std::string dir = dirs.substr(start, end - start);
+      const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/python3";
+      if (executable(candidate)) return candidate;
+      start = end + 1;
+    }
+  }
+  throw InputError(
+      "plotting needs python3 with matplotlib, and no python3 was found (Debian: apt-get install "
+      "python3-matplotlib)");
+}
+
+std::string find_script() {
+  const char* chosen = std::getenv("SIGNORINI_PLOT_SCRIPT");
+  const std::string script = chosen != nullptr ? chosen : SIGNORINI_PLOT_SCRIPT;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(script, ec))
+    throw InputError(
+        fmt::format("plotting: the plot script '{}' does not exist (was the source tree moved? set "
+                    "SIGNORINI_PLOT_SCRIPT to tools/plot_results.py)",
+                    script));
+  return script;
+}
+
+}  // namespace
+
+std::vector<std::string> figure_files() {
+  std::vector<std::string> files;
+  for (const char* name :
+       {"contact_displacement", "contact_pressure", "deformed_von_mises", "convergence"})
+    for (const char* format : {"png", "svg"}) files.push_back(fmt::format("{}.{}", name, format));
+  return files;
+}
+
+PlotRun run_plot_script(const std::vector<std::string>& arguments, bool capture) {
+  std::vector<std::string> argv_text = {find_python(), find_script()};
+  argv_text.insert(argv_text.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  // An unnamed temporary file, removed when closed, takes the script's stderr.
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> errors(capture ? std::tmpfile() : nullptr,
+                                                         &std::fclose);
+  if (capture && !errors) throw std::runtime_error("plotting: cannot create a temporary file");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (capture) {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_adddup2(&actions, ::fileno(errors.get()), STDERR_FILENO);
+  }
+  // What was printed so far comes before what the script prints.
+  std::fflush(stdout);
+  std::fflush(stderr);
+  pid_t pid = 0;
+  const int rc = ::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0)
+    throw InputError(fmt::format("plotting: cannot run '{}': {}", argv_text[0], std::strerror(rc)));
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) throw std::runtime_error("plotting: waitpid failed");
+  }
+  PlotRun run;
+  if (capture) {
+    std::rewind(errors.get());
+    char buffer[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, errors.get())) > 0)
+      run.errors.append(buffer, n);
+  }
+  if (!WIFEXITED(status))
+    throw std::runtime_error(
+        fmt::format("plotting: the plot script was ended by signal {}", WTERMSIG(status)));
+  run.status = WEXITSTATUS(status);
+  return run;
+}
+
+PlotRun plot_results(const std::string& outdir, std::optional<double> scale, bool capture) {
+  std::vector<std::string> arguments = {"--quiet"};
+  if (scale) {
+    arguments.emplace_back("--scale");
+    arguments.push_back(fmt::format("{:.17g}", *scale));
+  }
+  arguments.emplace_back("--");  // a folder named "-x" is not an option
+  arguments.push_back(outdir);
+  return run_plot_script(arguments, capture);
+}
+
+PlotRun check_plotting() {
+  return run_plot_script({"--check"}, true);
+}
+
+int exit_status_of(const PlotRun& run) {
+  if (run.status == 0) return kSuccess;
+  return run.status == kBadInput ? kBadInput : kInternalError;
+}
+
+}  // namespace signorini::app

@@ -1,0 +1,41 @@
+#pragma once
+// The figures of an output folder, drawn by tools/plot_results.py with matplotlib in the
+// system's Python (docs/output.md, "Figures"). The script's path is compiled in
+// (SIGNORINI_PLOT_SCRIPT, in the source tree); the environment variables SIGNORINI_PLOT_SCRIPT and
+// SIGNORINI_PYTHON override the script and the interpreter.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace signorini::app {
+
+/// The files the script writes into the output folder, in the order of docs/output.md.
+std::vector<std::string> figure_files();
+
+/// How the script ended: its exit status (0 done, 2 a missing package or an unusable folder,
+/// which it reports on stderr in one line, 1 a failure of the script) and, when captured, what it
+/// wrote to stderr.
+struct PlotRun {
+  int status = 0;
+  std::string errors;
+};
+
+/// Runs the script with `arguments`. With `capture`, its stdout goes to /dev/null and its stderr
+/// into PlotRun::errors, for the caller to print when the terminal is free (a status line may be
+/// on it); otherwise both go where ours go. Throws InputError if there is no Python interpreter
+/// or no script.
+PlotRun run_plot_script(const std::vector<std::string>& arguments, bool capture);
+
+/// Draws the figures of `outdir`; `scale` is the magnification of the deformed body (automatic if
+/// empty).
+PlotRun plot_results(const std::string& outdir, std::optional<double> scale, bool capture);
+
+/// Whether the script can run (numpy and matplotlib import): the script with --check, its stderr
+/// captured.
+PlotRun check_plotting();
+
+/// Our exit status for a run of the script: kSuccess, kBadInput or kInternalError.
+int exit_status_of(const PlotRun& run);
+
+}  // namespace signorini::app

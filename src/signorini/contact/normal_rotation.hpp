@@ -1,0 +1,33 @@
+#pragma once
+// A change of the free dofs of the contact nodes that makes each node's normal displacement one
+// unknown: (N x)_j = s_j y_{a_j} with x = Q y. Where nu_j has a single nonzero component over the
+// node's free dofs (an edge along an axis), that dof is taken as it is with s_j the signed
+// component; elsewhere a Householder reflection Q_j on the node's free dofs, whose first column
+// is nu_j restricted to them and normalised, with s_j the norm of that restriction. Used by the
+// condensation onto the contact boundary and by the semismooth Newton solver, which both need the
+// normal displacement as a single unknown.
+
+#include <vector>
+
+#include "signorini/contact/contact_set.hpp"
+
+namespace signorini {
+
+struct NormalRotation {
+  SparseMatrix Q;                          ///< block-diagonal and symmetric; empty when Q = I
+  std::vector<Index> normal_dof;           ///< per contact node: a_j, or -1 if not movable
+  Vector scale;                            ///< s_j per contact node (0 if not movable)
+  std::vector<std::vector<Index>> blocks;  ///< free dofs of each rotated node
+  [[nodiscard]] bool identity() const { return Q.rows() == 0; }
+  /// Q^T v (or v when Q = I).
+  [[nodiscard]] Vector to_rotated(const Vector& v) const;
+  /// Q y (or y when Q = I).
+  [[nodiscard]] Vector from_rotated(const Vector& y) const;
+};
+
+NormalRotation make_normal_rotation(const ContactSet& contact, Index num_free);
+
+/// Q^T A Q, computed in place on a copy of A where the node blocks allow it (A itself when Q = I).
+SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation);
+
+}  // namespace signorini

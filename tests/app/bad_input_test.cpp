@@ -1,0 +1,240 @@
+// Every class of bad input, through the tool: exit status 2, one line on stderr that names the
+// file and the key (or line) and says what was expected, and nothing written. docs/output.md
+// lists the classes.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "app/tool_run.hpp"
+#include "io/expect_contains.hpp"
+
+namespace signorini {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing::count_lines;
+using testing::quoted;
+using testing::run_tool;
+using testing::ToolRun;
+
+const std::string kFile = SIGNORINI_EXAMPLES_DIR "/paper_small.toml";
+const std::string kError = "signorini: error: ";
+
+// `signorini check` on the small example with overrides: the same reading and model building as a
+// solve, without the solve.
+ToolRun check(const testing::TemporaryFolder& dir, const std::vector<std::string>& overrides) {
+  std::string arguments = "check " + quoted(kFile);
+  for (const std::string& o : overrides) arguments += " --set " + quoted(o);
+  return run_tool(dir, arguments);
+}
+
+// Status 2, a single line on stderr, and that line.
+std::string bad_input_line(const ToolRun& r) {
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+  EXPECT_EQ(r.out, "");
+  return r.err;
+}
+
+// The small example with `line` removed (it must be there).
+fs::path example_without(const testing::TemporaryFolder& dir, const std::string& line) {
+  std::string text = testing::read_text(kFile);
+  const auto pos = text.find(line + "\n");
+  if (pos == std::string::npos) throw std::logic_error("paper_small.toml has no line " + line);
+  text.erase(pos, line.size() + 1);
+  const fs::path file = dir / "edited.toml";
+  std::ofstream(file) << text;
+  return file;
+}
+
+TEST(BadInput, MalformedToml) {
+  const testing::TemporaryFolder dir;
+  std::ofstream(dir / "bad.toml") << "[mesh\nnx = 1\n";
+  const std::string err =
+      bad_input_line(run_tool(dir, "check " + quoted((dir / "bad.toml").string())));
+  EXPECT_EQ(err.rfind(kError + (dir / "bad.toml").string() + ":1:6: TOML syntax error: ", 0), 0U)
+      << err;
+}
+
+TEST(BadInput, MissingRequiredKey) {
+  const testing::TemporaryFolder dir;
+  const fs::path file = example_without(dir, "nx = 60");
+  EXPECT_EQ(bad_input_line(run_tool(dir, "check " + quoted(file.string()))),
+            kError + file.string() + ": missing required key 'mesh.nx' (integer >= 1)\n");
+}
+
+TEST(BadInput, UnknownKey) {
+  const testing::TemporaryFolder dir;
+  EXPECT_EQ(
+      bad_input_line(check(dir, {"mesh.nxx=3"})),
+      kError + kFile + ": unknown key 'mesh.nxx' (did you mean 'mesh.nx'?), given by --set\n");
+}
+
+TEST(BadInput, WrongType) {
+  const testing::TemporaryFolder dir;
+  EXPECT_EQ(bad_input_line(check(dir, {"mesh.nx=\"6\""})),
+            kError + kFile + ": key 'mesh.nx' must be an integer, got string\n");
+  EXPECT_EQ(bad_input_line(check(dir, {"solver.method=uzawa"})),
+            kError + kFile +
+                ": key 'solver.method' must be \"uzawa_gnm\", \"classical_uzawa\" or "
+                "\"semismooth_newton\", got 'uzawa' (did you mean 'uzawa_gnm'?)\n");
+}
+
+TEST(BadInput, NonPositiveYoungsModulus) {
+  const testing::TemporaryFolder dir;
+  for (const char* e : {"material.E=0", "material.E=-210000"}) {
+    const std::string err = bad_input_line(check(dir, {e}));
+    EXPECT_EQ(err.rfind(kError + kFile + ": material.E = ", 0), 0U) << err;
+    EXPECT_CONTAINS(err, ": expected a positive modulus\n");
+  }
+}
+
+TEST(BadInput, PoissonRatioOutsideItsRange) {
+  const testing::TemporaryFolder dir;
+  for (const char* nu : {"material.nu=0.5", "material.nu=-1", "material.nu=0.7"}) {
+    const std::string err = bad_input_line(check(dir, {nu}));
+    EXPECT_EQ(err.rfind(kError + kFile + ": material.nu = ", 0), 0U) << err;
+    EXPECT_CONTAINS(err, ": expected a Poisson ratio in (-1, 0.5)\n");
+  }
+}
+
+TEST(BadInput, NearlyIncompressibleMaterialIsAWarning) {
+  const testing::TemporaryFolder dir;
+  const ToolRun r = check(dir, {"material.nu=0.495"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "signorini: warning: " + kFile +
+                       ": material.nu = 0.495 > 0.49: nearly incompressible; Q1 elements lock, so "
+                       "displacements and stresses may be far too small\n");
+  // A solve warns as well, even with --quiet, and still solves.
+  const ToolRun s = run_tool(dir, "solve " + quoted(kFile) + " -q --set material.nu=0.495 -o " +
+                                      quoted((dir / "out").string()));
+  EXPECT_EQ(s.status, 0) << s.err;
+  EXPECT_EQ(s.err, r.err);
+  EXPECT_TRUE(fs::exists(dir / "out" / "summary.json"));
+}
+
+TEST(BadInput, MeshSizeBelowOne) {
+  const testing::TemporaryFolder dir;
+  EXPECT_EQ(bad_input_line(check(dir, {"mesh.nx=0"})),
+            kError + kFile + ": key 'mesh.nx' = 0: expected an integer >= 1\n");
+  EXPECT_EQ(bad_input_line(check(dir, {"mesh.ny=-2"})),
+            kError + kFile + ": key 'mesh.ny' = -2: expected an integer >= 1\n");
+}
+
+TEST(BadInput, MeshTooLargeForThisMachine) {
+  // Refused from an estimate, before any memory is allocated (which would take minutes or end
+  // with the out-of-memory killer).
+  const testing::TemporaryFolder dir;
+  for (const char* n : {"mesh.nx=100000000", "mesh.nx=9223372036854775807"}) {
+    const std::string err = bad_input_line(check(dir, {n}));
+    EXPECT_EQ(err.rfind(kError + kFile + ": mesh ", 0), 0U) << err;
+    EXPECT_CONTAINS(err, "GB of memory with the cholmod solver, more than this machine's ");
+    EXPECT_CONTAINS(err, ": use a smaller mesh.nx, mesh.ny\n");
+  }
+}
+
+TEST(BadInput, ExpressionThatDoesNotParse) {
+  const testing::TemporaryFolder dir;
+  EXPECT_EQ(bad_input_line(check(dir, {"traction.1.p=[0, \"1 +\"]"})),
+            kError + kFile +
+                ": traction[1].p[1]: cannot parse expression '1 +': Unexpected end of expression "
+                "at position 4\n");
+}
+
+TEST(BadInput, ExpressionWithAnUnknownVariable) {
+  const testing::TemporaryFolder dir;
+  EXPECT_EQ(bad_input_line(check(dir, {"contact.gap=2*t"})),
+            kError + kFile +
+                ": contact.gap: cannot parse expression '2*t': Unexpected token \"t\" found at "
+                "position 2.\n");
+}
+
+TEST(BadInput, ExpressionThatIsNotFiniteWhereItIsUsed) {
+  const testing::TemporaryFolder dir;
+  EXPECT_EQ(bad_input_line(check(dir, {"contact.gap=sqrt(x - 1)"})),
+            kError + kFile +
+                ": contact.gap = 'sqrt(x - 1)' is NaN at x = (0, 0): expected finite values "
+                "everywhere it is used\n");
+  EXPECT_CONTAINS(bad_input_line(check(dir, {"traction.0.p=[0, \"sqrt(2 - x)\"]"})),
+                  ": traction[0].p[1] = 'sqrt(2 - x)' is NaN at x = (3, ");
+  EXPECT_CONTAINS(bad_input_line(check(dir, {"body_force.f=[\"1/0\", 0]"})),
+                  ": body_force.f[0] = '1/0' is infinite at x = (");
+}
+
+TEST(BadInput, BoundaryNameThatDoesNotExist) {
+  const testing::TemporaryFolder dir;
+  for (const char* key : {"contact.boundary", "clamp.0.boundary", "traction.0.boundary"})
+    EXPECT_EQ(
+        bad_input_line(check(dir, {std::string(key) + "=floor"})),
+        kError + kFile + ": mesh has no boundary part 'floor' (it has: bottom, left, right, top)\n")
+        << key;
+}
+
+TEST(BadInput, ContactBoundaryOnTheClampedBoundary) {
+  const testing::TemporaryFolder dir;
+  EXPECT_EQ(bad_input_line(check(dir, {"contact.boundary=left"})),
+            kError + kFile +
+                ": contact.boundary = 'left': every contact node is clamped in its normal "
+                "direction, so no contact can occur (does it coincide with the clamped "
+                "boundary?)\n");
+}
+
+TEST(BadInput, NoClampedBoundary) {
+  const testing::TemporaryFolder dir;
+  std::string text = testing::read_text(kFile);
+  text.erase(text.find("[[clamp]]\nboundary = \"left\"\n"), 28);
+  std::ofstream(dir / "unclamped.toml") << text;
+  const fs::path file = dir / "unclamped.toml";
+  EXPECT_EQ(bad_input_line(run_tool(dir, "check " + quoted(file.string()))),
+            kError + file.string() +
+                ": missing required key 'clamp' (a [[clamp]] section with the boundary where u = "
+                "0; at least one)\n");
+  EXPECT_EQ(
+      bad_input_line(check(dir, {"clamp.0.components=[]"})),
+      kError + kFile + ": key 'clamp[0].components' must list at least one of \"x\", \"y\"\n");
+}
+
+TEST(BadInput, OutputFolderThatCannotBeWritten) {
+  const testing::TemporaryFolder dir;
+  std::ofstream(dir / "file") << "x\n";
+  const fs::path out = dir / "file" / "below";
+  EXPECT_EQ(
+      bad_input_line(run_tool(dir, "solve " + quoted(kFile) + " -q -o " + quoted(out.string()))),
+      kError + "cannot create output folder '" + out.string() + "': Not a directory\n");
+  EXPECT_EQ(testing::read_text(dir / "file"), "x\n");
+}
+
+TEST(BadInput, BadCommandLineOptions) {
+  const testing::TemporaryFolder dir;
+  const std::string out = quoted((dir / "out").string());
+  EXPECT_EQ(bad_input_line(run_tool(dir, "solve " + quoted(kFile) + " --log-format xml -o " + out)),
+            kError + "--log-format 'xml': expected \"text\" or \"json\"\n");
+  EXPECT_CONTAINS(bad_input_line(run_tool(dir, "solve " + quoted(kFile) + " --scale -1 -o " + out)),
+                  "--scale");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(BadInput, AFailedRunLeavesNoFileAndKeepsEarlierResults) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "out";
+  ASSERT_EQ(run_tool(dir, "solve " + quoted(kFile) + " -q -o " + quoted(out.string())).status, 0);
+  std::map<std::string, std::string> before;
+  for (const auto& e : fs::directory_iterator(out))
+    before[e.path().filename().string()] = testing::read_text(e.path());
+  EXPECT_EQ(before.size(), 4U);
+  // Bad input found early, and a numerical failure found late (a singular stiffness).
+  for (const char* o : {"material.E=-1", "clamp.0.components=[\"x\"]"}) {
+    const ToolRun r = run_tool(
+        dir, "solve " + quoted(kFile) + " -q --set " + quoted(o) + " -o " + quoted(out.string()));
+    EXPECT_NE(r.status, 0) << o;
+    std::map<std::string, std::string> after;
+    for (const auto& e : fs::directory_iterator(out))
+      after[e.path().filename().string()] = testing::read_text(e.path());
+    EXPECT_EQ(after, before) << o;
+  }
+}
+
+}  // namespace
+}  // namespace signorini
