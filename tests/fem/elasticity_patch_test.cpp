@@ -77,7 +77,10 @@ TEST_P(PatchTest, UniformUniaxialStressIsExact) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PlaneModels, PatchTest,
-                         ::testing::Values(PlaneModel::PlaneStrain, PlaneModel::PlaneStress));
+                         ::testing::Values(PlaneModel::PlaneStrain, PlaneModel::PlaneStress),
+                         [](const auto& param_info) {
+                           return std::string(enum_to_string(kPlaneModelNames, param_info.param));
+                         });
 
 TEST(Assembly, StiffnessIsSymmetricAndLoadsBalance) {
   const Mesh mesh = distorted_rectangle();

@@ -50,7 +50,11 @@ TEST_P(LinearSolverTest, SolvesAndReusesTheAnalysis) {
 
 INSTANTIATE_TEST_SUITE_P(Types, LinearSolverTest,
                          ::testing::Values(LinearSolverType::Cholmod,
-                                           LinearSolverType::ConjugateGradient));
+                                           LinearSolverType::ConjugateGradient,
+                                           LinearSolverType::Dense),
+                         [](const auto& param_info) {
+                           return std::string(enum_to_string(kLinearSolverTypeNames, param_info.param));
+                         });
 
 TEST(CholmodSolver, IndefiniteMatrixIsANumericalError) {
   CholmodSolver s;
