@@ -18,6 +18,18 @@ struct CholmodSolver::Impl {
   cholmod_dense* e = nullptr;
   Index n = 0;
 
+  Impl() {
+    cholmod_l_start(&common);
+    common.print = 0;  // errors are reported through exceptions, not printed
+    common.error_handler = nullptr;
+  }
+  ~Impl() {
+    release();
+    cholmod_l_finish(&common);
+  }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+
   void release() {
     cholmod_l_free_dense(&x, &common);
     cholmod_l_free_dense(&y, &common);
@@ -27,17 +39,9 @@ struct CholmodSolver::Impl {
   }
 };
 
-CholmodSolver::CholmodSolver() : impl_(new Impl) {
-  cholmod_l_start(&impl_->common);
-  impl_->common.print = 0;  // errors are reported through exceptions, not printed
-  impl_->common.error_handler = nullptr;
-}
+CholmodSolver::CholmodSolver() : impl_(std::make_unique<Impl>()) {}
 
-CholmodSolver::~CholmodSolver() {
-  impl_->release();
-  cholmod_l_finish(&impl_->common);
-  delete impl_;
-}
+CholmodSolver::~CholmodSolver() = default;
 
 void CholmodSolver::analyze(const SparseMatrix& pattern) {
   ScopedTimer timer(timings_, "linear analysis");

@@ -3,6 +3,7 @@
 // 2^31 entries work). The fill-reducing ordering and symbolic factorisation are computed once in
 // analyze() and reused by every factorize() of a matrix with that pattern.
 
+#include <memory>
 #include <vector>
 
 #include "signorini/linalg/linear_solver.hpp"
@@ -27,8 +28,8 @@ class CholmodSolver final : public LinearSolver {
   [[nodiscard]] std::string_view ordering_name() const;
 
  private:
-  struct Impl;
-  Impl* impl_;
+  struct Impl;  // CHOLMOD's state, freed by its destructor
+  std::unique_ptr<Impl> impl_;
 };
 
 /// CHOLMOD's version, e.g. "3.0.14".

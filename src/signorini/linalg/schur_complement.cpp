@@ -16,24 +16,34 @@ struct SchurComplement::Impl {
   detail::CholmodUpper upper;
   cholmod_factor* factor = nullptr;
   Index n = 0;
+
+  Impl() {
+    cholmod_l_start(&common);
+    common.print = 0;  // errors are reported through exceptions, not printed
+    common.error_handler = nullptr;
+  }
+  ~Impl() {
+    cholmod_l_free_factor(&factor, &common);
+    cholmod_l_free_sparse(&upper.matrix, &common);
+    cholmod_l_finish(&common);
+  }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
 };
 
 SchurComplement::SchurComplement(const SparseMatrix& A, const std::vector<Index>& last)
-    : impl_(new Impl), last_(last) {
+    : impl_(std::make_unique<Impl>()), last_(last) {
   build(A, nullptr);
 }
 
 SchurComplement::SchurComplement(SparseMatrix&& A, const std::vector<Index>& last)
-    : impl_(new Impl), last_(last) {
+    : impl_(std::make_unique<Impl>()), last_(last) {
   build(A, &A);
 }
 
 void SchurComplement::build(const SparseMatrix& A, SparseMatrix* owned) {
   const std::vector<Index>& last = last_;
   Impl& s = *impl_;
-  cholmod_l_start(&s.common);
-  s.common.print = 0;
-  s.common.error_handler = nullptr;
   s.n = A.rows();
   const Index n = s.n;
   const auto nc = static_cast<Index>(last.size());
@@ -93,12 +103,7 @@ void SchurComplement::build(const SparseMatrix& A, SparseMatrix* owned) {
   }
 }
 
-SchurComplement::~SchurComplement() {
-  cholmod_l_free_factor(&impl_->factor, &impl_->common);
-  cholmod_l_free_sparse(&impl_->upper.matrix, &impl_->common);
-  cholmod_l_finish(&impl_->common);
-  delete impl_;
-}
+SchurComplement::~SchurComplement() = default;
 
 Vector SchurComplement::condensed_load(const Vector& b) {
   ScopedTimer t(timings_, "condensation solve");

@@ -6,6 +6,7 @@
 // the factor is read out of CHOLMOD's supernodes, so S costs no extra solves. The contact solvers
 // use it to iterate on the contact boundary alone (docs/performance.md).
 
+#include <memory>
 #include <vector>
 
 #include "signorini/core/timing_table.hpp"
@@ -43,8 +44,8 @@ class SchurComplement {
 
  private:
   void build(const SparseMatrix& A, SparseMatrix* owned);
-  struct Impl;
-  Impl* impl_;
+  struct Impl;  // CHOLMOD's state; freed by its destructor, also when construction throws
+  std::unique_ptr<Impl> impl_;
   Eigen::MatrixXd L_cc_;  // trailing block of the factor: S = L_cc L_cc^T
   Eigen::MatrixXd S_;
   std::vector<Index> last_;
