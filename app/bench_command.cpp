@@ -30,7 +30,9 @@ std::pair<Index, Index> parse_mesh(const std::string& text) {
   throw InputError("--mesh '" + text + "': expected NXxNY with positive integers, e.g. 480x160");
 }
 
-std::string seconds(double s) { return s >= 100.0 ? fmt::format("{:.1f}", s) : fmt::format("{:.3f}", s); }
+std::string seconds(double s) {
+  return s >= 100.0 ? fmt::format("{:.1f}", s) : fmt::format("{:.3f}", s);
+}
 
 nlohmann::json to_json(const BenchmarkRow& r) {
   nlohmann::json j;
@@ -61,7 +63,8 @@ nlohmann::json to_json(const BenchmarkRow& r) {
               {"penetration", r.kkt.penetration},
               {"sign", r.kkt.sign},
               {"complementarity", r.kkt.complementarity}};
-  if (r.diff_plain_u >= 0.0) j["difference_to_plain"] = {{"u", r.diff_plain_u}, {"l", r.diff_plain_l}};
+  if (r.diff_plain_u >= 0.0)
+    j["difference_to_plain"] = {{"u", r.diff_plain_u}, {"l", r.diff_plain_l}};
   if (r.paper)
     j["paper"] = {{"cpu_seconds", r.paper->cpu_seconds},
                   {"gpu_seconds", r.paper->gpu_seconds},
@@ -90,7 +93,8 @@ int run_bench(const BenchArguments& args) {
       configs.push_back({*m, LinearSolverType::Cholmod, true});
     }
     for (const auto& c : options.configurations)
-      if (c.linear == LinearSolverType::ConjugateGradient || !c.schur_complement) configs.push_back(c);
+      if (c.linear == LinearSolverType::ConjugateGradient || !c.schur_complement)
+        configs.push_back(c);
     options.configurations = configs;
   }
   std::erase_if(options.configurations, [&](const BenchmarkConfiguration& c) {
@@ -109,45 +113,52 @@ int run_bench(const BenchArguments& args) {
       options.repeats, std::thread::hardware_concurrency());
   const auto rows = run_paper_benchmark(options);
 
-  fmt::print("\nTimings (seconds; contact = everything after assembly; linear = one linear-elastic "
-             "solve of the same mesh with the same linear solver)\n");
-  fmt::print("{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
-             "{:>8} {:>6} {:>8} {:>8} {:>8}\n",
-             "mesh", "configuration", "unknowns", "n_d", "GNM", "outer", "CG it", "mesh", "assembly",
-             "analysis", "factor", "solves", "contact", "total", "linear", "ratio", "peak MB",
-             "paperCPU", "paperGPU");
+  fmt::print(
+      "\nTimings (seconds; contact = everything after assembly; linear = one linear-elastic "
+      "solve of the same mesh with the same linear solver)\n");
+  fmt::print(
+      "{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
+      "{:>8} {:>6} {:>8} {:>8} {:>8}\n",
+      "mesh", "configuration", "unknowns", "n_d", "GNM", "outer", "CG it", "mesh", "assembly",
+      "analysis", "factor", "solves", "contact", "total", "linear", "ratio", "peak MB", "paperCPU",
+      "paperGPU");
   for (const auto& r : rows) {
-    const std::string gnm = r.method == ContactMethod::UzawaGnm
-                                ? (r.gnm_later_max > r.gnm_later
-                                       ? fmt::format("{}/{}({})", r.gnm_first, r.gnm_later, r.gnm_later_max)
-                                       : fmt::format("{}/{}", r.gnm_first, r.gnm_later))
-                                : "-";
-    fmt::print("{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
-               "{:>8} {:>6.2f} {:>8.0f} {:>8} {:>8}\n",
-               fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.n_dofs, r.n_contact, gnm,
-               r.outer_iterations, r.linear_iterations, seconds(r.t_mesh), seconds(r.t_assembly),
-               seconds(r.t_analysis), seconds(r.t_factorization), seconds(r.t_solves),
-               seconds(r.t_contact), seconds(r.t_total), seconds(r.t_linear), r.ratio,
-               r.peak_bytes / 1048576.0, r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
-               r.paper ? fmt::format("{:.2f}", r.paper->gpu_seconds) : "-");
+    const std::string gnm =
+        r.method == ContactMethod::UzawaGnm
+            ? (r.gnm_later_max > r.gnm_later
+                   ? fmt::format("{}/{}({})", r.gnm_first, r.gnm_later, r.gnm_later_max)
+                   : fmt::format("{}/{}", r.gnm_first, r.gnm_later))
+            : "-";
+    fmt::print(
+        "{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
+        "{:>8} {:>6.2f} {:>8.0f} {:>8} {:>8}\n",
+        fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.n_dofs, r.n_contact, gnm,
+        r.outer_iterations, r.linear_iterations, seconds(r.t_mesh), seconds(r.t_assembly),
+        seconds(r.t_analysis), seconds(r.t_factorization), seconds(r.t_solves),
+        seconds(r.t_contact), seconds(r.t_total), seconds(r.t_linear), r.ratio,
+        r.peak_bytes / 1048576.0, r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
+        r.paper ? fmt::format("{:.2f}", r.paper->gpu_seconds) : "-");
   }
-  fmt::print("\nAccuracy (KKT residuals relative, see docs/solvers.md; difference to the plain sparse "
-             "path, relative 2-norms)\n");
+  fmt::print(
+      "\nAccuracy (KKT residuals relative, see docs/solvers.md; difference to the plain sparse "
+      "path, relative 2-norms)\n");
   fmt::print("{:>9} {:<31} {:>10} {:>16} {:>13} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}\n", "mesh",
              "configuration", "converged", "M(u*,l*)", "paper M", "equil.", "penetr.", "sign",
              "compl.", "du plain", "dl plain");
   bool ok = true;
   for (const auto& r : rows) {
     ok = ok && r.converged;
-    fmt::print("{:>9} {:<31} {:>10} {:>16.8e} {:>13} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9} {:>9}\n",
-               fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.converged ? "yes" : r.termination,
-               r.energy, r.paper ? fmt::format("{:.6e}", r.paper->energy) : "-", r.kkt.equilibrium,
-               r.kkt.penetration, r.kkt.sign, r.kkt.complementarity,
-               r.diff_plain_u >= 0 ? fmt::format("{:.1e}", r.diff_plain_u) : "-",
-               r.diff_plain_l >= 0 ? fmt::format("{:.1e}", r.diff_plain_l) : "-");
+    fmt::print(
+        "{:>9} {:<31} {:>10} {:>16.8e} {:>13} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9} {:>9}\n",
+        fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.converged ? "yes" : r.termination,
+        r.energy, r.paper ? fmt::format("{:.6e}", r.paper->energy) : "-", r.kkt.equilibrium,
+        r.kkt.penetration, r.kkt.sign, r.kkt.complementarity,
+        r.diff_plain_u >= 0 ? fmt::format("{:.1e}", r.diff_plain_u) : "-",
+        r.diff_plain_l >= 0 ? fmt::format("{:.1e}", r.diff_plain_l) : "-");
   }
-  fmt::print("\nGNM: iterations at the first Uzawa step / usual count at later ones (largest in "
-             "parentheses); the paper: 7/2, 8/2, 9/2, 10/2 and 6, 7, 8, 11 Uzawa iterations.\n");
+  fmt::print(
+      "\nGNM: iterations at the first Uzawa step / usual count at later ones (largest in "
+      "parentheses); the paper: 7/2, 8/2, 9/2, 10/2 and 6, 7, 8, 11 Uzawa iterations.\n");
 
   if (!args.json_file.empty()) {
     nlohmann::json j;

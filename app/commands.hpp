@@ -37,13 +37,13 @@ struct CheckArguments {
 };
 
 struct BenchArguments {
-  int repeats = 3;                  ///< best of N
-  bool huge = false;                ///< add 3840x1280 (9.8 million unknowns)
-  std::vector<std::string> meshes;  ///< "480x160", ...; empty: the default list
-  std::vector<std::string> methods; ///< contact methods on the condensed problem; empty: default
-  bool no_cg = false;               ///< skip the paper's configuration (uzawa_gnm with CG)
-  bool no_plain = false;            ///< skip the plain sparse path and the comparison with it
-  std::string json_file;            ///< also write the rows as JSON here
+  int repeats = 3;                   ///< best of N
+  bool huge = false;                 ///< add 3840x1280 (9.8 million unknowns)
+  std::vector<std::string> meshes;   ///< "480x160", ...; empty: the default list
+  std::vector<std::string> methods;  ///< contact methods on the condensed problem; empty: default
+  bool no_cg = false;                ///< skip the paper's configuration (uzawa_gnm with CG)
+  bool no_plain = false;             ///< skip the plain sparse path and the comparison with it
+  std::string json_file;             ///< also write the rows as JSON here
 };
 
 /// `signorini bench`: the paper's benchmark on several meshes and solver configurations.

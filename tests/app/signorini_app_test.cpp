@@ -52,8 +52,7 @@ TEST(SignoriniApp, SolvesTheSmallPaperExample) {
   EXPECT_CONTAINS(r.out, "contact solve");
 
   const nlohmann::json j = nlohmann::json::parse(read(out / "summary.json"));
-  for (const char* key : testing::kSummaryKeys)
-    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : testing::kSummaryKeys) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["converged"], true);
   EXPECT_EQ(j["n_dofs"], 2562);
   EXPECT_EQ(j["n_contact_nodes"], 61);

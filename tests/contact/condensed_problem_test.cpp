@@ -107,11 +107,11 @@ TEST_P(CondensedVsPlain, ObliqueNormalsAndPartlyClampedContactNodes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, CondensedVsPlain,
-                         ::testing::Values(ContactMethod::UzawaGnm,
-                                           ContactMethod::SemismoothNewton,
+                         ::testing::Values(ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton,
                                            ContactMethod::ClassicalUzawa),
                          [](const auto& param_info) {
-                           return std::string(enum_to_string(kContactMethodNames, param_info.param));
+                           return std::string(
+                               enum_to_string(kContactMethodNames, param_info.param));
                          });
 
 TEST(CondensedProblem, ReducedProblemHasOneUnknownPerMovableContactNode) {

@@ -17,7 +17,8 @@ TEST(ContactSet, BottomEdgeOfThePaperMesh) {
   ASSERT_EQ(cs.size(), 7);
   // Boundary order: increasing x along the bottom edge.
   for (Index j = 0; j < cs.size(); ++j) {
-    EXPECT_DOUBLE_EQ(mesh.node(cs.nodes[static_cast<std::size_t>(j)])(0), 0.5 * static_cast<double>(j));
+    EXPECT_DOUBLE_EQ(mesh.node(cs.nodes[static_cast<std::size_t>(j)])(0),
+                     0.5 * static_cast<double>(j));
     EXPECT_NEAR(cs.normals(0, j), 0.0, 1e-15);
     EXPECT_NEAR(cs.normals(1, j), -1.0, 1e-15);
     EXPECT_NEAR(cs.gaps(j), 0.05 * static_cast<double>(j), 1e-15);
@@ -41,8 +42,8 @@ TEST(ContactSet, CornerNormalsAverageTheFacets) {
   for (const Facet& f : base.boundary_part("right").facets) facets.push_back(f);
   mesh.set_boundary_part("bottom_right", facets);
   const DofMap dofs = make_dof_map(mesh, {{"left"}});
-  const ContactSet cs =
-      make_contact_set(mesh, mesh.boundary_part("bottom_right"), dofs, [](const Point&) { return 0.0; });
+  const ContactSet cs = make_contact_set(mesh, mesh.boundary_part("bottom_right"), dofs,
+                                         [](const Point&) { return 0.0; });
   ASSERT_EQ(cs.size(), 5);
   EXPECT_NEAR(cs.normals(0, 2), std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(cs.normals(1, 2), -std::sqrt(0.5), 1e-15);
@@ -52,9 +53,9 @@ TEST(ContactSet, CornerNormalsAverageTheFacets) {
 TEST(ContactSet, ContactOnTheClampedEdgeIsRejected) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 1.0, 1.0, 2, 2});
   const DofMap dofs = make_dof_map(mesh, {{"left"}});
-  EXPECT_THROW(make_contact_set(mesh, mesh.boundary_part("left"), dofs,
-                                [](const Point&) { return 0.0; }),
-               InputError);
+  EXPECT_THROW(
+      make_contact_set(mesh, mesh.boundary_part("left"), dofs, [](const Point&) { return 0.0; }),
+      InputError);
 }
 
 TEST(ContactSet, NonFiniteGapIsRejected) {

@@ -35,8 +35,8 @@ TEST(GapAndLoads, PositiveGapReducesContactAndMethodsAgree) {
 TEST(GapAndLoads, BodyPulledAwayHasNoContact) {
   ProblemSpec spec = paper_benchmark(30, 10);
   spec.tractions = {{"top", [](const Point&) { return Eigen::Vector3d(0.0, 1.0, 0.0); }, "up"}};
-  for (const auto method : {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton,
-                            ContactMethod::ClassicalUzawa}) {
+  for (const auto method :
+       {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton, ContactMethod::ClassicalUzawa}) {
     const ContactResult r = run(spec, method);
     ASSERT_TRUE(r.summary.converged()) << r.summary.message;
     EXPECT_EQ(r.summary.num_active, 0);

@@ -43,13 +43,14 @@ TEST_P(PatchTest, UniformUniaxialStressIsExact) {
   opt.material = {1000.0, 0.3};
   opt.plane_model = GetParam();
   // Rollers: u_x = 0 on the left, u_y = 0 on the bottom; traction (sigma, 0) on the right.
-  const DofMap dofs = make_dof_map(mesh, {{"left", {true, false, false}},
-                                          {"bottom", {false, true, false}}});
+  const DofMap dofs =
+      make_dof_map(mesh, {{"left", {true, false, false}}, {"bottom", {false, true, false}}});
   const double sigma = 2.5;
   const SparseMatrix A = assemble_stiffness(mesh, dofs, opt);
   Vector b = Vector::Zero(dofs.num_free());
-  add_traction_load(mesh, dofs, mesh.boundary_part("right"),
-                    [&](const Point&) { return Eigen::Vector3d(sigma, 0.0, 0.0); }, 2, b);
+  add_traction_load(
+      mesh, dofs, mesh.boundary_part("right"),
+      [&](const Point&) { return Eigen::Vector3d(sigma, 0.0, 0.0); }, 2, b);
   auto solver = make_linear_solver({});
   solver->analyze(A);
   solver->factorize(A);
@@ -92,8 +93,9 @@ TEST(Assembly, StiffnessIsSymmetricAndLoadsBalance) {
   // total vertical load = -int_0^2 (3 - x) dx = -4, plus nothing clamped on that edge but x = 0.
   const DofMap none = make_dof_map(mesh, {});
   Vector b = Vector::Zero(none.num_free());
-  add_traction_load(mesh, none, mesh.boundary_part("top"),
-                    [](const Point& x) { return Eigen::Vector3d(0.0, -(3.0 - x(0)), 0.0); }, 2, b);
+  add_traction_load(
+      mesh, none, mesh.boundary_part("top"),
+      [](const Point& x) { return Eigen::Vector3d(0.0, -(3.0 - x(0)), 0.0); }, 2, b);
   double fy = 0.0, moment = 0.0;
   for (Index n = 0; n < mesh.num_nodes(); ++n) {
     fy += b(2 * n + 1);
@@ -107,12 +109,11 @@ TEST(Assembly, NonFiniteLoadIsReported) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 1.0, 1.0, 2, 2});
   const DofMap dofs = make_dof_map(mesh, {{"left", {true, true, true}}});
   Vector b = Vector::Zero(dofs.num_free());
-  EXPECT_THROW(add_traction_load(mesh, dofs, mesh.boundary_part("top"),
-                                 [](const Point& x) {
-                                   return Eigen::Vector3d(0.0, 1.0 / (x(0) - 0.25), 0.0);
-                                 },
-                                 1, b),
-               InputError);
+  EXPECT_THROW(
+      add_traction_load(
+          mesh, dofs, mesh.boundary_part("top"),
+          [](const Point& x) { return Eigen::Vector3d(0.0, 1.0 / (x(0) - 0.25), 0.0); }, 1, b),
+      InputError);
 }
 
 }  // namespace

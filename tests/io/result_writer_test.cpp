@@ -50,8 +50,7 @@ TEST(SummaryJson, HasTheDocumentedKeys) {
   const Solved& s = solved();
   ASSERT_TRUE(s.result.summary.converged()) << s.result.summary.message;
   const nlohmann::json j = summary_to_json(s.result.summary, s.model, s.spec);
-  for (const char* key : testing::kSummaryKeys)
-    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : testing::kSummaryKeys) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["converged"], true);
   EXPECT_EQ(j["termination"], "converged");
   EXPECT_EQ(j["method"], "uzawa_gnm");

@@ -5,12 +5,26 @@
 
 namespace signorini::testing {
 
-inline constexpr std::array<const char*, 21> kSummaryKeys{
-    "converged",       "termination",      "message",          "method",
-    "M",               "energy",           "uzawa_iterations", "gnm_iterations",
-    "armijo_reductions", "active_set_sizes", "dual_changes",    "n_dofs",
-    "n_free_dofs",     "n_contact_nodes",  "n_active",         "contact_force",
-    "contact_force_vector", "kkt",         "timings",          "problem",
-    "signorini_version"};
+inline constexpr std::array<const char*, 21> kSummaryKeys{"converged",
+                                                          "termination",
+                                                          "message",
+                                                          "method",
+                                                          "M",
+                                                          "energy",
+                                                          "uzawa_iterations",
+                                                          "gnm_iterations",
+                                                          "armijo_reductions",
+                                                          "active_set_sizes",
+                                                          "dual_changes",
+                                                          "n_dofs",
+                                                          "n_free_dofs",
+                                                          "n_contact_nodes",
+                                                          "n_active",
+                                                          "contact_force",
+                                                          "contact_force_vector",
+                                                          "kkt",
+                                                          "timings",
+                                                          "problem",
+                                                          "signorini_version"};
 
 }  // namespace signorini::testing

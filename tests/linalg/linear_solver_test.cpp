@@ -53,7 +53,8 @@ INSTANTIATE_TEST_SUITE_P(Types, LinearSolverTest,
                                            LinearSolverType::ConjugateGradient,
                                            LinearSolverType::Dense),
                          [](const auto& param_info) {
-                           return std::string(enum_to_string(kLinearSolverTypeNames, param_info.param));
+                           return std::string(
+                               enum_to_string(kLinearSolverTypeNames, param_info.param));
                          });
 
 TEST(CholmodSolver, IndefiniteMatrixIsANumericalError) {

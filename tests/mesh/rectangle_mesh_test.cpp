@@ -15,7 +15,8 @@ TEST(RectangleMesh, CountsCoordinatesAndParts) {
   EXPECT_EQ(m.num_cells(), 1200);
   EXPECT_DOUBLE_EQ(m.node(60)(0), 3.0);  // far edges land exactly
   EXPECT_DOUBLE_EQ(m.node(m.num_nodes() - 1)(1), 1.0);
-  for (const char* name : {"left", "right", "bottom", "top"}) EXPECT_TRUE(m.has_boundary_part(name));
+  for (const char* name : {"left", "right", "bottom", "top"})
+    EXPECT_TRUE(m.has_boundary_part(name));
   EXPECT_EQ(m.boundary_part("bottom").facets.size(), 60u);
   EXPECT_EQ(m.boundary_part("left").facets.size(), 20u);
   EXPECT_EQ(m.boundary_part_nodes("bottom").size(), 61u);

@@ -64,22 +64,22 @@ struct BenchmarkRow {
   Index n_dofs = 0, n_contact = 0;
   bool converged = false;
   std::string termination;
-  int outer_iterations = 0;         ///< Uzawa (or Newton) iterations
-  int gnm_first = 0;                ///< GNM iterations at the first Uzawa step
-  int gnm_later = 0;                ///< usual GNM count at later steps (mode)
+  int outer_iterations = 0;  ///< Uzawa (or Newton) iterations
+  int gnm_first = 0;         ///< GNM iterations at the first Uzawa step
+  int gnm_later = 0;         ///< usual GNM count at later steps (mode)
   int gnm_later_max = 0;
-  long linear_iterations = 0;       ///< CG iterations, all steps
+  long linear_iterations = 0;  ///< CG iterations, all steps
   int factorizations = 0;
   int factor_updates = 0;
   // Seconds (best of the repeats): mesh, assembly (stiffness, loads, contact set), and the phases
   // of the contact solve.
   double t_mesh = 0, t_assembly = 0, t_analysis = 0, t_factorization = 0, t_solves = 0;
-  double t_contact = 0;             ///< the whole contact solve (everything after assembly)
-  double t_total = 0;               ///< end to end: mesh + assembly + contact solve
-  double t_linear = 0;              ///< one linear solve: analysis + factorisation + solve
-  double ratio = 0;                 ///< t_contact / t_linear
-  double peak_bytes = 0;            ///< peak resident memory of the case
-  double energy = 0;                ///< M(u*, l*)
+  double t_contact = 0;   ///< the whole contact solve (everything after assembly)
+  double t_total = 0;     ///< end to end: mesh + assembly + contact solve
+  double t_linear = 0;    ///< one linear solve: analysis + factorisation + solve
+  double ratio = 0;       ///< t_contact / t_linear
+  double peak_bytes = 0;  ///< peak resident memory of the case
+  double energy = 0;      ///< M(u*, l*)
   KktResiduals kkt;
   double diff_plain_u = -1, diff_plain_l = -1;  ///< vs the plain path; -1: not compared
   std::optional<PaperRow> paper;

@@ -20,7 +20,8 @@ double dual_operator_norm(const ContactProblem& p, LinearSolver& solver) {
   const Vector sqrt_h = c.weights.cwiseSqrt();
   Vector v(c.size());
   for (Index j = 0; j < c.size(); ++j)
-    v(j) = c.movable[static_cast<std::size_t>(j)] ? 1.0 + 0.1 * std::sin(static_cast<double>(j)) : 0.0;
+    v(j) =
+        c.movable[static_cast<std::size_t>(j)] ? 1.0 + 0.1 * std::sin(static_cast<double>(j)) : 0.0;
   v.normalize();
   double lambda = 0.0;
   Vector x = Vector::Zero(p.A.rows());
@@ -50,8 +51,8 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
   solver->analyze(problem.A);
   solver->factorize(problem.A);  // A never changes: one factorisation for the whole run
 
-  const double rho =
-      options.classical_step > 0.0 ? options.classical_step : 1.5 / dual_operator_norm(problem, *solver);
+  const double rho = options.classical_step > 0.0 ? options.classical_step
+                                                  : 1.5 / dual_operator_norm(problem, *solver);
   s.classical_step = rho;
 
   Vector x = Vector::Zero(problem.A.rows());
@@ -59,7 +60,8 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
   s.termination = Termination::IterationLimit;
   for (int k = 1; k <= options.max_classical_iterations; ++k) {
     // (i) A u = b - N^T H l: the contact pressure acts as a load.
-    const LinearSolveStats st = solver->solve(problem.b - c.N.transpose() * c.weights.cwiseProduct(l), x);
+    const LinearSolveStats st =
+        solver->solve(problem.b - c.N.transpose() * c.weights.cwiseProduct(l), x);
     OuterStepRecord rec;
     rec.inner_iterations = 1;
     rec.linear_iterations = st.iterations;
@@ -80,8 +82,8 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
     l = std::move(l_new);
     s.steps.push_back(rec);
     if (options.observer && (k <= 10 || k % 100 == 0))
-      options.observer({IterationEvent::Kind::Outer, k, 1, rec.active_set_size, rec.dual_change,
-                        0, rec.linear_iterations});
+      options.observer({IterationEvent::Kind::Outer, k, 1, rec.active_set_size, rec.dual_change, 0,
+                        rec.linear_iterations});
     if (rec.dual_change < options.uzawa_tolerance) {
       s.termination = Termination::Converged;
       s.message = fmt::format(

@@ -31,7 +31,8 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
   const Eigen::MatrixXd& S = schur_->matrix();
   reduced_.A.resize(nm, nm);
   reduced_.A.resizeNonZeros(nm * nm);  // compressed, filled directly: column-major like S
-  for (Index col = 0; col <= nm; ++col) reduced_.A.outerIndexPtr()[col] = static_cast<int>(col * nm);
+  for (Index col = 0; col <= nm; ++col)
+    reduced_.A.outerIndexPtr()[col] = static_cast<int>(col * nm);
   for (Index col = 0; col < nm; ++col)
     for (Index row = 0; row < nm; ++row)
       reduced_.A.innerIndexPtr()[col * nm + row] = static_cast<int>(row);
@@ -47,7 +48,8 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
   std::vector<Eigen::Triplet<double, int>> nt;
   Index k = 0;
   for (Index j = 0; j < nc; ++j)
-    if (c.movable[static_cast<std::size_t>(j)]) nt.emplace_back(static_cast<int>(j), static_cast<int>(k++), rotation_.scale(j));
+    if (c.movable[static_cast<std::size_t>(j)])
+      nt.emplace_back(static_cast<int>(j), static_cast<int>(k++), rotation_.scale(j));
   rc.N.resize(nc, nm);
   rc.N.setFromTriplets(nt.begin(), nt.end());
 }

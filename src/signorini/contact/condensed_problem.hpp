@@ -36,8 +36,8 @@ class CondensedProblem {
 
  private:
   ContactProblem reduced_;
-  NormalRotation rotation_;          // x = Q y
-  std::vector<Index> normal_dofs_;   // rotated unknown that is node j's normal displacement
+  NormalRotation rotation_;         // x = Q y
+  std::vector<Index> normal_dofs_;  // rotated unknown that is node j's normal displacement
   std::unique_ptr<SchurComplement> schur_;
   TimingTable timings_;
 };

@@ -49,7 +49,8 @@ std::vector<Index> walk_edges(const Mesh& mesh, const BoundaryPart& part) {
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                             const ScalarField& gap) {
   if (mesh.dim() != 2)
-    throw InputError("contact: only 2D meshes are supported so far (3D contact is not implemented)");
+    throw InputError(
+        "contact: only 2D meshes are supported so far (3D contact is not implemented)");
   if (part.facets.empty())
     throw InputError("contact.boundary = '" + part.name + "': the boundary part has no facets");
   ContactSet cs;

@@ -19,9 +19,12 @@ double relative_change(const Vector& l_new, const Vector& l_old) {
 namespace {
 ContactResult run_method(const ContactProblem& problem, const ContactSolverOptions& options) {
   switch (options.method) {
-    case ContactMethod::UzawaGnm: return solve_uzawa_gnm(problem, options);
-    case ContactMethod::ClassicalUzawa: return solve_classical_uzawa(problem, options);
-    case ContactMethod::SemismoothNewton: return solve_semismooth_newton(problem, options);
+    case ContactMethod::UzawaGnm:
+      return solve_uzawa_gnm(problem, options);
+    case ContactMethod::ClassicalUzawa:
+      return solve_classical_uzawa(problem, options);
+    case ContactMethod::SemismoothNewton:
+      return solve_semismooth_newton(problem, options);
   }
   throw InputError("unknown contact method");
 }

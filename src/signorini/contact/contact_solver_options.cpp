@@ -9,14 +9,20 @@
 namespace signorini {
 
 namespace {
-std::string text(double v) { return fmt::format("{:g}", v); }
-std::string text(int v) { return std::to_string(v); }
+std::string text(double v) {
+  return fmt::format("{:g}", v);
+}
+std::string text(int v) {
+  return std::to_string(v);
+}
 
 template <class T>
 void require(bool ok, const std::string& field, T value, const std::string& expected) {
   if (!ok) throw InputError("solver." + field + " = " + text(value) + ": expected " + expected);
 }
-bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
 }  // namespace
 
 void validate(const ContactSolverOptions& o) {

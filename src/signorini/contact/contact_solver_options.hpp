@@ -24,11 +24,11 @@ inline constexpr EnumNames<ContactMethod, 3> kContactMethodNames{{
 struct IterationEvent {
   enum class Kind { Inner, Outer };
   Kind kind = Kind::Inner;
-  int outer = 0;            ///< Uzawa step k (or Newton iteration of the semismooth method)
-  int inner = 0;            ///< GNM iteration m within step k (Inner events)
-  Index active = 0;         ///< size of the active set
-  double residual = 0.0;    ///< Inner: max(||G||, ||dx||/||x||); Outer: ||l^k - l^{k-1}|| / ||l^k||
-  int armijo = 0;           ///< Armijo halvings in this GNM iteration
+  int outer = 0;          ///< Uzawa step k (or Newton iteration of the semismooth method)
+  int inner = 0;          ///< GNM iteration m within step k (Inner events)
+  Index active = 0;       ///< size of the active set
+  double residual = 0.0;  ///< Inner: max(||G||, ||dx||/||x||); Outer: ||l^k - l^{k-1}|| / ||l^k||
+  int armijo = 0;         ///< Armijo halvings in this GNM iteration
   int linear_iterations = 0;
 };
 

@@ -21,7 +21,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
     res.factor_updates = system_.updates() - updates_before;
   };
   Vector Nx = N * x;
-  ActiveSet previous;      // active set that defined the previous Newton step
+  ActiveSet previous;          // active set that defined the previous Newton step
   bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
   double gradient_norm = std::numeric_limits<double>::infinity();
 

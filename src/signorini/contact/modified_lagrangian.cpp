@@ -34,8 +34,7 @@ ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r)
     for (SparseMatrix::InnerIterator ia(Nt, j); ia; ++ia)
       for (SparseMatrix::InnerIterator ib(Nt, j); ib; ++ib) {
         const Index pos = find_entry(p_.A, ia.row(), ib.row());
-        if (pos < 0)
-          throw NumericalError("contact node block missing from the stiffness pattern");
+        if (pos < 0) throw NumericalError("contact node block missing from the stiffness pattern");
         block_entries_[static_cast<std::size_t>(j)].emplace_back(pos, ia.value() * ib.value());
       }
   }

@@ -98,7 +98,8 @@ SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation
         const double qca = q(d[c], d[a]);
         if (qca == 0.0) continue;
         const double* src = v + outer[d[c]];
-        for (Index p = 0; p < len; ++p) tmp[a * static_cast<std::size_t>(len) + static_cast<std::size_t>(p)] += qca * src[p];
+        for (Index p = 0; p < len; ++p)
+          tmp[a * static_cast<std::size_t>(len) + static_cast<std::size_t>(p)] += qca * src[p];
       }
     for (std::size_t a = 0; a < k; ++a)
       std::copy(tmp.begin() + static_cast<std::ptrdiff_t>(a * static_cast<std::size_t>(len)),
@@ -120,13 +121,13 @@ SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation
         return SparseMatrix(Q * A * Q);
       for (int a = 0; a < k; ++a) {
         buf[a] = 0.0;
-        for (int c = 0; c < k; ++c) buf[a] += q(d[static_cast<std::size_t>(a)], d[static_cast<std::size_t>(c)]) * v[p + c];
+        for (int c = 0; c < k; ++c)
+          buf[a] += q(d[static_cast<std::size_t>(a)], d[static_cast<std::size_t>(c)]) * v[p + c];
       }
       std::copy(buf, buf + k, v + p);
       p += k;
     }
   return R;
 }
-
 
 }  // namespace signorini

@@ -205,9 +205,9 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
     if (!st.converged) {
       s.steps.push_back(rec);
       s.termination = Termination::LinearSolverFailure;
-      s.message = fmt::format(
-          "linear solver did not converge at Newton iteration {} (residual {:.3e})", it,
-          st.residual);
+      s.message =
+          fmt::format("linear solver did not converge at Newton iteration {} (residual {:.3e})", it,
+                      st.residual);
       break;
     }
     ActiveSet next(static_cast<std::size_t>(nc), false);
@@ -221,8 +221,8 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
     l = std::move(l_new);
     s.steps.push_back(rec);
     if (options.observer)
-      options.observer({IterationEvent::Kind::Outer, it, 1, rec.active_set_size, rec.dual_change,
-                        0, rec.linear_iterations});
+      options.observer({IterationEvent::Kind::Outer, it, 1, rec.active_set_size, rec.dual_change, 0,
+                        rec.linear_iterations});
     if (next == active) {
       s.termination = Termination::Converged;
       s.message = fmt::format("active set repeated after {} Newton iterations ({} active nodes)",

@@ -29,14 +29,14 @@ inline constexpr EnumNames<Termination, 5> kTerminationNames{{
 /// One outer step: a Uzawa step k (uzawa_gnm, classical_uzawa) or one Newton iteration
 /// (semismooth_newton).
 struct OuterStepRecord {
-  int inner_iterations = 0;    ///< GNM iterations (uzawa_gnm); 1 otherwise
-  Index active_set_size = 0;   ///< at the end of the step
-  int armijo_reductions = 0;   ///< Armijo halvings in this step
-  int linear_iterations = 0;   ///< CG iterations in this step (0 with a direct solver)
-  int factorizations = 0;      ///< numeric factorisations in this step
-  int factor_updates = 0;      ///< rank-one factor updates/downdates in this step (dense systems)
-  double inner_residual = 0.0; ///< last GNM residual max(||G||, ||dx||/||x||)
-  double dual_change = 0.0;    ///< ||l^k - l^{k-1}||_2 / ||l^k||_2 (0 where l^k = l^{k-1} = 0)
+  int inner_iterations = 0;     ///< GNM iterations (uzawa_gnm); 1 otherwise
+  Index active_set_size = 0;    ///< at the end of the step
+  int armijo_reductions = 0;    ///< Armijo halvings in this step
+  int linear_iterations = 0;    ///< CG iterations in this step (0 with a direct solver)
+  int factorizations = 0;       ///< numeric factorisations in this step
+  int factor_updates = 0;       ///< rank-one factor updates/downdates in this step (dense systems)
+  double inner_residual = 0.0;  ///< last GNM residual max(||G||, ||dx||/||x||)
+  double dual_change = 0.0;     ///< ||l^k - l^{k-1}||_2 / ||l^k||_2 (0 where l^k = l^{k-1} = 0)
 };
 
 /// KKT residuals of (u, l) for the discrete problem (14), each relative (see docs/solvers.md):
@@ -63,8 +63,8 @@ struct SolveSummary {
   double energy = 0.0;         ///< J(u)
   double contact_force = 0.0;  ///< sum_j h_j l_j: total normal contact force
   Eigen::Vector2d contact_force_vector = Eigen::Vector2d::Zero();  ///< -sum_j h_j l_j nu_j
-  Index num_active = 0;        ///< contact nodes with l_j > 0
-  double classical_step = 0.0; ///< rho used by classical_uzawa
+  Index num_active = 0;                                            ///< contact nodes with l_j > 0
+  double classical_step = 0.0;                                     ///< rho used by classical_uzawa
   TimingTable timings;
 
   [[nodiscard]] bool converged() const { return termination == Termination::Converged; }

@@ -13,7 +13,8 @@ void validate(const IsotropicMaterial& m) {
   if (!std::isfinite(m.E) || m.E <= 0.0)
     throw InputError(fmt::format("material.E = {:g}: expected a positive modulus", m.E));
   if (!std::isfinite(m.nu) || m.nu <= -1.0 || m.nu >= 0.5)
-    throw InputError(fmt::format("material.nu = {:g}: expected a Poisson ratio in (-1, 0.5)", m.nu));
+    throw InputError(
+        fmt::format("material.nu = {:g}: expected a Poisson ratio in (-1, 0.5)", m.nu));
 }
 
 Eigen::Matrix3d plane_elasticity_matrix(const IsotropicMaterial& m, PlaneModel model) {

@@ -7,12 +7,12 @@
 namespace signorini {
 
 double von_mises_stress(double sxx, double syy, double szz, double sxy) {
-  const double d = (sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx);
+  const double d =
+      (sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx);
   return std::sqrt(0.5 * d + 3.0 * sxy * sxy);
 }
 
-NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options,
-                         const Vector& u_full) {
+NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, const Vector& u_full) {
   const Eigen::Matrix3d D = plane_elasticity_matrix(options.material, options.plane_model);
   const double nu = options.material.nu;
   const bool plane_strain = options.plane_model == PlaneModel::PlaneStrain;

@@ -15,8 +15,7 @@ struct NodalStress {
 
 /// Evaluates the strain of every cell at its corners from the full displacement vector
 /// (num_dofs, node-major), converts it to stress and averages at each node.
-NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options,
-                         const Vector& u_full);
+NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, const Vector& u_full);
 
 /// von Mises stress of (sxx, syy, szz, sxy).
 double von_mises_stress(double sxx, double syy, double szz, double sxy);

@@ -8,7 +8,8 @@ namespace signorini {
 
 std::vector<QuadraturePoint1D> gauss_legendre(int n) {
   switch (n) {
-    case 1: return {{0.0, 2.0}};
+    case 1:
+      return {{0.0, 2.0}};
     case 2: {
       const double a = 1.0 / std::sqrt(3.0);
       return {{-a, 1.0}, {a, 1.0}};

@@ -47,7 +47,8 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(d
     const Index s1 = neighbor_start_[static_cast<std::size_t>(m + 1)];
     Index rows = 0;
     for (Index s = s0; s < s1; ++s)
-      for (int k = 0; k < dim; ++k) rows += dofs.free_index(neighbors_[static_cast<std::size_t>(s)], k) >= 0 ? 1 : 0;
+      for (int k = 0; k < dim; ++k)
+        rows += dofs.free_index(neighbors_[static_cast<std::size_t>(s)], k) >= 0 ? 1 : 0;
     for (int k = 0; k < dim; ++k) {
       const Index col = dofs.free_index(m, k);
       if (col < 0) continue;

@@ -28,8 +28,8 @@ class SparsityPattern {
   const DofMap& dofs_;
   std::vector<Index> neighbor_start_;  // CSR over nodes: neighbours (sorted), incl. the node
   std::vector<Index> neighbors_;
-  std::vector<Index> row_offset_;      // per neighbour entry: rows before it in the column
-  std::vector<int> outer_;             // column pointers over free dofs
+  std::vector<Index> row_offset_;  // per neighbour entry: rows before it in the column
+  std::vector<int> outer_;         // column pointers over free dofs
   std::vector<int> inner_;
 };
 

@@ -89,13 +89,20 @@ double CholmodSolver::factor_nonzeros() const {
 std::string_view CholmodSolver::ordering_name() const {
   if (impl_->factor == nullptr) return "none";
   switch (impl_->factor->ordering) {
-    case CHOLMOD_NATURAL: return "natural";
-    case CHOLMOD_GIVEN: return "AMD (node graph)";
-    case CHOLMOD_AMD: return "AMD";
-    case CHOLMOD_METIS: return "METIS";
-    case CHOLMOD_NESDIS: return "NESDIS";
-    case CHOLMOD_COLAMD: return "COLAMD";
-    default: return "other";
+    case CHOLMOD_NATURAL:
+      return "natural";
+    case CHOLMOD_GIVEN:
+      return "AMD (node graph)";
+    case CHOLMOD_AMD:
+      return "AMD";
+    case CHOLMOD_METIS:
+      return "METIS";
+    case CHOLMOD_NESDIS:
+      return "NESDIS";
+    case CHOLMOD_COLAMD:
+      return "COLAMD";
+    default:
+      return "other";
   }
 }
 

@@ -4,7 +4,9 @@
 
 namespace signorini {
 
-void DenseCholeskySolver::factorize(const SparseMatrix& H) { factorize_dense(Eigen::MatrixXd(H)); }
+void DenseCholeskySolver::factorize(const SparseMatrix& H) {
+  factorize_dense(Eigen::MatrixXd(H));
+}
 
 void DenseCholeskySolver::factorize_dense(const Eigen::MatrixXd& H) {
   ScopedTimer timer(timings_, "linear factorization");

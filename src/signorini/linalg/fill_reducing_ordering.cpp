@@ -76,7 +76,8 @@ std::vector<Index> fill_reducing_ordering(const SparseMatrix& A, const std::vect
                            std::to_string(status) + ")");
     for (const CholmodInt g : perm) {
       const Index first = group_start[static_cast<std::size_t>(g)];
-      for (Index j = first; j < n && group[static_cast<std::size_t>(j)] == g; ++j) order.push_back(j);
+      for (Index j = first; j < n && group[static_cast<std::size_t>(j)] == g; ++j)
+        order.push_back(j);
     }
   }
   order.insert(order.end(), last.begin(), last.end());

@@ -22,9 +22,12 @@ void validate(const LinearSolverOptions& o) {
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options) {
   validate(options);
   switch (options.type) {
-    case LinearSolverType::Cholmod: return std::make_unique<CholmodSolver>();
-    case LinearSolverType::ConjugateGradient: return std::make_unique<CgSolver>(options);
-    case LinearSolverType::Dense: return std::make_unique<DenseCholeskySolver>();
+    case LinearSolverType::Cholmod:
+      return std::make_unique<CholmodSolver>();
+    case LinearSolverType::ConjugateGradient:
+      return std::make_unique<CgSolver>(options);
+    case LinearSolverType::Dense:
+      return std::make_unique<DenseCholeskySolver>();
   }
   throw InputError("unknown linear solver type");
 }

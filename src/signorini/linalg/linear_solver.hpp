@@ -35,9 +35,9 @@ struct LinearSolverOptions {
 void validate(const LinearSolverOptions& options);
 
 struct LinearSolveStats {
-  int iterations = 0;        ///< CG iterations (0 for a direct solve)
-  double residual = 0.0;     ///< relative residual reached (CG); 0 for a direct solve
-  bool converged = true;     ///< false: CG hit its iteration limit
+  int iterations = 0;     ///< CG iterations (0 for a direct solve)
+  double residual = 0.0;  ///< relative residual reached (CG); 0 for a direct solve
+  bool converged = true;  ///< false: CG hit its iteration limit
 };
 
 class LinearSolver {

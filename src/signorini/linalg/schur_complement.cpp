@@ -2,9 +2,8 @@
 
 #include <numeric>
 
-#include "signorini/linalg/fill_reducing_ordering.hpp"
-
 #include "signorini/linalg/detail/cholmod_matrix.hpp"
+#include "signorini/linalg/fill_reducing_ordering.hpp"
 
 namespace signorini {
 
@@ -152,6 +151,8 @@ Vector SchurComplement::solve(const Vector& rhs) const {
   return out;
 }
 
-double SchurComplement::factor_nonzeros() const { return impl_->common.lnz; }
+double SchurComplement::factor_nonzeros() const {
+  return impl_->common.lnz;
+}
 
 }  // namespace signorini

@@ -27,10 +27,14 @@ constexpr int cell_dimension(CellType t) {
 /// Number of nodes of a cell.
 constexpr int nodes_per_cell(CellType t) {
   switch (t) {
-    case CellType::Quad4: return 4;
-    case CellType::Tri3: return 3;
-    case CellType::Hex8: return 8;
-    case CellType::Tet4: return 4;
+    case CellType::Quad4:
+      return 4;
+    case CellType::Tri3:
+      return 3;
+    case CellType::Hex8:
+      return 8;
+    case CellType::Tet4:
+      return 4;
   }
   return 0;
 }
@@ -38,10 +42,14 @@ constexpr int nodes_per_cell(CellType t) {
 /// Number of facets (edges in 2D, faces in 3D) of a cell.
 constexpr int facets_per_cell(CellType t) {
   switch (t) {
-    case CellType::Quad4: return 4;
-    case CellType::Tri3: return 3;
-    case CellType::Hex8: return 6;
-    case CellType::Tet4: return 4;
+    case CellType::Quad4:
+      return 4;
+    case CellType::Tri3:
+      return 3;
+    case CellType::Hex8:
+      return 6;
+    case CellType::Tet4:
+      return 4;
   }
   return 0;
 }

@@ -37,7 +37,9 @@ void Mesh::set_boundary_part(std::string name, std::vector<Facet> facets) {
   parts_.insert_or_assign(std::move(name), std::move(part));
 }
 
-bool Mesh::has_boundary_part(std::string_view name) const { return parts_.contains(name); }
+bool Mesh::has_boundary_part(std::string_view name) const {
+  return parts_.contains(name);
+}
 
 const BoundaryPart& Mesh::boundary_part(std::string_view name) const {
   const auto it = parts_.find(name);

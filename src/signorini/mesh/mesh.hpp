@@ -46,7 +46,8 @@ class Mesh {
   [[nodiscard]] const Eigen::MatrixXd& coordinates() const { return coordinates_; }
   /// Node numbers of a cell.
   [[nodiscard]] std::span<const Index> cell(Index c) const {
-    return {connectivity_.data() + c * nodes_per_cell(), static_cast<std::size_t>(nodes_per_cell())};
+    return {connectivity_.data() + c * nodes_per_cell(),
+            static_cast<std::size_t>(nodes_per_cell())};
   }
   /// Node numbers of a facet, in the orientation of facet_local_nodes().
   [[nodiscard]] std::vector<Index> facet_nodes(const Facet& f) const;

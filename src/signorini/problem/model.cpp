@@ -41,15 +41,14 @@ Model build_model(const ProblemSpec& spec) {
     problem.b = Vector::Zero(dofs.num_free());
     for (const TractionSpec& tr : spec.tractions)
       add_traction_load(mesh, dofs, mesh.boundary_part(tr.boundary), tr.p,
-                        spec.boundary_gauss_points, problem.b,
-                        "traction on '" + tr.boundary + "'");
+                        spec.boundary_gauss_points, problem.b, "traction on '" + tr.boundary + "'");
     if (spec.body_force)
       add_body_force_load(mesh, dofs, spec.body_force, spec.elasticity.gauss_points, problem.b);
   }
   {
     ScopedTimer t(timings, "contact set");
-    problem.contact = make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs,
-                                       spec.contact.gap);
+    problem.contact =
+        make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, spec.contact.gap);
   }
   return Model{std::move(mesh), std::move(dofs), std::move(problem), std::move(timings)};
 }
