@@ -53,6 +53,8 @@ TEST(SummaryJson, HasTheDocumentedKeys) {
   for (const char* key : testing::kSummaryKeys) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["converged"], true);
   EXPECT_EQ(j["termination"], "converged");
+  ASSERT_TRUE(j.contains("factor_updates"));
+  EXPECT_EQ(j["factor_updates"].size(), j["gnm_iterations"].size());
   EXPECT_EQ(j["method"], "uzawa_gnm");
   EXPECT_EQ(j["M"].get<double>(), s.result.summary.lagrangian);
   EXPECT_EQ(j["uzawa_iterations"].get<int>(), s.result.summary.outer_iterations);

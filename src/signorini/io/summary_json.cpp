@@ -34,7 +34,7 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
   j["uzawa_iterations"] = summary.outer_iterations;
 
   json gnm = json::array(), armijo = json::array(), active = json::array(), dual = json::array(),
-       linear = json::array(), factorizations = json::array();
+       linear = json::array(), factorizations = json::array(), updates = json::array();
   for (const OuterStepRecord& s : summary.steps) {
     gnm.push_back(s.inner_iterations);
     armijo.push_back(s.armijo_reductions);
@@ -42,6 +42,7 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
     dual.push_back(s.dual_change);
     linear.push_back(s.linear_iterations);
     factorizations.push_back(s.factorizations);
+    updates.push_back(s.factor_updates);
   }
   j["gnm_iterations"] = gnm;
   j["armijo_reductions"] = armijo;
@@ -49,6 +50,7 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
   j["dual_changes"] = dual;
   j["linear_iterations"] = linear;
   j["factorizations"] = factorizations;
+  j["factor_updates"] = updates;
   if (summary.method == ContactMethod::ClassicalUzawa) j["classical_step"] = summary.classical_step;
 
   j["n_dofs"] = model.dofs.num_dofs();
