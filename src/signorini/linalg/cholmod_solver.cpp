@@ -10,7 +10,8 @@ namespace signorini {
 using detail::check_cholmod;
 
 struct CholmodSolver::Impl {
-  cholmod_common common{};
+  detail::CholmodCommon workspace;  // first member: finished last
+  cholmod_common& common = workspace.common;
   detail::CholmodUpper upper;  // upper triangle of H, CHOLMOD's own copy (64-bit indices)
   cholmod_factor* factor = nullptr;
   cholmod_dense* x = nullptr;  // solve2 workspaces, reused between solves
@@ -18,15 +19,8 @@ struct CholmodSolver::Impl {
   cholmod_dense* e = nullptr;
   Index n = 0;
 
-  Impl() {
-    cholmod_l_start(&common);
-    common.print = 0;  // errors are reported through exceptions, not printed
-    common.error_handler = nullptr;
-  }
-  ~Impl() {
-    release();
-    cholmod_l_finish(&common);
-  }
+  Impl() = default;
+  ~Impl() { release(); }
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 

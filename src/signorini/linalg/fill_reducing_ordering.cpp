@@ -48,10 +48,8 @@ std::vector<Index> fill_reducing_ordering(const SparseMatrix& A, const std::vect
       std::sort(rows.begin() + static_cast<std::ptrdiff_t>(begin), rows.end());
       colptr[static_cast<std::size_t>(g + 1)] = static_cast<CholmodInt>(rows.size());
     }
-    cholmod_common common{};
-    cholmod_l_start(&common);
-    common.print = 0;
-    common.error_handler = nullptr;
+    detail::CholmodCommon workspace;
+    cholmod_common& common = workspace.common;
     cholmod_sparse graph{};
     graph.nrow = graph.ncol = static_cast<std::size_t>(ng);
     graph.nzmax = rows.size();
@@ -69,11 +67,7 @@ std::vector<Index> fill_reducing_ordering(const SparseMatrix& A, const std::vect
       cholmod_l_metis(&graph, nullptr, 0, /*postorder=*/1, perm.data(), &common);
     else
       cholmod_l_amd(&graph, nullptr, 0, perm.data(), &common);
-    const int status = common.status;
-    cholmod_l_finish(&common);
-    if (status < CHOLMOD_OK)
-      throw NumericalError("fill-reducing ordering failed (CHOLMOD status " +
-                           std::to_string(status) + ")");
+    detail::check_cholmod(common, "ordering");
     for (const CholmodInt g : perm) {
       const Index first = group_start[static_cast<std::size_t>(g)];
       for (Index j = first; j < n && group[static_cast<std::size_t>(j)] == g; ++j)

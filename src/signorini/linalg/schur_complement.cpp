@@ -11,20 +11,16 @@ using detail::check_cholmod;
 using detail::CholmodInt;
 
 struct SchurComplement::Impl {
-  cholmod_common common{};
+  detail::CholmodCommon workspace;  // first member: finished last
+  cholmod_common& common = workspace.common;
   detail::CholmodUpper upper;
   cholmod_factor* factor = nullptr;
   Index n = 0;
 
-  Impl() {
-    cholmod_l_start(&common);
-    common.print = 0;  // errors are reported through exceptions, not printed
-    common.error_handler = nullptr;
-  }
+  Impl() = default;
   ~Impl() {
     cholmod_l_free_factor(&factor, &common);
     cholmod_l_free_sparse(&upper.matrix, &common);
-    cholmod_l_finish(&common);
   }
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;

@@ -14,6 +14,20 @@ namespace signorini::detail {
 
 using CholmodInt = SuiteSparse_long;
 
+/// CHOLMOD's workspace and settings, started and finished with the object. CHOLMOD prints
+/// nothing: its failures come back as exceptions through check_cholmod().
+struct CholmodCommon {
+  cholmod_common common{};
+  CholmodCommon() {
+    cholmod_l_start(&common);
+    common.print = 0;
+    common.error_handler = nullptr;
+  }
+  ~CholmodCommon() { cholmod_l_finish(&common); }
+  CholmodCommon(const CholmodCommon&) = delete;
+  CholmodCommon& operator=(const CholmodCommon&) = delete;
+};
+
 /// Throws NumericalError if the last CHOLMOD call failed.
 inline void check_cholmod(const cholmod_common& c, const char* what) {
   if (c.status == CHOLMOD_NOT_POSDEF)
