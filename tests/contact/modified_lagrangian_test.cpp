@@ -23,7 +23,8 @@ TEST(ModifiedLagrangian, GradientAndChangeMatchDirectEvaluation) {
   Vector x = 1e-4 * Vector::LinSpaced(p.A.rows(), -1.0, 1.0).array().sin().matrix();
   Vector d = 1e-5 * Vector::LinSpaced(p.A.rows(), 0.0, 7.0).array().cos().matrix();
   const Vector Nx = p.contact.N * x;
-  const auto dir = m.direction(x, Nx, d);
+  const Vector residual = p.A * x - p.b;
+  const auto dir = m.direction(residual, Nx, d);
   for (const double t : {1.0, 0.5, 1e-3}) {
     const double direct = phi(p, m, x + t * d) - phi(p, m, x);
     EXPECT_NEAR(m.phi_change(dir, t), direct, 1e-9 * std::abs(direct) + 1e-18) << "t = " << t;
@@ -31,7 +32,7 @@ TEST(ModifiedLagrangian, GradientAndChangeMatchDirectEvaluation) {
   // Directional derivative from central differences.
   const double h = 1e-3;
   const double fd = (phi(p, m, x + h * d) - phi(p, m, x - h * d)) / (2.0 * h);
-  EXPECT_NEAR(m.gradient(x, Nx).dot(d), fd, 1e-6 * std::abs(fd));
+  EXPECT_NEAR(m.gradient(residual, Nx).dot(d), fd, 1e-6 * std::abs(fd));
 }
 
 TEST(ModifiedLagrangian, HessianAddsActiveContactTerms) {

@@ -21,6 +21,9 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
     res.factor_updates = system_.updates() - updates_before;
   };
   Vector Nx = N * x;
+  // A x - b, formed once per call and then updated by t A d with each step: one product with A
+  // per GNM iteration.
+  Vector residual = problem_.A * x - problem_.b;
   ActiveSet previous;          // active set that defined the previous Newton step
   bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
   double gradient_norm = std::numeric_limits<double>::infinity();
@@ -61,8 +64,8 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
     // Armijo rule when the Newton point does not decrease Phi (method.md section 4), with the
     // change of Phi evaluated without cancellation.
     Vector d = x_new - x;
-    const auto dir = phi.direction(x, Nx, d);
-    bool full = true;
+    const auto dir = phi.direction(residual, Nx, d);
+    double t = 1.0;  // step length taken along d
     if (phi.phi_change(dir, 1.0) >= 0.0) {
       const Vector hz = problem_.contact.weights.cwiseProduct(dir.z.cwiseMax(0.0));
       const double slope = dir.residual_dot_d + hz.dot(dir.Nd);  // <G(x), d>
@@ -86,14 +89,16 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
         } while (phi.phi_change(dir, alpha) > options_.armijo_sigma * alpha * slope);
         res.armijo_reductions += cuts;
         ev.armijo = cuts;
-        d *= alpha;
-        full = false;
+        t = alpha;
       }
       // slope >= 0: d is round-off around a minimiser; take it as it is.
     }
+    const bool full = t == 1.0;
+    if (!full) d *= t;
     x += d;
+    residual += t * dir.Ad;
     Nx = N * x;
-    gradient_norm = phi.gradient(x, Nx).norm();
+    gradient_norm = phi.gradient(residual, Nx).norm();
     const double x_norm = x.norm();
     const double step = x_norm > 0.0 ? d.norm() / x_norm : d.norm();
     res.residual = std::max(gradient_norm, step);

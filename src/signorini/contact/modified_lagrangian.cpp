@@ -61,10 +61,10 @@ ActiveSet ModifiedLagrangian::active_set(const Vector& Nx) const {
   return a;
 }
 
-Vector ModifiedLagrangian::gradient(const Vector& x, const Vector& Nx) const {
+Vector ModifiedLagrangian::gradient(const Vector& residual, const Vector& Nx) const {
   const Vector z = shifted_multipliers(Nx);
   const Vector hz = p_.contact.weights.cwiseProduct(z.cwiseMax(0.0));
-  return p_.A * x - p_.b + p_.contact.N.transpose() * hz;
+  return residual + p_.contact.N.transpose() * hz;
 }
 
 void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const {
@@ -86,12 +86,13 @@ Vector ModifiedLagrangian::newton_rhs(const ActiveSet& active) const {
   return p_.b - p_.contact.N.transpose() * w;
 }
 
-ModifiedLagrangian::Direction ModifiedLagrangian::direction(const Vector& x, const Vector& Nx,
+ModifiedLagrangian::Direction ModifiedLagrangian::direction(const Vector& residual,
+                                                            const Vector& Nx,
                                                             const Vector& d) const {
   Direction dir;
-  const Vector Ad = p_.A * d;
-  dir.residual_dot_d = (p_.A * x - p_.b).dot(d);
-  dir.d_A_d = Ad.dot(d);
+  dir.Ad = p_.A * d;
+  dir.residual_dot_d = residual.dot(d);
+  dir.d_A_d = dir.Ad.dot(d);
   dir.z = shifted_multipliers(Nx);
   dir.Nd = p_.contact.N * d;
   return dir;

@@ -28,8 +28,9 @@ class ModifiedLagrangian {
   [[nodiscard]] Vector shifted_multipliers(const Vector& Nx) const;
   [[nodiscard]] ActiveSet active_set(const Vector& Nx) const;
 
-  /// G(x) = A x - b + N^T (h z_+): the gradient of Phi.
-  [[nodiscard]] Vector gradient(const Vector& x, const Vector& Nx) const;
+  /// G(x) = A x - b + N^T (h z_+): the gradient of Phi, from the residual A x - b (which GNM
+  /// keeps up to date with one product A d per step instead of forming A x again).
+  [[nodiscard]] Vector gradient(const Vector& residual, const Vector& Nx) const;
   /// Writes H = A + r N^T diag(h on the active set) N into `H`, which must have A's pattern
   /// (the node blocks of contact nodes are in it), so one symbolic analysis serves every H.
   void hessian(const ActiveSet& active, SparseMatrix& H) const;
@@ -42,10 +43,13 @@ class ModifiedLagrangian {
   struct Direction {
     double residual_dot_d = 0.0;  ///< <A x - b, d>
     double d_A_d = 0.0;           ///< <A d, d>
+    Vector Ad;                    ///< A d: the residual after a step t d is (A x - b) + t A d
     Vector z;                     ///< z(x)
     Vector Nd;                    ///< N d
   };
-  [[nodiscard]] Direction direction(const Vector& x, const Vector& Nx, const Vector& d) const;
+  /// `residual` is A x - b at the current point x.
+  [[nodiscard]] Direction direction(const Vector& residual, const Vector& Nx,
+                                    const Vector& d) const;
   [[nodiscard]] double phi_change(const Direction& dir, double t) const;
 
   /// M(u, l) = J(u) + 1/(2r) sum_j h_j (((l_j + r ((N u)_j - g_j))_+)^2 - l_j^2), equation (10).
