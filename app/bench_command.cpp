@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "commands.hpp"
+#include "signorini/backend/cuda_backend.hpp"
 #include "signorini/benchmark/paper_benchmark_suite.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/atomic_file.hpp"
@@ -65,6 +66,12 @@ nlohmann::json to_json(const BenchmarkRow& r) {
               {"complementarity", r.kkt.complementarity}};
   if (r.diff_plain_u >= 0.0)
     j["difference_to_plain"] = {{"u", r.diff_plain_u}, {"l", r.diff_plain_l}};
+  if (!r.device.empty()) {
+    j["device"] = r.device;
+    j["device_kind"] = enum_to_string(kDeviceKindNames, r.device_kind);
+    j["preconditioner"] = enum_to_string(kPreconditionerTypeNames, r.preconditioner);
+    j["device_peak_bytes"] = r.device_peak_bytes;
+  }
   if (r.paper)
     j["paper"] = {{"cpu_seconds", r.paper->cpu_seconds},
                   {"gpu_seconds", r.paper->gpu_seconds},
@@ -72,6 +79,116 @@ nlohmann::json to_json(const BenchmarkRow& r) {
                   {"gnm_first", r.paper->gnm_first},
                   {"uzawa_iterations", r.paper->uzawa}};
   return j;
+}
+
+// --device cuda: the CPU reference (direct, condensed), the GPU with multigrid CG on every mesh,
+// the paper's configuration (Jacobi CG) on the GPU and on the CPU up to 480x160, and the same
+// multigrid algorithm on the CPU backend up to 960x320 (the same-algorithm ratio).
+void gpu_configurations(const BenchArguments& args, BenchmarkOptions& options) {
+  using C = BenchmarkConfiguration;
+  const auto uzawa = ContactMethod::UzawaGnm;
+  const auto cg = LinearSolverType::ConjugateGradient;
+  std::vector<C> configs;
+  C direct{uzawa, LinearSolverType::Cholmod, true};
+  direct.max_nx = 3840;  // beyond, the factor does not fit a 128 GB host
+  configs.push_back(direct);
+  C mg_gpu{uzawa, cg, false};
+  mg_gpu.device = DeviceKind::Cuda;
+  mg_gpu.preconditioner = PreconditionerType::Multigrid;
+  configs.push_back(mg_gpu);
+  if (!args.no_cg) {
+    C jacobi_gpu{uzawa, cg, false, 480};
+    jacobi_gpu.device = DeviceKind::Cuda;
+    configs.push_back(jacobi_gpu);
+    configs.push_back(C{uzawa, cg, false, 480});  // the paper's CPU configuration
+  }
+  C mg_cpu{uzawa, cg, false, 960};
+  mg_cpu.preconditioner = PreconditionerType::Multigrid;
+  configs.push_back(mg_cpu);
+  options.configurations = configs;
+  options.compare_plain_max_nx = 0;
+}
+
+const BenchmarkRow* find_row(const std::vector<BenchmarkRow>& rows, Index nx, Index ny,
+                             const std::string& configuration) {
+  for (const auto& r : rows)
+    if (r.nx == nx && r.ny == ny && r.configuration == configuration) return &r;
+  return nullptr;
+}
+
+void print_gpu_table(const std::vector<BenchmarkRow>& rows) {
+  const std::string reference = "uzawa_gnm/cholmod+schur";
+  fmt::print(
+      "\nGPU (contact solve, seconds) against the CPU of this run ({}) and the paper's Table 1 "
+      "(CuPy CG on a Tesla P100, and its CPU)\n",
+      reference);
+  std::string device;
+  for (const auto& r : rows)
+    if (r.device_kind == DeviceKind::Cuda && !r.device.empty()) device = r.device;
+  if (!device.empty()) fmt::print("GPU: {}\n", device);
+  fmt::print("{:>11} {:<34} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8}\n", "mesh",
+             "configuration", "unknowns", "GPU", "total", "CPU ref", "CPU/GPU", "paperCPU",
+             "paperGPU", "dM/M", "CG it", "GPU MB");
+  for (const auto& r : rows) {
+    if (r.device_kind != DeviceKind::Cuda) continue;
+    const BenchmarkRow* ref = find_row(rows, r.nx, r.ny, reference);
+    const BenchmarkRow* same_cpu = nullptr;  // the same algorithm on the CPU backend
+    for (const auto& c : rows)
+      if (c.nx == r.nx && c.ny == r.ny && c.device_kind == DeviceKind::Cpu &&
+          c.linear == r.linear && c.preconditioner == r.preconditioner)
+        same_cpu = &c;
+    const double cpu = ref ? ref->t_contact : 0.0;
+    fmt::print(
+        "{:>11} {:<34} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8.0f}\n",
+        fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.n_dofs, seconds(r.t_contact),
+        seconds(r.t_total), ref ? seconds(cpu) : "-",
+        ref ? fmt::format("{:.2f}", cpu / r.t_contact) : "-",
+        r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
+        r.paper ? fmt::format("{:.2f}", r.paper->gpu_seconds) : "-",
+        ref ? fmt::format("{:.1e}", std::abs(r.energy - ref->energy) / std::abs(ref->energy)) : "-",
+        r.linear_iterations, r.device_peak_bytes / 1048576.0);
+    if (same_cpu)
+      fmt::print("{:>11} {:<34} same algorithm on the CPU: {} s, CPU/GPU {:.2f}\n", "",
+                 same_cpu->configuration, seconds(same_cpu->t_contact),
+                 same_cpu->t_contact / r.t_contact);
+  }
+  fmt::print(
+      "CPU/GPU: the CPU reference's contact solve over the GPU's; dM/M: relative difference of "
+      "M(u*, l*) to the CPU reference.\n");
+}
+
+// The largest nx = 3 ny mesh (nx a multiple of 480, so that the hierarchy reaches 15 x 5) whose
+// GPU memory, extrapolated from the bytes per unknown of the largest GPU row of this run, fits
+// in 85 % of the GPU's memory.
+std::vector<BenchmarkRow> largest_gpu_mesh(const std::vector<BenchmarkRow>& rows,
+                                           const BenchmarkOptions& base) {
+  const BenchmarkRow* biggest = nullptr;
+  for (const auto& r : rows)
+    if (r.device_kind == DeviceKind::Cuda && r.preconditioner == PreconditionerType::Multigrid &&
+        (!biggest || r.n_dofs > biggest->n_dofs))
+      biggest = &r;
+  const CudaReport report = cuda_report();
+  if (!biggest || biggest->device_peak_bytes <= 0.0 || report.gpus.empty()) return {};
+  const double per_unknown = biggest->device_peak_bytes / static_cast<double>(biggest->n_dofs);
+  const double budget = 0.85 * static_cast<double>(report.gpus.front().total_memory);
+  Index nx = 480;
+  auto unknowns = [](Index n) {
+    return 2.0 * static_cast<double>(n + 1) * static_cast<double>(n / 3 + 1);
+  };
+  while (unknowns(nx + 480) * per_unknown < budget) nx += 480;
+  fmt::print(
+      "\n--largest: {:.0f} bytes per unknown on the GPU at {}x{}, {:.1f} GiB of GPU memory: "
+      "{}x{} ({:.3g} unknowns)\n",
+      per_unknown, biggest->nx, biggest->ny, budget / 0.85 / 1073741824.0, nx, nx / 3,
+      unknowns(nx));
+  BenchmarkOptions o = base;
+  o.meshes = {{nx, nx / 3}};
+  o.configurations.clear();
+  for (const auto& c : base.configurations)
+    if (c.device == DeviceKind::Cuda && c.preconditioner == PreconditionerType::Multigrid)
+      o.configurations.push_back(c);
+  o.repeats = 1;
+  return run_paper_benchmark(o);
 }
 
 }  // namespace
@@ -102,6 +219,18 @@ int run_bench(const BenchArguments& args) {
            (args.no_plain && c.linear == LinearSolverType::Cholmod && !c.schur_complement);
   });
   if (args.no_plain) options.compare_plain_max_nx = 0;
+  const bool gpu = args.device == "cuda";
+  if (gpu) {
+    // Fail now, with the reason, rather than after the CPU rows (docs/gpu.md).
+    const CudaReport report = cuda_report();
+    if (report.gpus.empty())
+      throw InputError(fmt::format(
+          "--device cuda: {}",
+          report.built ? "no usable CUDA GPU (" + report.problem + ")" : report.problem));
+    gpu_configurations(args, options);
+  } else if (args.largest) {
+    throw InputError("--largest needs --device cuda");
+  }
   options.progress = [](const std::string& line) {
     fmt::print(stderr, "  running {}\n", line);
     std::fflush(stderr);
@@ -111,7 +240,7 @@ int run_bench(const BenchArguments& args) {
       "signorini bench: the paper's problem (Section 5), best of {} (meshes above 1e6 unknowns "
       "once), {} hardware threads\n",
       options.repeats, std::thread::hardware_concurrency());
-  const auto rows = run_paper_benchmark(options);
+  auto rows = run_paper_benchmark(options);
 
   fmt::print(
       "\nTimings (seconds; contact = everything after assembly; linear = one linear-elastic "
@@ -131,12 +260,13 @@ int run_bench(const BenchArguments& args) {
             : "-";
     fmt::print(
         "{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
-        "{:>8} {:>6.2f} {:>8.0f} {:>8} {:>8}\n",
+        "{:>8} {:>6} {:>8.0f} {:>8} {:>8}\n",
         fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.n_dofs, r.n_contact, gnm,
         r.outer_iterations, r.linear_iterations, seconds(r.t_mesh), seconds(r.t_assembly),
         seconds(r.t_analysis), seconds(r.t_factorization), seconds(r.t_solves),
-        seconds(r.t_contact), seconds(r.t_total), seconds(r.t_linear), r.ratio,
-        r.peak_bytes / 1048576.0, r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
+        seconds(r.t_contact), seconds(r.t_total), r.t_linear > 0 ? seconds(r.t_linear) : "-",
+        r.t_linear > 0 ? fmt::format("{:.2f}", r.ratio) : "-", r.peak_bytes / 1048576.0,
+        r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
         r.paper ? fmt::format("{:.2f}", r.paper->gpu_seconds) : "-");
   }
   fmt::print(
@@ -159,6 +289,17 @@ int run_bench(const BenchArguments& args) {
   fmt::print(
       "\nGNM: iterations at the first Uzawa step / usual count at later ones (largest in "
       "parentheses); the paper: 7/2, 8/2, 9/2, 10/2 and 6, 7, 8, 11 Uzawa iterations.\n");
+
+  if (gpu) {
+    auto all = rows;
+    if (args.largest) {
+      const auto extra = largest_gpu_mesh(rows, options);
+      all.insert(all.end(), extra.begin(), extra.end());
+      for (const auto& r : extra) ok = ok && r.converged;
+    }
+    print_gpu_table(all);
+    rows = std::move(all);
+  }
 
   if (!args.json_file.empty()) {
     nlohmann::json j;

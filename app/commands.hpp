@@ -44,6 +44,8 @@ struct BenchArguments {
   bool no_cg = false;                ///< skip the paper's configuration (uzawa_gnm with CG)
   bool no_plain = false;             ///< skip the plain sparse path and the comparison with it
   std::string json_file;             ///< also write the rows as JSON here
+  std::string device = "cpu";        ///< "cuda": add the GPU configurations and the GPU table
+  bool largest = false;  ///< with cuda: also the largest nx = 3 ny mesh that fits on the GPU
 };
 
 /// `signorini bench`: the paper's benchmark on several meshes and solver configurations.

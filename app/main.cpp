@@ -107,6 +107,14 @@ int main(int argc, char** argv) {
   bench_cmd->add_flag("--no-cg", bench.no_cg, "Skip the paper's configuration (CG)");
   bench_cmd->add_flag("--no-plain", bench.no_plain, "Skip the plain sparse path");
   bench_cmd->add_option("--json", bench.json_file, "Also write the results as JSON to this file");
+  bench_cmd
+      ->add_option("--device", bench.device,
+                   "cuda: also solve on the GPU (CG with multigrid, and the paper's CG with "
+                   "Jacobi) and compare with the CPU in the same run (docs/gpu.md)")
+      ->check(CLI::IsMember({"cpu", "cuda"}));
+  bench_cmd->add_flag(
+      "--largest", bench.largest,
+      "With --device cuda: also the largest nx = 3 ny mesh that fits in GPU memory");
 
   try {
     app.parse(argc, argv);

@@ -9,6 +9,7 @@
 #endif
 
 #include "commands.hpp"
+#include "signorini/backend/cuda_backend.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
 
 namespace signorini::app {
@@ -25,7 +26,18 @@ std::string version_text() {
 #else
   s += "  OpenMP: no\n";
 #endif
-  s += "  CUDA: not built\n";
+  const CudaReport cuda = cuda_report();
+  if (!cuda.built) {
+    s += "  CUDA: not built\n";
+  } else {
+    s += fmt::format("  CUDA: built with toolkit {}, driver {}\n", cuda.toolkit_version,
+                     cuda.driver_version.empty() ? "none" : cuda.driver_version);
+    for (const GpuInfo& g : cuda.gpus)
+      s += fmt::format("    GPU {}: {} (sm_{}{}, {:.1f} GiB, {} multiprocessors)\n", g.ordinal,
+                       g.name, g.major, g.minor, static_cast<double>(g.total_memory) / 1073741824.0,
+                       g.multiprocessors);
+    if (cuda.gpus.empty()) s += fmt::format("    no usable GPU: {}\n", cuda.problem);
+  }
   s += "  PETSc: not built\n";
   return s;
 }

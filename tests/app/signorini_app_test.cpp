@@ -9,6 +9,7 @@
 #include "app/tool_run.hpp"
 #include "io/expect_contains.hpp"
 #include "io/summary_keys.hpp"
+#include "signorini/backend/cuda_backend.hpp"
 
 namespace signorini {
 namespace {
@@ -34,8 +35,51 @@ TEST(SignoriniApp, Version) {
   EXPECT_CONTAINS(r.out, "CHOLMOD: ");
   EXPECT_CONTAINS(r.out, "Eigen: ");
   EXPECT_CONTAINS(r.out, "OpenMP: ");
+#ifdef SIGNORINI_HAVE_CUDA
+  EXPECT_CONTAINS(r.out, "CUDA: built with toolkit ");
+  const CudaReport cuda = cuda_report();
+  if (cuda.gpus.empty()) {
+    EXPECT_CONTAINS(r.out, "no usable GPU: ");
+  } else {
+    EXPECT_CONTAINS(r.out, "GPU 0: " + cuda.gpus.front().name);
+  }
+#else
   EXPECT_CONTAINS(r.out, "CUDA: not built");
+#endif
   EXPECT_CONTAINS(r.out, "PETSc: not built");
+}
+
+TEST(SignoriniApp, CudaWithoutAGpuIsAClearError) {
+  if (!cuda_report().gpus.empty()) GTEST_SKIP() << "a GPU is present (tests/contact/*_gpu_test)";
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  const ToolRun r = run_tool(dir, "solve " + kSmall + " -o " + quoted(out.string()) +
+                                      " --set solver.device=cuda --set solver.linear.type=cg");
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_CONTAINS(r.err, "solver.device = \"cuda\"");
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  // The direct solver cannot run on the GPU: the message says what to set.
+  const ToolRun direct = run_tool(
+      dir, "solve " + kSmall + " -o " + quoted(out.string()) + " --set solver.device=cuda");
+  EXPECT_EQ(direct.status, 2);
+  EXPECT_CONTAINS(direct.err, "set solver.linear.type = \"cg\"");
+}
+
+TEST(SignoriniApp, MultigridConjugateGradientsGiveTheTable1Energy) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  // examples/paper_gpu.toml on the CPU backend, on the smallest Table 1 mesh.
+  const ToolRun r = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_gpu.toml") +
+                                      " -o " + quoted(out.string()) +
+                                      " --quiet --set solver.device=cpu --set mesh.nx=60"
+                                      " --set mesh.ny=20");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(testing::read_text(out / "summary.json"));
+  EXPECT_NEAR(j["M"].get<double>(), -6.700472e-05, 2e-7 * 6.700472e-05);  // as table1_test
+  EXPECT_EQ(j["uzawa_iterations"].get<int>(), 6);
+  EXPECT_EQ(j["gnm_iterations"][0].get<int>(), 7);
+  EXPECT_EQ(j["multigrid_levels"].size(), 3U);
+  EXPECT_EQ(j["problem"]["solver"]["linear"]["preconditioner"], "multigrid");
 }
 
 TEST(SignoriniApp, SolvesTheSmallPaperExample) {

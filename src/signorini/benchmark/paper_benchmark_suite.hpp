@@ -21,6 +21,9 @@ struct BenchmarkConfiguration {
   bool schur_complement = true;
   /// Largest nx this configuration runs on (CG and the plain path are slow on big meshes).
   Index max_nx = 1 << 30;
+  /// With CG: where it runs and its preconditioner (cuda, or multigrid: the backend path).
+  DeviceKind device = DeviceKind::Cpu;
+  PreconditionerType preconditioner = PreconditionerType::Jacobi;
   [[nodiscard]] std::string name() const;
 };
 
@@ -61,6 +64,10 @@ struct BenchmarkRow {
   ContactMethod method = ContactMethod::UzawaGnm;
   LinearSolverType linear = LinearSolverType::Cholmod;
   bool schur_complement = true;
+  DeviceKind device_kind = DeviceKind::Cpu;
+  PreconditionerType preconditioner = PreconditionerType::Jacobi;
+  std::string device;            ///< the backend's description (backend path only)
+  double device_peak_bytes = 0;  ///< most memory held on the backend (backend path only)
   Index n_dofs = 0, n_contact = 0;
   bool converged = false;
   std::string termination;

@@ -2,6 +2,8 @@
 // The discrete contact problem (14) in the free dofs: minimise 1/2 <A x, x> - <b, x> subject to
 // (N x)_j <= g_j for the contact nodes j.
 
+#include <vector>
+
 #include "signorini/contact/contact_set.hpp"
 
 namespace signorini {
@@ -10,6 +12,10 @@ struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
   Vector b;        ///< load vector
   ContactSet contact;
+  /// Multigrid transfer operators of the mesh, finest first: prolongations[l] interpolates
+  /// level l+1 onto level l (free dofs). Empty unless a multigrid preconditioner was asked for
+  /// and the mesh has a hierarchy (problem/rectangle_hierarchy.hpp).
+  std::vector<SparseMatrix> prolongations;
 };
 
 }  // namespace signorini

@@ -40,7 +40,9 @@ ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOp
   {
     TimingTable solve_time;
     ScopedTimer timer(solve_time, "contact solve");
-    if (options.schur_complement && options.linear.type == LinearSolverType::Cholmod) {
+    if (uses_backend_path(options)) {
+      result = solve_uzawa_gnm_on_backend(problem, options);
+    } else if (options.schur_complement && options.linear.type == LinearSolverType::Cholmod) {
       const CondensedProblem condensed(problem);
       ContactSolverOptions reduced_options = options;
       reduced_options.linear.type = LinearSolverType::Dense;

@@ -28,6 +28,10 @@ double relative_change(const Vector& l_new, const Vector& l_old);
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options);
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
                                     const ContactSolverOptions& options);
+/// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
+/// uses_backend_path(options).
+ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
+                                         const ContactSolverOptions& options);
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options);
 

@@ -25,6 +25,11 @@ bool positive(double v) {
 }
 }  // namespace
 
+bool uses_backend_path(const ContactSolverOptions& o) {
+  return o.device == DeviceKind::Cuda || (o.linear.type == LinearSolverType::ConjugateGradient &&
+                                          o.linear.preconditioner == PreconditionerType::Multigrid);
+}
+
 void validate(const ContactSolverOptions& o) {
   require(positive(o.r), "r", o.r, "a positive number");
   require(positive(o.uzawa_tolerance), "uzawa_tolerance", o.uzawa_tolerance, "a positive number");
@@ -40,6 +45,20 @@ void validate(const ContactSolverOptions& o) {
           ">= 1");
   require(o.max_newton_iterations >= 1, "max_newton_iterations", o.max_newton_iterations, ">= 1");
   validate(o.linear);
+  // The backend path (docs/gpu.md) runs the paper's method with conjugate gradients only.
+  const bool backend_path = uses_backend_path(o);
+  if (o.device == DeviceKind::Cuda && o.linear.type != LinearSolverType::ConjugateGradient)
+    throw InputError(fmt::format(
+        "solver.device = \"cuda\" with solver.linear.type = \"{}\": the GPU solver is "
+        "iterative; set solver.linear.type = \"cg\" (and solver.linear.preconditioner = "
+        "\"multigrid\" for speed)",
+        enum_to_string(kLinearSolverTypeNames, o.linear.type)));
+  if (backend_path && o.method != ContactMethod::UzawaGnm)
+    throw InputError(fmt::format("solver.method = \"{}\": the {} runs only \"uzawa_gnm\"",
+                                 enum_to_string(kContactMethodNames, o.method),
+                                 o.device == DeviceKind::Cuda
+                                     ? "GPU solver (solver.device = \"cuda\")"
+                                     : "multigrid preconditioner"));
 }
 
 }  // namespace signorini

@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "signorini/backend/device_kind.hpp"
 #include "signorini/core/enum_names.hpp"
 #include "signorini/core/types.hpp"
 #include "signorini/linalg/linear_solver.hpp"
@@ -56,6 +57,10 @@ struct ContactSolverOptions {
   /// Iteration limit of the semismooth Newton (primal-dual active set) method.
   int max_newton_iterations = 200;
   LinearSolverOptions linear;
+  /// Where the solve runs: "cpu" or "cuda" (an NVIDIA GPU, docs/gpu.md). "cuda" runs the whole
+  /// Uzawa-GNM loop with its vectors on the GPU and needs linear.type = "cg"; the "cg" solver
+  /// with the "multigrid" preconditioner runs on that same backend path on the CPU too.
+  DeviceKind device = DeviceKind::Cpu;
   /// With the "cholmod" linear solver: condense the problem onto the normal displacements of the
   /// contact nodes by one sparse factorisation (a Schur complement) and iterate on that small
   /// dense problem (docs/performance.md). The solution is the same; only the cost changes.
@@ -64,6 +69,10 @@ struct ContactSolverOptions {
   /// Called after every inner and outer iteration; may be empty.
   std::function<void(const IterationEvent&)> observer;
 };
+
+/// True when the solve runs on the backend path (docs/gpu.md): on a GPU, or with the multigrid
+/// preconditioner of conjugate gradients.
+[[nodiscard]] bool uses_backend_path(const ContactSolverOptions& options);
 
 /// Throws InputError naming the first bad field ("solver.r = -1: expected ...").
 void validate(const ContactSolverOptions& options);

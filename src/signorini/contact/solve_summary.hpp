@@ -66,6 +66,12 @@ struct SolveSummary {
   Index num_active = 0;                                            ///< contact nodes with l_j > 0
   double classical_step = 0.0;                                     ///< rho used by classical_uzawa
   TimingTable timings;
+  /// The backend path (docs/gpu.md): where it ran ("CPU, 2 threads", or the GPU's name), the most
+  /// memory it held there, and the multigrid levels (unknowns, finest first; empty for Jacobi).
+  /// Empty/0 on the host paths.
+  std::string device;
+  std::size_t device_peak_bytes = 0;
+  std::vector<Index> multigrid_levels;
 
   [[nodiscard]] bool converged() const { return termination == Termination::Converged; }
   /// GNM iterations of each Uzawa step (the paper's "7/2" column).

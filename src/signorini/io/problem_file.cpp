@@ -478,11 +478,11 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   ContactSolverOptions& o = spec.solver;
   o = ContactSolverOptions{};
   if (const toml::table* t = r.table(root, "", "solver")) {
-    r.check_keys(
-        *t, "solver",
-        {"method", "r", "uzawa_tolerance", "max_uzawa_iterations", "gnm_tolerance",
-         "max_gnm_iterations", "armijo_sigma", "max_armijo_halvings", "classical_step",
-         "max_classical_iterations", "max_newton_iterations", "schur_complement", "linear"});
+    r.check_keys(*t, "solver",
+                 {"method", "r", "uzawa_tolerance", "max_uzawa_iterations", "gnm_tolerance",
+                  "max_gnm_iterations", "armijo_sigma", "max_armijo_halvings", "classical_step",
+                  "max_classical_iterations", "max_newton_iterations", "schur_complement", "device",
+                  "linear"});
     o.method = r.enumeration(*t, "solver", "method", kContactMethodNames, o.method);
     const auto real = [&](std::string_view key, double& target) {
       if (const auto v = r.number(*t, "solver", key)) target = *v;
@@ -501,13 +501,20 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     whole("max_classical_iterations", o.max_classical_iterations);
     whole("max_newton_iterations", o.max_newton_iterations);
     if (const auto v = r.boolean(*t, "solver", "schur_complement")) o.schur_complement = *v;
+    o.device = r.enumeration(*t, "solver", "device", kDeviceKindNames, o.device);
     if (const toml::table* lt = r.table(*t, "solver", "linear")) {
-      r.check_keys(*lt, "solver.linear", {"type", "cg_tolerance", "cg_max_iterations"});
+      r.check_keys(
+          *lt, "solver.linear",
+          {"type", "cg_tolerance", "cg_max_iterations", "preconditioner", "chebyshev_degree"});
       LinearSolverOptions& l = o.linear;
       l.type = r.enumeration(*lt, "solver.linear", "type", kLinearSolverTypeNames, l.type);
       if (const auto v = r.number(*lt, "solver.linear", "cg_tolerance")) l.cg_tolerance = *v;
       if (const auto v = r.small_integer(*lt, "solver.linear", "cg_max_iterations"))
         l.cg_max_iterations = *v;
+      l.preconditioner = r.enumeration(*lt, "solver.linear", "preconditioner",
+                                       kPreconditionerTypeNames, l.preconditioner);
+      if (const auto v = r.small_integer(*lt, "solver.linear", "chebyshev_degree"))
+        l.chebyshev_degree = *v;
     }
   }
   r.validated(o);
@@ -579,10 +586,13 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   out.value("max_classical_iterations", o.max_classical_iterations);
   out.value("max_newton_iterations", o.max_newton_iterations);
   out.value("schur_complement", o.schur_complement);
+  out.value("device", enum_to_string(kDeviceKindNames, o.device));
   out.table("solver.linear");
   out.value("type", enum_to_string(kLinearSolverTypeNames, o.linear.type));
   out.value("cg_tolerance", o.linear.cg_tolerance);
   out.value("cg_max_iterations", o.linear.cg_max_iterations);
+  out.value("preconditioner", enum_to_string(kPreconditionerTypeNames, o.linear.preconditioner));
+  out.value("chebyshev_degree", o.linear.chebyshev_degree);
   return out.text();
 }
 

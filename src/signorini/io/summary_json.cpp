@@ -52,6 +52,11 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
   j["factorizations"] = factorizations;
   j["factor_updates"] = updates;
   if (summary.method == ContactMethod::ClassicalUzawa) j["classical_step"] = summary.classical_step;
+  if (!summary.device.empty()) {  // the backend path (docs/gpu.md)
+    j["device"] = summary.device;
+    j["device_peak_bytes"] = summary.device_peak_bytes;
+    j["multigrid_levels"] = summary.multigrid_levels;
+  }
 
   j["n_dofs"] = model.dofs.num_dofs();
   j["n_free_dofs"] = model.dofs.num_free();
@@ -111,10 +116,14 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
       {"max_classical_iterations", o.max_classical_iterations},
       {"max_newton_iterations", o.max_newton_iterations},
       {"schur_complement", o.schur_complement},
+      {"device", std::string(enum_to_string(kDeviceKindNames, o.device))},
       {"linear",
        {{"type", std::string(enum_to_string(kLinearSolverTypeNames, o.linear.type))},
         {"cg_tolerance", o.linear.cg_tolerance},
-        {"cg_max_iterations", o.linear.cg_max_iterations}}}};
+        {"cg_max_iterations", o.linear.cg_max_iterations},
+        {"preconditioner",
+         std::string(enum_to_string(kPreconditionerTypeNames, o.linear.preconditioner))},
+        {"chebyshev_degree", o.linear.chebyshev_degree}}}};
   j["problem"] = problem;
   return j;
 }

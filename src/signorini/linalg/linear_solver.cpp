@@ -17,6 +17,9 @@ void validate(const LinearSolverOptions& o) {
   if (o.cg_max_iterations < 0)
     throw InputError("solver.linear.cg_max_iterations = " + std::to_string(o.cg_max_iterations) +
                      ": expected >= 0 (0: automatic)");
+  if (o.chebyshev_degree < 1 || o.chebyshev_degree > 50)
+    throw InputError("solver.linear.chebyshev_degree = " + std::to_string(o.chebyshev_degree) +
+                     ": expected an integer in [1, 50]");
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options) {

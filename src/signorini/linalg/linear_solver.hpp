@@ -21,6 +21,14 @@ inline constexpr EnumNames<LinearSolverType, 3> kLinearSolverTypeNames{{
     {LinearSolverType::Dense, "dense"},
 }};
 
+/// Preconditioner of the conjugate gradients of the iterative path (docs/gpu.md).
+enum class PreconditionerType { Jacobi, Multigrid };
+
+inline constexpr EnumNames<PreconditionerType, 2> kPreconditionerTypeNames{{
+    {PreconditionerType::Jacobi, "jacobi"},
+    {PreconditionerType::Multigrid, "multigrid"},
+}};
+
 struct LinearSolverOptions {
   /// "cholmod": supernodal sparse Cholesky; "cg": Jacobi-preconditioned conjugate gradients;
   /// "dense": dense Cholesky (small problems, and the condensed contact problems).
@@ -29,6 +37,12 @@ struct LinearSolverOptions {
   double cg_tolerance = 1e-13;
   /// CG iteration limit; 0 means 10 times the number of unknowns.
   int cg_max_iterations = 0;
+  /// "jacobi": diag(H)^{-1}, the paper's; "multigrid": one geometric multigrid V-cycle with
+  /// Chebyshev-Jacobi smoothing, whose iteration count hardly grows with the mesh (needs a
+  /// structured rectangle mesh; docs/gpu.md). Multigrid runs on the backend path (any device).
+  PreconditionerType preconditioner = PreconditionerType::Jacobi;
+  /// Degree of the Chebyshev smoother of the multigrid preconditioner (products with H per sweep).
+  int chebyshev_degree = 3;
 };
 
 /// Throws InputError naming the bad field.

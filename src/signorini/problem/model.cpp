@@ -3,6 +3,7 @@
 #include "signorini/contact/contact_set.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
+#include "signorini/problem/rectangle_hierarchy.hpp"
 
 namespace signorini {
 
@@ -49,6 +50,11 @@ Model build_model(const ProblemSpec& spec) {
     ScopedTimer t(timings, "contact set");
     problem.contact =
         make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, spec.contact.gap);
+  }
+  if (spec.solver.linear.type == LinearSolverType::ConjugateGradient &&
+      spec.solver.linear.preconditioner == PreconditionerType::Multigrid) {
+    ScopedTimer t(timings, "multigrid hierarchy");
+    problem.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, dofs);
   }
   return Model{std::move(mesh), std::move(dofs), std::move(problem), std::move(timings)};
 }

@@ -1,0 +1,67 @@
+#include "signorini/backend/backend.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace signorini {
+
+DeviceVector::DeviceVector(Backend& backend, Index n)
+    : backend_(&backend), data_(n > 0 ? backend.allocate(n) : nullptr), size_(n) {}
+
+DeviceVector::~DeviceVector() { reset(); }
+
+DeviceVector::DeviceVector(DeviceVector&& other) noexcept
+    : backend_(std::exchange(other.backend_, nullptr)),
+      data_(std::exchange(other.data_, nullptr)),
+      size_(std::exchange(other.size_, 0)) {}
+
+DeviceVector& DeviceVector::operator=(DeviceVector&& other) noexcept {
+  if (this != &other) {
+    reset();
+    backend_ = std::exchange(other.backend_, nullptr);
+    data_ = std::exchange(other.data_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+void DeviceVector::reset() noexcept {
+  if (backend_ != nullptr && data_ != nullptr) backend_->release(data_);
+  data_ = nullptr;
+  size_ = 0;
+}
+
+namespace {
+class StoredWork final : public RecordedWork {
+ public:
+  explicit StoredWork(std::function<void()> work) : work_(std::move(work)) {}
+  void replay() override { work_(); }
+
+ private:
+  std::function<void()> work_;
+};
+}  // namespace
+
+std::unique_ptr<RecordedWork> Backend::record(std::function<void()> work) {
+  return std::make_unique<StoredWork>(std::move(work));
+}
+
+DeviceVector to_device(Backend& backend, const Vector& host) {
+  DeviceVector v(backend, host.size());
+  upload_into(host, v);
+  return v;
+}
+
+Vector to_host(const DeviceVector& v) {
+  Vector out(v.size());
+  if (v.size() > 0) v.backend()->download(v.data(), v.size(), out.data());
+  return out;
+}
+
+void upload_into(const Vector& host, DeviceVector& v) {
+  if (host.size() > 0) v.backend()->upload(host.data(), host.size(), v.data());
+}
+
+double norm(Backend& backend, const DeviceVector& x) { return std::sqrt(backend.dot(x, x)); }
+
+}  // namespace signorini

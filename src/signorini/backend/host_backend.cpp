@@ -1,0 +1,172 @@
+#include "signorini/backend/host_backend.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+#include <new>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+namespace {
+
+class HostSparseMatrix final : public DeviceSparseMatrix {
+ public:
+  explicit HostSparseMatrix(const SparseMatrix& A)
+      : DeviceSparseMatrix(A.rows(), A.cols(), A.nonZeros()), csr(A) {
+    csr.makeCompressed();
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> csr;
+};
+
+class HostDenseMatrix final : public DeviceDenseMatrix {
+ public:
+  explicit HostDenseMatrix(const Matrix& A) : DeviceDenseMatrix(A.rows(), A.cols()), values(A) {}
+  Matrix values;
+};
+
+// Signed loop bounds for OpenMP.
+using Loop = std::int64_t;
+
+}  // namespace
+
+std::string HostBackend::description() const {
+#ifdef _OPENMP
+  return fmt::format("CPU, {} threads", omp_get_max_threads());
+#else
+  return "CPU, 1 thread";
+#endif
+}
+
+double* HostBackend::allocate(Index n) {
+  auto* p = new (std::nothrow) double[static_cast<std::size_t>(n)]();
+  if (p == nullptr)
+    throw NumericalError(fmt::format("out of memory: {} values ({:.2f} GB) on the CPU", n,
+                                     static_cast<double>(n) * 8e-9));
+  // The size is not known at release(); the tracking below counts what allocate() handed out.
+  in_use_ += static_cast<std::size_t>(n) * sizeof(double);
+  peak_ = std::max(peak_, in_use_);
+  sizes_.emplace(p, static_cast<std::size_t>(n) * sizeof(double));
+  return p;
+}
+
+void HostBackend::release(double* data) noexcept {
+  const auto it = sizes_.find(data);
+  if (it != sizes_.end()) {
+    in_use_ -= it->second;
+    sizes_.erase(it);
+  }
+  delete[] data;
+}
+
+void HostBackend::upload(const double* host, Index n, double* device) {
+  std::memcpy(device, host, static_cast<std::size_t>(n) * sizeof(double));
+}
+
+void HostBackend::download(const double* device, Index n, double* host) {
+  std::memcpy(host, device, static_cast<std::size_t>(n) * sizeof(double));
+}
+
+std::unique_ptr<DeviceSparseMatrix> HostBackend::upload(const SparseMatrix& A) {
+  return std::make_unique<HostSparseMatrix>(A);
+}
+
+std::unique_ptr<DeviceDenseMatrix> HostBackend::upload(const Matrix& A) {
+  return std::make_unique<HostDenseMatrix>(A);
+}
+
+void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y,
+                       double alpha, double beta) {
+  const auto& m = static_cast<const HostSparseMatrix&>(A).csr;
+  const int* outer = m.outerIndexPtr();
+  const int* inner = m.innerIndexPtr();
+  const double* v = m.valuePtr();
+  const double* xs = x.data();
+  double* ys = y.data();
+  const Loop rows = m.rows();
+#pragma omp parallel for schedule(static) if (rows > 20000)
+  for (Loop i = 0; i < rows; ++i) {
+    double s = 0.0;
+    for (int k = outer[i]; k < outer[i + 1]; ++k) s += v[k] * xs[inner[k]];
+    ys[i] = beta == 0.0 ? alpha * s : alpha * s + beta * ys[i];
+  }
+}
+
+void HostBackend::gemv(const DeviceDenseMatrix& A, const DeviceVector& x, DeviceVector& y) {
+  const auto& m = static_cast<const HostDenseMatrix&>(A).values;
+  Eigen::Map<const Vector> xs(x.data(), x.size());
+  Eigen::Map<Vector> ys(y.data(), y.size());
+  ys.noalias() = m * xs;
+}
+
+double HostBackend::dot(const DeviceVector& x, const DeviceVector& y) {
+  const double* a = x.data();
+  const double* b = y.data();
+  const Loop n = x.size();
+  double s = 0.0;
+#pragma omp parallel for reduction(+ : s) schedule(static) if (n > 20000)
+  for (Loop i = 0; i < n; ++i) s += a[i] * b[i];
+  return s;
+}
+
+void HostBackend::axpby(double a, const DeviceVector& x, double b, DeviceVector& y) {
+  axpbyz(a, x, b, y, y);
+}
+
+void HostBackend::axpbyz(double a, const DeviceVector& x, double b, const DeviceVector& y,
+                         DeviceVector& z) {
+  const double* xs = x.data();
+  const double* ys = y.data();
+  double* zs = z.data();
+  const Loop n = z.size();
+#pragma omp parallel for schedule(static) if (n > 20000)
+  for (Loop i = 0; i < n; ++i) zs[i] = a * xs[i] + (b == 0.0 ? 0.0 : b * ys[i]);
+}
+
+void HostBackend::multiply(const DeviceVector& d, const DeviceVector& x, DeviceVector& z) {
+  const double* ds = d.data();
+  const double* xs = x.data();
+  double* zs = z.data();
+  const Loop n = z.size();
+#pragma omp parallel for schedule(static) if (n > 20000)
+  for (Loop i = 0; i < n; ++i) zs[i] = ds[i] * xs[i];
+}
+
+void HostBackend::reciprocal(const DeviceVector& x, DeviceVector& y) {
+  const double* xs = x.data();
+  double* ys = y.data();
+  const Loop n = y.size();
+#pragma omp parallel for schedule(static) if (n > 20000)
+  for (Loop i = 0; i < n; ++i) ys[i] = 1.0 / xs[i];
+}
+
+void HostBackend::copy(const DeviceVector& x, DeviceVector& y) {
+  if (x.size() > 0) std::memcpy(y.data(), x.data(), static_cast<std::size_t>(x.size()) * 8);
+}
+
+void HostBackend::fill(DeviceVector& x, double value) {
+  std::fill(x.data(), x.data() + x.size(), value);
+}
+
+void HostBackend::chebyshev_update(double a, double b, const DeviceVector& dinv,
+                                   const DeviceVector& r, DeviceVector& d, DeviceVector& x) {
+  const double* ds = dinv.data();
+  const double* rs = r.data();
+  double* dd = d.data();
+  double* xs = x.data();
+  const Loop n = x.size();
+#pragma omp parallel for schedule(static) if (n > 20000)
+  for (Loop i = 0; i < n; ++i) {
+    dd[i] = (a == 0.0 ? 0.0 : a * dd[i]) + b * ds[i] * rs[i];
+    xs[i] += dd[i];
+  }
+}
+
+}  // namespace signorini

@@ -1,0 +1,24 @@
+#pragma once
+// What the Krylov and multigrid algorithms see of a matrix and of a preconditioner: y = A x and
+// z = M^{-1} r on vectors of one backend (backend/backend.hpp).
+
+#include "signorini/backend/backend.hpp"
+
+namespace signorini {
+
+class LinearOperator {
+ public:
+  virtual ~LinearOperator() = default;
+  [[nodiscard]] virtual Index size() const = 0;
+  /// y = A x (x and y distinct)
+  virtual void apply(const DeviceVector& x, DeviceVector& y) = 0;
+};
+
+class Preconditioner {
+ public:
+  virtual ~Preconditioner() = default;
+  /// z = M^{-1} r (r and z distinct). M must be symmetric positive definite for CG.
+  virtual void apply(const DeviceVector& r, DeviceVector& z) = 0;
+};
+
+}  // namespace signorini

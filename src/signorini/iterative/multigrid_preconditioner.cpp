@@ -1,0 +1,131 @@
+#include "signorini/iterative/multigrid_preconditioner.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Cholesky>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+struct MultigridPreconditioner::Level {
+  std::unique_ptr<PenalizedOperator> owned;  // coarse levels own their operator
+  PenalizedOperator* op = nullptr;
+  std::unique_ptr<ChebyshevSmoother> smoother;
+  std::unique_ptr<DeviceSparseMatrix> P, Pt;  // to this level from the next coarser one
+  DeviceVector b, x, r;                       // right-hand side, correction, residual
+};
+
+MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A,
+                                                 const SparseMatrix& N,
+                                                 const std::vector<SparseMatrix>& prolongations,
+                                                 MultigridOptions options)
+    : backend_(fine.backend()), options_(options) {
+  if (A.rows() != fine.size() || N.cols() != fine.size())
+    throw NumericalError("multigrid: A and N do not match the fine operator");
+  SparseMatrix Al = A, Nl = N;
+  auto first = std::make_unique<Level>();
+  first->op = &fine;
+  levels_.push_back(std::move(first));
+  for (const SparseMatrix& P : prolongations) {
+    if (P.rows() != Al.rows())
+      throw NumericalError(fmt::format("multigrid: prolongation {} has {} rows, level has {}",
+                                       levels_.size(), P.rows(), Al.rows()));
+    // Galerkin coarse operators (the hierarchy of docs/gpu.md).
+    SparseMatrix coarse = P.transpose() * Al * P;
+    coarse.prune(0.0);
+    Nl = Nl * P;
+    Al = std::move(coarse);
+    Level& finer = *levels_.back();
+    finer.P = backend_.upload(P);
+    finer.Pt = backend_.upload(SparseMatrix(P.transpose()));
+    auto level = std::make_unique<Level>();
+    level->owned = std::make_unique<PenalizedOperator>(backend_, Al, Nl);
+    level->op = level->owned.get();
+    levels_.push_back(std::move(level));
+  }
+  coarse_A_ = std::move(Al);
+  coarse_N_ = std::move(Nl);
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    Level& lev = *levels_[l];
+    const Index n = lev.op->size();
+    if (l > 0) {
+      lev.b = DeviceVector(backend_, n);
+      lev.x = DeviceVector(backend_, n);
+    }
+    lev.r = DeviceVector(backend_, n);
+    const bool coarsest = l + 1 == levels_.size();
+    if (!coarsest || n > options_.max_dense_coarse) {
+      ChebyshevOptions o = options_.smoother;
+      if (coarsest) o.degree *= 10;
+      lev.smoother = std::make_unique<ChebyshevSmoother>(*lev.op, o);
+    }
+  }
+  refresh();
+}
+
+MultigridPreconditioner::~MultigridPreconditioner() = default;
+
+std::vector<Index> MultigridPreconditioner::level_sizes() const {
+  std::vector<Index> sizes;
+  for (const auto& l : levels_) sizes.push_back(l->op->size());
+  return sizes;
+}
+
+void MultigridPreconditioner::refresh() {
+  recorded_.reset();
+  const Vector& c = levels_.front()->op->weights();
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    Level& lev = *levels_[l];
+    if (l > 0) lev.op->set_weights(c);  // the same c on every level: N_l = N P_1 ... P_l
+    if (lev.smoother) lev.smoother->refresh();
+  }
+  if (!levels_.back()->smoother) factor_coarsest();
+}
+
+void MultigridPreconditioner::factor_coarsest() {
+  // H_L = A_L + N_L^T diag(c) N_L, dense, inverted once per active set.
+  const Vector& c = levels_.front()->op->weights();
+  Matrix H = Matrix(coarse_A_);
+  if (coarse_N_.rows() > 0) H += Matrix(coarse_N_.transpose() * c.asDiagonal() * coarse_N_);
+  Eigen::LLT<Matrix> llt(H);
+  if (llt.info() != Eigen::Success)
+    throw NumericalError(fmt::format(
+        "multigrid: the coarsest operator ({} unknowns) is not positive definite", H.rows()));
+  coarse_inverse_ = backend_.upload(Matrix(llt.solve(Matrix::Identity(H.rows(), H.cols()))));
+}
+
+void MultigridPreconditioner::apply(const DeviceVector& r, DeviceVector& z) {
+  // The cycle has no host synchronisation (no dot products), so it can be recorded once per
+  // refresh and replayed by every CG iteration.
+  if (!recorded_ || recorded_r_ != &r || recorded_z_ != &z || recorded_r_data_ != r.data() ||
+      recorded_z_data_ != z.data()) {
+    recorded_ = backend_.record([this, &r, &z] { cycle(0, r, z); });
+    recorded_r_ = &r;
+    recorded_z_ = &z;
+    recorded_r_data_ = r.data();
+    recorded_z_data_ = z.data();
+  }
+  recorded_->replay();
+}
+
+void MultigridPreconditioner::cycle(std::size_t l, const DeviceVector& b, DeviceVector& x) {
+  Level& lev = *levels_[l];
+  if (l + 1 == levels_.size()) {
+    if (lev.smoother)
+      lev.smoother->smooth(b, x, true);
+    else
+      backend_.gemv(*coarse_inverse_, b, x);
+    return;
+  }
+  Level& next = *levels_[l + 1];
+  lev.smoother->smooth(b, x, true);  // pre-smoothing from x = 0
+  lev.op->apply(x, lev.r);
+  backend_.axpby(1.0, b, -1.0, lev.r);      // r = b - H x
+  backend_.spmv(*lev.Pt, lev.r, next.b);    // restriction P^T r
+  cycle(l + 1, next.b, next.x);             // coarse correction
+  backend_.spmv(*lev.P, next.x, x, 1.0, 1.0);  // x += P e
+  lev.smoother->smooth(b, x, false);        // post-smoothing (same polynomial: symmetric cycle)
+}
+
+}  // namespace signorini

@@ -1,0 +1,63 @@
+#pragma once
+// One V-cycle of geometric multigrid as the preconditioner of conjugate gradients for the
+// generalised Hessian H = A + N^T diag(c) N (penalized_operator.hpp), docs/gpu.md.
+//
+// Levels come from the mesh (prolongations P_l from level l to level l-1, e.g. bilinear
+// interpolation between nested rectangle meshes); the coarse operators are Galerkin products
+// A_l = P_l^T A_{l-1} P_l and N_l = N_{l-1} P_l, formed once. Since P^T (N^T diag(c) N) P =
+// N_l^T diag(c) N_l, a new active set only changes c: the hierarchy stays, and refresh() redoes
+// the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation).
+// Smoothing is Chebyshev–Jacobi; the coarsest level is solved by a dense Cholesky factorisation
+// (as its inverse, applied by one dense product on the device).
+
+#include <memory>
+#include <vector>
+
+#include "signorini/iterative/chebyshev_smoother.hpp"
+
+namespace signorini {
+
+struct MultigridOptions {
+  ChebyshevOptions smoother;
+  /// The coarsest level is solved exactly (dense) up to this size; above it by a Chebyshev sweep
+  /// of 10 times the smoother's degree (then the preconditioner is no longer mesh-independent).
+  Index max_dense_coarse = 2000;
+};
+
+class MultigridPreconditioner final : public Preconditioner {
+ public:
+  /// `fine` is H on the finest level (it must outlive this object); A and N are its host
+  /// matrices, `prolongations[l]` maps level l+1 to level l.
+  MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A, const SparseMatrix& N,
+                          const std::vector<SparseMatrix>& prolongations,
+                          MultigridOptions options);
+  ~MultigridPreconditioner() override;
+
+  /// After fine.set_weights(c): carries c to every level and redoes diagonals, eigenvalue
+  /// estimates and the coarsest factorisation.
+  void refresh();
+  void apply(const DeviceVector& r, DeviceVector& z) override;
+
+  /// Unknowns per level, finest first.
+  [[nodiscard]] std::vector<Index> level_sizes() const;
+
+ private:
+  struct Level;
+  void cycle(std::size_t l, const DeviceVector& b, DeviceVector& x);
+  void factor_coarsest();
+
+  Backend& backend_;
+  MultigridOptions options_;
+  std::vector<std::unique_ptr<Level>> levels_;
+  SparseMatrix coarse_A_, coarse_N_;  // host copies of the coarsest level, for its factorisation
+  std::unique_ptr<DeviceDenseMatrix> coarse_inverse_;
+  // The V-cycle as recorded work (a CUDA graph on a GPU) for the last (r, z) pair; dropped by
+  // refresh(), which changes the smoothers' coefficients and the coarse inverse.
+  std::unique_ptr<RecordedWork> recorded_;
+  const DeviceVector* recorded_r_ = nullptr;
+  const DeviceVector* recorded_z_ = nullptr;
+  const double* recorded_r_data_ = nullptr;
+  const double* recorded_z_data_ = nullptr;
+};
+
+}  // namespace signorini

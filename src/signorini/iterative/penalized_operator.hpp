@@ -1,0 +1,45 @@
+#pragma once
+// The generalised Hessian of method.md section 4 as an operator on a backend:
+//   H = A + N^T diag(c) N,   c_j = r h_j on the active contact nodes, 0 elsewhere,
+// i.e. (17)'s matrix A + r sum_{j active} h_j nu_j nu_j^T, kept as the fixed stiffness A and the
+// fixed contact operator N; a change of the active set only changes the n_c numbers c. The same
+// form describes every multigrid level (A_l = P^T A P, N_l = N P), so the Galerkin hierarchy
+// never has to be rebuilt when the active set moves.
+
+#include <memory>
+
+#include "signorini/iterative/linear_operator.hpp"
+
+namespace signorini {
+
+class PenalizedOperator final : public LinearOperator {
+ public:
+  /// A: n x n SPD (both triangles); N: n_c x n. Uploads A, N, N^T and (N.^2)^T.
+  PenalizedOperator(Backend& backend, const SparseMatrix& A, const SparseMatrix& N);
+
+  [[nodiscard]] Index size() const override { return n_; }
+  [[nodiscard]] Index num_contact() const { return nc_; }
+  /// y = A x + N^T (c .* (N x))
+  void apply(const DeviceVector& x, DeviceVector& y) override;
+  /// y = A x only (the energy and the residual A x - b need the stiffness alone).
+  void apply_stiffness(const DeviceVector& x, DeviceVector& y);
+  /// y = N x (n_c values) and y = N^T w (n values).
+  void apply_contact(const DeviceVector& x, DeviceVector& y);
+  void apply_contact_transpose(const DeviceVector& w, DeviceVector& y, double beta = 0.0);
+
+  /// Sets c (n_c values, host).
+  void set_weights(const Vector& c);
+  /// diag(H) = diag(A) + (N.^2)^T c
+  void diagonal(DeviceVector& out);
+  [[nodiscard]] Backend& backend() const { return backend_; }
+  [[nodiscard]] const Vector& weights() const { return c_host_; }
+
+ private:
+  Backend& backend_;
+  Index n_, nc_;
+  std::unique_ptr<DeviceSparseMatrix> A_, N_, Nt_, N2t_;
+  DeviceVector diag_a_, c_, t_;
+  Vector c_host_;
+};
+
+}  // namespace signorini

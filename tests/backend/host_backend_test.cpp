@@ -1,0 +1,85 @@
+// The CPU backend's kernels against Eigen (the reference the CUDA backend is compared with in
+// tests/backend/cuda_backend_gpu_test.cpp), and its memory accounting.
+
+#include "signorini/backend/host_backend.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace signorini {
+namespace {
+
+TEST(HostBackend, KernelsMatchEigen) {
+  HostBackend be;
+  const Index n = 1001;
+  const Vector x = Vector::LinSpaced(n, -1.0, 1.0).array().sin();
+  const Vector y = Vector::LinSpaced(n, 0.5, 3.0);
+  DeviceVector dx = to_device(be, x), dy = to_device(be, y), dz(be, n);
+  EXPECT_NEAR(be.dot(dx, dy), x.dot(y), 1e-14 * std::abs(x.dot(y)));
+  be.axpbyz(2.0, dx, -3.0, dy, dz);
+  EXPECT_LT((to_host(dz) - (2.0 * x - 3.0 * y)).norm(), 1e-13);
+  be.axpby(0.5, dx, 2.0, dy);  // y = 0.5 x + 2 y
+  EXPECT_LT((to_host(dy) - (0.5 * x + 2.0 * y)).norm(), 1e-13);
+  be.multiply(dx, dx, dz);
+  EXPECT_LT((to_host(dz) - x.cwiseAbs2()).norm(), 1e-14);
+  DeviceVector dr = to_device(be, y);
+  be.reciprocal(dr, dr);
+  EXPECT_LT((to_host(dr) - y.cwiseInverse()).norm(), 1e-14);
+  be.fill(dz, 4.0);
+  EXPECT_EQ(to_host(dz), Vector::Constant(n, 4.0));
+  be.copy(dx, dz);
+  EXPECT_EQ(to_host(dz), x);
+}
+
+TEST(HostBackend, SparseAndDenseProducts) {
+  HostBackend be;
+  SparseMatrix A(3, 4);
+  A.insert(0, 0) = 1.0;
+  A.insert(0, 3) = 2.0;
+  A.insert(2, 1) = -1.0;
+  A.makeCompressed();
+  const Vector x = Vector::LinSpaced(4, 1.0, 4.0);
+  const auto dA = be.upload(A);
+  EXPECT_EQ(dA->rows(), 3);
+  EXPECT_EQ(dA->nonzeros(), 3);
+  DeviceVector y(be, 3);
+  be.fill(y, std::numeric_limits<double>::quiet_NaN());
+  be.spmv(*dA, to_device(be, x), y);  // beta = 0 ignores y, NaN or not
+  EXPECT_EQ(to_host(y), Vector(A * x));
+  be.spmv(*dA, to_device(be, x), y, 2.0, 1.0);
+  EXPECT_EQ(to_host(y), Vector(3.0 * (A * x)));
+  const Matrix D = Matrix::Random(3, 4);
+  const auto dD = be.upload(D);
+  be.gemv(*dD, to_device(be, x), y);
+  EXPECT_LT((to_host(y) - D * x).norm(), 1e-14);
+}
+
+TEST(HostBackend, ChebyshevUpdateIgnoresStaleDirectionWhenAIsZero) {
+  HostBackend be;
+  const Vector dinv = Vector::Constant(5, 0.5), r = Vector::LinSpaced(5, 1.0, 5.0);
+  DeviceVector d(be, 5), x = to_device(be, Vector::Ones(5));
+  be.fill(d, std::numeric_limits<double>::quiet_NaN());
+  be.chebyshev_update(0.0, 2.0, to_device(be, dinv), to_device(be, r), d, x);
+  EXPECT_EQ(to_host(d), r);  // 2 * 0.5 * r
+  EXPECT_EQ(to_host(x), Vector(Vector::Ones(5) + r));
+  be.chebyshev_update(1.0, 1.0, to_device(be, dinv), to_device(be, r), d, x);
+  EXPECT_EQ(to_host(d), Vector(1.5 * r));
+}
+
+TEST(HostBackend, CountsTheMemoryItHolds) {
+  HostBackend be;
+  EXPECT_EQ(be.bytes_in_use(), 0U);
+  {
+    DeviceVector a(be, 100), b(be, 50);
+    EXPECT_EQ(be.bytes_in_use(), 150U * sizeof(double));
+    DeviceVector c = std::move(a);
+    EXPECT_EQ(be.bytes_in_use(), 150U * sizeof(double));
+  }
+  EXPECT_EQ(be.bytes_in_use(), 0U);
+  EXPECT_EQ(be.peak_bytes(), 150U * sizeof(double));
+}
+
+}  // namespace
+}  // namespace signorini

@@ -1,0 +1,81 @@
+// The GPU solve of the paper's method (solver.device = "cuda", docs/gpu.md) against the CPU on
+// the Table 1 meshes: energies to 1e-8 relative, the same Uzawa counts and first-step GNM counts,
+// u and l to 1e-8 / 1e-7. Skipped, saying so, where no CUDA GPU is usable.
+
+#include <gtest/gtest.h>
+
+#include "signorini/backend/cuda_backend.hpp"
+#include "signorini/problem/rectangle_hierarchy.hpp"
+#include "test_problems.hpp"
+
+namespace signorini {
+namespace {
+
+#define SKIP_WITHOUT_GPU()                                                    \
+  do {                                                                        \
+    const CudaReport report = cuda_report();                                  \
+    if (report.gpus.empty()) GTEST_SKIP() << "no CUDA GPU: " << report.problem; \
+  } while (false)
+
+ContactProblem with_hierarchy(Index nx) {
+  const Model& model = testing::paper_model(nx);
+  const ProblemSpec spec = paper_benchmark(nx, nx / 3);
+  ContactProblem p = model.problem;
+  p.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
+  return p;
+}
+
+class GpuSolve
+    : public ::testing::TestWithParam<std::tuple<Index, PreconditionerType>> {};
+
+TEST_P(GpuSolve, MatchesTheCpuDirectSolve) {
+  SKIP_WITHOUT_GPU();
+  const auto [nx, preconditioner] = GetParam();
+  const ContactProblem p = with_hierarchy(nx);
+  const ContactResult cpu = solve_contact(p, ContactSolverOptions{});
+  ContactSolverOptions o;
+  o.device = DeviceKind::Cuda;
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.preconditioner = preconditioner;
+  const ContactResult gpu = solve_contact(p, o);
+  ASSERT_TRUE(gpu.summary.converged()) << gpu.summary.message;
+  EXPECT_NEAR(gpu.summary.lagrangian, cpu.summary.lagrangian,
+              1e-8 * std::abs(cpu.summary.lagrangian));
+  EXPECT_NEAR(gpu.summary.energy, cpu.summary.energy, 1e-8 * std::abs(cpu.summary.energy));
+  EXPECT_EQ(gpu.summary.outer_iterations, cpu.summary.outer_iterations);
+  EXPECT_EQ(gpu.summary.inner_iterations().front(), cpu.summary.inner_iterations().front());
+  EXPECT_LT(testing::relative_difference(gpu.u, cpu.u), 1e-8);
+  EXPECT_LT(testing::relative_difference(gpu.l, cpu.l), 1e-7);
+  EXPECT_NE(gpu.summary.device.find("sm_"), std::string::npos) << gpu.summary.device;
+}
+
+TEST_P(GpuSolve, MatchesTheSameAlgorithmOnTheCpuBackend) {
+  SKIP_WITHOUT_GPU();
+  const auto [nx, preconditioner] = GetParam();
+  const ContactProblem p = with_hierarchy(nx);
+  ContactSolverOptions o;
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.preconditioner = preconditioner;
+  const ContactResult host = solve_uzawa_gnm_on_backend(p, o);
+  o.device = DeviceKind::Cuda;
+  const ContactResult gpu = solve_uzawa_gnm_on_backend(p, o);
+  ASSERT_EQ(gpu.summary.steps.size(), host.summary.steps.size());
+  for (std::size_t k = 0; k < host.summary.steps.size(); ++k)
+    EXPECT_EQ(gpu.summary.steps[k].inner_iterations, host.summary.steps[k].inner_iterations) << k;
+  EXPECT_LT(testing::relative_difference(gpu.u, host.u), 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table1, GpuSolve,
+    ::testing::Values(std::tuple{Index{60}, PreconditionerType::Multigrid},
+                      std::tuple{Index{120}, PreconditionerType::Multigrid},
+                      std::tuple{Index{240}, PreconditionerType::Multigrid},
+                      std::tuple{Index{60}, PreconditionerType::Jacobi}),
+    [](const auto& param_info) {
+      const Index nx = std::get<0>(param_info.param);
+      return std::to_string(nx) + "x" + std::to_string(nx / 3) + "_" +
+             std::string(enum_to_string(kPreconditionerTypeNames, std::get<1>(param_info.param)));
+    });
+
+}  // namespace
+}  // namespace signorini
