@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "model_loading.hpp"
+#include "signorini/backend/make_backend.hpp"
 
 namespace signorini::app {
 
@@ -12,6 +13,11 @@ int run_check(const CheckArguments& args) {
   const LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
   print_warnings(loaded);
   const Model model = build_model_for(loaded);
+  // A solve on the GPU would stop at its first step without one: say so now (docs/gpu.md).
+  if (loaded.spec.solver.device == DeviceKind::Cuda) {
+    const auto backend = make_backend(DeviceKind::Cuda);  // throws InputError, with the reason
+    fmt::print("device: {}\n", backend->description());
+  }
   fmt::print("ok: {} dofs, {} contact nodes\n", model.dofs.num_dofs(),
              model.problem.contact.size());
   return kSuccess;

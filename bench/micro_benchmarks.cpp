@@ -4,10 +4,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include "signorini/backend/host_backend.hpp"
 #include "signorini/contact/condensed_problem.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/problem/model.hpp"
+#include "signorini/problem/rectangle_hierarchy.hpp"
 
 namespace {
 
@@ -44,6 +47,46 @@ BENCHMARK(CondensedSolve)
     ->Args({480, static_cast<int>(ContactMethod::UzawaGnm)})
     ->Args({480, static_cast<int>(ContactMethod::SemismoothNewton)})
     ->Unit(benchmark::kMillisecond);
+
+// The multigrid preconditioner of the backend path (docs/gpu.md) on the CPU backend: its set-up
+// (Galerkin coarse operators on the host, first refresh) and one V-cycle, with every contact node
+// active (the stiffest Newton matrix). On a GPU the same set-up runs on the host.
+struct MultigridCase {
+  Model model;
+  std::vector<SparseMatrix> P;
+  Vector c;
+  explicit MultigridCase(Index nx) : model(build_model(paper_benchmark(nx, nx / 3))) {
+    const ProblemSpec spec = paper_benchmark(nx, nx / 3);
+    P = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
+    c = 1e8 * model.problem.contact.weights;
+  }
+};
+
+void MultigridSetup(benchmark::State& state) {
+  const MultigridCase m(state.range(0));
+  HostBackend be;
+  PenalizedOperator op(be, m.model.problem.A, m.model.problem.contact.N);
+  op.set_weights(m.c);
+  for (auto _ : state) {
+    MultigridPreconditioner mg(op, m.model.problem.A, m.model.problem.contact.N, m.P, {});
+    benchmark::DoNotOptimize(mg.level_sizes());
+  }
+  state.counters["dofs"] = static_cast<double>(op.size());
+}
+BENCHMARK(MultigridSetup)->Arg(480)->Arg(960)->Unit(benchmark::kMillisecond);
+
+void MultigridVCycle(benchmark::State& state) {
+  const MultigridCase m(state.range(0));
+  HostBackend be;
+  PenalizedOperator op(be, m.model.problem.A, m.model.problem.contact.N);
+  op.set_weights(m.c);
+  MultigridPreconditioner mg(op, m.model.problem.A, m.model.problem.contact.N, m.P, {});
+  const DeviceVector r = to_device(be, m.model.problem.b);
+  DeviceVector z(be, op.size());
+  for (auto _ : state) mg.apply(r, z);
+  state.counters["dofs"] = static_cast<double>(op.size());
+}
+BENCHMARK(MultigridVCycle)->Arg(480)->Arg(960)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -63,6 +63,10 @@ TEST(SignoriniApp, CudaWithoutAGpuIsAClearError) {
       dir, "solve " + kSmall + " -o " + quoted(out.string()) + " --set solver.device=cuda");
   EXPECT_EQ(direct.status, 2);
   EXPECT_CONTAINS(direct.err, "set solver.linear.type = \"cg\"");
+  // `check` finds it too, before any solve.
+  const ToolRun check = run_tool(dir, "check " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_gpu.toml"));
+  EXPECT_EQ(check.status, 2) << check.out << check.err;
+  EXPECT_CONTAINS(check.err, "solver.device = \"cuda\"");
 }
 
 TEST(SignoriniApp, MultigridConjugateGradientsGiveTheTable1Energy) {

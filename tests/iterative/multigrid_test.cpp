@@ -10,6 +10,7 @@
 
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/iterative/chebyshev_smoother.hpp"
+#include "signorini/iterative/galerkin_product.hpp"
 #include "signorini/iterative/jacobi_preconditioner.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/iterative/pcg.hpp"
@@ -43,6 +44,18 @@ Vector direct_solution(const SparseMatrix& H, const Vector& b) {
   Vector x;
   chol.solve(b, x);
   return x;
+}
+
+TEST(GalerkinProduct, EqualsEigensTripleProduct) {
+  Fixture f(60);
+  const SparseMatrix& A = f.model.problem.A;
+  for (const SparseMatrix& P : {f.P[0], SparseMatrix(f.P[0] * f.P[1])}) {
+    const SparseMatrix fast = galerkin_product(A, P);
+    const SparseMatrix reference = SparseMatrix(P.transpose() * A * P).pruned();
+    EXPECT_EQ(fast.rows(), P.cols());
+    EXPECT_LT((Matrix(fast) - Matrix(reference)).norm(), 1e-13 * Matrix(reference).norm());
+    EXPECT_LT((Matrix(fast) - Matrix(fast).transpose()).norm(), 1e-13 * Matrix(fast).norm());
+  }
 }
 
 TEST(PenalizedOperator, AppliesTheGeneralisedHessian) {
@@ -98,8 +111,9 @@ TEST(ChebyshevSmoother, LanczosEstimateIsJustBelowTheLargestEigenvalue) {
   const SparseMatrix H = f.hessian();
   const Vector s = Vector(H.diagonal()).cwiseSqrt().cwiseInverse();
   const Matrix scaled = s.asDiagonal() * Matrix(H) * s.asDiagonal();
-  const double exact =
-      Eigen::SelfAdjointEigenSolver<Matrix>(scaled, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+  const double exact = Eigen::SelfAdjointEigenSolver<Matrix>(scaled, Eigen::EigenvaluesOnly)
+                           .eigenvalues()
+                           .maxCoeff();
   EXPECT_LE(estimate, exact * (1.0 + 1e-10));
   EXPECT_GT(estimate, 0.9 * exact);  // so that 1.1 * estimate covers the spectrum
 }

@@ -102,6 +102,12 @@ class Backend {
   /// Copies A (any shape) into the backend as CSR. Throws NumericalError if it does not fit.
   [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload(const SparseMatrix& A) = 0;
   [[nodiscard]] virtual std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) = 0;
+  /// upload(A) for a symmetric A: its column-major arrays are then also its CSR arrays, which
+  /// spares a backend the conversion (a second copy of the largest matrix, on the host).
+  [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
+      const SparseMatrix& A) {
+    return upload(A);
+  }
 
   // Kernels. Vectors must belong to this backend and have matching sizes; x and y must differ
   // where both appear, unless stated.
@@ -124,8 +130,8 @@ class Backend {
   virtual void fill(DeviceVector& x, double value) = 0;
   /// One step of the Chebyshev recurrence (Saad, Iterative Methods, Alg. 12.1), fused:
   ///   d = a d + b (dinv .* r);  x += d
-  virtual void chebyshev_update(double a, double b, const DeviceVector& dinv,
-                                const DeviceVector& r, DeviceVector& d, DeviceVector& x) = 0;
+  virtual void chebyshev_update(double a, double b, const DeviceVector& dinv, const DeviceVector& r,
+                                DeviceVector& d, DeviceVector& x) = 0;
   /// Waits for queued work (timings).
   virtual void synchronize() {}
 

@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 
 #include "signorini/core/error.hpp"
+#include "signorini/iterative/galerkin_product.hpp"
 
 namespace signorini {
 
@@ -32,8 +33,7 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
       throw NumericalError(fmt::format("multigrid: prolongation {} has {} rows, level has {}",
                                        levels_.size(), P.rows(), Al.rows()));
     // Galerkin coarse operators (the hierarchy of docs/gpu.md).
-    SparseMatrix coarse = P.transpose() * Al * P;
-    coarse.prune(0.0);
+    SparseMatrix coarse = galerkin_product(Al, P);
     Nl = Nl * P;
     Al = std::move(coarse);
     Level& finer = *levels_.back();
@@ -121,11 +121,11 @@ void MultigridPreconditioner::cycle(std::size_t l, const DeviceVector& b, Device
   Level& next = *levels_[l + 1];
   lev.smoother->smooth(b, x, true);  // pre-smoothing from x = 0
   lev.op->apply(x, lev.r);
-  backend_.axpby(1.0, b, -1.0, lev.r);      // r = b - H x
-  backend_.spmv(*lev.Pt, lev.r, next.b);    // restriction P^T r
-  cycle(l + 1, next.b, next.x);             // coarse correction
+  backend_.axpby(1.0, b, -1.0, lev.r);         // r = b - H x
+  backend_.spmv(*lev.Pt, lev.r, next.b);       // restriction P^T r
+  cycle(l + 1, next.b, next.x);                // coarse correction
   backend_.spmv(*lev.P, next.x, x, 1.0, 1.0);  // x += P e
-  lev.smoother->smooth(b, x, false);        // post-smoothing (same polynomial: symmetric cycle)
+  lev.smoother->smooth(b, x, false);           // post-smoothing (same polynomial: symmetric cycle)
 }
 
 }  // namespace signorini

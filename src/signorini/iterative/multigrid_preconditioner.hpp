@@ -29,8 +29,7 @@ class MultigridPreconditioner final : public Preconditioner {
   /// `fine` is H on the finest level (it must outlive this object); A and N are its host
   /// matrices, `prolongations[l]` maps level l+1 to level l.
   MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A, const SparseMatrix& N,
-                          const std::vector<SparseMatrix>& prolongations,
-                          MultigridOptions options);
+                          const std::vector<SparseMatrix>& prolongations, MultigridOptions options);
   ~MultigridPreconditioner() override;
 
   /// After fine.set_weights(c): carries c to every level and redoes diagonals, eigenvalue

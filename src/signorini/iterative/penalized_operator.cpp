@@ -8,7 +8,7 @@ PenalizedOperator::PenalizedOperator(Backend& backend, const SparseMatrix& A, co
     : backend_(backend), n_(A.rows()), nc_(N.rows()) {
   if (A.cols() != n_ || N.cols() != n_)
     throw NumericalError("penalized operator: sizes of A and N do not match");
-  A_ = backend.upload(A);
+  A_ = backend.upload_symmetric(A);
   N_ = backend.upload(N);
   const SparseMatrix Nt = N.transpose();
   Nt_ = backend.upload(Nt);

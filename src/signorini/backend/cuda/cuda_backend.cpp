@@ -148,6 +148,8 @@ class CudaBackend final : public Backend {
 
   [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload(const SparseMatrix& A) override;
   [[nodiscard]] std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) override;
+  [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
+      const SparseMatrix& A) override;
 
   void spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y, double alpha,
             double beta) override;
@@ -175,6 +177,9 @@ class CudaBackend final : public Backend {
   /// Throws std::invalid_argument unless v is a vector of this backend with n values.
   void require(const DeviceVector& v, Index n, const char* call, const char* name) const;
   void copy_to_device(void* device, const void* host, std::size_t bytes);
+  std::unique_ptr<DeviceSparseMatrix> upload_csr(Index rows, Index cols, Index nonzeros,
+                                                 const int* offsets, const int* column_indices,
+                                                 const double* values);
   void destroy_handles() noexcept;
 
   int device_;
@@ -343,12 +348,24 @@ void CudaBackend::download(const double* device, Index n, double* host) {
 }
 
 std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload(const SparseMatrix& A) {
-  bind();
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> csr(A);
   csr.makeCompressed();
-  const Index rows = csr.rows();
-  const Index cols = csr.cols();
-  const Index nonzeros = csr.nonZeros();
+  return upload_csr(csr.rows(), csr.cols(), csr.nonZeros(), csr.outerIndexPtr(),
+                    csr.innerIndexPtr(), csr.valuePtr());
+}
+
+std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload_symmetric(const SparseMatrix& A) {
+  if (!A.isCompressed() || A.rows() != A.cols()) return upload(A);
+  // A = A^T: the CSC arrays of A are the CSR arrays of A.
+  return upload_csr(A.rows(), A.cols(), A.nonZeros(), A.outerIndexPtr(), A.innerIndexPtr(),
+                    A.valuePtr());
+}
+
+std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload_csr(Index rows, Index cols, Index nonzeros,
+                                                            const int* offsets,
+                                                            const int* column_indices,
+                                                            const double* values) {
+  bind();
   auto m = std::make_unique<CudaSparseMatrix>(*this, rows, cols, nonzeros);
   const auto offsets_bytes = static_cast<std::size_t>(rows + 1) * sizeof(int);
   const auto columns_bytes = static_cast<std::size_t>(nonzeros) * sizeof(int);
@@ -356,10 +373,10 @@ std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload(const SparseMatrix& A) {
   m->row_offsets = static_cast<int*>(allocate_bytes(offsets_bytes, "CSR row offsets"));
   m->columns = static_cast<int*>(allocate_bytes(columns_bytes, "CSR column indices"));
   m->values = static_cast<double*>(allocate_bytes(values_bytes, "CSR values"));
-  copy_to_device(m->row_offsets, csr.outerIndexPtr(), offsets_bytes);
-  copy_to_device(m->columns, csr.innerIndexPtr(), columns_bytes);
-  copy_to_device(m->values, csr.valuePtr(), values_bytes);
-  // csr is freed on return: the copies must be done.
+  copy_to_device(m->row_offsets, offsets, offsets_bytes);
+  copy_to_device(m->columns, column_indices, columns_bytes);
+  copy_to_device(m->values, values, values_bytes);
+  // The host arrays may be freed on return: the copies must be done.
   check(cudaStreamSynchronize(stream_), "cudaStreamSynchronize");
   if (rows > 0 && cols > 0 && nonzeros > 0)
     check(cusparseCreateCsr(&m->descriptor, rows, cols, nonzeros, m->row_offsets, m->columns,
