@@ -175,7 +175,10 @@ std::vector<BenchmarkRow> largest_gpu_mesh(const std::vector<BenchmarkRow>& rows
   auto unknowns = [](Index n) {
     return 2.0 * static_cast<double>(n + 1) * static_cast<double>(n / 3 + 1);
   };
-  while (unknowns(nx + 480) * per_unknown < budget) nx += 480;
+  // cuSPARSE matrices here have 32-bit indices: the stiffness (at most 18 entries per row for Q1
+  // in 2D) must stay below 2^31 nonzeros.
+  const double max_unknowns = 2147483647.0 / 18.0;
+  while (unknowns(nx + 480) * per_unknown < budget && unknowns(nx + 480) < max_unknowns) nx += 480;
   fmt::print(
       "\n--largest: {:.0f} bytes per unknown on the GPU at {}x{}, {:.1f} GiB of GPU memory: "
       "{}x{} ({:.3g} unknowns)\n",

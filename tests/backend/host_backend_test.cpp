@@ -79,6 +79,15 @@ TEST(HostBackend, CountsTheMemoryItHolds) {
   }
   EXPECT_EQ(be.bytes_in_use(), 0U);
   EXPECT_EQ(be.peak_bytes(), 150U * sizeof(double));
+  {  // matrices count as their CSR arrays (as on a GPU)
+    SparseMatrix A(10, 10);
+    A.setIdentity();
+    const auto dA = be.upload(A);
+    EXPECT_EQ(be.bytes_in_use(), 11 * sizeof(int) + 10 * (sizeof(int) + sizeof(double)));
+    const auto dD = be.upload(Matrix(Matrix::Zero(3, 4)));
+    EXPECT_EQ(be.bytes_in_use(), 11 * sizeof(int) + 10 * (sizeof(int) + sizeof(double)) + 96);
+  }
+  EXPECT_EQ(be.bytes_in_use(), 0U);
 }
 
 }  // namespace

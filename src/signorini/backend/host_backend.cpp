@@ -17,19 +17,44 @@ namespace signorini {
 
 namespace {
 
+// Matrices count in bytes_in_use() as on a GPU (CSR arrays), so that the CPU backend predicts the
+// memory a GPU run needs.
 class HostSparseMatrix final : public DeviceSparseMatrix {
  public:
-  explicit HostSparseMatrix(const SparseMatrix& A)
-      : DeviceSparseMatrix(A.rows(), A.cols(), A.nonZeros()), csr(A) {
+  HostSparseMatrix(const SparseMatrix& A, std::size_t& in_use, std::size_t& peak)
+      : DeviceSparseMatrix(A.rows(), A.cols(), A.nonZeros()), csr(A), in_use_(in_use) {
     csr.makeCompressed();
+    bytes_ = static_cast<std::size_t>(csr.rows() + 1) * sizeof(int) +
+             static_cast<std::size_t>(csr.nonZeros()) * (sizeof(int) + sizeof(double));
+    in_use_ += bytes_;
+    peak = std::max(peak, in_use_);
   }
+  ~HostSparseMatrix() override { in_use_ -= bytes_; }
+  HostSparseMatrix(const HostSparseMatrix&) = delete;
+  HostSparseMatrix& operator=(const HostSparseMatrix&) = delete;
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> csr;
+
+ private:
+  std::size_t& in_use_;
+  std::size_t bytes_ = 0;
 };
 
 class HostDenseMatrix final : public DeviceDenseMatrix {
  public:
-  explicit HostDenseMatrix(const Matrix& A) : DeviceDenseMatrix(A.rows(), A.cols()), values(A) {}
+  HostDenseMatrix(const Matrix& A, std::size_t& in_use, std::size_t& peak)
+      : DeviceDenseMatrix(A.rows(), A.cols()), values(A), in_use_(in_use) {
+    bytes_ = static_cast<std::size_t>(A.size()) * sizeof(double);
+    in_use_ += bytes_;
+    peak = std::max(peak, in_use_);
+  }
+  ~HostDenseMatrix() override { in_use_ -= bytes_; }
+  HostDenseMatrix(const HostDenseMatrix&) = delete;
+  HostDenseMatrix& operator=(const HostDenseMatrix&) = delete;
   Matrix values;
+
+ private:
+  std::size_t& in_use_;
+  std::size_t bytes_ = 0;
 };
 
 // Signed loop bounds for OpenMP.
@@ -75,11 +100,11 @@ void HostBackend::download(const double* device, Index n, double* host) {
 }
 
 std::unique_ptr<DeviceSparseMatrix> HostBackend::upload(const SparseMatrix& A) {
-  return std::make_unique<HostSparseMatrix>(A);
+  return std::make_unique<HostSparseMatrix>(A, in_use_, peak_);
 }
 
 std::unique_ptr<DeviceDenseMatrix> HostBackend::upload(const Matrix& A) {
-  return std::make_unique<HostDenseMatrix>(A);
+  return std::make_unique<HostDenseMatrix>(A, in_use_, peak_);
 }
 
 void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y,
