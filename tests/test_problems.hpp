@@ -5,6 +5,7 @@
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
+#include "signorini/problem/rectangle_hierarchy.hpp"
 
 namespace signorini::testing {
 
@@ -14,6 +15,15 @@ inline const Model& paper_model(Index nx) {
   auto it = cache.find(nx);
   if (it == cache.end()) it = cache.emplace(nx, build_model(paper_benchmark(nx, nx / 3))).first;
   return it->second;
+}
+
+/// The paper's benchmark problem with its multigrid hierarchy (for the multigrid preconditioner).
+inline ContactProblem paper_problem_with_hierarchy(Index nx) {
+  const Model& model = paper_model(nx);
+  const ProblemSpec spec = paper_benchmark(nx, nx / 3);
+  ContactProblem p = model.problem;
+  p.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
+  return p;
 }
 
 /// Relative difference ||a - b|| / ||b||.

@@ -5,33 +5,23 @@
 #include <gtest/gtest.h>
 
 #include "signorini/backend/cuda_backend.hpp"
-#include "signorini/problem/rectangle_hierarchy.hpp"
 #include "test_problems.hpp"
 
 namespace signorini {
 namespace {
 
-#define SKIP_WITHOUT_GPU()                                                    \
-  do {                                                                        \
-    const CudaReport report = cuda_report();                                  \
+#define SKIP_WITHOUT_GPU()                                                      \
+  do {                                                                          \
+    const CudaReport report = cuda_report();                                    \
     if (report.gpus.empty()) GTEST_SKIP() << "no CUDA GPU: " << report.problem; \
   } while (false)
 
-ContactProblem with_hierarchy(Index nx) {
-  const Model& model = testing::paper_model(nx);
-  const ProblemSpec spec = paper_benchmark(nx, nx / 3);
-  ContactProblem p = model.problem;
-  p.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
-  return p;
-}
-
-class GpuSolve
-    : public ::testing::TestWithParam<std::tuple<Index, PreconditionerType>> {};
+class GpuSolve : public ::testing::TestWithParam<std::tuple<Index, PreconditionerType>> {};
 
 TEST_P(GpuSolve, MatchesTheCpuDirectSolve) {
   SKIP_WITHOUT_GPU();
   const auto [nx, preconditioner] = GetParam();
-  const ContactProblem p = with_hierarchy(nx);
+  const ContactProblem p = testing::paper_problem_with_hierarchy(nx);
   const ContactResult cpu = solve_contact(p, ContactSolverOptions{});
   ContactSolverOptions o;
   o.device = DeviceKind::Cuda;
@@ -52,7 +42,7 @@ TEST_P(GpuSolve, MatchesTheCpuDirectSolve) {
 TEST_P(GpuSolve, MatchesTheSameAlgorithmOnTheCpuBackend) {
   SKIP_WITHOUT_GPU();
   const auto [nx, preconditioner] = GetParam();
-  const ContactProblem p = with_hierarchy(nx);
+  const ContactProblem p = testing::paper_problem_with_hierarchy(nx);
   ContactSolverOptions o;
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.preconditioner = preconditioner;
@@ -65,17 +55,17 @@ TEST_P(GpuSolve, MatchesTheSameAlgorithmOnTheCpuBackend) {
   EXPECT_LT(testing::relative_difference(gpu.u, host.u), 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Table1, GpuSolve,
-    ::testing::Values(std::tuple{Index{60}, PreconditionerType::Multigrid},
-                      std::tuple{Index{120}, PreconditionerType::Multigrid},
-                      std::tuple{Index{240}, PreconditionerType::Multigrid},
-                      std::tuple{Index{60}, PreconditionerType::Jacobi}),
-    [](const auto& param_info) {
-      const Index nx = std::get<0>(param_info.param);
-      return std::to_string(nx) + "x" + std::to_string(nx / 3) + "_" +
-             std::string(enum_to_string(kPreconditionerTypeNames, std::get<1>(param_info.param)));
-    });
+INSTANTIATE_TEST_SUITE_P(Table1, GpuSolve,
+                         ::testing::Values(std::tuple{Index{60}, PreconditionerType::Multigrid},
+                                           std::tuple{Index{120}, PreconditionerType::Multigrid},
+                                           std::tuple{Index{240}, PreconditionerType::Multigrid},
+                                           std::tuple{Index{60}, PreconditionerType::Jacobi}),
+                         [](const auto& param_info) {
+                           const Index nx = std::get<0>(param_info.param);
+                           return std::to_string(nx) + "x" + std::to_string(nx / 3) + "_" +
+                                  std::string(enum_to_string(kPreconditionerTypeNames,
+                                                             std::get<1>(param_info.param)));
+                         });
 
 }  // namespace
 }  // namespace signorini

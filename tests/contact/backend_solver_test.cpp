@@ -6,25 +6,16 @@
 #include <gtest/gtest.h>
 
 #include "signorini/core/error.hpp"
-#include "signorini/problem/rectangle_hierarchy.hpp"
 #include "test_problems.hpp"
 
 namespace signorini {
 namespace {
 
-ContactProblem with_hierarchy(Index nx) {
-  const Model& model = testing::paper_model(nx);
-  const ProblemSpec spec = paper_benchmark(nx, nx / 3);
-  ContactProblem p = model.problem;
-  p.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
-  return p;
-}
-
 class BackendPath : public ::testing::TestWithParam<Index> {};
 
 TEST_P(BackendPath, MultigridCgMatchesTheDirectSolve) {
   const Index nx = GetParam();
-  const ContactProblem p = with_hierarchy(nx);
+  const ContactProblem p = testing::paper_problem_with_hierarchy(nx);
   const ContactResult direct = solve_contact(p, ContactSolverOptions{});
   ContactSolverOptions o;
   o.linear.type = LinearSolverType::ConjugateGradient;

@@ -12,9 +12,11 @@
 #include <memory>
 
 #include "signorini/backend/make_backend.hpp"
+#include "signorini/contact/armijo_rule.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/contact/uzawa_iteration.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/iterative/jacobi_preconditioner.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
@@ -141,33 +143,18 @@ class BackendGnm {
       dir.d_A_d = be_.dot(Ad_, d_);
       dir.z = phi.shifted_multipliers(Nx_);
       dir.Nd = contact_values(d_);
-      double t = 1.0;
-      if (phi.phi_change(dir, 1.0) >= 0.0) {
-        const Vector hz = cs.weights.cwiseProduct(dir.z.cwiseMax(0.0));
-        const double slope = dir.residual_dot_d + hz.dot(dir.Nd);
-        if (slope < 0.0) {
-          double alpha = 1.0;
-          int cuts = 0;
-          do {
-            alpha *= 0.5;
-            ++cuts;
-            if (cuts > o_.max_armijo_halvings) {
-              res.termination = Termination::LineSearchFailure;
-              res.message = fmt::format(
-                  "Armijo rule found no decrease after {} halvings in GNM iteration {} of Uzawa "
-                  "step {} (||G|| = {:.3e})",
-                  o_.max_armijo_halvings, m, outer, gradient_norm);
-              res.iterations = m;
-              res.armijo_reductions += cuts;
-              finish();
-              return res;
-            }
-          } while (phi.phi_change(dir, alpha) > o_.armijo_sigma * alpha * slope);
-          res.armijo_reductions += cuts;
-          ev.armijo = cuts;
-          t = alpha;
-        }
+      const ArmijoStep armijo =
+          armijo_step(phi, dir, cs.weights, o_.armijo_sigma, o_.max_armijo_halvings);
+      res.armijo_reductions += armijo.halvings;
+      ev.armijo = armijo.halvings;
+      if (armijo.failed) {
+        res.termination = Termination::LineSearchFailure;
+        res.message = armijo_failure_message(o_.max_armijo_halvings, m, outer, gradient_norm);
+        res.iterations = m;
+        finish();
+        return res;
       }
+      const double t = armijo.t;
       const bool full = t == 1.0;
       be_.axpby(t, d_, 1.0, x_);
       be_.axpby(t, Ad_, 1.0, residual_);
@@ -252,49 +239,14 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   }
   BackendGnm gnm(problem, options, *backend, timings);
   ModifiedLagrangian phi(problem, options.r);
-  Vector l = Vector::Zero(problem.contact.size());  // l^0 = 0
-  s.termination = Termination::IterationLimit;
-  bool stopped = false;
-  for (int k = 1; k <= options.max_uzawa_iterations; ++k) {
-    phi.set_multipliers(l);
-    const GnmResult g = gnm.minimize(phi, k);
-    OuterStepRecord rec;
-    rec.inner_iterations = g.iterations;
-    rec.armijo_reductions = g.armijo_reductions;
-    rec.linear_iterations = g.linear_iterations;
-    rec.factorizations = g.factorizations;
-    rec.inner_residual = g.residual;
-    if (g.termination != Termination::Converged) {
-      rec.active_set_size = (l.array() > 0.0).count();
-      s.steps.push_back(rec);
-      s.termination = g.termination;
-      s.message = g.message;
-      stopped = true;
-      break;
-    }
-    // Step (ii) of (13).
-    const Vector l_new = phi.shifted_multipliers(gnm.Nx()).cwiseMax(0.0);
-    rec.dual_change = relative_change(l_new, l);
-    rec.active_set_size = (l_new.array() > 0.0).count();
-    l = l_new;
-    s.steps.push_back(rec);
-    if (options.observer)
-      options.observer({IterationEvent::Kind::Outer, k, g.iterations, rec.active_set_size,
-                        rec.dual_change, rec.armijo_reductions, rec.linear_iterations});
-    if (rec.dual_change < options.uzawa_tolerance) {
-      s.termination = Termination::Converged;
-      s.message = fmt::format("||l^k - l^(k-1)|| / ||l^k|| = {:.3e} < {:.1e} after {} Uzawa steps",
-                              rec.dual_change, options.uzawa_tolerance, k);
-      stopped = true;
-      break;
-    }
-  }
-  if (!stopped)
-    s.message = fmt::format(
-        "Uzawa did not converge in {} steps: ||l^k - l^(k-1)|| / ||l^k|| = {:.3e} (tolerance "
-        "{:.1e})",
-        options.max_uzawa_iterations, s.steps.empty() ? 0.0 : s.steps.back().dual_change,
-        options.uzawa_tolerance);
+  run_uzawa_iteration(
+      problem, options, phi,
+      [&](const ModifiedLagrangian& current, int k, Vector& Nx) {
+        const GnmResult g = gnm.minimize(current, k);
+        Nx = gnm.Nx();
+        return g;
+      },
+      out);
   {
     ScopedTimer t(timings, "device download");
     out.u = gnm.solution();
@@ -303,7 +255,6 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   s.device_peak_bytes = backend->peak_bytes();
   s.multigrid_levels = gnm.levels();
   s.timings = std::move(timings);
-  out.l = std::move(l);
   return out;
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "signorini/contact/armijo_rule.hpp"
+
 namespace signorini {
 
 GeneralizedNewton::GeneralizedNewton(const ContactProblem& problem,
@@ -61,38 +63,21 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
       return res;
     }
 
-    // Armijo rule when the Newton point does not decrease Phi (method.md section 4), with the
-    // change of Phi evaluated without cancellation.
+    // Armijo rule when the Newton point does not decrease Phi (method.md section 4).
     Vector d = x_new - x;
     const auto dir = phi.direction(residual, Nx, d);
-    double t = 1.0;  // step length taken along d
-    if (phi.phi_change(dir, 1.0) >= 0.0) {
-      const Vector hz = problem_.contact.weights.cwiseProduct(dir.z.cwiseMax(0.0));
-      const double slope = dir.residual_dot_d + hz.dot(dir.Nd);  // <G(x), d>
-      if (slope < 0.0) {
-        double alpha = 1.0;
-        int cuts = 0;
-        do {
-          alpha *= 0.5;
-          ++cuts;
-          if (cuts > options_.max_armijo_halvings) {
-            res.termination = Termination::LineSearchFailure;
-            res.message = fmt::format(
-                "Armijo rule found no decrease after {} halvings in GNM iteration {} of Uzawa "
-                "step {} (||G|| = {:.3e})",
-                options_.max_armijo_halvings, m, outer, gradient_norm);
-            res.iterations = m;
-            res.armijo_reductions += cuts;
-            count_work();
-            return res;
-          }
-        } while (phi.phi_change(dir, alpha) > options_.armijo_sigma * alpha * slope);
-        res.armijo_reductions += cuts;
-        ev.armijo = cuts;
-        t = alpha;
-      }
-      // slope >= 0: d is round-off around a minimiser; take it as it is.
+    const ArmijoStep armijo = armijo_step(phi, dir, problem_.contact.weights, options_.armijo_sigma,
+                                          options_.max_armijo_halvings);
+    res.armijo_reductions += armijo.halvings;
+    ev.armijo = armijo.halvings;
+    if (armijo.failed) {
+      res.termination = Termination::LineSearchFailure;
+      res.message = armijo_failure_message(options_.max_armijo_halvings, m, outer, gradient_norm);
+      res.iterations = m;
+      count_work();
+      return res;
     }
+    const double t = armijo.t;
     const bool full = t == 1.0;
     if (!full) d *= t;
     x += d;
