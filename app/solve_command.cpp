@@ -9,6 +9,7 @@
 #include "model_loading.hpp"
 #include "plotting.hpp"
 #include "progress.hpp"
+#include "signorini/backend/make_backend.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/result_writer.hpp"
@@ -71,6 +72,12 @@ int solve(const SolveArguments& args, LogFormat format) {
     progress.phase("checking the plotting tools");
     const PlotRun run = check_plotting();
     if (run.status != 0) return failed_plot(progress, run);
+  }
+
+  // Likewise a missing GPU (docs/gpu.md): the solve would stop at its first step.
+  if (spec.solver.device == DeviceKind::Cuda) {
+    progress.phase("opening the GPU");
+    (void)make_backend(DeviceKind::Cuda);  // throws InputError, with the reason
   }
 
   progress.phase("building the model");

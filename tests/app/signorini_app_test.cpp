@@ -57,6 +57,7 @@ TEST(SignoriniApp, CudaWithoutAGpuIsAClearError) {
                                       " --set solver.device=cuda --set solver.linear.type=cg");
   EXPECT_EQ(r.status, 2) << r.out << r.err;
   EXPECT_CONTAINS(r.err, "solver.device = \"cuda\"");
+  EXPECT_EQ(r.out.find("model: "), std::string::npos) << "the model was built first:\n" << r.out;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
   // The direct solver cannot run on the GPU: the message says what to set.
   const ToolRun direct = run_tool(
