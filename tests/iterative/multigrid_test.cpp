@@ -137,6 +137,22 @@ TEST(MultigridPreconditioner, IsSymmetricPositiveDefinite) {
   EXPECT_GT(y.dot(to_host(my)), 0.0);
 }
 
+TEST(MultigridPreconditioner, HostEstimatesOfSmallLevelsChangeNothing) {
+  Fixture f(120);
+  HostBackend be;
+  PenalizedOperator op(be, f.model.problem.A, f.model.problem.contact.N);
+  op.set_weights(f.c);
+  MultigridOptions on_backend;
+  on_backend.host_estimate_below = 0;
+  MultigridPreconditioner a(op, f.model.problem.A, f.model.problem.contact.N, f.P, on_backend);
+  MultigridPreconditioner b(op, f.model.problem.A, f.model.problem.contact.N, f.P, {});
+  const DeviceVector r = to_device(be, f.model.problem.b);
+  DeviceVector za(be, op.size()), zb(be, op.size());
+  a.apply(r, za);
+  b.apply(r, zb);
+  EXPECT_LT(testing::relative_difference(to_host(zb), to_host(za)), 1e-13);
+}
+
 TEST(MultigridPreconditioner, IterationCountHardlyGrowsWithTheMesh) {
   std::map<Index, int> iterations;
   for (const Index nx : {60, 120, 240}) {

@@ -59,13 +59,18 @@ ChebyshevSmoother::ChebyshevSmoother(PenalizedOperator& op, ChebyshevOptions opt
       d_(op.backend(), op.size()),
       q_(op.backend(), op.size()) {
   if (options_.degree < 1) throw InputError("Chebyshev smoother: degree must be >= 1");
-  refresh();
 }
 
 void ChebyshevSmoother::refresh() {
   op_.diagonal(dinv_);
   op_.backend().reciprocal(dinv_, dinv_);
   lambda_max_ = estimate_lambda_max(op_, dinv_, options_.lanczos_steps);
+}
+
+void ChebyshevSmoother::refresh(double lambda_max) {
+  op_.diagonal(dinv_);
+  op_.backend().reciprocal(dinv_, dinv_);
+  lambda_max_ = lambda_max;
 }
 
 void ChebyshevSmoother::smooth(const DeviceVector& b, DeviceVector& x, bool zero_initial_guess) {

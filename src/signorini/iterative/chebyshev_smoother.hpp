@@ -22,9 +22,13 @@ double estimate_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int 
 
 class ChebyshevSmoother {
  public:
+  /// Call refresh() before the first smooth().
   ChebyshevSmoother(PenalizedOperator& op, ChebyshevOptions options);
   /// Recomputes D^{-1} and lambda_max after the operator's weights changed.
   void refresh();
+  /// The same with lambda_max estimated elsewhere (e.g. on the host for a small level).
+  void refresh(double lambda_max);
+  [[nodiscard]] const ChebyshevOptions& options() const { return options_; }
   /// Improves x towards H x = b by one sweep of `degree` steps; x = 0 on entry if
   /// zero_initial_guess (which saves one product with H).
   void smooth(const DeviceVector& b, DeviceVector& x, bool zero_initial_guess);

@@ -4,6 +4,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "signorini/backend/host_backend.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/iterative/galerkin_product.hpp"
 
@@ -13,8 +14,10 @@ struct MultigridPreconditioner::Level {
   std::unique_ptr<PenalizedOperator> owned;  // coarse levels own their operator
   PenalizedOperator* op = nullptr;
   std::unique_ptr<ChebyshevSmoother> smoother;
-  std::unique_ptr<DeviceSparseMatrix> P, Pt;  // to this level from the next coarser one
-  DeviceVector b, x, r;                       // right-hand side, correction, residual
+  std::unique_ptr<DeviceSparseMatrix> P, Pt;   // to this level from the next coarser one
+  DeviceVector b, x, r;                        // right-hand side, correction, residual
+  std::unique_ptr<PenalizedOperator> on_host;  // host copy for the eigenvalue estimate
+  DeviceVector host_dinv;
 };
 
 MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A,
@@ -42,6 +45,11 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     auto level = std::make_unique<Level>();
     level->owned = std::make_unique<PenalizedOperator>(backend_, Al, Nl);
     level->op = level->owned.get();
+    if (Al.rows() < options_.host_estimate_below) {
+      if (!host_) host_ = std::make_unique<HostBackend>();
+      level->on_host = std::make_unique<PenalizedOperator>(*host_, Al, Nl);
+      level->host_dinv = DeviceVector(*host_, Al.rows());
+    }
     levels_.push_back(std::move(level));
   }
   coarse_A_ = std::move(Al);
@@ -78,7 +86,16 @@ void MultigridPreconditioner::refresh() {
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];
     if (l > 0) lev.op->set_weights(c);  // the same c on every level: N_l = N P_1 ... P_l
-    if (lev.smoother) lev.smoother->refresh();
+    if (!lev.smoother) continue;
+    if (lev.on_host) {
+      lev.on_host->set_weights(c);
+      lev.on_host->diagonal(lev.host_dinv);
+      host_->reciprocal(lev.host_dinv, lev.host_dinv);
+      lev.smoother->refresh(
+          estimate_lambda_max(*lev.on_host, lev.host_dinv, lev.smoother->options().lanczos_steps));
+    } else {
+      lev.smoother->refresh();
+    }
   }
   if (!levels_.back()->smoother) factor_coarsest();
 }

@@ -22,6 +22,10 @@ struct MultigridOptions {
   /// The coarsest level is solved exactly (dense) up to this size; above it by a Chebyshev sweep
   /// of 10 times the smoother's degree (then the preconditioner is no longer mesh-independent).
   Index max_dense_coarse = 2000;
+  /// Levels below this many unknowns estimate their lambda_max on the host, from a copy of the
+  /// level: on a GPU their Lanczos steps would cost more in kernel launches and synchronisations
+  /// than in arithmetic. On the CPU backend it is the same computation. 0: never.
+  Index host_estimate_below = 50000;
 };
 
 class MultigridPreconditioner final : public Preconditioner {
@@ -47,6 +51,8 @@ class MultigridPreconditioner final : public Preconditioner {
 
   Backend& backend_;
   MultigridOptions options_;
+  std::unique_ptr<Backend> host_;  // for the host copies of small levels (before levels_: it
+                                   // must outlive them)
   std::vector<std::unique_ptr<Level>> levels_;
   SparseMatrix coarse_A_, coarse_N_;  // host copies of the coarsest level, for its factorisation
   std::unique_ptr<DeviceDenseMatrix> coarse_inverse_;
