@@ -101,11 +101,7 @@ class BackendGnm {
       set_active(active, phi.r());
 
       // Newton right-hand side b - N^T (h (l - r g) on the active set), then H x_m = rhs (17).
-      Vector w = Vector::Zero(nc_);
-      for (Index j = 0; j < nc_; ++j)
-        if (active[static_cast<std::size_t>(j)])
-          w(j) = -cs.weights(j) * (phi.multipliers()(j) - phi.r() * cs.gaps(j));
-      upload_into(w, contact_);
+      upload_into(Vector(-phi.newton_contact_terms(active)), contact_);
       be_.copy(b_, work_);
       H_->apply_contact_transpose(contact_, work_, 1.0);
       be_.copy(x_, x_new_);
@@ -160,8 +156,7 @@ class BackendGnm {
       be_.axpby(t, Ad_, 1.0, residual_);
       Nx_ = contact_values(x_);
       // G = (A x - b) + N^T (h z_+)
-      const Vector hz = cs.weights.cwiseProduct(phi.shifted_multipliers(Nx_).cwiseMax(0.0));
-      upload_into(hz, contact_);
+      upload_into(phi.contact_forces(Nx_), contact_);
       be_.copy(residual_, work_);
       H_->apply_contact_transpose(contact_, work_, 1.0);
       gradient_norm = norm(be_, work_);

@@ -61,10 +61,12 @@ ActiveSet ModifiedLagrangian::active_set(const Vector& Nx) const {
   return a;
 }
 
+Vector ModifiedLagrangian::contact_forces(const Vector& Nx) const {
+  return p_.contact.weights.cwiseProduct(shifted_multipliers(Nx).cwiseMax(0.0));
+}
+
 Vector ModifiedLagrangian::gradient(const Vector& residual, const Vector& Nx) const {
-  const Vector z = shifted_multipliers(Nx);
-  const Vector hz = p_.contact.weights.cwiseProduct(z.cwiseMax(0.0));
-  return residual + p_.contact.N.transpose() * hz;
+  return residual + p_.contact.N.transpose() * contact_forces(Nx);
 }
 
 void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const {
@@ -78,12 +80,16 @@ void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const
   }
 }
 
-Vector ModifiedLagrangian::newton_rhs(const ActiveSet& active) const {
+Vector ModifiedLagrangian::newton_contact_terms(const ActiveSet& active) const {
   Vector w = Vector::Zero(l_.size());
   for (Index j = 0; j < w.size(); ++j)
     if (active[static_cast<std::size_t>(j)])
       w(j) = p_.contact.weights(j) * (l_(j) - r_ * p_.contact.gaps(j));
-  return p_.b - p_.contact.N.transpose() * w;
+  return w;
+}
+
+Vector ModifiedLagrangian::newton_rhs(const ActiveSet& active) const {
+  return p_.b - p_.contact.N.transpose() * newton_contact_terms(active);
 }
 
 ModifiedLagrangian::Direction ModifiedLagrangian::direction(const Vector& residual,

@@ -31,12 +31,16 @@ class ModifiedLagrangian {
   /// G(x) = A x - b + N^T (h z_+): the gradient of Phi, from the residual A x - b (which GNM
   /// keeps up to date with one product A d per step instead of forming A x again).
   [[nodiscard]] Vector gradient(const Vector& residual, const Vector& Nx) const;
+  /// h z_+ (n_c values): the contact part of G, G = (A x - b) + N^T (h z_+).
+  [[nodiscard]] Vector contact_forces(const Vector& Nx) const;
   /// Writes H = A + r N^T diag(h on the active set) N into `H`, which must have A's pattern
   /// (the node blocks of contact nodes are in it), so one symbolic analysis serves every H.
   void hessian(const ActiveSet& active, SparseMatrix& H) const;
   /// Newton right-hand side b - N^T (h (l - r g) on the active set): H x_m = rhs gives the
   /// minimiser of the quadratic piece active at x_{m-1} (17).
   [[nodiscard]] Vector newton_rhs(const ActiveSet& active) const;
+  /// h (l - r g) on the active set, 0 elsewhere (n_c values): newton_rhs = b - N^T of these.
+  [[nodiscard]] Vector newton_contact_terms(const ActiveSet& active) const;
 
   /// Phi(x + t d) - Phi(x), evaluated without cancellation (method.md section 4, numerical
   /// note): t <A x - b, d> + t^2/2 <A d, d> + sum_j h_j/(2r) ((z_j + t r (N d)_j)_+^2 - (z_j)_+^2).
