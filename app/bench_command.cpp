@@ -230,6 +230,8 @@ int run_bench(const BenchArguments& args) {
       throw InputError(fmt::format(
           "--device cuda: {}",
           report.built ? "no usable CUDA GPU (" + report.problem + ")" : report.problem));
+    if (!args.methods.empty())
+      throw InputError("--method: the GPU comparison (--device cuda) runs uzawa_gnm only");
     gpu_configurations(args, options);
   } else if (args.largest) {
     throw InputError("--largest needs --device cuda");
