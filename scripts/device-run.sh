@@ -11,6 +11,18 @@ bench_args=("$@")
 [[ ${#bench_args[@]} -gt 0 ]] || bench_args=(--huge --largest)
 mkdir -p "$out"
 export LD_LIBRARY_PATH="$PWD/.device/lib:/usr/local/cuda/lib64${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+# CUDA's libraries where the toolkit keeps them elsewhere (e.g. Python wheels of nvidia-*).
+if ldd .device/bin/signorini | grep -q "libcu.*not found"; then
+  for lib in libcusparse.so.12 libcublas.so.13 libcudart.so.13; do
+    dir=$(dirname "$(find / -name "$lib" -not -path "*/proc/*" 2>/dev/null | head -1)")
+    [[ "$dir" != "." ]] && export LD_LIBRARY_PATH="$LD_LIBRARY_PATH:$dir"
+  done
+fi
+# The packed C++ runtime only if the system's is too old for the build.
+if ! .device/bin/signorini --version > /dev/null 2>&1; then
+  export LD_LIBRARY_PATH="$PWD/.device/lib-compat:$LD_LIBRARY_PATH"
+fi
+ldd .device/bin/signorini > "$out/ldd.txt" 2>&1
 nvidia-smi > "$out/nvidia-smi.txt" 2>&1
 .device/bin/signorini --version > "$out/version.txt" 2>&1
 cat "$out/version.txt"
