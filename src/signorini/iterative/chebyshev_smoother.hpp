@@ -10,7 +10,7 @@
 namespace signorini {
 
 struct ChebyshevOptions {
-  int degree = 3;               ///< products with H per smoothing sweep
+  int degree = 2;               ///< products with H per smoothing sweep
   double lower_fraction = 0.1;  ///< smoothed interval [lower_fraction, upper_factor] lambda_max
   double upper_factor = 1.1;    ///< safety above the Lanczos estimate (a Ritz value, from below)
   int lanczos_steps = 12;

@@ -42,7 +42,7 @@ struct LinearSolverOptions {
   /// structured rectangle mesh; docs/gpu.md). Multigrid runs on the backend path (any device).
   PreconditionerType preconditioner = PreconditionerType::Jacobi;
   /// Degree of the Chebyshev smoother of the multigrid preconditioner (products with H per sweep).
-  int chebyshev_degree = 3;
+  int chebyshev_degree = 2;
 };
 
 /// Throws InputError naming the bad field.
