@@ -27,18 +27,20 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     : backend_(fine.backend()), options_(options) {
   if (A.rows() != fine.size() || N.cols() != fine.size())
     throw NumericalError("multigrid: A and N do not match the fine operator");
-  SparseMatrix Al = A, Nl = N;
+  // The current level's matrices: the fine A is used in place (no copy of the largest matrix).
+  const SparseMatrix* current = &A;
+  SparseMatrix Al, Nl = N;
   auto first = std::make_unique<Level>();
   first->op = &fine;
   levels_.push_back(std::move(first));
   for (const SparseMatrix& P : prolongations) {
-    if (P.rows() != Al.rows())
+    if (P.rows() != current->rows())
       throw NumericalError(fmt::format("multigrid: prolongation {} has {} rows, level has {}",
-                                       levels_.size(), P.rows(), Al.rows()));
+                                       levels_.size(), P.rows(), current->rows()));
     // Galerkin coarse operators (the hierarchy of docs/gpu.md).
-    SparseMatrix coarse = galerkin_product(Al, P);
+    Al = galerkin_product(*current, P);
+    current = &Al;
     Nl = Nl * P;
-    Al = std::move(coarse);
     Level& finer = *levels_.back();
     finer.P = backend_.upload(P);
     finer.Pt = backend_.upload(SparseMatrix(P.transpose()));
@@ -52,8 +54,11 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     }
     levels_.push_back(std::move(level));
   }
-  coarse_A_ = std::move(Al);
-  coarse_N_ = std::move(Nl);
+  // The coarsest level on the host, for its dense factorisation (only if it is solved so).
+  if (current->rows() <= options_.max_dense_coarse) {
+    coarse_A_ = *current;
+    coarse_N_ = Nl;
+  }
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];
     const Index n = lev.op->size();
