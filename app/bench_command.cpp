@@ -8,10 +8,12 @@
 #include <thread>
 
 #include "commands.hpp"
+#include "gpu_comparison.hpp"
 #include "signorini/backend/cuda_backend.hpp"
 #include "signorini/benchmark/paper_benchmark_suite.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/atomic_file.hpp"
+#include "timing_report.hpp"
 
 namespace signorini::app {
 
@@ -29,10 +31,6 @@ std::pair<Index, Index> parse_mesh(const std::string& text) {
   } catch (const std::exception&) {
   }
   throw InputError("--mesh '" + text + "': expected NXxNY with positive integers, e.g. 480x160");
-}
-
-std::string seconds(double s) {
-  return s >= 100.0 ? fmt::format("{:.1f}", s) : fmt::format("{:.3f}", s);
 }
 
 nlohmann::json to_json(const BenchmarkRow& r) {
@@ -109,57 +107,8 @@ void gpu_configurations(const BenchArguments& args, BenchmarkOptions& options) {
   options.compare_plain_max_nx = 0;
 }
 
-const BenchmarkRow* find_row(const std::vector<BenchmarkRow>& rows, Index nx, Index ny,
-                             const std::string& configuration) {
-  for (const auto& r : rows)
-    if (r.nx == nx && r.ny == ny && r.configuration == configuration) return &r;
-  return nullptr;
-}
-
-void print_gpu_table(const std::vector<BenchmarkRow>& rows) {
-  const std::string reference = "uzawa_gnm/cholmod+schur";
-  fmt::print(
-      "\nGPU (contact solve, seconds) against the CPU of this run ({}) and the paper's Table 1 "
-      "(CuPy CG on a Tesla P100, and its CPU)\n",
-      reference);
-  std::string device;
-  for (const auto& r : rows)
-    if (r.device_kind == DeviceKind::Cuda && !r.device.empty()) device = r.device;
-  if (!device.empty()) fmt::print("GPU: {}\n", device);
-  fmt::print("{:>11} {:<34} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8}\n", "mesh",
-             "configuration", "unknowns", "GPU", "total", "CPU ref", "CPU/GPU", "paperCPU",
-             "paperGPU", "dM/M", "CG it", "GPU MB");
-  for (const auto& r : rows) {
-    if (r.device_kind != DeviceKind::Cuda) continue;
-    const BenchmarkRow* ref = find_row(rows, r.nx, r.ny, reference);
-    const BenchmarkRow* same_cpu = nullptr;  // the same algorithm on the CPU backend
-    for (const auto& c : rows)
-      if (c.nx == r.nx && c.ny == r.ny && c.device_kind == DeviceKind::Cpu &&
-          c.linear == r.linear && c.preconditioner == r.preconditioner)
-        same_cpu = &c;
-    const double cpu = ref ? ref->t_contact : 0.0;
-    fmt::print(
-        "{:>11} {:<34} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8.0f}\n",
-        fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.n_dofs, seconds(r.t_contact),
-        seconds(r.t_total), ref ? seconds(cpu) : "-",
-        ref ? fmt::format("{:.2f}", cpu / r.t_contact) : "-",
-        r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
-        r.paper ? fmt::format("{:.2f}", r.paper->gpu_seconds) : "-",
-        ref ? fmt::format("{:.1e}", std::abs(r.energy - ref->energy) / std::abs(ref->energy)) : "-",
-        r.linear_iterations, r.device_peak_bytes / 1048576.0);
-    if (same_cpu)
-      fmt::print("{:>11} {:<34} same algorithm on the CPU: {} s, CPU/GPU {:.2f}\n", "",
-                 same_cpu->configuration, seconds(same_cpu->t_contact),
-                 same_cpu->t_contact / r.t_contact);
-  }
-  fmt::print(
-      "CPU/GPU: the CPU reference's contact solve over the GPU's; dM/M: relative difference of "
-      "M(u*, l*) to the CPU reference.\n");
-}
-
-// The largest nx = 3 ny mesh (nx a multiple of 480, so that the hierarchy reaches 15 x 5) whose
-// GPU memory, extrapolated from the bytes per unknown of the largest GPU row of this run, fits
-// in 85 % of the GPU's memory.
+// --largest: the largest paper mesh that fits on the GPU (gpu_comparison.hpp), extrapolated
+// from the bytes per unknown of the largest GPU row of this run.
 std::vector<BenchmarkRow> largest_gpu_mesh(const std::vector<BenchmarkRow>& rows,
                                            const BenchmarkOptions& base) {
   const BenchmarkRow* biggest = nullptr;
@@ -170,20 +119,13 @@ std::vector<BenchmarkRow> largest_gpu_mesh(const std::vector<BenchmarkRow>& rows
   const CudaReport report = cuda_report();
   if (!biggest || biggest->device_peak_bytes <= 0.0 || report.gpus.empty()) return {};
   const double per_unknown = biggest->device_peak_bytes / static_cast<double>(biggest->n_dofs);
-  const double budget = 0.85 * static_cast<double>(report.gpus.front().total_memory);
-  Index nx = 480;
-  auto unknowns = [](Index n) {
-    return 2.0 * static_cast<double>(n + 1) * static_cast<double>(n / 3 + 1);
-  };
-  // cuSPARSE matrices here have 32-bit indices: the stiffness (at most 18 entries per row for Q1
-  // in 2D) must stay below 2^31 nonzeros.
-  const double max_unknowns = 2147483647.0 / 18.0;
-  while (unknowns(nx + 480) * per_unknown < budget && unknowns(nx + 480) < max_unknowns) nx += 480;
+  const double memory = static_cast<double>(report.gpus.front().total_memory);
+  const Index nx = largest_paper_mesh_nx(per_unknown, memory);
   fmt::print(
       "\n--largest: {:.0f} bytes per unknown on the GPU at {}x{}, {:.1f} GiB of GPU memory: "
       "{}x{} ({:.3g} unknowns)\n",
-      per_unknown, biggest->nx, biggest->ny, budget / 0.85 / 1073741824.0, nx, nx / 3,
-      unknowns(nx));
+      per_unknown, biggest->nx, biggest->ny, memory / 1073741824.0, nx, nx / 3,
+      paper_mesh_unknowns(nx));
   BenchmarkOptions o = base;
   o.meshes = {{nx, nx / 3}};
   o.configurations.clear();
@@ -267,9 +209,10 @@ int run_bench(const BenchArguments& args) {
         "{:>9} {:<31} {:>8} {:>5} {:>7} {:>5} {:>7} {:>7} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8} "
         "{:>8} {:>6} {:>8.0f} {:>8} {:>8}\n",
         fmt::format("{}x{}", r.nx, r.ny), r.configuration, r.n_dofs, r.n_contact, gnm,
-        r.outer_iterations, r.linear_iterations, seconds(r.t_mesh), seconds(r.t_assembly),
-        seconds(r.t_analysis), seconds(r.t_factorization), seconds(r.t_solves),
-        seconds(r.t_contact), seconds(r.t_total), r.t_linear > 0 ? seconds(r.t_linear) : "-",
+        r.outer_iterations, r.linear_iterations, seconds_text(r.t_mesh), seconds_text(r.t_assembly),
+        seconds_text(r.t_analysis), seconds_text(r.t_factorization), seconds_text(r.t_solves),
+        seconds_text(r.t_contact), seconds_text(r.t_total),
+        r.t_linear > 0 ? seconds_text(r.t_linear) : "-",
         r.t_linear > 0 ? fmt::format("{:.2f}", r.ratio) : "-", r.peak_bytes / 1048576.0,
         r.paper ? fmt::format("{:.2f}", r.paper->cpu_seconds) : "-",
         r.paper ? fmt::format("{:.2f}", r.paper->gpu_seconds) : "-");
@@ -302,7 +245,7 @@ int run_bench(const BenchArguments& args) {
       all.insert(all.end(), extra.begin(), extra.end());
       for (const auto& r : extra) ok = ok && r.converged;
     }
-    print_gpu_table(all);
+    fmt::print("{}", gpu_comparison_table(all));
     rows = std::move(all);
   }
 

@@ -30,4 +30,8 @@ std::string timing_report(const Model& model, const SolveSummary& summary) {
   return s;
 }
 
+std::string seconds_text(double s) {
+  return s >= 100.0 ? fmt::format("{:.1f}", s) : fmt::format("{:.3f}", s);
+}
+
 }  // namespace signorini::app

@@ -12,4 +12,7 @@ namespace signorini::app {
 /// "contact solve", which contains them.
 std::string timing_report(const Model& model, const SolveSummary& summary);
 
+/// Seconds for a table column: 3 decimals below 100 s, 1 above.
+std::string seconds_text(double s);
+
 }  // namespace signorini::app
