@@ -145,7 +145,9 @@ TEST(MultigridPreconditioner, HostEstimatesOfSmallLevelsChangeNothing) {
   MultigridOptions on_backend;
   on_backend.host_estimate_below = 0;
   MultigridPreconditioner a(op, f.model.problem.A, f.model.problem.contact.N, f.P, on_backend);
-  MultigridPreconditioner b(op, f.model.problem.A, f.model.problem.contact.N, f.P, {});
+  MultigridOptions on_host;
+  on_host.host_estimate_below = 1000000;  // every level of 120x40
+  MultigridPreconditioner b(op, f.model.problem.A, f.model.problem.contact.N, f.P, on_host);
   const DeviceVector r = to_device(be, f.model.problem.b);
   DeviceVector za(be, op.size()), zb(be, op.size());
   a.apply(r, za);

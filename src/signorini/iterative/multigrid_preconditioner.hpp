@@ -23,9 +23,11 @@ struct MultigridOptions {
   /// of 10 times the smoother's degree (then the preconditioner is no longer mesh-independent).
   Index max_dense_coarse = 2000;
   /// Levels below this many unknowns estimate their lambda_max on the host, from a copy of the
-  /// level: on a GPU their Lanczos steps would cost more in kernel launches and synchronisations
-  /// than in arithmetic. On the CPU backend it is the same computation. 0: never.
-  Index host_estimate_below = 50000;
+  /// level: on a GPU a Lanczos step costs some 60 us of launches and synchronisations whatever
+  /// the size, on the host about 30 ns per unknown, so the host wins below a few thousand
+  /// unknowns (an estimate, to be measured on a GPU). On the CPU backend it is the same
+  /// computation. 0: never.
+  Index host_estimate_below = 4000;
 };
 
 class MultigridPreconditioner final : public Preconditioner {
