@@ -58,10 +58,12 @@ class BackendGnm {
     if (o_.linear.preconditioner == PreconditionerType::Multigrid) {
       MultigridOptions mo;
       mo.smoother.degree = o_.linear.chebyshev_degree;
-      multigrid_ = std::make_unique<MultigridPreconditioner>(*H_, problem.A, problem.contact.N,
-                                                             problem.prolongations, mo);
+      auto mg = std::make_unique<MultigridPreconditioner>(*H_, problem.A, problem.contact.N,
+                                                          problem.prolongations, mo);
+      levels_ = mg->level_sizes();
+      preconditioner_ = std::move(mg);
     } else {
-      jacobi_ = std::make_unique<JacobiPreconditioner>(*H_);
+      preconditioner_ = std::make_unique<JacobiPreconditioner>(*H_);
     }
     be.synchronize();
     pcg_ = std::make_unique<Pcg>(be, n_);
@@ -71,9 +73,8 @@ class BackendGnm {
 
   [[nodiscard]] const Vector& Nx() const { return Nx_; }
   [[nodiscard]] Vector solution() const { return to_host(x_); }
-  [[nodiscard]] std::vector<Index> levels() const {
-    return multigrid_ ? multigrid_->level_sizes() : std::vector<Index>{};
-  }
+  /// Unknowns per multigrid level (empty with Jacobi).
+  [[nodiscard]] const std::vector<Index>& levels() const { return levels_; }
 
   /// One step (i) of (13): x = argmin Phi for the multipliers set in phi (method.md section 4).
   GnmResult minimize(const ModifiedLagrangian& phi, int outer) {
@@ -114,9 +115,7 @@ class BackendGnm {
             o_.linear.cg_max_iterations > 0
                 ? o_.linear.cg_max_iterations
                 : static_cast<int>(std::min<Index>(10 * n_, std::numeric_limits<int>::max()));
-        Preconditioner& M = multigrid_ ? static_cast<Preconditioner&>(*multigrid_)
-                                       : static_cast<Preconditioner&>(*jacobi_);
-        lin = pcg_->solve(*H_, M, work_, x_new_, po);
+        lin = pcg_->solve(*H_, *preconditioner_, work_, x_new_, po);
       }
       res.linear_iterations += lin.iterations;
       ev.linear_iterations = lin.iterations;
@@ -174,11 +173,7 @@ class BackendGnm {
       previous = active;
       previous_full = full;
     }
-    res.termination = Termination::IterationLimit;
-    res.message = fmt::format(
-        "GNM did not converge in {} iterations at Uzawa step {} (residual {:.3e}, tolerance "
-        "{:.1e})",
-        o_.max_gnm_iterations, outer, res.residual, o_.gnm_tolerance);
+    set_gnm_iteration_limit(res, o_, outer);
     finish();
     return res;
   }
@@ -193,10 +188,7 @@ class BackendGnm {
       if (active[static_cast<std::size_t>(j)]) c(j) = r * p_.contact.weights(j);
     ScopedTimer timer(timings_, "preconditioner setup");
     H_->set_weights(c);
-    if (multigrid_)
-      multigrid_->refresh();
-    else
-      jacobi_->refresh();
+    preconditioner_->refresh();
     ++refreshes_;
   }
 
@@ -211,8 +203,8 @@ class BackendGnm {
   TimingTable& timings_;
   Index n_, nc_;
   std::unique_ptr<PenalizedOperator> H_;
-  std::unique_ptr<JacobiPreconditioner> jacobi_;
-  std::unique_ptr<MultigridPreconditioner> multigrid_;
+  std::unique_ptr<Preconditioner> preconditioner_;
+  std::vector<Index> levels_;
   std::unique_ptr<Pcg> pcg_;
   DeviceVector b_, x_, x_new_, residual_, d_, Ad_, work_, contact_;
   ActiveSet weights_active_;

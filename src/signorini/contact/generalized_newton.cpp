@@ -9,6 +9,13 @@
 
 namespace signorini {
 
+void set_gnm_iteration_limit(GnmResult& res, const ContactSolverOptions& options, int outer) {
+  res.termination = Termination::IterationLimit;
+  res.message = fmt::format(
+      "GNM did not converge in {} iterations at Uzawa step {} (residual {:.3e}, tolerance {:.1e})",
+      options.max_gnm_iterations, outer, res.residual, options.gnm_tolerance);
+}
+
 GeneralizedNewton::GeneralizedNewton(const ContactProblem& problem,
                                      const ContactSolverOptions& options, NewtonSystem& system)
     : problem_(problem), options_(options), system_(system) {}
@@ -97,10 +104,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
     previous = active;
     previous_full = full;
   }
-  res.termination = Termination::IterationLimit;
-  res.message = fmt::format(
-      "GNM did not converge in {} iterations at Uzawa step {} (residual {:.3e}, tolerance {:.1e})",
-      options_.max_gnm_iterations, outer, res.residual, options_.gnm_tolerance);
+  set_gnm_iteration_limit(res, options_, outer);
   count_work();
   return res;
 }

@@ -22,6 +22,10 @@ struct GnmResult {
   double residual = 0.0;  ///< max(||G(x_m)||, ||x_m - x_{m-1}|| / ||x_m||) at the last iteration
 };
 
+/// Marks `res` as stopped by the GNM iteration limit at Uzawa step `outer`, with the message
+/// (shared by the host and the backend GNM).
+void set_gnm_iteration_limit(GnmResult& res, const ContactSolverOptions& options, int outer);
+
 class GeneralizedNewton {
  public:
   GeneralizedNewton(const ContactProblem& problem, const ContactSolverOptions& options,

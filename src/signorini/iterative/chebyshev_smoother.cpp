@@ -9,16 +9,22 @@
 
 namespace signorini {
 
-double estimate_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int steps) {
-  Backend& be = op.backend();
-  const Index n = op.size();
-  steps = static_cast<int>(std::min<Index>(steps, n));
-  // A fixed start (seeded), so that runs are repeatable and the CPU and GPU agree.
+namespace {
+
+// A fixed start (seeded), so that runs are repeatable and the CPU and GPU agree.
+Vector lanczos_start(Index n) {
   Vector start(n);
   std::mt19937_64 rng(12345);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   for (Index i = 0; i < n; ++i) start(i) = uni(rng);
-  DeviceVector r = to_device(be, start), z(be, n), p(be, n), q(be, n);
+  return start;
+}
+
+// The estimate with the caller's vectors: r holds the start on entry; r, z, p, q are overwritten.
+double lanczos_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int steps,
+                          DeviceVector& r, DeviceVector& z, DeviceVector& p, DeviceVector& q) {
+  Backend& be = op.backend();
+  steps = static_cast<int>(std::min<Index>(steps, op.size()));
   // CG on H x = r with x0 = 0 and Jacobi preconditioning; its coefficients give the Lanczos
   // tridiagonal matrix of D^{-1} H (Saad, Iterative Methods, section 6.7.3):
   //   T_jj = 1/alpha_j + beta_{j-1}/alpha_{j-1},  T_{j,j+1} = sqrt(beta_j)/alpha_j.
@@ -51,6 +57,15 @@ double estimate_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int 
   return Eigen::SelfAdjointEigenSolver<Matrix>(T, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
 }
 
+}  // namespace
+
+double estimate_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int steps) {
+  Backend& be = op.backend();
+  const Index n = op.size();
+  DeviceVector r = to_device(be, lanczos_start(n)), z(be, n), p(be, n), q(be, n);
+  return lanczos_lambda_max(op, dinv, steps, r, z, p, q);
+}
+
 ChebyshevSmoother::ChebyshevSmoother(PenalizedOperator& op, ChebyshevOptions options)
     : op_(op),
       options_(options),
@@ -62,14 +77,19 @@ ChebyshevSmoother::ChebyshevSmoother(PenalizedOperator& op, ChebyshevOptions opt
 }
 
 void ChebyshevSmoother::refresh() {
-  op_.diagonal(dinv_);
-  op_.backend().reciprocal(dinv_, dinv_);
-  lambda_max_ = estimate_lambda_max(op_, dinv_, options_.lanczos_steps);
+  op_.inverse_diagonal(dinv_);
+  // The start vector and one more work vector are made on the first estimate only (levels
+  // estimated elsewhere never need them), then reused: no allocation or upload per active set.
+  if (start_.size() == 0) {
+    start_ = to_device(op_.backend(), lanczos_start(op_.size()));
+    z_ = DeviceVector(op_.backend(), op_.size());
+  }
+  op_.backend().copy(start_, r_);
+  lambda_max_ = lanczos_lambda_max(op_, dinv_, options_.lanczos_steps, r_, z_, d_, q_);
 }
 
 void ChebyshevSmoother::refresh(double lambda_max) {
-  op_.diagonal(dinv_);
-  op_.backend().reciprocal(dinv_, dinv_);
+  op_.inverse_diagonal(dinv_);
   lambda_max_ = lambda_max;
 }
 

@@ -28,18 +28,16 @@ class ChebyshevSmoother {
   void refresh();
   /// The same with lambda_max estimated elsewhere (e.g. on the host for a small level).
   void refresh(double lambda_max);
-  [[nodiscard]] const ChebyshevOptions& options() const { return options_; }
   /// Improves x towards H x = b by one sweep of `degree` steps; x = 0 on entry if
   /// zero_initial_guess (which saves one product with H).
   void smooth(const DeviceVector& b, DeviceVector& x, bool zero_initial_guess);
   [[nodiscard]] double lambda_max() const { return lambda_max_; }
-  [[nodiscard]] int degree() const { return options_.degree; }
-  void set_degree(int degree) { options_.degree = degree; }
 
  private:
   PenalizedOperator& op_;
   ChebyshevOptions options_;
   DeviceVector dinv_, r_, d_, q_;
+  DeviceVector start_, z_;  // Lanczos start and work vector, made on the first refresh()
   double lambda_max_ = 0.0;
 };
 

@@ -8,8 +8,7 @@ JacobiPreconditioner::JacobiPreconditioner(PenalizedOperator& op)
 }
 
 void JacobiPreconditioner::refresh() {
-  op_.diagonal(dinv_);
-  op_.backend().reciprocal(dinv_, dinv_);
+  op_.inverse_diagonal(dinv_);
 }
 
 void JacobiPreconditioner::apply(const DeviceVector& r, DeviceVector& z) {

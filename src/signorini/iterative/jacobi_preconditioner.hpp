@@ -10,7 +10,7 @@ class JacobiPreconditioner final : public Preconditioner {
  public:
   explicit JacobiPreconditioner(PenalizedOperator& op);
   /// Recomputes diag(H)^{-1} after the operator's weights changed.
-  void refresh();
+  void refresh() override;
   void apply(const DeviceVector& r, DeviceVector& z) override;
   [[nodiscard]] const DeviceVector& inverse_diagonal() const { return dinv_; }
 

@@ -19,6 +19,8 @@ class Preconditioner {
   virtual ~Preconditioner() = default;
   /// z = M^{-1} r (r and z distinct). M must be symmetric positive definite for CG.
   virtual void apply(const DeviceVector& r, DeviceVector& z) = 0;
+  /// Follows a change of the operator it preconditions (new weights of H: a new active set).
+  virtual void refresh() = 0;
 };
 
 }  // namespace signorini

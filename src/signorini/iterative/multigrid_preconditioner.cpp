@@ -14,10 +14,10 @@ struct MultigridPreconditioner::Level {
   std::unique_ptr<PenalizedOperator> owned;  // coarse levels own their operator
   PenalizedOperator* op = nullptr;
   std::unique_ptr<ChebyshevSmoother> smoother;
-  std::unique_ptr<DeviceSparseMatrix> P, Pt;   // to this level from the next coarser one
-  DeviceVector b, x, r;                        // right-hand side, correction, residual
-  std::unique_ptr<PenalizedOperator> on_host;  // host copy for the eigenvalue estimate
-  DeviceVector host_dinv;
+  std::unique_ptr<DeviceSparseMatrix> P, Pt;         // to this level from the next coarser one
+  DeviceVector b, x, r;                              // right-hand side, correction, residual
+  std::unique_ptr<PenalizedOperator> on_host;        // host copy for the eigenvalue estimate
+  std::unique_ptr<ChebyshevSmoother> host_smoother;  // its smoother: only estimates
 };
 
 MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A,
@@ -50,7 +50,6 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     if (Al.rows() < options_.host_estimate_below) {
       if (!host_) host_ = std::make_unique<HostBackend>();
       level->on_host = std::make_unique<PenalizedOperator>(*host_, Al, Nl);
-      level->host_dinv = DeviceVector(*host_, Al.rows());
     }
     levels_.push_back(std::move(level));
   }
@@ -72,6 +71,7 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
       ChebyshevOptions o = options_.smoother;
       if (coarsest) o.degree *= 10;
       lev.smoother = std::make_unique<ChebyshevSmoother>(*lev.op, o);
+      if (lev.on_host) lev.host_smoother = std::make_unique<ChebyshevSmoother>(*lev.on_host, o);
     }
   }
   refresh();
@@ -92,12 +92,10 @@ void MultigridPreconditioner::refresh() {
     Level& lev = *levels_[l];
     if (l > 0) lev.op->set_weights(c);  // the same c on every level: N_l = N P_1 ... P_l
     if (!lev.smoother) continue;
-    if (lev.on_host) {
+    if (lev.host_smoother) {
       lev.on_host->set_weights(c);
-      lev.on_host->diagonal(lev.host_dinv);
-      host_->reciprocal(lev.host_dinv, lev.host_dinv);
-      lev.smoother->refresh(
-          estimate_lambda_max(*lev.on_host, lev.host_dinv, lev.smoother->options().lanczos_steps));
+      lev.host_smoother->refresh();
+      lev.smoother->refresh(lev.host_smoother->lambda_max());
     } else {
       lev.smoother->refresh();
     }

@@ -40,7 +40,7 @@ class MultigridPreconditioner final : public Preconditioner {
 
   /// After fine.set_weights(c): carries c to every level and redoes diagonals, eigenvalue
   /// estimates and the coarsest factorisation.
-  void refresh();
+  void refresh() override;
   void apply(const DeviceVector& r, DeviceVector& z) override;
 
   /// Unknowns per level, finest first.

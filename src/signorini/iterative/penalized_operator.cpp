@@ -51,4 +51,9 @@ void PenalizedOperator::diagonal(DeviceVector& out) {
   if (nc_ > 0) backend_.spmv(*N2t_, c_, out, 1.0, 1.0);
 }
 
+void PenalizedOperator::inverse_diagonal(DeviceVector& out) {
+  diagonal(out);
+  backend_.reciprocal(out, out);
+}
+
 }  // namespace signorini

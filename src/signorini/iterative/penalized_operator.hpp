@@ -31,6 +31,8 @@ class PenalizedOperator final : public LinearOperator {
   void set_weights(const Vector& c);
   /// diag(H) = diag(A) + (N.^2)^T c
   void diagonal(DeviceVector& out);
+  /// diag(H)^{-1}: the Jacobi scaling of the preconditioner and of the smoother.
+  void inverse_diagonal(DeviceVector& out);
   [[nodiscard]] Backend& backend() const { return backend_; }
   [[nodiscard]] const Vector& weights() const { return c_host_; }
 

@@ -1,6 +1,7 @@
 #include "signorini/problem/rectangle_hierarchy.hpp"
 
 #include <array>
+#include <optional>
 #include <utility>
 
 #include "signorini/problem/model.hpp"
@@ -28,8 +29,11 @@ std::vector<SparseMatrix> make_rectangle_prolongations(const RectangleMeshOption
                                                        Index min_coarse_unknowns) {
   std::vector<SparseMatrix> out;
   RectangleMeshOptions fine = mesh;
-  DofMap fdofs = fine_dofs;
-  while (fine.nx % 2 == 0 && fine.ny % 2 == 0 && fdofs.num_free() > min_coarse_unknowns) {
+  // The current level's numbering: the fine one in place (no copy of the largest map).
+  const DofMap* current = &fine_dofs;
+  std::optional<DofMap> coarser;  // each coarse level's, once there is one
+  while (fine.nx % 2 == 0 && fine.ny % 2 == 0 && current->num_free() > min_coarse_unknowns) {
+    const DofMap& fdofs = *current;
     RectangleMeshOptions coarse = fine;
     coarse.nx = fine.nx / 2;
     coarse.ny = fine.ny / 2;
@@ -63,7 +67,8 @@ std::vector<SparseMatrix> make_rectangle_prolongations(const RectangleMeshOption
     P.setFromTriplets(entries.begin(), entries.end());
     out.push_back(std::move(P));
     fine = coarse;
-    fdofs = std::move(cdofs);
+    coarser = std::move(cdofs);  // fdofs (the old *coarser) is not used after this
+    current = &*coarser;
   }
   return out;
 }
