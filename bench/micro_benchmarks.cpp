@@ -8,7 +8,9 @@
 #include "signorini/contact/condensed_problem.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
+#include "signorini/iterative/smoothed_aggregation.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/rectangle_hierarchy.hpp"
 
@@ -87,6 +89,21 @@ void MultigridVCycle(benchmark::State& state) {
   state.counters["dofs"] = static_cast<double>(op.size());
 }
 BENCHMARK(MultigridVCycle)->Arg(480)->Arg(960)->Unit(benchmark::kMillisecond);
+
+// The smoothed-aggregation hierarchy (aggregation, tentative and smoothed prolongations, Galerkin
+// products) of the nx x nx/3 paper mesh: compare with MultigridSetup, which forms the geometric
+// hierarchy's Galerkin products.
+void SmoothedAggregationSetup(benchmark::State& state) {
+  const Model model = build_model(paper_benchmark(state.range(0), state.range(0) / 3));
+  const Matrix B = rigid_body_modes(model.mesh, model.dofs);
+  const std::vector<Index> nodes = free_dof_nodes(model.dofs);
+  for (auto _ : state) {
+    MultigridHierarchy h = smoothed_aggregation_hierarchy(model.problem.A, B, nodes);
+    benchmark::DoNotOptimize(h.prolongations.size());
+  }
+  state.counters["dofs"] = static_cast<double>(model.problem.A.rows());
+}
+BENCHMARK(SmoothedAggregationSetup)->Arg(480)->Arg(960)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -3,6 +3,8 @@
 # scripts/device-pack.sh: the GPU tests, --version and the GPU benchmark, each writing its
 # output into OUTDIR (docs/gpu.md).
 #   bash scripts/device-run.sh OUTDIR [bench arguments...]   (default: --huge --largest)
+# Time limits per step: DEVICE_TESTS_SECONDS (default 180), DEVICE_BENCH_SECONDS (default 360);
+# DEVICE_REPEATS: the benchmark's best of N (default 3).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out="${1:?usage: device-run.sh OUTDIR [bench arguments]}"
@@ -26,10 +28,17 @@ ldd .device/bin/signorini > "$out/ldd.txt" 2>&1
 nvidia-smi > "$out/nvidia-smi.txt" 2>&1
 .device/bin/signorini --version > "$out/version.txt" 2>&1
 cat "$out/version.txt"
-.device/bin/signorini_gpu_tests > "$out/gpu-tests.txt" 2>&1
-echo "gpu tests: exit $?"
-tail -5 "$out/gpu-tests.txt"
-.device/bin/signorini bench --device cuda --repeats 3 --json "$out/bench-gpu.json" \
-  "${bench_args[@]}" > "$out/bench-gpu.txt" 2> "$out/bench-gpu.err"
-echo "bench: exit $?"
+# Each step under its own time limit (seconds; the device allows 10 minutes a command), so that
+# a hang in one still leaves the others' output in OUTDIR.
+tests_limit="${DEVICE_TESTS_SECONDS:-180}"
+bench_limit="${DEVICE_BENCH_SECONDS:-360}"
+timeout -k 5 "$tests_limit" .device/bin/signorini_gpu_tests > "$out/gpu-tests.txt" 2>&1
+echo "gpu tests: exit $? (124: over ${tests_limit} s)"
+grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/gpu-tests.txt" | sort | uniq -c | head -20
+grep -E "Failure|FAILED|graph capture failed" "$out/gpu-tests.txt" | head -20
+timeout -k 5 "$bench_limit" .device/bin/signorini bench --device cuda \
+  --repeats "${DEVICE_REPEATS:-3}" \
+  --json "$out/bench-gpu.json" "${bench_args[@]}" > "$out/bench-gpu.txt" 2> "$out/bench-gpu.err"
+echo "bench: exit $? (124: over ${bench_limit} s)"
 cat "$out/bench-gpu.txt"
+tail -5 "$out/bench-gpu.err"

@@ -68,6 +68,21 @@ TEST(HostBackend, ChebyshevUpdateIgnoresStaleDirectionWhenAIsZero) {
   EXPECT_EQ(to_host(d), Vector(1.5 * r));
 }
 
+TEST(HostBackend, RecordedWorkReadsTheVectorsAsTheyAreAtReplay) {
+  // As the multigrid cycle needs: recorded once, replayed on a new right-hand side each time.
+  HostBackend be;
+  DeviceVector x = to_device(be, Vector::Ones(10)), y(be, 10);
+  auto recorded = be.record([&] { be.axpbyz(2.0, x, 0.0, x, y); });  // y = 2 x
+  upload_into(Vector::Constant(10, 5.0), x);
+  recorded->replay();
+  EXPECT_EQ(to_host(y), Vector::Constant(10, 10.0));
+  upload_into(Vector::Constant(10, -1.0), x);
+  recorded->replay();
+  EXPECT_EQ(to_host(y), Vector::Constant(10, -2.0));
+  EXPECT_FALSE(recorded->is_graph());
+  EXPECT_FALSE(recorded->why_not_graph().empty());
+}
+
 TEST(HostBackend, CountsTheMemoryItHolds) {
   HostBackend be;
   EXPECT_EQ(be.bytes_in_use(), 0U);

@@ -39,6 +39,24 @@ TEST_P(GpuSolve, MatchesTheCpuDirectSolve) {
   EXPECT_NE(gpu.summary.device.find("sm_"), std::string::npos) << gpu.summary.device;
 }
 
+TEST(GpuSolveAggregation, AMeshThatDoesNotHalveMatchesTheCpuDirectSolve) {
+  SKIP_WITHOUT_GPU();
+  ProblemSpec spec = paper_benchmark(121, 41);  // smoothed-aggregation levels ("auto")
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  spec.solver.device = DeviceKind::Cuda;
+  const Model model = build_model(spec);
+  ASSERT_EQ(model.problem.coarsening, MultigridCoarsening::Aggregation);
+  const ContactResult cpu = solve_contact(model.problem, ContactSolverOptions{});
+  const ContactResult gpu = solve_contact(model.problem, spec.solver);
+  ASSERT_TRUE(gpu.summary.converged()) << gpu.summary.message;
+  EXPECT_NEAR(gpu.summary.lagrangian, cpu.summary.lagrangian,
+              1e-8 * std::abs(cpu.summary.lagrangian));
+  EXPECT_EQ(gpu.summary.outer_iterations, cpu.summary.outer_iterations);
+  EXPECT_LT(testing::relative_difference(gpu.u, cpu.u), 1e-8);
+  EXPECT_EQ(gpu.summary.multigrid_coarsening, MultigridCoarsening::Aggregation);
+}
+
 TEST_P(GpuSolve, MatchesTheSameAlgorithmOnTheCpuBackend) {
   SKIP_WITHOUT_GPU();
   const auto [nx, preconditioner] = GetParam();

@@ -47,6 +47,45 @@ INSTANTIATE_TEST_SUITE_P(Paper, BackendPath, ::testing::Values(60, 120, 240),
                                   std::to_string(param_info.param / 3);
                          });
 
+TEST(BackendPathAggregation, MeshesThatDoNotHalveGetAggregationAndMatchTheDirectSolve) {
+  // 61x21 cannot be halved: "auto" coarsening falls back to smoothed aggregation; "geometric"
+  // is refused with a message naming the key and the mesh.
+  ProblemSpec spec = paper_benchmark(61, 21);
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  const Model model = build_model(spec);
+  ASSERT_EQ(model.problem.coarsening, MultigridCoarsening::Aggregation);
+  ASSERT_FALSE(model.problem.prolongations.empty());
+  const ContactResult it = solve_contact(model.problem, spec.solver);
+  ContactSolverOptions direct_options;
+  const ContactResult direct = solve_contact(model.problem, direct_options);
+  ASSERT_TRUE(it.summary.converged()) << it.summary.message;
+  EXPECT_NEAR(it.summary.lagrangian, direct.summary.lagrangian,
+              1e-8 * std::abs(direct.summary.lagrangian));
+  EXPECT_EQ(it.summary.outer_iterations, direct.summary.outer_iterations);
+  EXPECT_LT(testing::relative_difference(it.u, direct.u), 1e-8);
+  EXPECT_LT(it.summary.kkt.max(), 1e-7);
+  EXPECT_EQ(it.summary.multigrid_coarsening, MultigridCoarsening::Aggregation);
+  EXPECT_GE(it.summary.multigrid_levels.size(), 2U);
+
+  spec.solver.linear.coarsening = MultigridCoarsening::Geometric;
+  try {
+    (void)build_model(spec);
+    ADD_FAILURE() << "geometric coarsening of a 61x21 mesh was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("solver.linear.coarsening"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("61x21"), std::string::npos) << e.what();
+  }
+  // An even mesh takes the geometric levels under "auto".
+  spec = paper_benchmark(60, 20);
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  EXPECT_EQ(build_model(spec).problem.coarsening, MultigridCoarsening::Geometric);
+  spec.solver.linear.coarsening = MultigridCoarsening::Aggregation;
+  EXPECT_EQ(build_model(spec).problem.coarsening, MultigridCoarsening::Aggregation);
+}
+
 TEST(BackendPathJacobi, PaperConfigurationMatchesTheDirectSolve) {
   // The paper's CG with Jacobi (tolerance 1e-13), here on the CPU backend; with
   // solver.device = "cuda" the same code runs on the GPU.

@@ -189,7 +189,9 @@ max_newton_iterations = 40
 schur_complement = false
 )toml");
   text.replace(text.find("type = \"cholmod\""), 16,
-               "type = \"cg\"\ncg_tolerance = 1e-12\ncg_max_iterations = 500");
+               "type = \"cg\"\ncg_tolerance = 1e-12\ncg_max_iterations = 500\n"
+               "preconditioner = \"multigrid\"\ncoarsening = \"aggregation\"\n"
+               "chebyshev_degree = 3");
   text += "[body_force]\nf = [0, \"-9.81e-3*y\"]\n";
   const ContactSolverOptions o = parse_problem_string(text, "t.toml").spec.solver;
   EXPECT_EQ(o.uzawa_tolerance, 1e-9);
@@ -205,6 +207,9 @@ schur_complement = false
   EXPECT_EQ(o.linear.type, LinearSolverType::ConjugateGradient);
   EXPECT_EQ(o.linear.cg_tolerance, 1e-12);
   EXPECT_EQ(o.linear.cg_max_iterations, 500);
+  EXPECT_EQ(o.linear.preconditioner, PreconditionerType::Multigrid);
+  EXPECT_EQ(o.linear.coarsening, MultigridCoarsening::Aggregation);
+  EXPECT_EQ(o.linear.chebyshev_degree, 3);
   const ProblemSpec s = parse_problem_string(text, "t.toml").spec;
   ASSERT_TRUE(static_cast<bool>(s.body_force));
   EXPECT_DOUBLE_EQ(s.body_force(Point(0.0, 2.0, 0.0))(1), -2 * 9.81e-3);
@@ -319,6 +324,9 @@ TEST(ProblemFileErrors, BadEnumListsTheChoices) {
   EXPECT_EQ(error_of(with("type = \"cholmod\"", "type = \"lu\"")),
             "test.toml: key 'solver.linear.type' must be " + enum_choices(kLinearSolverTypeNames) +
                 ", got 'lu'");
+  EXPECT_EQ(error_of(with("type = \"cholmod\"", "type = \"cg\"\ncoarsening = \"smoothed\"")),
+            "test.toml: key 'solver.linear.coarsening' must be \"auto\", \"geometric\" or "
+            "\"aggregation\", got 'smoothed'");
   EXPECT_CONTAINS(error_of(with("type = \"rectangle\"", "type = \"disk\"")),
                   "key 'mesh.type' must be \"rectangle\"");
   EXPECT_CONTAINS(error_of(with("components = [\"x\", \"y\"]", "components = [\"z\"]")),

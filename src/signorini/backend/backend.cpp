@@ -8,7 +8,9 @@ namespace signorini {
 DeviceVector::DeviceVector(Backend& backend, Index n)
     : backend_(&backend), data_(n > 0 ? backend.allocate(n) : nullptr), size_(n) {}
 
-DeviceVector::~DeviceVector() { reset(); }
+DeviceVector::~DeviceVector() {
+  reset();
+}
 
 DeviceVector::DeviceVector(DeviceVector&& other) noexcept
     : backend_(std::exchange(other.backend_, nullptr)),
@@ -34,16 +36,24 @@ void DeviceVector::reset() noexcept {
 namespace {
 class StoredWork final : public RecordedWork {
  public:
-  explicit StoredWork(std::function<void()> work) : work_(std::move(work)) {}
+  StoredWork(std::function<void()> work, std::string reason)
+      : work_(std::move(work)), reason_(std::move(reason)) {}
   void replay() override { work_(); }
+  [[nodiscard]] std::string why_not_graph() const override { return reason_; }
 
  private:
   std::function<void()> work_;
+  std::string reason_;
 };
 }  // namespace
 
+std::unique_ptr<RecordedWork> Backend::call_by_call(std::function<void()> work,
+                                                    std::string reason) {
+  return std::make_unique<StoredWork>(std::move(work), std::move(reason));
+}
+
 std::unique_ptr<RecordedWork> Backend::record(std::function<void()> work) {
-  return std::make_unique<StoredWork>(std::move(work));
+  return call_by_call(std::move(work), "this backend has no graphs: calls are replayed");
 }
 
 DeviceVector to_device(Backend& backend, const Vector& host) {
@@ -62,6 +72,8 @@ void upload_into(const Vector& host, DeviceVector& v) {
   if (host.size() > 0) v.backend()->upload(host.data(), host.size(), v.data());
 }
 
-double norm(Backend& backend, const DeviceVector& x) { return std::sqrt(backend.dot(x, x)); }
+double norm(Backend& backend, const DeviceVector& x) {
+  return std::sqrt(backend.dot(x, x));
+}
 
 }  // namespace signorini

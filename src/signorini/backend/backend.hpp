@@ -81,6 +81,11 @@ class RecordedWork {
  public:
   virtual ~RecordedWork() = default;
   virtual void replay() = 0;
+  /// True when replay() launches the work as one device graph (a CUDA graph); false when it
+  /// makes the calls again one by one (on the CPU, or where a GPU capture failed).
+  [[nodiscard]] virtual bool is_graph() const { return false; }
+  /// Why the work is not a graph ("" for a graph), for tests and reports.
+  [[nodiscard]] virtual std::string why_not_graph() const = 0;
 };
 
 class Backend {
@@ -141,6 +146,10 @@ class Backend {
   /// run once while being recorded. Vectors and scalars are captured as they are at recording:
   /// record again after either changes. The default keeps the function and calls it.
   [[nodiscard]] virtual std::unique_ptr<RecordedWork> record(std::function<void()> work);
+
+ protected:
+  /// Recorded work that replays by calling `work` again; `reason` says why (why_not_graph).
+  static std::unique_ptr<RecordedWork> call_by_call(std::function<void()> work, std::string reason);
 };
 
 // Conveniences over the interface.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "signorini/contact/contact_set.hpp"
+#include "signorini/linalg/linear_solver.hpp"
 
 namespace signorini {
 
@@ -12,10 +13,15 @@ struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
   Vector b;        ///< load vector
   ContactSet contact;
-  /// Multigrid transfer operators of the mesh, finest first: prolongations[l] interpolates
-  /// level l+1 onto level l (free dofs). Empty unless a multigrid preconditioner was asked for
-  /// and the mesh has a hierarchy (problem/rectangle_hierarchy.hpp).
+  /// Multigrid transfer operators, finest first: prolongations[l] interpolates level l+1 onto
+  /// level l (free dofs). Empty unless a multigrid preconditioner was asked for: from the mesh
+  /// (problem/rectangle_hierarchy.hpp) or from A (iterative/smoothed_aggregation.hpp).
   std::vector<SparseMatrix> prolongations;
+  /// The matrices of the coarse levels when the coarsening already formed them (aggregation);
+  /// empty: the multigrid preconditioner forms them (Galerkin products).
+  std::vector<SparseMatrix> coarse_operators;
+  /// How the levels were made: Geometric or Aggregation (Auto while there are none).
+  MultigridCoarsening coarsening = MultigridCoarsening::Auto;
 };
 
 }  // namespace signorini

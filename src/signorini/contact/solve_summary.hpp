@@ -72,6 +72,7 @@ struct SolveSummary {
   std::string device;
   std::size_t device_peak_bytes = 0;
   std::vector<Index> multigrid_levels;
+  MultigridCoarsening multigrid_coarsening = MultigridCoarsening::Auto;  ///< how they were made
 
   [[nodiscard]] bool converged() const { return termination == Termination::Converged; }
   /// GNM iterations of each Uzawa step (the paper's "7/2" column).

@@ -503,9 +503,9 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     if (const auto v = r.boolean(*t, "solver", "schur_complement")) o.schur_complement = *v;
     o.device = r.enumeration(*t, "solver", "device", kDeviceKindNames, o.device);
     if (const toml::table* lt = r.table(*t, "solver", "linear")) {
-      r.check_keys(
-          *lt, "solver.linear",
-          {"type", "cg_tolerance", "cg_max_iterations", "preconditioner", "chebyshev_degree"});
+      r.check_keys(*lt, "solver.linear",
+                   {"type", "cg_tolerance", "cg_max_iterations", "preconditioner", "coarsening",
+                    "chebyshev_degree"});
       LinearSolverOptions& l = o.linear;
       l.type = r.enumeration(*lt, "solver.linear", "type", kLinearSolverTypeNames, l.type);
       if (const auto v = r.number(*lt, "solver.linear", "cg_tolerance")) l.cg_tolerance = *v;
@@ -513,6 +513,8 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
         l.cg_max_iterations = *v;
       l.preconditioner = r.enumeration(*lt, "solver.linear", "preconditioner",
                                        kPreconditionerTypeNames, l.preconditioner);
+      l.coarsening = r.enumeration(*lt, "solver.linear", "coarsening", kMultigridCoarseningNames,
+                                   l.coarsening);
       if (const auto v = r.small_integer(*lt, "solver.linear", "chebyshev_degree"))
         l.chebyshev_degree = *v;
     }
@@ -592,6 +594,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   out.value("cg_tolerance", o.linear.cg_tolerance);
   out.value("cg_max_iterations", o.linear.cg_max_iterations);
   out.value("preconditioner", enum_to_string(kPreconditionerTypeNames, o.linear.preconditioner));
+  out.value("coarsening", enum_to_string(kMultigridCoarseningNames, o.linear.coarsening));
   out.value("chebyshev_degree", o.linear.chebyshev_degree);
   return out.text();
 }

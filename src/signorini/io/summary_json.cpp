@@ -56,6 +56,9 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
     j["device"] = summary.device;
     j["device_peak_bytes"] = summary.device_peak_bytes;
     j["multigrid_levels"] = summary.multigrid_levels;
+    if (summary.multigrid_levels.size() > 1)
+      j["multigrid_coarsening"] =
+          std::string(enum_to_string(kMultigridCoarseningNames, summary.multigrid_coarsening));
   }
 
   j["n_dofs"] = model.dofs.num_dofs();
@@ -123,6 +126,7 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
         {"cg_max_iterations", o.linear.cg_max_iterations},
         {"preconditioner",
          std::string(enum_to_string(kPreconditionerTypeNames, o.linear.preconditioner))},
+        {"coarsening", std::string(enum_to_string(kMultigridCoarseningNames, o.linear.coarsening))},
         {"chebyshev_degree", o.linear.chebyshev_degree}}}};
   j["problem"] = problem;
   return j;

@@ -23,10 +23,14 @@ struct MultigridPreconditioner::Level {
 MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A,
                                                  const SparseMatrix& N,
                                                  const std::vector<SparseMatrix>& prolongations,
-                                                 MultigridOptions options)
+                                                 MultigridOptions options,
+                                                 const std::vector<SparseMatrix>& coarse_operators)
     : backend_(fine.backend()), options_(options) {
   if (A.rows() != fine.size() || N.cols() != fine.size())
     throw NumericalError("multigrid: A and N do not match the fine operator");
+  if (!coarse_operators.empty() && coarse_operators.size() != prolongations.size())
+    throw NumericalError(fmt::format("multigrid: {} coarse operators for {} prolongations",
+                                     coarse_operators.size(), prolongations.size()));
   // The current level's matrices: the fine A is used in place (no copy of the largest matrix).
   const SparseMatrix* current = &A;
   SparseMatrix Al, Nl = N;
@@ -37,19 +41,27 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     if (P.rows() != current->rows())
       throw NumericalError(fmt::format("multigrid: prolongation {} has {} rows, level has {}",
                                        levels_.size(), P.rows(), current->rows()));
-    // Galerkin coarse operators (the hierarchy of docs/gpu.md).
-    Al = galerkin_product(*current, P);
-    current = &Al;
+    // Galerkin coarse operators (the hierarchy of docs/gpu.md), unless given.
+    const std::size_t index = levels_.size() - 1;
+    if (coarse_operators.empty()) {
+      Al = galerkin_product(*current, P);
+      current = &Al;
+    } else {
+      current = &coarse_operators[index];
+      if (current->rows() != P.cols())
+        throw NumericalError(fmt::format("multigrid: coarse operator {} has {} rows, not {}",
+                                         index + 1, current->rows(), P.cols()));
+    }
     Nl = Nl * P;
     Level& finer = *levels_.back();
     finer.P = backend_.upload(P);
     finer.Pt = backend_.upload(SparseMatrix(P.transpose()));
     auto level = std::make_unique<Level>();
-    level->owned = std::make_unique<PenalizedOperator>(backend_, Al, Nl);
+    level->owned = std::make_unique<PenalizedOperator>(backend_, *current, Nl);
     level->op = level->owned.get();
-    if (Al.rows() < options_.host_estimate_below) {
+    if (current->rows() < options_.host_estimate_below) {
       if (!host_) host_ = std::make_unique<HostBackend>();
-      level->on_host = std::make_unique<PenalizedOperator>(*host_, Al, Nl);
+      level->on_host = std::make_unique<PenalizedOperator>(*host_, *current, Nl);
     }
     levels_.push_back(std::move(level));
   }

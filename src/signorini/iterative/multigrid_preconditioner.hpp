@@ -33,9 +33,12 @@ struct MultigridOptions {
 class MultigridPreconditioner final : public Preconditioner {
  public:
   /// `fine` is H on the finest level (it must outlive this object); A and N are its host
-  /// matrices, `prolongations[l]` maps level l+1 to level l.
+  /// matrices, `prolongations[l]` maps level l+1 to level l. `coarse_operators[l]`, if given
+  /// (non-empty), is the matrix of level l+1, already formed (smoothed aggregation forms them);
+  /// otherwise the Galerkin products are formed here.
   MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A, const SparseMatrix& N,
-                          const std::vector<SparseMatrix>& prolongations, MultigridOptions options);
+                          const std::vector<SparseMatrix>& prolongations, MultigridOptions options,
+                          const std::vector<SparseMatrix>& coarse_operators = {});
   ~MultigridPreconditioner() override;
 
   /// After fine.set_weights(c): carries c to every level and redoes diagonals, eigenvalue
@@ -45,6 +48,9 @@ class MultigridPreconditioner final : public Preconditioner {
 
   /// Unknowns per level, finest first.
   [[nodiscard]] std::vector<Index> level_sizes() const;
+  /// The V-cycle as last recorded by apply() (null before the first apply() after a refresh()):
+  /// on a GPU, is_graph() tells whether it replays as one CUDA graph.
+  [[nodiscard]] const RecordedWork* recorded_cycle() const { return recorded_.get(); }
 
  private:
   struct Level;

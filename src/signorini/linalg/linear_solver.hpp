@@ -29,6 +29,15 @@ inline constexpr EnumNames<PreconditionerType, 2> kPreconditionerTypeNames{{
     {PreconditionerType::Multigrid, "multigrid"},
 }};
 
+/// How the multigrid preconditioner builds its coarse levels (docs/gpu.md).
+enum class MultigridCoarsening { Auto, Geometric, Aggregation };
+
+inline constexpr EnumNames<MultigridCoarsening, 3> kMultigridCoarseningNames{{
+    {MultigridCoarsening::Auto, "auto"},
+    {MultigridCoarsening::Geometric, "geometric"},
+    {MultigridCoarsening::Aggregation, "aggregation"},
+}};
+
 struct LinearSolverOptions {
   /// "cholmod": supernodal sparse Cholesky; "cg": Jacobi-preconditioned conjugate gradients;
   /// "dense": dense Cholesky (small problems, and the condensed contact problems).
@@ -37,10 +46,14 @@ struct LinearSolverOptions {
   double cg_tolerance = 1e-13;
   /// CG iteration limit; 0 means 10 times the number of unknowns.
   int cg_max_iterations = 0;
-  /// "jacobi": diag(H)^{-1}, the paper's; "multigrid": one geometric multigrid V-cycle with
-  /// Chebyshev-Jacobi smoothing, whose iteration count hardly grows with the mesh (needs a
-  /// structured rectangle mesh; docs/gpu.md). Multigrid runs on the backend path (any device).
+  /// "jacobi": diag(H)^{-1}, the paper's; "multigrid": one multigrid V-cycle with
+  /// Chebyshev-Jacobi smoothing, whose iteration count hardly grows with the mesh (docs/gpu.md).
+  /// Multigrid runs on the backend path (any device).
   PreconditionerType preconditioner = PreconditionerType::Jacobi;
+  /// Coarse levels of "multigrid": "geometric" halves the rectangle mesh (nx and ny even);
+  /// "aggregation" is smoothed aggregation from the matrix and the rigid-body modes (any mesh);
+  /// "auto" is geometric where the mesh halves, else aggregation.
+  MultigridCoarsening coarsening = MultigridCoarsening::Auto;
   /// Degree of the Chebyshev smoother of the multigrid preconditioner (products with H per sweep).
   int chebyshev_degree = 2;
 };

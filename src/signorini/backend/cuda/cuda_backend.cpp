@@ -63,7 +63,12 @@ std::string version_string(int version) {
 
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 
+// ALG1 with preprocessing is the fastest CSR product; unlike ALG2 it does not promise bitwise
+// identical results from run to run (cuSPARSE docs), so GPU iteration counts may differ by one
+// between runs where a solve is at the edge of its tolerance (docs/gpu.md).
 constexpr cusparseSpMVAlg_t kSpmvAlgorithm = CUSPARSE_SPMV_CSR_ALG1;
+
+constexpr std::size_t kCublasWorkspaceBytes = std::size_t{32} << 20;
 
 std::size_t vector_bytes(Index n) {
   if (n > static_cast<Index>(std::numeric_limits<std::size_t>::max() / sizeof(double)))
@@ -186,6 +191,7 @@ class CudaBackend final : public Backend {
   std::string description_;
   cudaStream_t stream_ = nullptr;
   cublasHandle_t cublas_ = nullptr;
+  void* cublas_workspace_ = nullptr;
   cusparseHandle_t cusparse_ = nullptr;
   std::size_t in_use_ = 0;
   std::size_t peak_ = 0;
@@ -229,6 +235,13 @@ CudaBackend::CudaBackend(int ordinal) : device_(ordinal) {
     check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "cudaStreamCreateWithFlags");
     check(cublasCreate(&cublas_), "cublasCreate");
     check(cublasSetStream(cublas_, stream_), "cublasSetStream");
+    // A fixed cuBLAS workspace (set after cublasSetStream, which resets it): without one, cuBLAS
+    // calls inside a graph capture add allocation nodes to the graph (cuBLAS docs, "CUDA Graphs
+    // Support"). 32 MiB is NVIDIA's recommendation for Hopper. Not counted in bytes_in_use():
+    // it is the library's, not the problem's.
+    check(cudaMalloc(&cublas_workspace_, kCublasWorkspaceBytes), "cudaMalloc (cuBLAS workspace)");
+    check(cublasSetWorkspace(cublas_, cublas_workspace_, kCublasWorkspaceBytes),
+          "cublasSetWorkspace");
     check(cublasSetPointerMode(cublas_, CUBLAS_POINTER_MODE_HOST), "cublasSetPointerMode");
     check(cusparseCreate(&cusparse_), "cusparseCreate");
     check(cusparseSetStream(cusparse_, stream_), "cusparseSetStream");
@@ -252,9 +265,11 @@ CudaBackend::~CudaBackend() {
 void CudaBackend::destroy_handles() noexcept {
   if (cusparse_ != nullptr) (void)cusparseDestroy(cusparse_);
   if (cublas_ != nullptr) (void)cublasDestroy(cublas_);
+  if (cublas_workspace_ != nullptr) (void)cudaFree(cublas_workspace_);
   if (stream_ != nullptr) (void)cudaStreamDestroy(stream_);
   cusparse_ = nullptr;
   cublas_ = nullptr;
+  cublas_workspace_ = nullptr;
   stream_ = nullptr;
 }
 
@@ -413,22 +428,20 @@ void CudaBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, Devic
 
   const DenseVectorDescriptor vx(x.size(), x.data());
   const DenseVectorDescriptor vy(y.size(), y.data());
-  std::size_t needed = 0;
-  check(cusparseSpMV_bufferSize(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha, m.descriptor,
-                                vx.constant(), &beta, vy.mutable_descriptor(), CUDA_R_64F,
-                                kSpmvAlgorithm, &needed),
-        "cusparseSpMV_bufferSize");
-  if (m.buffer == nullptr || needed > m.buffer_bytes) {
-    release_bytes(m.buffer);
-    m.buffer = nullptr;
-    m.buffer_bytes = 0;
-    m.preprocessed = false;
+  // Once per matrix: the work buffer (its size depends on the matrix, the operation, the
+  // algorithm and the type only) and the analysis, kept with the matrix descriptor. Every later
+  // product must pass this same buffer (cuSPARSE 12.6 release notes, CUSPARSE-1897), and none of
+  // this may run inside a graph capture (Backend::record runs the work once before capturing).
+  if (m.buffer == nullptr) {
+    std::size_t needed = 0;
+    check(cusparseSpMV_bufferSize(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha, m.descriptor,
+                                  vx.constant(), &beta, vy.mutable_descriptor(), CUDA_R_64F,
+                                  kSpmvAlgorithm, &needed),
+          "cusparseSpMV_bufferSize");
     const std::size_t bytes = std::max<std::size_t>(needed, 256);  // never a null buffer
     m.buffer = allocate_bytes(bytes, "the work buffer of cusparseSpMV");
     m.buffer_bytes = bytes;
   }
-  // Once per matrix and buffer: the analysis is kept with the matrix descriptor, and later
-  // products must pass the same buffer.
   if (!m.preprocessed) {
     check(cusparseSpMV_preprocess(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha, m.descriptor,
                                   vx.constant(), &beta, vy.mutable_descriptor(), CUDA_R_64F,
@@ -543,6 +556,8 @@ class CudaGraphWork final : public RecordedWork {
   CudaGraphWork(const CudaGraphWork&) = delete;
   CudaGraphWork& operator=(const CudaGraphWork&) = delete;
   void replay() override { check(cudaGraphLaunch(exec_, stream_), "cudaGraphLaunch"); }
+  [[nodiscard]] bool is_graph() const override { return true; }
+  [[nodiscard]] std::string why_not_graph() const override { return {}; }
 
  private:
   cudaGraphExec_t exec_;
@@ -557,23 +572,33 @@ std::unique_ptr<RecordedWork> CudaBackend::record(std::function<void()> work) {
   check(cudaStreamSynchronize(stream_), "cudaStreamSynchronize");
   check(cudaStreamBeginCapture(stream_, cudaStreamCaptureModeThreadLocal),
         "cudaStreamBeginCapture");
-  bool captured = true;
+  // Whatever `work` throws, the capture is ended here: a stream left capturing would fail every
+  // later call on it.
+  std::string problem;
   try {
     work();
-  } catch (const std::exception&) {
-    captured = false;  // something in `work` cannot be captured: replay it call by call
+  } catch (const std::exception& e) {
+    problem = e.what();  // something in `work` cannot be captured: replay it call by call
+  } catch (...) {
+    problem = "an exception of unknown type";
   }
   cudaGraph_t graph = nullptr;
   const cudaError_t ended = cudaStreamEndCapture(stream_, &graph);
+  if (problem.empty() && ended != cudaSuccess)
+    problem = std::string("cudaStreamEndCapture: ") + cudaGetErrorString(ended);
+  if (problem.empty() && graph == nullptr) problem = "the capture was invalidated";
   cudaGraphExec_t exec = nullptr;
-  if (captured && ended == cudaSuccess && graph != nullptr &&
-      cudaGraphInstantiate(&exec, graph, 0) == cudaSuccess) {
-    (void)cudaGraphDestroy(graph);
-    return std::make_unique<CudaGraphWork>(exec, stream_);
+  if (problem.empty()) {
+    const cudaError_t made = cudaGraphInstantiate(&exec, graph, 0);
+    if (made == cudaSuccess) {
+      (void)cudaGraphDestroy(graph);
+      return std::make_unique<CudaGraphWork>(exec, stream_);
+    }
+    problem = std::string("cudaGraphInstantiate: ") + cudaGetErrorString(made);
   }
   if (graph != nullptr) (void)cudaGraphDestroy(graph);
   (void)cudaGetLastError();  // the failed capture's error is not the next call's
-  return Backend::record(std::move(work));
+  return call_by_call(std::move(work), "CUDA graph capture failed (" + problem + ")");
 }
 
 }  // namespace

@@ -2,8 +2,9 @@
 // The elementwise kernels of the CUDA backend (cuda_kernels.cu, the only file nvcc compiles):
 // plain functions over raw device pointers that queue a grid-stride kernel on `stream` and return
 // the launch status (cudaGetLastError). n = 0 queues nothing. Each one has the semantics of the
-// HostBackend loop of the same name; where a coefficient is 0 the vector it multiplies is not read
-// (a NaN there does not leak into the result).
+// HostBackend loop of the same name, including its treatment of zero coefficients (see
+// host_backend.cpp: e.g. axpby and axpbyz with b = 0 do not read y, so a NaN there does not leak
+// into the result; x is always read).
 
 #include <cuda_runtime_api.h>
 

@@ -1,0 +1,19 @@
+#pragma once
+// The rigid-body modes of linear elasticity on the free dofs: the near-null space that
+// smoothed-aggregation multigrid (iterative/smoothed_aggregation.hpp) carries to coarse levels.
+
+#include <vector>
+
+#include "signorini/fem/dof_map.hpp"
+#include "signorini/mesh/mesh.hpp"
+
+namespace signorini {
+
+/// num_free x 3 for plane elasticity: the two translations and the rotation about the centroid,
+/// restricted to the free dofs. Other dimensions are refused (not supported yet).
+Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs);
+
+/// The node of every free dof, in free-dof order (the dofs of a node are consecutive).
+std::vector<Index> free_dof_nodes(const DofMap& dofs);
+
+}  // namespace signorini

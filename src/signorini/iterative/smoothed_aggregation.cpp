@@ -1,0 +1,309 @@
+#include "signorini/iterative/smoothed_aggregation.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+#include "signorini/core/error.hpp"
+#include "signorini/iterative/galerkin_product.hpp"
+
+namespace signorini {
+
+namespace {
+
+// The unknowns of each node: node a owns unknowns start[a] .. start[a+1]; nodes renumbered
+// 0 .. m-1 in order of appearance.
+std::vector<Index> node_starts(const std::vector<Index>& node_of_unknown) {
+  std::vector<Index> start;
+  Index previous = -1;
+  for (std::size_t i = 0; i < node_of_unknown.size(); ++i) {
+    if (i == 0 || node_of_unknown[i] != previous) start.push_back(static_cast<Index>(i));
+    previous = node_of_unknown[i];
+  }
+  start.push_back(static_cast<Index>(node_of_unknown.size()));
+  return start;
+}
+
+// The strong couplings between nodes (the node graph of A, self excluded), from the Frobenius
+// norms of A's node blocks.
+void strength_graph(const SparseMatrix& A, const std::vector<Index>& start,
+                    const std::vector<Index>& node_of, double theta, std::vector<Index>& offsets,
+                    std::vector<Index>& adjacency) {
+  const auto m = static_cast<Index>(start.size()) - 1;
+  std::vector<double> diagonal(static_cast<std::size_t>(m), 0.0);
+  for (Index a = 0; a < m; ++a)
+    for (Index j = start[static_cast<std::size_t>(a)]; j < start[static_cast<std::size_t>(a) + 1];
+         ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        if (node_of[static_cast<std::size_t>(it.row())] == a)
+          diagonal[static_cast<std::size_t>(a)] += it.value() * it.value();
+  for (double& d : diagonal) d = std::sqrt(d);
+
+  offsets.assign(1, 0);
+  adjacency.clear();
+  std::vector<double> block(static_cast<std::size_t>(m), 0.0);
+  std::vector<char> seen(static_cast<std::size_t>(m), 0);
+  std::vector<Index> touched;
+  for (Index a = 0; a < m; ++a) {
+    touched.clear();
+    for (Index j = start[static_cast<std::size_t>(a)]; j < start[static_cast<std::size_t>(a) + 1];
+         ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+        const Index b = node_of[static_cast<std::size_t>(it.row())];
+        if (b == a) continue;
+        if (!seen[static_cast<std::size_t>(b)]) {
+          seen[static_cast<std::size_t>(b)] = 1;
+          touched.push_back(b);
+        }
+        block[static_cast<std::size_t>(b)] += it.value() * it.value();
+      }
+    for (const Index b : touched) {
+      const auto u = static_cast<std::size_t>(b);
+      // ||A_ab||_F >= theta sqrt(||A_aa|| ||A_bb||), squared.
+      if (block[u] > 0.0 &&
+          block[u] >= theta * theta * diagonal[static_cast<std::size_t>(a)] * diagonal[u])
+        adjacency.push_back(b);
+      block[u] = 0.0;
+      seen[u] = 0;
+    }
+    offsets.push_back(static_cast<Index>(adjacency.size()));
+  }
+}
+
+// rho(D^{-1} A) by the power method on the similar D^{-1/2} A D^{-1/2}: 15 steps give the
+// prolongation smoother's damping to a few per cent, which is all it needs.
+double jacobi_spectral_radius(const SparseMatrix& A) {
+  const Index n = A.rows();
+  const Vector s = A.diagonal().cwiseSqrt().cwiseInverse();
+  Vector x(n), y(n);
+  for (Index i = 0; i < n; ++i) x[i] = 1.0 + 0.1 * static_cast<double>(i % 7);  // no symmetry
+  x.normalize();
+  double rho = 0.0;
+  for (int step = 0; step < 15; ++step) {
+    // y = S A S x with A symmetric: column i of A is its row i, so rows run in parallel.
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      double sum = 0.0;
+      for (SparseMatrix::InnerIterator it(A, i); it; ++it)
+        sum += it.value() * s[it.row()] * x[it.row()];
+      y[i] = s[i] * sum;
+    }
+    rho = x.dot(y);  // Rayleigh quotient (x has unit length)
+    const double norm = y.norm();
+    if (!(norm > 0.0)) break;
+    x = y / norm;
+  }
+  return rho;
+}
+
+// P = (I - omega D^{-1} A) T, column by column with a dense accumulator, in parallel over the
+// columns (Eigen's general sparse product takes ten times longer, on one thread).
+SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T, double omega) {
+  const Index n = A.rows();
+  const Index m = T.cols();
+  const Vector scale = -omega * A.diagonal().cwiseInverse();
+  std::vector<std::vector<int>> col_rows(static_cast<std::size_t>(m));
+  std::vector<std::vector<double>> col_values(static_cast<std::size_t>(m));
+  const std::int64_t columns = m;
+#pragma omp parallel
+  {
+    std::vector<double> accumulator(static_cast<std::size_t>(n), 0.0);
+    std::vector<char> used(static_cast<std::size_t>(n), 0);
+    std::vector<int> pattern;
+    auto add = [&](Index i, double v) {
+      const auto u = static_cast<std::size_t>(i);
+      if (!used[u]) {
+        used[u] = 1;
+        pattern.push_back(static_cast<int>(i));
+      }
+      accumulator[u] += v;
+    };
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t J = 0; J < columns; ++J) {
+      pattern.clear();
+      for (SparseMatrix::InnerIterator t(T, static_cast<Index>(J)); t; ++t) {
+        add(t.row(), t.value());
+        for (SparseMatrix::InnerIterator a(A, t.row()); a; ++a)
+          add(a.row(), scale[a.row()] * a.value() * t.value());
+      }
+      std::sort(pattern.begin(), pattern.end());
+      auto& rows = col_rows[static_cast<std::size_t>(J)];
+      auto& values = col_values[static_cast<std::size_t>(J)];
+      for (const int i : pattern) {
+        const auto u = static_cast<std::size_t>(i);
+        if (accumulator[u] != 0.0) {
+          rows.push_back(i);
+          values.push_back(accumulator[u]);
+        }
+        accumulator[u] = 0.0;
+        used[u] = 0;
+      }
+    }
+  }
+  Index nonzeros = 0;
+  for (const auto& r : col_rows) nonzeros += static_cast<Index>(r.size());
+  SparseMatrix P(n, m);
+  P.resizeNonZeros(nonzeros);
+  Index k = 0;
+  for (Index J = 0; J < m; ++J) {
+    P.outerIndexPtr()[J] = static_cast<int>(k);
+    const auto& rows = col_rows[static_cast<std::size_t>(J)];
+    const auto& values = col_values[static_cast<std::size_t>(J)];
+    std::copy(rows.begin(), rows.end(), P.innerIndexPtr() + k);
+    std::copy(values.begin(), values.end(), P.valuePtr() + k);
+    k += static_cast<Index>(rows.size());
+  }
+  P.outerIndexPtr()[m] = static_cast<int>(k);
+  return P;
+}
+
+struct Tentative {
+  SparseMatrix P;
+  Matrix coarse_null_space;
+  std::vector<Index> coarse_node;
+};
+
+// P_tent: on every aggregate, the orthonormal basis Q_a of the near-null space's rows there
+// (B_a = Q_a R_a, column-pivoted to drop the modes an aggregate cannot carry, e.g. rotations on
+// an aggregate of one node).
+Tentative tentative_prolongation(const Matrix& B, const std::vector<Index>& start,
+                                 const std::vector<Index>& aggregate, Index aggregates) {
+  const Index n = B.rows();
+  const Index k = B.cols();
+  std::vector<std::vector<Index>> rows(static_cast<std::size_t>(aggregates));
+  for (std::size_t a = 0; a + 1 < start.size(); ++a)
+    for (Index i = start[a]; i < start[a + 1]; ++i)
+      rows[static_cast<std::size_t>(aggregate[a])].push_back(i);
+
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(static_cast<std::size_t>(n * k));
+  std::vector<Matrix> blocks;
+  blocks.reserve(rows.size());
+  Tentative t;
+  Index coarse = 0;
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    const auto s = static_cast<Index>(rows[a].size());
+    Matrix Ba(s, k);
+    for (Index r = 0; r < s; ++r) Ba.row(r) = B.row(rows[a][static_cast<std::size_t>(r)]);
+    Eigen::ColPivHouseholderQR<Matrix> qr(Ba);
+    qr.setThreshold(1e-10);
+    const Index rank = qr.rank();
+    const Matrix Q = qr.householderQ() * Matrix::Identity(s, rank);
+    // B_a P = Q R, so B_a = Q (R P^T): the coarse rows of the near-null space.
+    Matrix R = Matrix(qr.matrixR().topRows(rank).triangularView<Eigen::Upper>());
+    blocks.push_back(R * qr.colsPermutation().transpose());
+    for (Index r = 0; r < s; ++r)
+      for (Index c = 0; c < rank; ++c)
+        if (Q(r, c) != 0.0)
+          entries.emplace_back(static_cast<int>(rows[a][static_cast<std::size_t>(r)]),
+                               static_cast<int>(coarse + c), Q(r, c));
+    for (Index c = 0; c < rank; ++c) t.coarse_node.push_back(static_cast<Index>(a));
+    coarse += rank;
+  }
+  t.P.resize(n, coarse);
+  t.P.setFromTriplets(entries.begin(), entries.end());
+  t.coarse_null_space.resize(coarse, k);
+  Index row = 0;
+  for (const Matrix& b : blocks) {
+    t.coarse_null_space.middleRows(row, b.rows()) = b;
+    row += b.rows();
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
+                                   const std::vector<Index>& adjacency) {
+  const auto m = static_cast<Index>(offsets.size()) - 1;
+  std::vector<Index> agg(static_cast<std::size_t>(m), -1);
+  auto neighbours = [&](Index a) {
+    return std::pair{adjacency.begin() + offsets[static_cast<std::size_t>(a)],
+                     adjacency.begin() + offsets[static_cast<std::size_t>(a) + 1]};
+  };
+  Index count = 0;
+  // 1: a node whose neighbours are all free starts an aggregate with them (a 3 x 3 patch of
+  // nodes on a quadrilateral mesh).
+  for (Index a = 0; a < m; ++a) {
+    if (agg[static_cast<std::size_t>(a)] >= 0) continue;
+    auto [first, last] = neighbours(a);
+    bool free = true;
+    for (auto it = first; it != last && free; ++it) free = agg[static_cast<std::size_t>(*it)] < 0;
+    if (!free) continue;
+    agg[static_cast<std::size_t>(a)] = count;
+    for (auto it = first; it != last; ++it) agg[static_cast<std::size_t>(*it)] = count;
+    ++count;
+  }
+  // 2: a left-over node joins the aggregate of a neighbour from step 1.
+  const std::vector<Index> first_pass = agg;
+  for (Index a = 0; a < m; ++a) {
+    if (agg[static_cast<std::size_t>(a)] >= 0) continue;
+    auto [first, last] = neighbours(a);
+    for (auto it = first; it != last; ++it)
+      if (first_pass[static_cast<std::size_t>(*it)] >= 0) {
+        agg[static_cast<std::size_t>(a)] = first_pass[static_cast<std::size_t>(*it)];
+        break;
+      }
+  }
+  // 3: what is still left (no strong neighbour aggregated) forms aggregates of its own.
+  for (Index a = 0; a < m; ++a) {
+    if (agg[static_cast<std::size_t>(a)] >= 0) continue;
+    agg[static_cast<std::size_t>(a)] = count;
+    auto [first, last] = neighbours(a);
+    for (auto it = first; it != last; ++it)
+      if (agg[static_cast<std::size_t>(*it)] < 0) agg[static_cast<std::size_t>(*it)] = count;
+    ++count;
+  }
+  return agg;
+}
+
+MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix near_null_space,
+                                                  std::vector<Index> node_of_unknown,
+                                                  const SmoothedAggregationOptions& options) {
+  if (A.rows() != A.cols() || near_null_space.rows() != A.rows() ||
+      static_cast<Index>(node_of_unknown.size()) != A.rows() || near_null_space.cols() < 1)
+    throw NumericalError(fmt::format(
+        "smoothed aggregation: A is {}x{}, the near-null space {}x{}, {} node numbers", A.rows(),
+        A.cols(), near_null_space.rows(), near_null_space.cols(), node_of_unknown.size()));
+  MultigridHierarchy h;
+  // Reserved: `current` points into coarse_operators, which must not move.
+  h.coarse_operators.reserve(static_cast<std::size_t>(options.max_levels));
+  const SparseMatrix* current = &A;
+  Matrix B = std::move(near_null_space);
+  std::vector<Index> node_of = std::move(node_of_unknown);
+  while (current->rows() > options.max_coarse_unknowns &&
+         static_cast<int>(h.prolongations.size()) + 1 < options.max_levels) {
+    const SparseMatrix& Al = *current;
+    const std::vector<Index> start = node_starts(node_of);
+    const auto m = static_cast<Index>(start.size()) - 1;
+    // Compact node numbers 0 .. m-1, checking that each node's unknowns are consecutive.
+    std::vector<Index> compact(node_of.size());
+    for (Index a = 0; a < m; ++a)
+      for (Index i = start[static_cast<std::size_t>(a)]; i < start[static_cast<std::size_t>(a) + 1];
+           ++i)
+        compact[static_cast<std::size_t>(i)] = a;
+    std::vector<Index> offsets, adjacency;
+    strength_graph(Al, start, compact, options.strength_threshold, offsets, adjacency);
+    const std::vector<Index> aggregate = aggregate_nodes(offsets, adjacency);
+    Index aggregates = 0;
+    for (const Index a : aggregate) aggregates = std::max(aggregates, a + 1);
+    Tentative t = tentative_prolongation(B, start, aggregate, aggregates);
+    if (static_cast<double>(t.P.cols()) >
+        (1.0 - options.min_reduction) * static_cast<double>(Al.rows()))
+      break;  // no real coarsening left (e.g. a level of isolated nodes)
+    // P = (I - omega D^{-1} A) P_tent, omega = 4 / (3 rho(D^{-1} A)) (Vanek et al., eq. 4.4).
+    SparseMatrix P = smoothed_prolongation(Al, t.P, 4.0 / (3.0 * jacobi_spectral_radius(Al)));
+    h.coarse_operators.push_back(galerkin_product(Al, P));
+    h.prolongations.push_back(std::move(P));
+    current = &h.coarse_operators.back();
+    B = std::move(t.coarse_null_space);
+    node_of = std::move(t.coarse_node);
+  }
+  return h;
+}
+
+}  // namespace signorini

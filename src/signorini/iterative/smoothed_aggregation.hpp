@@ -1,0 +1,53 @@
+#pragma once
+// Smoothed-aggregation coarsening (Vanek, Mandel and Brezina, Computing 56, 1996): the multigrid
+// hierarchy built from the matrix alone, for meshes that do not halve (docs/gpu.md).
+//
+// Per level: the unknowns are grouped by node; nodes are grouped into aggregates (a node with its
+// strongly coupled neighbours); the near-null space B (rigid-body modes for elasticity) is
+// orthonormalised on each aggregate, B_a = Q_a R_a, and the tentative prolongation is the block
+// diagonal of the Q_a, so that it reproduces B exactly; one damped Jacobi step smooths it,
+// P = (I - omega D^{-1} A) P_tent with omega = 4 / (3 rho(D^{-1} A)); the coarse matrix is the
+// Galerkin product P^T A P and the coarse near-null space is the stack of the R_a, with each
+// aggregate a coarse "node".
+
+#include <vector>
+
+#include "signorini/core/types.hpp"
+
+namespace signorini {
+
+struct SmoothedAggregationOptions {
+  /// Nodes a and b are strongly coupled if ||A_ab||_F >= theta sqrt(||A_aa||_F ||A_bb||_F) (node
+  /// blocks); 0 takes every matrix neighbour.
+  double strength_threshold = 0.0;
+  /// Coarsening stops once a level has at most this many unknowns (it is then solved densely by
+  /// the multigrid preconditioner, whose limit is 2,000).
+  Index max_coarse_unknowns = 1000;
+  /// ... or when a level has fewer than this fraction of unknowns less than the one above.
+  double min_reduction = 0.2;
+  int max_levels = 25;
+};
+
+/// A hierarchy for MultigridPreconditioner: prolongations[l] maps level l+1 to level l and
+/// coarse_operators[l] is the matrix of level l+1 (P^T A P).
+struct MultigridHierarchy {
+  std::vector<SparseMatrix> prolongations;
+  std::vector<SparseMatrix> coarse_operators;
+};
+
+/// The smoothed-aggregation hierarchy of the symmetric positive definite A (n x n, both
+/// triangles stored). `near_null_space` is n x k (k >= 1); `node_of_unknown[i]` is the node of
+/// unknown i, nodes numbered from 0 and the unknowns of a node consecutive. An empty hierarchy
+/// if A already has at most max_coarse_unknowns unknowns.
+MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix near_null_space,
+                                                  std::vector<Index> node_of_unknown,
+                                                  const SmoothedAggregationOptions& options = {});
+
+/// The aggregation step alone (exposed for tests): the aggregate of every node of the node graph
+/// given by the CSR-like arrays (neighbours of node a are adjacency[offsets[a] .. offsets[a+1]),
+/// strong couplings only, without a itself). Every node gets an aggregate; the numbers are
+/// 0 .. count-1.
+std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
+                                   const std::vector<Index>& adjacency);
+
+}  // namespace signorini
