@@ -10,6 +10,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/iterative/galerkin_product.hpp"
+#include "signorini/iterative/sparse_columns.hpp"
 
 namespace signorini {
 
@@ -111,54 +112,19 @@ SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T,
   const std::int64_t columns = m;
 #pragma omp parallel
   {
-    std::vector<double> accumulator(static_cast<std::size_t>(n), 0.0);
-    std::vector<char> used(static_cast<std::size_t>(n), 0);
-    std::vector<int> pattern;
-    auto add = [&](Index i, double v) {
-      const auto u = static_cast<std::size_t>(i);
-      if (!used[u]) {
-        used[u] = 1;
-        pattern.push_back(static_cast<int>(i));
-      }
-      accumulator[u] += v;
-    };
+    ColumnAccumulator accumulator(n);
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t J = 0; J < columns; ++J) {
-      pattern.clear();
       for (SparseMatrix::InnerIterator t(T, static_cast<Index>(J)); t; ++t) {
-        add(t.row(), t.value());
+        accumulator.add(t.row(), t.value());
         for (SparseMatrix::InnerIterator a(A, t.row()); a; ++a)
-          add(a.row(), scale[a.row()] * a.value() * t.value());
+          accumulator.add(a.row(), scale[a.row()] * a.value() * t.value());
       }
-      std::sort(pattern.begin(), pattern.end());
-      auto& rows = col_rows[static_cast<std::size_t>(J)];
-      auto& values = col_values[static_cast<std::size_t>(J)];
-      for (const int i : pattern) {
-        const auto u = static_cast<std::size_t>(i);
-        if (accumulator[u] != 0.0) {
-          rows.push_back(i);
-          values.push_back(accumulator[u]);
-        }
-        accumulator[u] = 0.0;
-        used[u] = 0;
-      }
+      accumulator.flush(col_rows[static_cast<std::size_t>(J)],
+                        col_values[static_cast<std::size_t>(J)]);
     }
   }
-  Index nonzeros = 0;
-  for (const auto& r : col_rows) nonzeros += static_cast<Index>(r.size());
-  SparseMatrix P(n, m);
-  P.resizeNonZeros(nonzeros);
-  Index k = 0;
-  for (Index J = 0; J < m; ++J) {
-    P.outerIndexPtr()[J] = static_cast<int>(k);
-    const auto& rows = col_rows[static_cast<std::size_t>(J)];
-    const auto& values = col_values[static_cast<std::size_t>(J)];
-    std::copy(rows.begin(), rows.end(), P.innerIndexPtr() + k);
-    std::copy(values.begin(), values.end(), P.valuePtr() + k);
-    k += static_cast<Index>(rows.size());
-  }
-  P.outerIndexPtr()[m] = static_cast<int>(k);
-  return P;
+  return assemble_columns(n, col_rows, col_values);
 }
 
 struct Tentative {
