@@ -108,7 +108,9 @@ class Backend {
   [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload(const SparseMatrix& A) = 0;
   [[nodiscard]] virtual std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) = 0;
   /// upload(A) for a symmetric A: its column-major arrays are then also its CSR arrays, which
-  /// spares a backend the conversion (a second copy of the largest matrix, on the host).
+  /// spares a backend the conversion (a second copy of the largest matrix, on the host). Such a
+  /// backend multiplies by A^T, which for a matrix symmetric only up to rounding (a Galerkin
+  /// product P^T A P summed in another order) differs from A x by rounding only.
   [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
       const SparseMatrix& A) {
     return upload(A);
