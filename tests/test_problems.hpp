@@ -23,7 +23,7 @@ inline ContactProblem paper_problem_with_hierarchy(Index nx) {
   const ProblemSpec spec = paper_benchmark(nx, nx / 3);
   ContactProblem p = model.problem;
   p.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
-  p.coarsening = MultigridCoarsening::Geometric;
+  p.hierarchy = HierarchyKind::Geometric;
   return p;
 }
 

@@ -46,7 +46,7 @@ TEST(GpuSolveAggregation, AMeshThatDoesNotHalveMatchesTheCpuDirectSolve) {
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
   spec.solver.device = DeviceKind::Cuda;
   const Model model = build_model(spec);
-  ASSERT_EQ(model.problem.coarsening, MultigridCoarsening::Aggregation);
+  ASSERT_EQ(model.problem.hierarchy, HierarchyKind::Aggregation);
   const ContactResult cpu = solve_contact(model.problem, ContactSolverOptions{});
   const ContactResult gpu = solve_contact(model.problem, spec.solver);
   ASSERT_TRUE(gpu.summary.converged()) << gpu.summary.message;
@@ -54,7 +54,7 @@ TEST(GpuSolveAggregation, AMeshThatDoesNotHalveMatchesTheCpuDirectSolve) {
               1e-8 * std::abs(cpu.summary.lagrangian));
   EXPECT_EQ(gpu.summary.outer_iterations, cpu.summary.outer_iterations);
   EXPECT_LT(testing::relative_difference(gpu.u, cpu.u), 1e-8);
-  EXPECT_EQ(gpu.summary.multigrid_coarsening, MultigridCoarsening::Aggregation);
+  EXPECT_EQ(gpu.summary.multigrid_hierarchy, HierarchyKind::Aggregation);
 }
 
 TEST_P(GpuSolve, MatchesTheSameAlgorithmOnTheCpuBackend) {

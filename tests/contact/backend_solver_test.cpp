@@ -54,7 +54,7 @@ TEST(BackendPathAggregation, MeshesThatDoNotHalveGetAggregationAndMatchTheDirect
   spec.solver.linear.type = LinearSolverType::ConjugateGradient;
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
   const Model model = build_model(spec);
-  ASSERT_EQ(model.problem.coarsening, MultigridCoarsening::Aggregation);
+  ASSERT_EQ(model.problem.hierarchy, HierarchyKind::Aggregation);
   ASSERT_FALSE(model.problem.prolongations.empty());
   const ContactResult it = solve_contact(model.problem, spec.solver);
   ContactSolverOptions direct_options;
@@ -65,7 +65,7 @@ TEST(BackendPathAggregation, MeshesThatDoNotHalveGetAggregationAndMatchTheDirect
   EXPECT_EQ(it.summary.outer_iterations, direct.summary.outer_iterations);
   EXPECT_LT(testing::relative_difference(it.u, direct.u), 1e-8);
   EXPECT_LT(it.summary.kkt.max(), 1e-7);
-  EXPECT_EQ(it.summary.multigrid_coarsening, MultigridCoarsening::Aggregation);
+  EXPECT_EQ(it.summary.multigrid_hierarchy, HierarchyKind::Aggregation);
   EXPECT_GE(it.summary.multigrid_levels.size(), 2U);
 
   spec.solver.linear.coarsening = MultigridCoarsening::Geometric;
@@ -81,9 +81,33 @@ TEST(BackendPathAggregation, MeshesThatDoNotHalveGetAggregationAndMatchTheDirect
   spec = paper_benchmark(60, 20);
   spec.solver.linear.type = LinearSolverType::ConjugateGradient;
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
-  EXPECT_EQ(build_model(spec).problem.coarsening, MultigridCoarsening::Geometric);
+  EXPECT_EQ(build_model(spec).problem.hierarchy, HierarchyKind::Geometric);
   spec.solver.linear.coarsening = MultigridCoarsening::Aggregation;
-  EXPECT_EQ(build_model(spec).problem.coarsening, MultigridCoarsening::Aggregation);
+  EXPECT_EQ(build_model(spec).problem.hierarchy, HierarchyKind::Aggregation);
+  // 122x40 halves once, to 61x20: too large a coarsest level for the dense solve, so "auto"
+  // continues with aggregation from there; "geometric" is refused.
+  spec = paper_benchmark(122, 40);
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  const Model mixed = build_model(spec);
+  EXPECT_EQ(mixed.problem.hierarchy, HierarchyKind::GeometricThenAggregation);
+  ASSERT_GE(mixed.problem.prolongations.size(), 2U);
+  EXPECT_EQ(mixed.problem.coarse_operators.size(), mixed.problem.prolongations.size());
+  EXPECT_LE(mixed.problem.coarse_operators.back().rows(), 2000);
+  const ContactResult mixed_solve = solve_contact(mixed.problem, spec.solver);
+  const ContactResult mixed_direct = solve_contact(mixed.problem, ContactSolverOptions{});
+  ASSERT_TRUE(mixed_solve.summary.converged()) << mixed_solve.summary.message;
+  EXPECT_NEAR(mixed_solve.summary.lagrangian, mixed_direct.summary.lagrangian,
+              1e-8 * std::abs(mixed_direct.summary.lagrangian));
+  EXPECT_EQ(mixed_solve.summary.multigrid_hierarchy, HierarchyKind::GeometricThenAggregation);
+  spec.solver.linear.coarsening = MultigridCoarsening::Geometric;
+  try {
+    (void)build_model(spec);
+    ADD_FAILURE() << "geometric coarsening of 122x40 down to 61x20 only was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("halves only down to 61x20"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(BackendPathJacobi, PaperConfigurationMatchesTheDirectSolve) {

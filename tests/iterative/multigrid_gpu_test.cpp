@@ -15,19 +15,20 @@
 namespace signorini {
 namespace {
 
-class GpuMultigrid : public ::testing::TestWithParam<std::tuple<Index, MultigridCoarsening>> {};
+class GpuMultigrid
+    : public ::testing::TestWithParam<std::tuple<Index, MultigridCoarsening, HierarchyKind>> {};
 
 TEST_P(GpuMultigrid, CycleAndCgMatchTheCpu) {
   const CudaReport report = cuda_report();
   if (report.gpus.empty()) GTEST_SKIP() << "no CUDA GPU: " << report.problem;
-  const auto [nx, coarsening] = GetParam();
+  const auto [nx, coarsening, kind] = GetParam();
   ProblemSpec spec = paper_benchmark(nx, nx / 3);
   spec.solver.linear.type = LinearSolverType::ConjugateGradient;
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
   spec.solver.linear.coarsening = coarsening;
   const Model model = build_model(spec);
   const ContactProblem& p = model.problem;
-  ASSERT_EQ(p.coarsening, coarsening);
+  ASSERT_EQ(p.hierarchy, kind);
   const Vector c = 1e8 * p.contact.weights;  // every contact node active
 
   HostBackend host;
@@ -68,12 +69,15 @@ TEST_P(GpuMultigrid, CycleAndCgMatchTheCpu) {
 
 INSTANTIATE_TEST_SUITE_P(
     Hierarchies, GpuMultigrid,
-    ::testing::Values(std::tuple{Index{120}, MultigridCoarsening::Geometric},
-                      std::tuple{Index{121}, MultigridCoarsening::Aggregation},
-                      std::tuple{Index{240}, MultigridCoarsening::Aggregation}),
+    ::testing::Values(
+        std::tuple{Index{120}, MultigridCoarsening::Geometric, HierarchyKind::Geometric},
+        std::tuple{Index{121}, MultigridCoarsening::Auto, HierarchyKind::Aggregation},
+        std::tuple{Index{240}, MultigridCoarsening::Aggregation, HierarchyKind::Aggregation},
+        std::tuple{Index{122}, MultigridCoarsening::Auto, HierarchyKind::GeometricThenAggregation}),
     [](const auto& param_info) {
-      return std::string(enum_to_string(kMultigridCoarseningNames, std::get<1>(param_info.param))) +
-             std::to_string(std::get<0>(param_info.param));
+      std::string name(enum_to_string(kHierarchyKindNames, std::get<2>(param_info.param)));
+      if (name.find('+') != std::string::npos) name = "mixed";
+      return name + std::to_string(std::get<0>(param_info.param));
     });
 
 }  // namespace

@@ -241,7 +241,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   s.device = backend->description();
   s.device_peak_bytes = backend->peak_bytes();
   s.multigrid_levels = gnm.levels();
-  s.multigrid_coarsening = problem.coarsening;
+  s.multigrid_hierarchy = problem.hierarchy;
   s.timings = std::move(timings);
   return out;
 }

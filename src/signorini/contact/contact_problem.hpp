@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "signorini/contact/contact_set.hpp"
-#include "signorini/linalg/linear_solver.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 
 namespace signorini {
 
@@ -20,8 +20,7 @@ struct ContactProblem {
   /// The matrices of the coarse levels when the coarsening already formed them (aggregation);
   /// empty: the multigrid preconditioner forms them (Galerkin products).
   std::vector<SparseMatrix> coarse_operators;
-  /// How the levels were made: Geometric or Aggregation (Auto while there are none).
-  MultigridCoarsening coarsening = MultigridCoarsening::Auto;
+  HierarchyKind hierarchy = HierarchyKind::None;  ///< how the levels were made
 };
 
 }  // namespace signorini

@@ -7,6 +7,7 @@
 
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/core/timing_table.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 
 namespace signorini {
 
@@ -72,7 +73,7 @@ struct SolveSummary {
   std::string device;
   std::size_t device_peak_bytes = 0;
   std::vector<Index> multigrid_levels;
-  MultigridCoarsening multigrid_coarsening = MultigridCoarsening::Auto;  ///< how they were made
+  HierarchyKind multigrid_hierarchy = HierarchyKind::None;  ///< how they were made
 
   [[nodiscard]] bool converged() const { return termination == Termination::Converged; }
   /// GNM iterations of each Uzawa step (the paper's "7/2" column).

@@ -58,7 +58,7 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
     j["multigrid_levels"] = summary.multigrid_levels;
     if (summary.multigrid_levels.size() > 1)
       j["multigrid_coarsening"] =
-          std::string(enum_to_string(kMultigridCoarseningNames, summary.multigrid_coarsening));
+          std::string(enum_to_string(kHierarchyKindNames, summary.multigrid_hierarchy));
   }
 
   j["n_dofs"] = model.dofs.num_dofs();

@@ -246,7 +246,8 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
     const SparseMatrix& Al = *current;
     const std::vector<Index> start = node_starts(node_of);
     const auto m = static_cast<Index>(start.size()) - 1;
-    // Compact node numbers 0 .. m-1, checking that each node's unknowns are consecutive.
+    // Compact node numbers 0 .. m-1 (a node whose unknowns were not consecutive would count as
+    // several: a coarser aggregation, nothing worse).
     std::vector<Index> compact(node_of.size());
     for (Index a = 0; a < m; ++a)
       for (Index i = start[static_cast<std::size_t>(a)]; i < start[static_cast<std::size_t>(a) + 1];
@@ -269,6 +270,7 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
     B = std::move(t.coarse_null_space);
     node_of = std::move(t.coarse_node);
   }
+  if (!h.prolongations.empty()) h.kind = HierarchyKind::Aggregation;
   return h;
 }
 

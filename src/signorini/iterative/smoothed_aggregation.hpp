@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "signorini/core/types.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 
 namespace signorini {
 
@@ -28,17 +29,11 @@ struct SmoothedAggregationOptions {
   int max_levels = 25;
 };
 
-/// A hierarchy for MultigridPreconditioner: prolongations[l] maps level l+1 to level l and
-/// coarse_operators[l] is the matrix of level l+1 (P^T A P).
-struct MultigridHierarchy {
-  std::vector<SparseMatrix> prolongations;
-  std::vector<SparseMatrix> coarse_operators;
-};
-
 /// The smoothed-aggregation hierarchy of the symmetric positive definite A (n x n, both
 /// triangles stored). `near_null_space` is n x k (k >= 1); `node_of_unknown[i]` is the node of
-/// unknown i, nodes numbered from 0 and the unknowns of a node consecutive. An empty hierarchy
-/// if A already has at most max_coarse_unknowns unknowns.
+/// unknown i, nodes numbered from 0 and the unknowns of a node consecutive. The coarse operators
+/// are formed (kind Aggregation); an empty hierarchy (kind None) if A already has at most
+/// max_coarse_unknowns unknowns.
 MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix near_null_space,
                                                   std::vector<Index> node_of_unknown,
                                                   const SmoothedAggregationOptions& options = {});

@@ -1,13 +1,9 @@
 #include "signorini/problem/model.hpp"
 
-#include <fmt/format.h>
-
 #include "signorini/contact/contact_set.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/fem/rigid_body_modes.hpp"
-#include "signorini/iterative/smoothed_aggregation.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
-#include "signorini/problem/rectangle_hierarchy.hpp"
+#include "signorini/problem/model_hierarchy.hpp"
 
 namespace signorini {
 
@@ -59,25 +55,10 @@ Model build_model(const ProblemSpec& spec) {
   if (linear.type == LinearSolverType::ConjugateGradient &&
       linear.preconditioner == PreconditionerType::Multigrid) {
     ScopedTimer t(timings, "multigrid hierarchy");
-    // Geometric levels where the rectangle halves (cheapest to build, docs/gpu.md); smoothed
-    // aggregation otherwise, or when asked for.
-    if (linear.coarsening != MultigridCoarsening::Aggregation) {
-      problem.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, dofs);
-      if (!problem.prolongations.empty()) problem.coarsening = MultigridCoarsening::Geometric;
-    }
-    if (linear.coarsening == MultigridCoarsening::Geometric && problem.prolongations.empty() &&
-        dofs.num_free() > kGeometricCoarsestUnknowns)
-      throw InputError(fmt::format(
-          "solver.linear.coarsening = \"geometric\": the {}x{} mesh does not halve (nx and ny "
-          "must be even); use \"aggregation\" or \"auto\"",
-          spec.mesh.nx, spec.mesh.ny));
-    if (problem.coarsening == MultigridCoarsening::Auto) {
-      MultigridHierarchy h = smoothed_aggregation_hierarchy(problem.A, rigid_body_modes(mesh, dofs),
-                                                            free_dof_nodes(dofs));
-      if (!h.prolongations.empty()) problem.coarsening = MultigridCoarsening::Aggregation;
-      problem.prolongations = std::move(h.prolongations);
-      problem.coarse_operators = std::move(h.coarse_operators);
-    }
+    MultigridHierarchy h = make_model_hierarchy(spec, mesh, dofs, problem.A);
+    problem.prolongations = std::move(h.prolongations);
+    problem.coarse_operators = std::move(h.coarse_operators);
+    problem.hierarchy = h.kind;
   }
   return Model{std::move(mesh), std::move(dofs), std::move(problem), std::move(timings)};
 }

@@ -1,0 +1,31 @@
+#pragma once
+// The levels of the multigrid preconditioner (multigrid_preconditioner.hpp): transfer operators
+// and, where their maker formed them, the coarse matrices; and how they were made.
+
+#include <vector>
+
+#include "signorini/core/enum_names.hpp"
+#include "signorini/core/types.hpp"
+
+namespace signorini {
+
+/// How a hierarchy was made (summary.json's multigrid_coarsening).
+enum class HierarchyKind { None, Geometric, Aggregation, GeometricThenAggregation };
+
+inline constexpr EnumNames<HierarchyKind, 4> kHierarchyKindNames{{
+    {HierarchyKind::None, "none"},
+    {HierarchyKind::Geometric, "geometric"},
+    {HierarchyKind::Aggregation, "aggregation"},
+    {HierarchyKind::GeometricThenAggregation, "geometric+aggregation"},
+}};
+
+struct MultigridHierarchy {
+  /// prolongations[l] maps level l+1 to level l (level 0: the free dofs of the mesh).
+  std::vector<SparseMatrix> prolongations;
+  /// coarse_operators[l] is the matrix of level l+1 (P^T A P); empty: the multigrid
+  /// preconditioner forms them.
+  std::vector<SparseMatrix> coarse_operators;
+  HierarchyKind kind = HierarchyKind::None;
+};
+
+}  // namespace signorini
