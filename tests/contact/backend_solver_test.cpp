@@ -47,67 +47,70 @@ INSTANTIATE_TEST_SUITE_P(Paper, BackendPath, ::testing::Values(60, 120, 240),
                                   std::to_string(param_info.param / 3);
                          });
 
-TEST(BackendPathAggregation, MeshesThatDoNotHalveGetAggregationAndMatchTheDirectSolve) {
-  // 61x21 cannot be halved: "auto" coarsening falls back to smoothed aggregation; "geometric"
-  // is refused with a message naming the key and the mesh.
-  ProblemSpec spec = paper_benchmark(61, 21);
+// The paper's benchmark on nx x ny with multigrid CG and the given coarsening.
+ProblemSpec multigrid_spec(Index nx, Index ny, MultigridCoarsening coarsening) {
+  ProblemSpec spec = paper_benchmark(nx, ny);
   spec.solver.linear.type = LinearSolverType::ConjugateGradient;
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  spec.solver.linear.coarsening = coarsening;
+  return spec;
+}
+
+// build_model's InputError message ("" if it builds).
+std::string model_error(const ProblemSpec& spec) {
+  try {
+    (void)build_model(spec);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Multigrid CG on the backend path against the direct solve of the same model.
+void expect_matches_the_direct_solve(const ProblemSpec& spec, HierarchyKind kind) {
   const Model model = build_model(spec);
-  ASSERT_EQ(model.problem.hierarchy, HierarchyKind::Aggregation);
+  ASSERT_EQ(model.problem.hierarchy, kind);
   ASSERT_FALSE(model.problem.prolongations.empty());
   const ContactResult it = solve_contact(model.problem, spec.solver);
-  ContactSolverOptions direct_options;
-  const ContactResult direct = solve_contact(model.problem, direct_options);
+  const ContactResult direct = solve_contact(model.problem, ContactSolverOptions{});
   ASSERT_TRUE(it.summary.converged()) << it.summary.message;
   EXPECT_NEAR(it.summary.lagrangian, direct.summary.lagrangian,
               1e-8 * std::abs(direct.summary.lagrangian));
   EXPECT_EQ(it.summary.outer_iterations, direct.summary.outer_iterations);
   EXPECT_LT(testing::relative_difference(it.u, direct.u), 1e-8);
   EXPECT_LT(it.summary.kkt.max(), 1e-7);
-  EXPECT_EQ(it.summary.multigrid_hierarchy, HierarchyKind::Aggregation);
+  EXPECT_EQ(it.summary.multigrid_hierarchy, kind);
   EXPECT_GE(it.summary.multigrid_levels.size(), 2U);
+}
 
-  spec.solver.linear.coarsening = MultigridCoarsening::Geometric;
-  try {
-    (void)build_model(spec);
-    ADD_FAILURE() << "geometric coarsening of a 61x21 mesh was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("solver.linear.coarsening"), std::string::npos)
-        << e.what();
-    EXPECT_NE(std::string(e.what()).find("61x21"), std::string::npos) << e.what();
-  }
-  // An even mesh takes the geometric levels under "auto".
-  spec = paper_benchmark(60, 20);
-  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
-  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
-  EXPECT_EQ(build_model(spec).problem.hierarchy, HierarchyKind::Geometric);
-  spec.solver.linear.coarsening = MultigridCoarsening::Aggregation;
-  EXPECT_EQ(build_model(spec).problem.hierarchy, HierarchyKind::Aggregation);
-  // 122x40 halves once, to 61x20: too large a coarsest level for the dense solve, so "auto"
-  // continues with aggregation from there; "geometric" is refused.
-  spec = paper_benchmark(122, 40);
-  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
-  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
-  const Model mixed = build_model(spec);
-  EXPECT_EQ(mixed.problem.hierarchy, HierarchyKind::GeometricThenAggregation);
-  ASSERT_GE(mixed.problem.prolongations.size(), 2U);
-  EXPECT_EQ(mixed.problem.coarse_operators.size(), mixed.problem.prolongations.size());
-  EXPECT_LE(mixed.problem.coarse_operators.back().rows(), 2000);
-  const ContactResult mixed_solve = solve_contact(mixed.problem, spec.solver);
-  const ContactResult mixed_direct = solve_contact(mixed.problem, ContactSolverOptions{});
-  ASSERT_TRUE(mixed_solve.summary.converged()) << mixed_solve.summary.message;
-  EXPECT_NEAR(mixed_solve.summary.lagrangian, mixed_direct.summary.lagrangian,
-              1e-8 * std::abs(mixed_direct.summary.lagrangian));
-  EXPECT_EQ(mixed_solve.summary.multigrid_hierarchy, HierarchyKind::GeometricThenAggregation);
-  spec.solver.linear.coarsening = MultigridCoarsening::Geometric;
-  try {
-    (void)build_model(spec);
-    ADD_FAILURE() << "geometric coarsening of 122x40 down to 61x20 only was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("halves only down to 61x20"), std::string::npos)
-        << e.what();
-  }
+TEST(BackendPathCoarsening, AMeshThatDoesNotHalveGetsAggregationAndMatchesTheDirectSolve) {
+  expect_matches_the_direct_solve(multigrid_spec(61, 21, MultigridCoarsening::Auto),
+                                  HierarchyKind::Aggregation);
+  const std::string error = model_error(multigrid_spec(61, 21, MultigridCoarsening::Geometric));
+  EXPECT_NE(error.find("solver.linear.coarsening = \"geometric\""), std::string::npos) << error;
+  EXPECT_NE(error.find("61x21"), std::string::npos) << error;
+}
+
+TEST(BackendPathCoarsening, AMeshThatHalvesTooLittleGetsAggregationBelowItsGeometricLevels) {
+  // 122x40 halves once, to 61x20: above the dense coarsest solve's 2,000 unknowns, so "auto"
+  // continues from there by aggregation, and "geometric" alone is refused.
+  const ProblemSpec spec = multigrid_spec(122, 40, MultigridCoarsening::Auto);
+  const Model model = build_model(spec);
+  EXPECT_EQ(model.problem.coarse_operators.size(), model.problem.prolongations.size());
+  EXPECT_EQ(model.problem.prolongations.front().cols(),
+            build_model(multigrid_spec(61, 20, MultigridCoarsening::Auto)).dofs.num_free());
+  EXPECT_LE(model.problem.coarse_operators.back().rows(), 2000);
+  expect_matches_the_direct_solve(spec, HierarchyKind::GeometricThenAggregation);
+  EXPECT_NE(model_error(multigrid_spec(122, 40, MultigridCoarsening::Geometric))
+                .find("halves only down to 61x20"),
+            std::string::npos);
+}
+
+TEST(BackendPathCoarsening, EvenMeshesTakeTheGeometricLevelsUnlessAggregationIsAsked) {
+  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Auto)).problem.hierarchy,
+            HierarchyKind::Geometric);
+  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Aggregation)).problem.hierarchy,
+            HierarchyKind::Aggregation);
 }
 
 TEST(BackendPathJacobi, PaperConfigurationMatchesTheDirectSolve) {
