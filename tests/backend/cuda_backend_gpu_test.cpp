@@ -229,6 +229,7 @@ TEST_F(GpuBackend, RecordedWorkReplaysTheSameKernels) {
   auto recorded = gpu().record([&] { sequence(gpu(), *gA, gx, gd, gy, gz); });
   // A capture that failed would still replay correctly, call by call: say so.
   EXPECT_TRUE(recorded->is_graph()) << recorded->why_not_graph();
+  EXPECT_TRUE(recorded->ran_while_recording());
   gpu().fill(gy, kNaN);
   gpu().fill(gz, kNaN);
   recorded->replay();

@@ -80,6 +80,7 @@ TEST(HostBackend, RecordedWorkReadsTheVectorsAsTheyAreAtReplay) {
   recorded->replay();
   EXPECT_EQ(to_host(y), Vector::Constant(10, -2.0));
   EXPECT_FALSE(recorded->is_graph());
+  EXPECT_FALSE(recorded->ran_while_recording());
   EXPECT_FALSE(recorded->why_not_graph().empty());
 }
 

@@ -36,24 +36,26 @@ void DeviceVector::reset() noexcept {
 namespace {
 class StoredWork final : public RecordedWork {
  public:
-  StoredWork(std::function<void()> work, std::string reason)
-      : work_(std::move(work)), reason_(std::move(reason)) {}
+  StoredWork(std::function<void()> work, std::string reason, bool ran)
+      : work_(std::move(work)), reason_(std::move(reason)), ran_(ran) {}
   void replay() override { work_(); }
   [[nodiscard]] std::string why_not_graph() const override { return reason_; }
+  [[nodiscard]] bool ran_while_recording() const override { return ran_; }
 
  private:
   std::function<void()> work_;
   std::string reason_;
+  bool ran_;
 };
 }  // namespace
 
-std::unique_ptr<RecordedWork> Backend::call_by_call(std::function<void()> work,
-                                                    std::string reason) {
-  return std::make_unique<StoredWork>(std::move(work), std::move(reason));
+std::unique_ptr<RecordedWork> Backend::call_by_call(std::function<void()> work, std::string reason,
+                                                    bool ran) {
+  return std::make_unique<StoredWork>(std::move(work), std::move(reason), ran);
 }
 
 std::unique_ptr<RecordedWork> Backend::record(std::function<void()> work) {
-  return call_by_call(std::move(work), "this backend has no graphs: calls are replayed");
+  return call_by_call(std::move(work), "this backend has no graphs: calls are replayed", false);
 }
 
 DeviceVector to_device(Backend& backend, const Vector& host) {

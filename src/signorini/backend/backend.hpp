@@ -86,6 +86,9 @@ class RecordedWork {
   [[nodiscard]] virtual bool is_graph() const { return false; }
   /// Why the work is not a graph ("" for a graph), for tests and reports.
   [[nodiscard]] virtual std::string why_not_graph() const = 0;
+  /// True when Backend::record ran the work once (on a GPU, before capturing it): its results
+  /// are then already there, and a caller may skip the first replay.
+  [[nodiscard]] virtual bool ran_while_recording() const = 0;
 };
 
 class Backend {
@@ -150,8 +153,10 @@ class Backend {
   [[nodiscard]] virtual std::unique_ptr<RecordedWork> record(std::function<void()> work);
 
  protected:
-  /// Recorded work that replays by calling `work` again; `reason` says why (why_not_graph).
-  static std::unique_ptr<RecordedWork> call_by_call(std::function<void()> work, std::string reason);
+  /// Recorded work that replays by calling `work` again; `reason` says why (why_not_graph);
+  /// `ran` whether record() has run it once already.
+  static std::unique_ptr<RecordedWork> call_by_call(std::function<void()> work, std::string reason,
+                                                    bool ran);
 };
 
 // Conveniences over the interface.

@@ -13,9 +13,9 @@ namespace signorini {
 
 struct GpuInfo {
   int ordinal = 0;
-  std::string name;                ///< "NVIDIA H100 80GB HBM3"
-  int major = 0, minor = 0;        ///< compute capability
-  std::size_t total_memory = 0;    ///< bytes
+  std::string name;              ///< "NVIDIA H100 80GB HBM3"
+  int major = 0, minor = 0;      ///< compute capability
+  std::size_t total_memory = 0;  ///< bytes
   int multiprocessors = 0;
 };
 

@@ -24,8 +24,8 @@ class HostBackend final : public Backend {
   [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload(const SparseMatrix& A) override;
   [[nodiscard]] std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) override;
 
-  void spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y,
-            double alpha = 1.0, double beta = 0.0) override;
+  void spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y, double alpha = 1.0,
+            double beta = 0.0) override;
   void gemv(const DeviceDenseMatrix& A, const DeviceVector& x, DeviceVector& y) override;
   [[nodiscard]] double dot(const DeviceVector& x, const DeviceVector& y) override;
   void axpby(double a, const DeviceVector& x, double b, DeviceVector& y) override;

@@ -137,6 +137,7 @@ void MultigridPreconditioner::apply(const DeviceVector& r, DeviceVector& z) {
     recorded_z_ = &z;
     recorded_r_data_ = r.data();
     recorded_z_data_ = z.data();
+    if (recorded_->ran_while_recording()) return;  // z = M r already (one cycle saved)
   }
   recorded_->replay();
 }

@@ -558,6 +558,7 @@ class CudaGraphWork final : public RecordedWork {
   void replay() override { check(cudaGraphLaunch(exec_, stream_), "cudaGraphLaunch"); }
   [[nodiscard]] bool is_graph() const override { return true; }
   [[nodiscard]] std::string why_not_graph() const override { return {}; }
+  [[nodiscard]] bool ran_while_recording() const override { return true; }  // the eager run
 
  private:
   cudaGraphExec_t exec_;
@@ -598,7 +599,7 @@ std::unique_ptr<RecordedWork> CudaBackend::record(std::function<void()> work) {
   }
   if (graph != nullptr) (void)cudaGraphDestroy(graph);
   (void)cudaGetLastError();  // the failed capture's error is not the next call's
-  return call_by_call(std::move(work), "CUDA graph capture failed (" + problem + ")");
+  return call_by_call(std::move(work), "CUDA graph capture failed (" + problem + ")", true);
 }
 
 }  // namespace
