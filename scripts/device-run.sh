@@ -4,7 +4,8 @@
 # output into OUTDIR (docs/gpu.md).
 #   bash scripts/device-run.sh OUTDIR [bench arguments...]   (default: --huge --largest)
 # Time limits per step: DEVICE_TESTS_SECONDS (default 180), DEVICE_BENCH_SECONDS (default 360);
-# DEVICE_REPEATS: the benchmark's best of N (default 3).
+# DEVICE_REPEATS: the benchmark's best of N (default 3); DEVICE_SANITIZER=1: also the kernel
+# tests under compute-sanitizer memcheck (sanitizer.txt; DEVICE_SANITIZER_SECONDS, default 150).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out="${1:?usage: device-run.sh OUTDIR [bench arguments]}"
@@ -34,8 +35,22 @@ tests_limit="${DEVICE_TESTS_SECONDS:-180}"
 bench_limit="${DEVICE_BENCH_SECONDS:-360}"
 timeout -k 5 "$tests_limit" .device/bin/signorini_gpu_tests > "$out/gpu-tests.txt" 2>&1
 echo "gpu tests: exit $? (124: over ${tests_limit} s)"
-grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/gpu-tests.txt" | sort | uniq -c | head -20
-grep -E "Failure|FAILED|graph capture failed" "$out/gpu-tests.txt" | head -20
+grep -E "^\[  (PASSED|SKIPPED|FAILED) +\] [0-9]+ test" "$out/gpu-tests.txt"
+grep -E "^\[  FAILED  \] [A-Za-z]|: Failure$|graph capture failed" "$out/gpu-tests.txt" | head -20
+# Optional (DEVICE_SANITIZER=1): the kernel tests under compute-sanitizer's memcheck, which
+# reports out-of-bounds and misaligned device accesses that a passing test can hide.
+if [[ "${DEVICE_SANITIZER:-0}" == 1 ]]; then
+  sanitizer=$(command -v compute-sanitizer || echo /usr/local/cuda/bin/compute-sanitizer)
+  if [[ -x "$sanitizer" ]]; then
+    timeout -k 5 "${DEVICE_SANITIZER_SECONDS:-150}" "$sanitizer" --tool memcheck \
+      --error-exitcode 3 .device/bin/signorini_gpu_tests --gtest_filter='GpuBackend.*' \
+      > "$out/sanitizer.txt" 2>&1
+    echo "compute-sanitizer memcheck: exit $? (3: errors found; 124: over the limit)"
+    tail -3 "$out/sanitizer.txt"
+  else
+    echo "compute-sanitizer: not found" | tee "$out/sanitizer.txt"
+  fi
+fi
 timeout -k 5 "$bench_limit" .device/bin/signorini bench --device cuda \
   --repeats "${DEVICE_REPEATS:-3}" \
   --json "$out/bench-gpu.json" "${bench_args[@]}" > "$out/bench-gpu.txt" 2> "$out/bench-gpu.err"
