@@ -22,8 +22,8 @@ inline ContactProblem paper_problem_with_hierarchy(Index nx) {
   const Model& model = paper_model(nx);
   const ProblemSpec spec = paper_benchmark(nx, nx / 3);
   ContactProblem p = model.problem;
-  p.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
-  p.hierarchy = HierarchyKind::Geometric;
+  p.multigrid.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
+  p.multigrid.kind = HierarchyKind::Geometric;
   return p;
 }
 

@@ -46,7 +46,7 @@ TEST(GpuSolveAggregation, AMeshThatDoesNotHalveMatchesTheCpuDirectSolve) {
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
   spec.solver.device = DeviceKind::Cuda;
   const Model model = build_model(spec);
-  ASSERT_EQ(model.problem.hierarchy, HierarchyKind::Aggregation);
+  ASSERT_EQ(model.problem.multigrid.kind, HierarchyKind::Aggregation);
   const ContactResult cpu = solve_contact(model.problem, ContactSolverOptions{});
   const ContactResult gpu = solve_contact(model.problem, spec.solver);
   ASSERT_TRUE(gpu.summary.converged()) << gpu.summary.message;

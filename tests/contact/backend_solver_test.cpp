@@ -69,8 +69,8 @@ std::string model_error(const ProblemSpec& spec) {
 // Multigrid CG on the backend path against the direct solve of the same model.
 void expect_matches_the_direct_solve(const ProblemSpec& spec, HierarchyKind kind) {
   const Model model = build_model(spec);
-  ASSERT_EQ(model.problem.hierarchy, kind);
-  ASSERT_FALSE(model.problem.prolongations.empty());
+  ASSERT_EQ(model.problem.multigrid.kind, kind);
+  ASSERT_FALSE(model.problem.multigrid.prolongations.empty());
   const ContactResult it = solve_contact(model.problem, spec.solver);
   const ContactResult direct = solve_contact(model.problem, ContactSolverOptions{});
   ASSERT_TRUE(it.summary.converged()) << it.summary.message;
@@ -96,10 +96,11 @@ TEST(BackendPathCoarsening, AMeshThatHalvesTooLittleGetsAggregationBelowItsGeome
   // continues from there by aggregation, and "geometric" alone is refused.
   const ProblemSpec spec = multigrid_spec(122, 40, MultigridCoarsening::Auto);
   const Model model = build_model(spec);
-  EXPECT_EQ(model.problem.coarse_operators.size(), model.problem.prolongations.size());
-  EXPECT_EQ(model.problem.prolongations.front().cols(),
+  EXPECT_EQ(model.problem.multigrid.coarse_operators.size(),
+            model.problem.multigrid.prolongations.size());
+  EXPECT_EQ(model.problem.multigrid.prolongations.front().cols(),
             build_model(multigrid_spec(61, 20, MultigridCoarsening::Auto)).dofs.num_free());
-  EXPECT_LE(model.problem.coarse_operators.back().rows(), 2000);
+  EXPECT_LE(model.problem.multigrid.coarse_operators.back().rows(), 2000);
   expect_matches_the_direct_solve(spec, HierarchyKind::GeometricThenAggregation);
   EXPECT_NE(model_error(multigrid_spec(122, 40, MultigridCoarsening::Geometric))
                 .find("halves only down to 61x20"),
@@ -107,10 +108,11 @@ TEST(BackendPathCoarsening, AMeshThatHalvesTooLittleGetsAggregationBelowItsGeome
 }
 
 TEST(BackendPathCoarsening, EvenMeshesTakeTheGeometricLevelsUnlessAggregationIsAsked) {
-  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Auto)).problem.hierarchy,
+  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Auto)).problem.multigrid.kind,
             HierarchyKind::Geometric);
-  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Aggregation)).problem.hierarchy,
-            HierarchyKind::Aggregation);
+  EXPECT_EQ(
+      build_model(multigrid_spec(60, 20, MultigridCoarsening::Aggregation)).problem.multigrid.kind,
+      HierarchyKind::Aggregation);
 }
 
 TEST(BackendPathJacobi, PaperConfigurationMatchesTheDirectSolve) {

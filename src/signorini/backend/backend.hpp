@@ -81,11 +81,10 @@ class RecordedWork {
  public:
   virtual ~RecordedWork() = default;
   virtual void replay() = 0;
-  /// True when replay() launches the work as one device graph (a CUDA graph); false when it
-  /// makes the calls again one by one (on the CPU, or where a GPU capture failed).
-  [[nodiscard]] virtual bool is_graph() const { return false; }
-  /// Why the work is not a graph ("" for a graph), for tests and reports.
+  /// Why replay() makes the calls again one by one (on the CPU, or where a GPU capture failed);
+  /// "" when it launches the work as one device graph (a CUDA graph).
   [[nodiscard]] virtual std::string why_not_graph() const = 0;
+  [[nodiscard]] bool is_graph() const { return why_not_graph().empty(); }
   /// True when Backend::record ran the work once (on a GPU, before capturing it): its results
   /// are then already there, and a caller may skip the first replay.
   [[nodiscard]] virtual bool ran_while_recording() const = 0;

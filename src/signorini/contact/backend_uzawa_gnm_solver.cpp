@@ -58,8 +58,9 @@ class BackendGnm {
     if (o_.linear.preconditioner == PreconditionerType::Multigrid) {
       MultigridOptions mo;
       mo.smoother.degree = o_.linear.chebyshev_degree;
-      auto mg = std::make_unique<MultigridPreconditioner>(
-          *H_, problem.A, problem.contact.N, problem.prolongations, mo, problem.coarse_operators);
+      auto mg = std::make_unique<MultigridPreconditioner>(*H_, problem.A, problem.contact.N,
+                                                          problem.multigrid.prolongations, mo,
+                                                          problem.multigrid.coarse_operators);
       levels_ = mg->level_sizes();
       preconditioner_ = std::move(mg);
     } else {
@@ -241,7 +242,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   s.device = backend->description();
   s.device_peak_bytes = backend->peak_bytes();
   s.multigrid_levels = gnm.levels();
-  s.multigrid_hierarchy = problem.hierarchy;
+  s.multigrid_hierarchy = problem.multigrid.kind;
   s.timings = std::move(timings);
   return out;
 }

@@ -13,14 +13,9 @@ struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
   Vector b;        ///< load vector
   ContactSet contact;
-  /// Multigrid transfer operators, finest first: prolongations[l] interpolates level l+1 onto
-  /// level l (free dofs). Empty unless a multigrid preconditioner was asked for: from the mesh
-  /// (problem/rectangle_hierarchy.hpp) or from A (iterative/smoothed_aggregation.hpp).
-  std::vector<SparseMatrix> prolongations;
-  /// The matrices of the coarse levels when the coarsening already formed them (aggregation);
-  /// empty: the multigrid preconditioner forms them (Galerkin products).
-  std::vector<SparseMatrix> coarse_operators;
-  HierarchyKind hierarchy = HierarchyKind::None;  ///< how the levels were made
+  /// The multigrid levels (iterative/multigrid_hierarchy.hpp): empty unless a multigrid
+  /// preconditioner was asked for; from the mesh, from A, or both (problem/model_hierarchy.hpp).
+  MultigridHierarchy multigrid;
 };
 
 }  // namespace signorini

@@ -50,9 +50,9 @@ struct LinearSolverOptions {
   /// Chebyshev-Jacobi smoothing, whose iteration count hardly grows with the mesh (docs/gpu.md).
   /// Multigrid runs on the backend path (any device).
   PreconditionerType preconditioner = PreconditionerType::Jacobi;
-  /// Coarse levels of "multigrid": "geometric" halves the rectangle mesh (nx and ny even);
-  /// "aggregation" is smoothed aggregation from the matrix and the rigid-body modes (any mesh);
-  /// "auto" is geometric where the mesh halves, else aggregation.
+  /// Coarse levels of "multigrid" (problem/model_hierarchy.hpp): "geometric" halves the
+  /// rectangle mesh; "aggregation" is smoothed aggregation from the matrix and the rigid-body
+  /// modes (any mesh); "auto" takes the geometric levels while the mesh halves, then aggregation.
   MultigridCoarsening coarsening = MultigridCoarsening::Auto;
   /// Degree of the Chebyshev smoother of the multigrid preconditioner (products with H per sweep).
   int chebyshev_degree = 2;

@@ -55,10 +55,7 @@ Model build_model(const ProblemSpec& spec) {
   if (linear.type == LinearSolverType::ConjugateGradient &&
       linear.preconditioner == PreconditionerType::Multigrid) {
     ScopedTimer t(timings, "multigrid hierarchy");
-    MultigridHierarchy h = make_model_hierarchy(spec, mesh, dofs, problem.A);
-    problem.prolongations = std::move(h.prolongations);
-    problem.coarse_operators = std::move(h.coarse_operators);
-    problem.hierarchy = h.kind;
+    problem.multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   return Model{std::move(mesh), std::move(dofs), std::move(problem), std::move(timings)};
 }

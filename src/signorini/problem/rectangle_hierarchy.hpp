@@ -10,17 +10,15 @@
 
 namespace signorini {
 
-/// Coarsening stops at or below this many free dofs (the coarsest level is solved densely).
-inline constexpr Index kGeometricCoarsestUnknowns = 400;
-
 /// Prolongations P_1, P_2, ...: P_l interpolates level l onto level l-1 (level 0 = `mesh` with
 /// `fine_dofs`). Coarse node (I, J) is fine node (2I, 2J); each fine node takes the bilinear
 /// interpolant of the four coarse nodes of its coarse cell, per component. Coarse dofs on the
 /// clamped boundary are dropped (the corrections vanish there). Coarsening continues while nx
 /// and ny are even and the current level has more than `min_coarse_unknowns` free dofs; a mesh
 /// with odd nx or ny has no coarser level (the result is empty).
-std::vector<SparseMatrix> make_rectangle_prolongations(
-    const RectangleMeshOptions& mesh, const std::vector<ClampSpec>& clamps, const DofMap& fine_dofs,
-    Index min_coarse_unknowns = kGeometricCoarsestUnknowns);
+std::vector<SparseMatrix> make_rectangle_prolongations(const RectangleMeshOptions& mesh,
+                                                       const std::vector<ClampSpec>& clamps,
+                                                       const DofMap& fine_dofs,
+                                                       Index min_coarse_unknowns = 400);
 
 }  // namespace signorini

@@ -556,7 +556,6 @@ class CudaGraphWork final : public RecordedWork {
   CudaGraphWork(const CudaGraphWork&) = delete;
   CudaGraphWork& operator=(const CudaGraphWork&) = delete;
   void replay() override { check(cudaGraphLaunch(exec_, stream_), "cudaGraphLaunch"); }
-  [[nodiscard]] bool is_graph() const override { return true; }
   [[nodiscard]] std::string why_not_graph() const override { return {}; }
   [[nodiscard]] bool ran_while_recording() const override { return true; }  // the eager run
 
