@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -79,6 +80,25 @@ nlohmann::json to_json(const BenchmarkRow& r) {
   return j;
 }
 
+std::string duration_text(double seconds) {
+  if (seconds < 60.0) return fmt::format("{:.0f} s", std::max(1.0, seconds));
+  if (seconds < 3600.0) return fmt::format("{:.0f} min", seconds / 60.0);
+  return fmt::format("{:.1f} h", seconds / 3600.0);
+}
+
+void write_json(const BenchArguments& args, const BenchmarkOptions& options,
+                const std::vector<BenchmarkRow>& rows) {
+  if (args.json_file.empty()) return;
+  nlohmann::json j;
+  j["benchmark"] = "paper";
+  j["repeats"] = options.repeats;
+  j["hardware_threads"] = std::thread::hardware_concurrency();
+  j["rows"] = nlohmann::json::array();
+  for (const auto& r : rows) j["rows"].push_back(to_json(r));
+  write_file_atomically(args.json_file, j.dump(2) + "\n");
+  fmt::print("rows written to {}\n", args.json_file);
+}
+
 // --device cuda: the CPU reference (direct, condensed), the GPU with multigrid CG on every mesh,
 // the paper's configuration (Jacobi CG) on the GPU and on the CPU up to 480x160, and the same
 // multigrid algorithm on the CPU backend up to 960x320 (the same-algorithm ratio).
@@ -136,29 +156,67 @@ std::vector<BenchmarkRow> largest_gpu_mesh(const std::vector<BenchmarkRow>& rows
   return run_paper_benchmark(o);
 }
 
+// Table 1 of the paper beside ours: the rows of the paper's configuration on its meshes.
+void print_table1(const std::vector<BenchmarkRow>& rows) {
+  bool header = false;
+  for (const auto& r : rows) {
+    if (!r.paper || r.method != ContactMethod::UzawaGnm || r.linear != LinearSolverType::Cholmod ||
+        !r.schur_complement || r.device_kind != DeviceKind::Cpu)
+      continue;
+    if (!header) {
+      fmt::print(
+          "\nTable 1 of the paper beside ours (uzawa_gnm on the condensed problem, r = 1e8; our "
+          "time end to end, best of the repeats)\n");
+      fmt::print("{:>8} {:>7} {:>4} {:>9} {:>9} {:>6} {:>6} {:>15} {:>14} {:>9} {:>9} {:>9}\n",
+                 "mesh", "n_p", "n_d", "GNM", "paper", "Uzawa", "paper", "M(u*, l*)", "paper M",
+                 "ours (s)", "CPU (s)", "GPU (s)");
+      header = true;
+    }
+    fmt::print(
+        "{:>8} {:>7} {:>4} {:>9} {:>9} {:>6} {:>6} {:>15.7e} {:>14.6e} {:>9} {:>9.2f} {:>9.2f}\n",
+        fmt::format("{}x{}", r.nx, r.ny), r.n_dofs, r.n_contact,
+        fmt::format("{}/{}", r.gnm_first, r.gnm_later), fmt::format("{}/2", r.paper->gnm_first),
+        r.outer_iterations, r.paper->uzawa, r.energy, r.paper->energy, seconds_text(r.t_total),
+        r.paper->cpu_seconds, r.paper->gpu_seconds);
+  }
+  if (header)
+    fmt::print(
+        "The paper: IBM POWER8, 2 x 10 cores, and an NVIDIA Tesla P100, conjugate gradients on "
+        "both; ours: this machine, {} hardware threads.\n",
+        std::thread::hardware_concurrency());
+}
+
 }  // namespace
 
 int run_bench(const BenchArguments& args) {
-  BenchmarkOptions options;
+  BenchmarkOptions options = args.full ? full_benchmark_options() : BenchmarkOptions{};
   options.repeats = args.repeats;
   if (!args.meshes.empty()) {
     options.meshes.clear();
     for (const auto& m : args.meshes) options.meshes.push_back(parse_mesh(m));
   }
+  if (args.larger)
+    for (const auto& m : larger_paper_meshes())
+      if (std::find(options.meshes.begin(), options.meshes.end(), m) == options.meshes.end())
+        options.meshes.push_back(m);
   if (args.huge) options.meshes.emplace_back(3840, 1280);
-  if (!args.methods.empty()) {
-    std::vector<BenchmarkConfiguration> configs;
-    for (const auto& name : args.methods) {
-      const auto m = enum_from_string(kContactMethodNames, name);
-      if (!m)
-        throw InputError("--method '" + name + "': expected " + enum_choices(kContactMethodNames));
-      configs.push_back({*m, LinearSolverType::Cholmod, true});
-    }
-    for (const auto& c : options.configurations)
-      if (c.linear == LinearSolverType::ConjugateGradient || !c.schur_complement)
-        configs.push_back(c);
-    options.configurations = configs;
+  for (const auto& name : args.methods) {
+    const auto m = enum_from_string(kContactMethodNames, name);
+    if (!m)
+      throw InputError("--method '" + name + "': expected " + enum_choices(kContactMethodNames));
+    const BenchmarkConfiguration c{*m, LinearSolverType::Cholmod, true};
+    const bool present =
+        std::any_of(options.configurations.begin(), options.configurations.end(),
+                    [&](const BenchmarkConfiguration& o) { return o.name() == c.name(); });
+    if (!present) options.configurations.push_back(c);
   }
+  if (args.cg && !args.full) options.configurations.push_back(paper_cg_configuration());
+  if (args.plain && !args.full) {
+    options.configurations.push_back(plain_sparse_configuration());
+    options.compare_plain_max_nx = 480;
+  }
+  if ((args.no_cg || args.no_plain) && !args.full)
+    throw InputError("--no-cg and --no-plain go with --full (the default runs neither)");
   std::erase_if(options.configurations, [&](const BenchmarkConfiguration& c) {
     return (args.no_cg && c.linear == LinearSolverType::ConjugateGradient) ||
            (args.no_plain && c.linear == LinearSolverType::Cholmod && !c.schur_complement);
@@ -174,10 +232,15 @@ int run_bench(const BenchArguments& args) {
           report.built ? "no usable CUDA GPU (" + report.problem + ")" : report.problem));
     if (!args.methods.empty())
       throw InputError("--method: the GPU comparison (--device cuda) runs uzawa_gnm only");
+    if (args.meshes.empty() && !args.larger && !args.full)  // the GPU's case is the large mesh
+      for (const auto& m : larger_paper_meshes()) options.meshes.push_back(m);
     gpu_configurations(args, options);
   } else if (args.largest) {
     throw InputError("--largest needs --device cuda");
   }
+  const bool table1_only = !args.full && !args.larger && !args.huge && args.meshes.empty() &&
+                           args.methods.empty() && !args.cg && !args.plain && !gpu;
+  options.linear_yardstick = !table1_only;  // Table 1 alone needs no contact/linear ratio
   options.progress = [](const std::string& line) {
     fmt::print(stderr, "  running {}\n", line);
     std::fflush(stderr);
@@ -185,9 +248,22 @@ int run_bench(const BenchArguments& args) {
 
   fmt::print(
       "signorini bench: the paper's problem (Section 5), best of {} (meshes above 1e6 unknowns "
-      "once), {} hardware threads\n",
-      options.repeats, std::thread::hardware_concurrency());
+      "once), {} hardware threads; estimated time {} (a 2-core machine)\n",
+      options.repeats, std::thread::hardware_concurrency(),
+      duration_text(estimated_seconds(options)));
+  std::fflush(stdout);
   auto rows = run_paper_benchmark(options);
+  print_table1(rows);
+  if (table1_only) {
+    bool ok = true;
+    for (const auto& r : rows) ok = ok && r.converged;
+    fmt::print(
+        "\nMore: --larger (960x320, 1920x640), --huge (3840x1280), --cg (the paper's CG "
+        "configuration), --plain, --method semismooth_newton, --full (all of them, minutes); "
+        "docs/performance.md.\n");
+    write_json(args, options, rows);
+    return ok ? kSuccess : kNotConverged;
+  }
 
   fmt::print(
       "\nTimings (seconds; contact = everything after assembly; linear = one linear-elastic "
@@ -249,16 +325,7 @@ int run_bench(const BenchArguments& args) {
     rows = std::move(all);
   }
 
-  if (!args.json_file.empty()) {
-    nlohmann::json j;
-    j["benchmark"] = "paper";
-    j["repeats"] = options.repeats;
-    j["hardware_threads"] = std::thread::hardware_concurrency();
-    j["rows"] = nlohmann::json::array();
-    for (const auto& r : rows) j["rows"].push_back(to_json(r));
-    write_file_atomically(args.json_file, j.dump(2) + "\n");
-    fmt::print("rows written to {}\n", args.json_file);
-  }
+  write_json(args, options, rows);
   return ok ? kSuccess : kNotConverged;
 }
 

@@ -38,11 +38,15 @@ struct CheckArguments {
 
 struct BenchArguments {
   int repeats = 3;                   ///< best of N
+  bool full = false;                 ///< the whole suite (full_benchmark_options())
+  bool larger = false;               ///< add 960x320 and 1920x640
   bool huge = false;                 ///< add 3840x1280 (9.8 million unknowns)
-  std::vector<std::string> meshes;   ///< "480x160", ...; empty: the default list
-  std::vector<std::string> methods;  ///< contact methods on the condensed problem; empty: default
-  bool no_cg = false;                ///< skip the paper's configuration (uzawa_gnm with CG)
-  bool no_plain = false;             ///< skip the plain sparse path and the comparison with it
+  std::vector<std::string> meshes;   ///< "480x160", ...; empty: the paper's four
+  std::vector<std::string> methods;  ///< more contact methods on the condensed problem
+  bool cg = false;                   ///< add the paper's configuration (uzawa_gnm with CG)
+  bool plain = false;                ///< add the plain sparse path and the comparison with it
+  bool no_cg = false;                ///< with --full: skip the paper's configuration
+  bool no_plain = false;             ///< with --full: skip the plain sparse path
   std::string json_file;             ///< also write the rows as JSON here
   std::string device = "cpu";        ///< "cuda": add the GPU configurations and the GPU table
   bool largest = false;  ///< with cuda: also the largest nx = 3 ny mesh that fits on the GPU

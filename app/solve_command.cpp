@@ -14,6 +14,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/io/result_writer.hpp"
 #include "signorini/io/summary_json.hpp"
+#include "signorini/problem/resultants.hpp"
 #include "timing_report.hpp"
 
 namespace signorini::app {
@@ -98,11 +99,13 @@ int solve(const SolveArguments& args, LogFormat format) {
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
   {
-    nlohmann::json event = summary_to_json(summary, model, spec);
+    nlohmann::json event = summary_to_json(result, model, spec);
     event.erase("problem");  // the settings event has it
     event["event"] = "summary";
+    const Resultants resultants = compute_resultants(model, result.u, result.l);
     progress.report(
-        fmt::format("\n{}\ntimings:\n{}", summary.brief_report(), timing_report(model, summary)),
+        fmt::format("\n{}{}\ntimings:\n{}", summary.brief_report(),
+                    resultants_report(resultants, model.mesh.dim()), timing_report(model, summary)),
         event);
   }
 
@@ -114,13 +117,18 @@ int solve(const SolveArguments& args, LogFormat format) {
   if (!summary.converged()) {
     progress.suspend();
     std::fflush(stdout);
-    fmt::print(stderr,
-               "signorini: not converged ({}): {}; KKT residuals: equilibrium {:.2e}, "
-               "penetration {:.2e}, sign {:.2e}, complementarity {:.2e}; results written to "
-               "'{}'\n",
-               enum_to_string(kTerminationNames, summary.termination), summary.message,
-               summary.kkt.equilibrium, summary.kkt.penetration, summary.kkt.sign,
-               summary.kkt.complementarity, args.output_dir);
+    // The KKT residuals are in the message already when they are why it stopped.
+    const std::string kkt =
+        summary.termination == Termination::KktResidualsTooLarge
+            ? std::string()
+            : fmt::format(
+                  "; KKT residuals: equilibrium {:.2e}, penetration {:.2e}, sign {:.2e}, "
+                  "complementarity {:.2e}",
+                  summary.kkt.equilibrium, summary.kkt.penetration, summary.kkt.sign,
+                  summary.kkt.complementarity);
+    fmt::print(stderr, "signorini: not converged ({}): {}{}; results written to '{}'\n",
+               enum_to_string(kTerminationNames, summary.termination), summary.message, kkt,
+               args.output_dir);
   }
 
   if (args.plot) {

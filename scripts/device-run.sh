@@ -15,12 +15,19 @@ bench_args=("$@")
 mkdir -p "$out"
 export LD_LIBRARY_PATH="$PWD/.device/lib:/usr/local/cuda/lib64${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 # CUDA's libraries where the toolkit keeps them elsewhere (e.g. Python wheels of nvidia-*).
-if ldd .device/bin/signorini | grep -q "libcu.*not found"; then
-  for lib in libcusparse.so.12 libcublas.so.13 libcudart.so.13; do
+# cuBLAS and cuSPARSE are opened when a GPU solve starts (backend/cuda/cuda_libraries.hpp), so
+# ldd does not list them: each is looked for on the library path, then anywhere.
+on_library_path() {
+  local d
+  for d in ${LD_LIBRARY_PATH//:/ }; do [[ -e "$d/$1" ]] && return 0; done
+  ldconfig -p 2>/dev/null | grep -q "$1"
+}
+for lib in libcusparse.so.12 libcublas.so.13 libcudart.so.13; do
+  if ! on_library_path "$lib"; then
     dir=$(dirname "$(find / -name "$lib" -not -path "*/proc/*" 2>/dev/null | head -1)")
     [[ "$dir" != "." ]] && export LD_LIBRARY_PATH="$LD_LIBRARY_PATH:$dir"
-  done
-fi
+  fi
+done
 # The packed C++ runtime only if the system's is too old for the build.
 if ! .device/bin/signorini --version > /dev/null 2>&1; then
   export LD_LIBRARY_PATH="$PWD/.device/lib-compat:$LD_LIBRARY_PATH"

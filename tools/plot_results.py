@@ -12,8 +12,16 @@ OUTDIR/summary.json, contact.csv and solution.vtu and writes, as PNG and SVG:
     deformed_von_mises     the deformed body x + s u(x) coloured by the von Mises stress
     convergence            the Uzawa residual per iteration and GNM iterations per Uzawa step
 
-Units are those of the paper's examples (metres and MPa). Exit status: 0 written, 2 a missing
-package or an unusable output folder (one line on stderr), 1 anything else.
+The unit labels come from the `units` setting (summary.json: problem.units, e.g. "m-MPa"); without
+it the labels carry no units. Each file's description (SVG dc:description, PNG Description) holds
+the limits of its main axes, "axes: x from X0 to X1, y from Y0 to Y1", in the units of the data.
+Exit status: 0 written, 2 a missing package or an unusable output folder (one line on stderr),
+1 anything else.
+
+Speed matters (the figures of a 480 x 160 mesh in about a second, docs/output.md): pyplot and
+mathtext are never used, the axes are placed by hand (no layout engine, which draws each figure
+once more), solution.vtu is mapped, not read, the mesh is one rasterised quadrilateral mesh, and
+on a machine with two cores or more two processes draw the figures.
 """
 
 import argparse
@@ -23,10 +31,11 @@ import math
 import os
 import sys
 import textwrap
-import xml.etree.ElementTree as ET
+from collections import namedtuple
 
 FIGURES = ["contact_displacement", "contact_pressure", "deformed_von_mises", "convergence"]
 FORMATS = ["png", "svg"]
+DPI = 150
 
 
 class UsageError(Exception):
@@ -38,20 +47,134 @@ def fail(status, message):
     sys.exit(status)
 
 
+def warn(message):
+    sys.stderr.write("signorini: warning: " + " ".join(str(message).split("\n")) + "\n")
+
+
+def missing_package(reason):
+    return UsageError(
+        f"plotting needs numpy and matplotlib for {sys.executable} ({reason}); on Debian: "
+        "apt-get install python3-matplotlib"
+    )
+
+
+def check_plotting():
+    """Whether numpy and matplotlib can be found, without importing them (which takes half a
+    second): `solve --plot` asks before every solve."""
+    import importlib.util
+
+    for name in ("numpy", "matplotlib"):
+        try:
+            found = importlib.util.find_spec(name) is not None
+        except (ImportError, ValueError) as e:
+            raise missing_package(e)
+        if not found:
+            raise missing_package(f"No module named '{name}'")
+
+
+def keep_freed_memory():
+    """Memory that is freed stays with the process and serves the next figure: on a virtual
+    machine a page fault on fresh memory can cost 20 microseconds, and a 150 dpi picture touches
+    thousands of pages (glibc's mallopt: no mmap for large blocks, no trimming of the heap)."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL("libc.so.6")
+        libc.mallopt(-3, 1 << 30)  # M_MMAP_THRESHOLD
+        libc.mallopt(-1, 1 << 30)  # M_TRIM_THRESHOLD
+    except (ImportError, OSError, AttributeError):
+        pass  # not glibc: only slower
+
+
 def import_plotting():
+    # numpy's BLAS threads are of no use here and take CPU time from the drawing.
+    for name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ.setdefault(name, "1")
+    keep_freed_memory()
     try:
         import numpy  # noqa: F401
         import matplotlib
 
-        matplotlib.use("Agg")  # files only, no display needed
         # Text in the SVG files stays text (searchable, editable), not glyph outlines.
         matplotlib.rcParams["svg.fonttype"] = "none"
-        import matplotlib.pyplot  # noqa: F401
+        # No TeX-like math: its parser takes longer to set up than drawing all the figures, and a
+        # '$' in a problem's name is printed as it is.
+        matplotlib.rcParams["text.parse_math"] = False
+        matplotlib.rcParams["axes.formatter.use_mathtext"] = False
+        # SVG files that are the same for the same results (no date, no random ids).
+        matplotlib.rcParams["svg.hashsalt"] = "signorini"
+        import matplotlib.figure  # noqa: F401
+        import matplotlib.backends.backend_agg  # noqa: F401
+        import PIL.Image
     except ImportError as e:
-        raise UsageError(
-            f"plotting needs numpy and matplotlib for {sys.executable} ({e}); on Debian: "
-            "apt-get install python3-matplotlib"
-        )
+        raise missing_package(e)
+    if hasattr(PIL.Image.core, "set_blocks_max"):
+        PIL.Image.core.set_blocks_max(64)  # Pillow, too, keeps the memory of its images
+    # What is imported stays: the collections after each figure (draw_and_save) look at the
+    # figure's objects only.
+    import gc
+
+    gc.freeze()
+
+
+# Units -------------------------------------------------------------------------------------
+
+# The `units` setting, "{length}-{stress}" -> (length, stress and pressure, force per unit of
+# thickness = stress x length). To accept another setting, add a row.
+UNIT_SYSTEMS = {
+    "m-Pa": ("m", "Pa", "N/m"),
+    "m-kPa": ("m", "kPa", "kN/m"),
+    "m-MPa": ("m", "MPa", "MN/m"),
+    "m-GPa": ("m", "GPa", "GN/m"),
+    "mm-MPa": ("mm", "MPa", "N/mm"),
+}
+# Other names of the same systems: a force unit instead of a stress unit.
+UNIT_ALIASES = {
+    "mm-N": "mm-MPa",  # N and mm: stresses in N/mm^2 = MPa
+    "m-N": "m-Pa",  # N and m: stresses in N/m^2 = Pa
+}
+
+Units = namedtuple("Units", ["length", "stress", "force_per_thickness"])
+NO_UNITS = Units("", "", "")
+
+
+def units_of(setting):
+    """The unit labels of a `units` setting; NO_UNITS (empty strings) when it is absent (None) or
+    not one of UNIT_SYSTEMS and UNIT_ALIASES."""
+    if not isinstance(setting, str):
+        return NO_UNITS
+    row = UNIT_SYSTEMS.get(UNIT_ALIASES.get(setting, setting))
+    return Units(*row) if row else NO_UNITS
+
+
+def units_of_summary(summary, warnings=True):
+    problem = summary.get("problem")
+    setting = problem.get("units") if isinstance(problem, dict) else None
+    units = units_of(setting)
+    if warnings and setting is not None and units == NO_UNITS:
+        warn(f"units = {json.dumps(setting)} in summary.json is not one of "
+             f"{', '.join(list(UNIT_SYSTEMS) + list(UNIT_ALIASES))}: the figures have no units")
+    return units
+
+
+SUPERSCRIPTS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def power_text(k):
+    """10^k in plain text: 10⁻⁵."""
+    return "10" + str(k).translate(SUPERSCRIPTS)
+
+
+def axis_label(quantity, unit, k=0):
+    """'quantity (unit)', with the power of ten of the axis: 'quantity (10⁻⁵ m)'; without a unit
+    'quantity' or 'quantity (×10⁻⁵)'."""
+    if k != 0:
+        return f"{quantity} ({power_text(k)} {unit})" if unit else f"{quantity} (×{power_text(k)})"
+    return f"{quantity} ({unit})" if unit else quantity
+
+
+def with_unit(number_text, unit):
+    return f"{number_text} {unit}" if unit else number_text
 
 
 # Reading the results -----------------------------------------------------------------------
@@ -69,21 +192,46 @@ def read_summary(outdir):
 
 
 def read_contact_csv(outdir):
+    """The columns of contact.csv as arrays; the normal (n_x, n_y) is (0, -1), the paper's bottom
+    edge, in the files of older versions, which did not write it."""
     import numpy as np
 
     path = os.path.join(outdir, "contact.csv")
     try:
         with open(path, newline="", encoding="utf-8") as f:
-            rows = list(csv.DictReader(f))
-        columns = {k: np.array([float(r[k]) for r in rows]) for k in
-                   ("x", "y", "u_n", "u_t", "pressure", "gap")}
+            rows = list(csv.reader(f))
+        header = [h.strip() for h in rows[0]] if rows else []
+        body = np.array([[float(v) for v in r] for r in rows[1:] if r], dtype=float)
+        if body.size == 0:
+            body = body.reshape(0, len(header))
+        if body.ndim != 2 or body.shape[1] != len(header):
+            raise ValueError("rows of different lengths")
+        columns = {k: body[:, header.index(k)] for k in ("x", "y", "u_n", "u_t", "pressure", "gap")}
+        if "n_x" in header and "n_y" in header:
+            columns["n_x"] = body[:, header.index("n_x")]
+            columns["n_y"] = body[:, header.index("n_y")]
+        else:
+            columns["n_x"] = np.zeros(len(body))
+            columns["n_y"] = -np.ones(len(body))
     except FileNotFoundError:
         raise UsageError(f"'{path}' not found: is '{outdir}' the output folder of signorini solve?")
-    except (OSError, KeyError, TypeError, ValueError) as e:
+    except (OSError, IndexError, TypeError, ValueError) as e:
         raise UsageError(f"cannot read '{path}': expected the columns x,y,u_n,u_t,pressure,gap ({e})")
-    if len(rows) == 0:
+    if len(body) == 0:
         raise UsageError(f"'{path}' has no contact nodes")
     return columns
+
+
+def check_results(outdir):
+    """The errors that need no numpy, said before it and matplotlib are imported (half a second):
+    summary.json readable, contact.csv and solution.vtu there."""
+    read_summary(outdir)
+    path = os.path.join(outdir, "contact.csv")
+    if not os.path.exists(path):
+        raise UsageError(f"'{path}' not found: is '{outdir}' the output folder of signorini solve?")
+    path = os.path.join(outdir, "solution.vtu")
+    if not os.path.exists(path):
+        raise UsageError(f"'{path}' not found (results of an older signorini? run solve again)")
 
 
 VTK_TYPES = {"Float64": "f8", "Float32": "f4", "Int64": "i8", "Int32": "i4", "UInt64": "u8",
@@ -91,21 +239,31 @@ VTK_TYPES = {"Float64": "f8", "Float32": "f4", "Int64": "i8", "Int32": "i4", "UI
 
 
 def read_vtu(path):
-    """The points, cells and point data of a .vtu written by signorini (raw appended data)."""
+    """The points, cells and point data of a .vtu written by signorini (raw appended data, read
+    with numpy: docs/output.md)."""
+    import mmap
+    import xml.etree.ElementTree as ET
+
     import numpy as np
 
     try:
         with open(path, "rb") as f:
-            raw = f.read()
+            # Mapped, not read: only the pages of the arrays used are touched, in a tenth of the
+            # time. (An empty file cannot be mapped.)
+            empty = os.fstat(f.fileno()).st_size == 0
+            raw = b"" if empty else mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_READ)
     except FileNotFoundError:
         raise UsageError(f"'{path}' not found (results of an older signorini? run solve again)")
-    except OSError as e:
+    except (OSError, ValueError) as e:
         raise UsageError(f"cannot read '{path}': {e}")
     try:
         start = raw.find(b"<AppendedData")
         if start < 0:
             raise ValueError("no <AppendedData> block")
-        underscore = raw.index(b"_", raw.index(b">", start))
+        close = raw.find(b">", start)
+        underscore = raw.find(b"_", close) if close >= 0 else -1
+        if underscore < 0:
+            raise ValueError("no '_' at the start of the appended data")
         data = memoryview(raw)[underscore + 1:]
         root = ET.fromstring(raw[:start].decode("utf-8") + "</VTKFile>")
         order = "<" if root.get("byte_order", "LittleEndian") == "LittleEndian" else ">"
@@ -157,7 +315,8 @@ def magnification(points, displacement):
     import numpy as np
 
     size = float(np.max(points.max(axis=0) - points.min(axis=0)))
-    largest = float(np.max(np.linalg.norm(displacement, axis=1))) if len(displacement) else 0.0
+    largest = float(np.sqrt(np.max(np.einsum("ij,ij->i", displacement, displacement)))) \
+        if len(displacement) else 0.0
     if largest <= 0.0 or size <= 0.0 or not math.isfinite(largest):
         return 1.0
     return max(1.0, nice_below(0.1 * size / largest))
@@ -175,41 +334,42 @@ def power_of_ten(values):
     return 0 if -2 <= k <= 2 else k
 
 
-def unit_label(quantity, k, unit):
-    return f"{quantity} ({unit})" if k == 0 else f"{quantity} ($10^{{{k}}}$ {unit})"
+def padded(lo, hi, fraction=0.05):
+    """[lo, hi] widened by `fraction` of its length either side (a little around 0 if empty)."""
+    span = hi - lo
+    if not span > 0:
+        span = abs(hi) if hi != 0 else 1.0
+    return lo - fraction * span, hi + fraction * span
 
 
-def boundary_coordinate(contact):
+def boundary_coordinate(contact, units):
     """The abscissa of the contact-boundary plots: x or y if the boundary is straight along it,
     else the arc length from the first contact node."""
     import numpy as np
 
     x, y = contact["x"], contact["y"]
     if np.ptp(y) <= 1e-9 * max(np.ptp(x), 1e-300):
-        return x, "x (m)"
+        return x, axis_label("x", units.length)
     if np.ptp(x) <= 1e-9 * max(np.ptp(y), 1e-300):
-        return y, "y (m)"
+        return y, axis_label("y", units.length)
     s = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(x), np.diff(y)))])
-    return s, "arc length along the contact boundary (m)"
+    return s, axis_label("arc length along the contact boundary", units.length)
 
 
 def contact_intervals(t, active):
     """[(t_begin, t_end)] of the runs of active nodes, extended half a spacing either side so that
     a single active node still shows."""
-    intervals = []
+    import numpy as np
+
     n = len(t)
-    j = 0
-    while j < n:
-        if not active[j]:
-            j += 1
-            continue
-        k = j
-        while k + 1 < n and active[k + 1]:
-            k += 1
+    a = np.concatenate([[False], np.asarray(active, dtype=bool), [False]])
+    starts = np.flatnonzero(a[1:] & ~a[:-1])
+    ends = np.flatnonzero(~a[1:] & a[:-1]) - 1
+    intervals = []
+    for j, k in zip(starts, ends):
         lo = t[j] - 0.5 * (t[j] - t[j - 1]) if j > 0 else t[j]
         hi = t[k] + 0.5 * (t[k + 1] - t[k]) if k + 1 < n else t[k]
-        intervals.append((min(lo, hi), max(lo, hi)))
-        j = k + 1
+        intervals.append((float(min(lo, hi)), float(max(lo, hi))))
     return intervals
 
 
@@ -238,96 +398,295 @@ def title_of(summary):
     return text
 
 
-# The figures -------------------------------------------------------------------------------
+# Layout ------------------------------------------------------------------------------------
+#
+# The axes are placed by hand, from the sizes of the texts around them: a layout engine
+# (constrained layout) would draw every figure once more to measure it, which takes longer than
+# drawing it. Sizes are in points (1/72 inch).
+
+BORDER = 5.0  # white around the drawing
+TICK = 3.5 + 3.5  # tick length and the gap to its label
+LABEL_PAD = 4.0  # between the tick labels and the axis label
+TITLE_PAD = 6.0  # between an axes and its title
+TEXT_SIZE = 10.0  # tick labels, axis labels, titles
+LEGEND_SIZE = 8.0
 
 
-def figure_displacement(plt, summary, contact):
-    import numpy as np
+def new_figure(width, height):
+    """A figure with its own Agg canvas (which keeps one renderer, and the sizes of the texts it
+    measured, for the PNG), without a layout engine."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
 
-    t, xlabel = boundary_coordinate(contact)
-    values = np.concatenate([contact["u_n"], contact["u_t"], contact["gap"]])
-    k = power_of_ten(values)
-    scale = 10.0 ** k
-    fig, ax = plt.subplots(figsize=(8, 4.5), layout="constrained")
-    shade_contact(ax, contact_intervals(t, contact["pressure"] > 0))
-    ax.axhline(0.0, color="0.6", lw=0.8)
-    has_gap = bool(np.any(contact["gap"] != 0.0))
-    ax.plot(t, contact["u_n"] / scale, color="tab:blue", lw=1.6,
-            label=r"normal $u_\nu = u\cdot\nu$ ($\nu$: outward normal)" if has_gap else
-            r"normal $u_\nu = u\cdot\nu$ ($\nu$ outward: $u_\nu < 0$ lifts off)")
-    ax.plot(t, contact["u_t"] / scale, color="tab:green", lw=1.6,
-            label=r"tangential $u_\tau = u\cdot\tau$")
-    if has_gap:
-        ax.plot(t, contact["gap"] / scale, color="k", lw=1.0, ls="--",
-                label=r"gap $g$ (the bound: $u_\nu \leq g$)")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(unit_label("displacement", k, "m"))
-    ax.set_title(wrapped(title_of(summary) + "\nDisplacement along the contact boundary", 8),
-                 fontsize=10)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="best")
+    fig = Figure(figsize=(width, height))
+    FigureCanvasAgg(fig)
     return fig
 
 
-def figure_pressure(plt, summary, contact):
+class Measure:
+    """Sizes of texts as matplotlib draws them."""
+
+    def __init__(self):
+        from matplotlib.backends.backend_agg import RendererAgg
+
+        self.renderer = RendererAgg(1, 1, 72)  # 72 dpi: pixels are points
+        self.fonts = {}
+        self.sizes = {}
+
+    def size(self, text, size):
+        """(width, height, descent) of one line."""
+        key = (text, size)
+        if key not in self.sizes:
+            self.sizes[key] = self.renderer.get_text_width_height_descent(text, self.font(size),
+                                                                          False)
+        return self.sizes[key]
+
+    def font(self, size):
+        from matplotlib.font_manager import FontProperties
+
+        if size not in self.fonts:
+            self.fonts[size] = FontProperties(size=size)
+        return self.fonts[size]
+
+    def width(self, text, size=TEXT_SIZE):
+        return max((self.size(line, size)[0] for line in text.split("\n") if line), default=0.0)
+
+    def height(self, text, size=TEXT_SIZE):
+        """Of a block of lines, 1.2 lines apart (matplotlib's line spacing); 0 for no text."""
+        if not text:
+            return 0.0
+        _, h, d = self.size("lp", size)
+        return (text.count("\n")) * (h - d) * 1.2 + h
+
+    def tick_labels(self, axis):
+        """The tick labels `axis` will draw with its present limits and size (the major ones,
+        and the minor ones a log axis labels when it spans less than a few decades); the major
+        ticks; the offset text."""
+        lo, hi = sorted(axis.get_view_interval())
+        slack = 1e-9 * (hi - lo)
+
+        def within(locator):
+            return [x for x in locator() if lo - slack <= x <= hi + slack]
+
+        locs = within(axis.get_major_locator())
+        formatter = axis.get_major_formatter()
+        labels = [t for t in formatter.format_ticks(locs) if t]
+        minor = axis.get_minor_formatter()
+        if type(minor).__name__ != "NullFormatter":
+            labels += [t for t in minor.format_ticks(within(axis.get_minor_locator())) if t]
+        offset = formatter.get_offset() if hasattr(formatter, "get_offset") else ""
+        return labels, locs, offset
+
+    def left(self, ax):
+        """Room for the y tick labels and the y label of `ax`."""
+        labels, _, offset = self.tick_labels(ax.yaxis)
+        room = TICK + max((self.width(t) for t in labels), default=0.0)
+        if ax.get_ylabel():
+            room += LABEL_PAD + self.height(ax.get_ylabel())
+        return room, self.height(offset)
+
+    def bottom(self, ax):
+        """Room for the x tick labels and the x label of `ax`; and how far the last tick label
+        reaches beyond the right end of the axis."""
+        labels, locs, offset = self.tick_labels(ax.xaxis)
+        room = TICK + (self.height("0") if labels else 0.0)
+        if ax.get_xlabel():
+            room += LABEL_PAD + self.height(ax.get_xlabel())
+        room += self.height(offset)
+        lo, hi = sorted(ax.get_xlim())
+        beyond = 0.0
+        if labels and locs and hi > lo and len(labels) == len(locs):
+            # The label of a tick at the right end sticks out by half its width.
+            if abs(locs[-1] - hi) <= 0.02 * (hi - lo):
+                beyond = 0.5 * self.width(labels[-1])
+        return room, beyond
+
+
+def place(fig, ax, left, bottom, width, height):
+    """Puts `ax` at (left, bottom), width x height, in points from the figure's lower left."""
+    w, h = fig.get_size_inches() * 72.0
+    ax.set_position([left / w, bottom / h, width / w, height / h])
+
+
+def place_single(fig, ax, measure, title):
+    """The layout of a figure with one axes and a title above it."""
+    w, h = fig.get_size_inches() * 72.0
+    top = BORDER + measure.height(title) + TITLE_PAD
+    for _ in range(2):  # the number of ticks depends on the size of the axes
+        left, offset = measure.left(ax)
+        bottom, beyond = measure.bottom(ax)
+        left += BORDER
+        bottom += BORDER
+        right = BORDER + max(beyond, 2.0)
+        place(fig, ax, left, bottom, w - left - right, h - bottom - top - offset)
+
+
+def legend_columns(measure, labels, width, most=4):
+    """(columns, rows, height) of a frameless legend of `labels` that fits `width` points."""
+    em = LEGEND_SIZE
+    entry = [2.0 * em + 0.8 * em + measure.width(t, LEGEND_SIZE) for t in labels]
+    n = len(labels)
+    for columns in range(min(most, n), 0, -1):
+        rows = -(-n // columns)
+        # matplotlib fills the columns one after the other, the first n % columns with one entry
+        # more than the others
+        sizes = [n // columns + (1 if c < n % columns else 0) for c in range(columns)]
+        starts = [sum(sizes[:c]) for c in range(columns)]
+        widths = [max(entry[b:b + k], default=0.0) for b, k in zip(starts, sizes)]
+        total = sum(widths) + 2.0 * em * (columns - 1) + 2 * 0.4 * em
+        if total <= width or columns == 1:
+            break
+    line = measure.height("lp", LEGEND_SIZE)
+    height = 2 * 0.4 * em + rows * line + (rows - 1) * 0.5 * em
+    return columns, rows, height
+
+
+def describe_limits(ax, yscale=1.0):
+    """The axis limits in the units of the data, for the files' description (tests read it)."""
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    return f"axes: x from {x0:.6g} to {x1:.6g}, y from {y0 * yscale:.6g} to {y1 * yscale:.6g}"
+
+
+# The figures -------------------------------------------------------------------------------
+#
+# Each returns (figure, description): the description goes into the files' metadata.
+
+
+def figure_displacement(summary, contact, units, measure):
     import numpy as np
 
-    t, xlabel = boundary_coordinate(contact)
+    t, xlabel = contact["t"], contact["t_label"]
+    u_n, u_t, gap = contact["u_n"], contact["u_t"], contact["gap"]
+    # The displacements set the axis; the gap, which may be many times larger (a curved
+    # foundation), is drawn where it falls within reach of them.
+    shown = np.concatenate([u_n, u_t, [0.0]])
+    shown = shown[np.isfinite(shown)]
+    lo, hi = (float(shown.min()), float(shown.max())) if shown.size else (0.0, 0.0)
+    has_gap = bool(np.any(gap != 0.0))
+    finite_gap = gap[np.isfinite(gap)]
+    gap_clipped = False
+    if has_gap and finite_gap.size:
+        span = hi - lo if hi > lo else max(float(np.max(np.abs(finite_gap))), 1e-300)
+        # At most one span of the displacements more on either side: the curves keep at least a
+        # third of the height.
+        g_lo, g_hi = float(finite_gap.min()), float(finite_gap.max())
+        lo, hi = min(lo, max(g_lo, lo - span)), max(hi, min(g_hi, hi + span))
+        gap_clipped = g_lo < lo or g_hi > hi
+    k = power_of_ten(np.array([lo, hi]))
+    scale = 10.0 ** k
+    y0, y1 = padded(lo / scale, hi / scale)
+
+    fig = new_figure(8, 4.5)
+    ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+    shade_contact(ax, contact["intervals"])
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.plot(t, u_n / scale, color="tab:blue", lw=1.6,
+            label="normal uₙ = u·ν (ν: outward normal)" if has_gap else
+            "normal uₙ = u·ν (ν outward: uₙ < 0 lifts off)")
+    ax.plot(t, u_t / scale, color="tab:green", lw=1.6, label="tangential uₜ = u·τ")
+    if has_gap:
+        ax.plot(t, gap / scale, color="k", lw=1.0, ls="--",
+                label="gap g (the bound: uₙ ≤ g)" +
+                      (", partly off the axis" if gap_clipped else ""))
+    ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
+    ax.set_ylim(y0, y1)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(axis_label("displacement", units.length, k))
+    title = wrapped(title_of(summary) + "\nDisplacement along the contact boundary", 8)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=LEGEND_SIZE, loc="best")
+    place_single(fig, ax, measure, title)
+    return fig, describe_limits(ax, scale)
+
+
+def figure_pressure(summary, contact, units, measure):
+    import numpy as np
+
+    t, xlabel = contact["t"], contact["t_label"]
     p = contact["pressure"]
-    fig, ax = plt.subplots(figsize=(8, 4.5), layout="constrained")
-    intervals = contact_intervals(t, p > 0)
+    k = power_of_ten(p)  # large numbers in Pa: the power of ten goes into the axis label
+    scale = 10.0 ** k
+    fig = new_figure(8, 4.5)
+    ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+    intervals = contact["intervals"]
     shade_contact(ax, intervals)
-    ax.plot(t, p, color="tab:red", lw=1.6, label=r"contact pressure $l = -\sigma_\nu$")
+    ax.plot(t, p / scale, color="tab:red", lw=1.6, label="contact pressure l = −σₙ")
     touching = p > 0
     if np.any(touching):
-        ax.plot(t[touching], p[touching], "o", color="tab:red", ms=2.5,
+        ax.plot(t[touching], p[touching] / scale, "o", color="tab:red", ms=2.5,
                 label=f"nodes in contact: {int(np.count_nonzero(touching))} of {len(p)}")
     ax.axhline(0.0, color="0.6", lw=0.8)
     ax.set_xlabel(xlabel)
-    ax.set_ylabel("contact pressure (MPa)")
-    ax.set_ylim(bottom=min(0.0, float(np.nanmin(p))) - 0.02 * max(float(np.nanmax(p)), 1e-300))
-    where = ", ".join(f"{lo:.3g} to {hi:.3g} m" for lo, hi in intervals[:4])
+    ax.set_ylabel(axis_label("contact pressure", units.stress, k))
+    ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
+    top = max(float(np.nanmax(p)), 0.0) / scale
+    bottom = min(0.0, float(np.nanmin(p)) / scale)
+    ax.set_ylim(bottom - 0.02 * max(top, 1e-300), top + 0.05 * (top - bottom) if top > bottom
+                else 1.0)
+    where = ", ".join(with_unit(f"{lo:.3g} to {hi:.3g}", units.length) for lo, hi in intervals[:4])
     if len(intervals) > 4:
         where += ", ..."
     subtitle = "Contact pressure along the contact boundary"
     subtitle += f" (touching: {where})" if intervals else " (no contact)"
-    ax.set_title(wrapped(title_of(summary) + "\n" + subtitle, 8), fontsize=10)
+    title = wrapped(title_of(summary) + "\n" + subtitle, 8)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     force = summary.get("contact_force")
     if isinstance(force, (int, float)):
-        ax.plot([], [], " ", label=f"total contact force {force:.4g} MN/m")
+        ax.plot([], [], " ",
+                label="total contact force " + with_unit(f"{force:.4g}", units.force_per_thickness))
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="best")
-    return fig
+    ax.legend(fontsize=LEGEND_SIZE, loc="best")
+    place_single(fig, ax, measure, title)
+    return fig, describe_limits(ax, scale)
 
 
-def triangles_of(vtu):
-    """Triangles of the cells (quads split along a diagonal) and the boundary edges."""
+def structured_grid(vtu):
+    """(ny + 1, nx + 1) if the cells are the quadrilaterals of a rectangle mesh numbered row by
+    row (node i + j (nx + 1), as signorini numbers them), else None."""
+    import numpy as np
+
+    conn, types = vtu["connectivity"], vtu["types"]
+    n_points = len(vtu["points"])
+    if len(types) == 0 or not np.all(types == 9) or conn.size != 4 * len(types):
+        return None
+    q = conn.reshape(-1, 4)
+    nxp = int(q[0, 3])
+    if nxp < 2 or n_points % nxp != 0:
+        return None
+    nyp = n_points // nxp
+    if nyp < 2 or (nxp - 1) * (nyp - 1) != len(q):
+        return None
+    n0 = (np.arange(nyp - 1)[:, None] * nxp + np.arange(nxp - 1)[None, :]).ravel()
+    expected = np.stack([n0, n0 + 1, n0 + 1 + nxp, n0 + nxp], axis=1)
+    return (nyp, nxp) if np.array_equal(q, expected) else None
+
+
+def cells_and_outline(vtu):
+    """The cells as polygons of point numbers (an (n, k) array for one kind of cell, else a list)
+    and the outline: the boundary edges joined into polylines."""
     import numpy as np
 
     conn, offsets, types = vtu["connectivity"], vtu["offsets"], vtu["types"]
-    if len(types) and np.all(types == 9):  # quadrilaterals
-        q = conn.reshape(-1, 4)
-        tri = np.vstack([q[:, [0, 1, 2]], q[:, [0, 2, 3]]])
-        edges = np.vstack([q[:, [0, 1]], q[:, [1, 2]], q[:, [2, 3]], q[:, [3, 0]]])
-    elif len(types) and np.all(types == 5):  # triangles
-        tri = conn.reshape(-1, 3)
-        edges = np.vstack([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+    if len(types) and np.all(types == 9) and conn.size == 4 * len(types):
+        cells = conn.reshape(-1, 4)
+    elif len(types) and np.all(types == 5) and conn.size == 3 * len(types):
+        cells = conn.reshape(-1, 3)
     else:
-        tri_list, edge_list = [], []
-        begin = 0
-        for end, kind in zip(offsets, types):
-            c = conn[begin:end]
-            begin = end
-            if kind in (5, 9):
-                tri_list += [[c[0], c[i], c[i + 1]] for i in range(1, len(c) - 1)]
-                edge_list += [[c[i], c[(i + 1) % len(c)]] for i in range(len(c))]
-        if not tri_list:
+        begins = np.concatenate([[0], offsets[:-1]])
+        cells = [conn[b:e] for b, e, kind in zip(begins, offsets, types) if kind in (5, 9)]
+        if not cells:
             raise UsageError("solution.vtu has no triangles or quadrilaterals to draw")
-        tri, edges = np.array(tri_list), np.array(edge_list)
+    if isinstance(cells, list):
+        edges = np.array([[c[i], c[(i + 1) % len(c)]] for c in cells for i in range(len(c))])
+    else:
+        edges = np.stack([cells, np.roll(cells, -1, axis=1)], axis=2).reshape(-1, 2)
     # An edge of one cell only is on the boundary.
-    key = np.sort(edges, axis=1)
-    _, index, count = np.unique(key, axis=0, return_index=True, return_counts=True)
-    return tri, chains_of(edges[index[count == 1]])
+    a = np.minimum(edges[:, 0], edges[:, 1]).astype(np.int64)
+    b = np.maximum(edges[:, 0], edges[:, 1]).astype(np.int64)
+    _, index, count = np.unique(a * (int(b.max()) + 1) + b, return_index=True, return_counts=True)
+    return cells, chains_of(edges[index[count == 1]])
 
 
 def chains_of(edges):
@@ -357,10 +716,53 @@ def chains_of(edges):
     return chains
 
 
-def figure_deformed(plt, summary, vtu, boundary_vtu, scale):
+def draw_body(ax, vtu, deformed, values, clim, cell_pixels):
+    """The deformed body coloured by `values`, rasterised (in the SVG too: 10^5 shaded cells as
+    vectors would make a file of 100 MB); returns the colour mapping and the outline (chains of
+    point numbers). Cells of more than a few pixels are shaded smoothly between the nodes
+    (Gouraud); smaller ones get the mean of their nodes, which looks the same and is drawn many
+    times faster."""
+    import numpy as np
+    from matplotlib.collections import PolyCollection
+
+    smooth = cell_pixels >= 3.5
+    grid = structured_grid(vtu)
+    if grid is not None:
+        nyp, nxp = grid
+        X = deformed[:, 0].reshape(nyp, nxp)
+        Y = deformed[:, 1].reshape(nyp, nxp)
+        C = values.reshape(nyp, nxp)
+        if not smooth:
+            C = 0.25 * (C[:-1, :-1] + C[:-1, 1:] + C[1:, :-1] + C[1:, 1:])
+        image = ax.pcolormesh(X, Y, C, shading="gouraud" if smooth else "flat", cmap="viridis",
+                              vmin=clim[0], vmax=clim[1], rasterized=True, antialiased=False)
+        ring = np.concatenate([np.arange(nxp),                                     # bottom
+                               np.arange(2 * nxp - 1, nyp * nxp, nxp),             # right
+                               np.arange(nyp * nxp - 2, (nyp - 1) * nxp - 1, -1),  # top
+                               np.arange((nyp - 2) * nxp, -1, -nxp)])              # left
+        return image, [ring]
+    cells, outline = cells_and_outline(vtu)
+    if smooth or isinstance(cells, list):
+        from matplotlib.tri import Triangulation
+
+        if isinstance(cells, list):
+            tri = np.array([[c[0], c[i], c[i + 1]] for c in cells for i in range(1, len(c) - 1)])
+        else:
+            tri = np.concatenate([cells[:, [0, i, i + 1]] for i in range(1, cells.shape[1] - 1)])
+        mesh = Triangulation(deformed[:, 0], deformed[:, 1], tri)
+        image = ax.tripcolor(mesh, values, shading="gouraud" if smooth else "flat",
+                             cmap="viridis", vmin=clim[0], vmax=clim[1], rasterized=True)
+    else:
+        image = PolyCollection(deformed[cells], array=values[cells].mean(axis=1), cmap="viridis",
+                               edgecolors="none", antialiased=False, rasterized=True)
+        image.set_clim(*clim)
+        ax.add_collection(image, autolim=False)
+    return image, outline
+
+
+def figure_deformed(summary, vtu, contact, scale, units, measure):
     import numpy as np
     from matplotlib.collections import LineCollection
-    from matplotlib.tri import Triangulation
 
     points = vtu["points"][:, :2]
     data = vtu["point_data"]
@@ -368,79 +770,145 @@ def figure_deformed(plt, summary, vtu, boundary_vtu, scale):
         if name not in data:
             raise UsageError(f"solution.vtu has no point data '{name}'")
     u = data["displacement"][:, :2]
-    vm = data["von_mises"]
+    vm = np.asarray(data["von_mises"], dtype=float)
     s = magnification(points, u) if scale is None else scale
     deformed = points + s * u
-    tri, boundary = triangles_of(vtu)
 
-    # The rigid foundation at x + s g nu along the contact boundary: the gap is magnified as the
-    # displacement is, so that the nodes in contact lie on it.
-    foundation, foundation_label = None, ""
-    if boundary_vtu is not None:
-        bd = boundary_vtu["point_data"]
-        if "gap" in bd and "normal" in bd:
-            g = bd["gap"]
-            foundation = boundary_vtu["points"][:, :2] + s * g[:, None] * bd["normal"][:, :2]
-            foundation_label = "rigid foundation" + (f" (gap magnified {s:g} times)"
-                                                     if np.any(g) else "")
+    # The rigid foundation at its true place, x_j + g_j nu_j: the displacement is magnified s
+    # times, the foundation is not (with a curved foundation it would be thousands of body sizes
+    # away). Where the gap is not 0, the dashed line x_j + s g_j nu_j is where the magnified body
+    # meets the foundation: the nodes in contact lie on it.
+    normal = np.stack([contact["n_x"], contact["n_y"]], axis=1)
+    base = np.stack([contact["x"], contact["y"]], axis=1)
+    gap = contact["gap"]
+    foundation = base + gap[:, None] * normal
+    magnified = base + s * gap[:, None] * normal
+    has_gap = bool(np.any(gap != 0.0))
 
-    drawn = np.vstack([points, deformed] + ([foundation] if foundation is not None else []))
+    # The drawing: the body, undeformed and deformed, and the foundation near it (at most 10 % of
+    # the body's size beyond the body).
     extent = points.max(axis=0) - points.min(axis=0)
-    margin = 0.04 * max(extent)
-    lo = drawn.min(axis=0) - margin
-    hi = drawn.max(axis=0) + margin
-    # The figure takes the shape of the drawing: axes of at most 7.5 x 6.5 inches, plus room for
-    # the title, the legend, the labels and the colour bar.
+    size = float(max(extent)) if float(max(extent)) > 0 else 1.0
+    lo = np.minimum(points.min(axis=0), deformed.min(axis=0))
+    hi = np.maximum(points.max(axis=0), deformed.max(axis=0))
+    finite = foundation[np.all(np.isfinite(foundation), axis=1)]
+    if len(finite):
+        reach = 0.1 * size
+        lo, hi = (np.minimum(lo, np.maximum(finite.min(axis=0), lo - reach)),
+                  np.maximum(hi, np.minimum(finite.max(axis=0), hi + reach)))
+    lo, hi = lo - 0.04 * size, hi + 0.04 * size
+    inside = np.all((finite >= lo) & (finite <= hi), axis=1) if len(finite) else np.zeros(0, bool)
+
+    # The axes take the shape of the drawing, at most 7.5 x 6.5 inches.
     aspect = float((hi[1] - lo[1]) / (hi[0] - lo[0]))
-    axes_width = min(7.5, 6.5 / aspect)
-    width = max(8.0, axes_width + 2.6)  # room for the title of a tall body
-    fig, ax = plt.subplots(figsize=(width, axes_width * aspect + 2.4), layout="constrained")
-    mesh = Triangulation(deformed[:, 0], deformed[:, 1], tri)
-    # Rasterised in the SVG too: 10^5 shaded triangles as vectors would make a file of 100 MB.
+    axes_w = min(7.5, 6.5 / aspect) * 72.0
+    axes_h = axes_w * aspect
+
     # A stress singularity (a corner where a clamp meets a load) can exceed the rest of the body
     # many times over at one node; the colour scale then ends at the 99.9th percentile, so that
     # the body is not drawn in one colour, and the colour bar says so.
     top = float(np.nanmax(vm))
     clip = float(np.nanpercentile(vm, 99.9))
     clipped = top > 1.1 * clip
-    image = ax.tripcolor(mesh, vm, shading="gouraud", cmap="viridis", rasterized=True,
-                         vmin=float(np.nanmin(vm)), vmax=clip if clipped else top)
-    ax.add_collection(LineCollection([points[c] for c in boundary], colors="0.3",
-                                     linewidths=0.9, linestyles=(0, (4, 3)),
-                                     label="undeformed body"))
-    ax.add_collection(LineCollection([deformed[c] for c in boundary], colors="k",
-                                     linewidths=0.6))
+    k = power_of_ten(np.array([top]))
+    vm_scale = 10.0 ** k
+    clim = (float(np.nanmin(vm)) / vm_scale, (clip if clipped else top) / vm_scale)
+    n_cells = max(len(vtu["types"]), 1)
+    cell_pixels = (axes_w / 72.0 * DPI * math.sqrt(extent[0] * extent[1] / n_cells)
+                   / (hi[0] - lo[0])) if extent[0] > 0 and extent[1] > 0 else 0.0
 
-    if foundation is not None:
-        ax.plot(foundation[:, 0], foundation[:, 1], color="tab:brown", lw=3, alpha=0.8,
-                solid_capstyle="butt", label=foundation_label, zorder=0)
+    # The axes at their final size first (the ticks depend on it), their place comes later.
+    bar_gap, bar_w = 0.2 * 72, max(9.0, 0.9 * axes_h / 20)
+    fig = new_figure((axes_w + 200) / 72, (axes_h + 200) / 72)
+    ax = fig.add_axes([0, 0, 1, 1])
+    cax = fig.add_axes([0, 0, 1, 1])
+    place(fig, ax, 50, 50, axes_w, axes_h)
+    place(fig, cax, 60 + axes_w, 50, bar_w, 0.9 * axes_h)
+    image, outline = draw_body(ax, vtu, deformed, vm / vm_scale, clim, cell_pixels)
+    ax.add_collection(LineCollection([points[c] for c in outline], colors="0.3",
+                                     linewidths=0.9, linestyles=(0, (4, 3)),
+                                     label="undeformed body"), autolim=False)
+    ax.add_collection(LineCollection([deformed[c] for c in outline], colors="k",
+                                     linewidths=0.6), autolim=False)
+    if not has_gap:
+        label = "rigid foundation"
+    elif np.any(inside):
+        label = "rigid foundation at its true place x + g·ν (not magnified)"
+    else:
+        label = ("rigid foundation: outside the drawing (gap " +
+                 with_unit(f"{np.nanmin(gap):.3g} to {np.nanmax(gap):.3g}", units.length) + ")")
+    ax.plot(foundation[:, 0], foundation[:, 1], color="tab:brown", lw=3, alpha=0.8,
+            solid_capstyle="butt", label=label, zorder=0)
+    # Only where the two lines can be told apart.
+    if has_gap and s != 1.0 and np.nanmax(np.abs((s - 1.0) * gap)) > 0.005 * size:
+        ax.plot(magnified[:, 0], magnified[:, 1], color="tab:brown", lw=1.2, ls=(0, (5, 2)),
+                label=f"foundation with the gap magnified {s:g} times: where the magnified "
+                      "body touches it", zorder=2.5)
     active = data.get("contact_active")
     if active is not None and np.any(active):
         ax.plot(deformed[active == 1, 0], deformed[active == 1, 1], "o", ms=1.8,
                 color="tab:orange", label="nodes in contact", zorder=3)
-
-    ax.set_aspect("equal")
-    ax.set_xlim(lo[0], hi[0])
-    ax.set_ylim(lo[1], hi[1])
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
-    bar = fig.colorbar(image, ax=ax, shrink=0.9, extend="max" if clipped else "neither")
-    bar.set_label("von Mises stress (MPa)")
     if clipped:
         at = int(np.nanargmax(vm))
         ax.plot(deformed[at, 0], deformed[at, 1], "x", color="tab:red", ms=8, mew=2, zorder=4,
-                label=f"max {top:.3g} MPa at ({points[at, 0]:.3g}, {points[at, 1]:.3g}), "
-                      "above the colour scale")
-    fig.suptitle(wrapped(title_of(summary) + f"\nDeformed body x + s·u(x), displacements "
-                         f"magnified s = {s:g} times, coloured by the von Mises stress", width),
-                 fontsize=10)
-    # Above the drawing, where it cannot hide a part of the body.
-    ax.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0), frameon=False,
-              ncol=4 if width >= 10 else 2)
-    return fig, s
+                label=f"max {with_unit(f'{top:.3g}', units.stress)} at "
+                      f"({points[at, 0]:.3g}, {points[at, 1]:.3g}), above the colour scale")
+    ax.set_aspect("equal")
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_xlabel(axis_label("x", units.length))
+    ax.set_ylabel(axis_label("y", units.length))
+    bar = fig.colorbar(image, cax=cax, extend="max" if clipped else "neither")
+    bar.set_label(axis_label("von Mises stress", units.stress, k))
+    bar.solids.set_rasterized(False)  # 256 rectangles: as vectors, one raster less in the SVG
+
+    # The figure around the axes: the y labels on the left, the colour bar on the right, the
+    # legend and the title above.
+    left, _ = measure.left(ax)
+    bottom, beyond = measure.bottom(ax)
+    left += BORDER
+    bottom += BORDER
+    bar_gap = max(bar_gap, beyond + 4.0)
+    bar_labels, _, _ = measure.tick_labels(cax.yaxis)
+    right = (bar_gap + bar_w + TICK + max((measure.width(t) for t in bar_labels), default=0.0)
+             + LABEL_PAD + measure.height(bar.ax.get_ylabel()) + BORDER)
+    width = max(8.0 * 72, left + axes_w + right)
+    shift = 0.5 * (width - (left + axes_w + right))  # a narrow body: centred
+    title = wrapped(title_of(summary) +
+                    f"\nDeformed body x + s·u(x), displacements magnified s = {s:g} times" +
+                    (" (the foundation is not)" if has_gap and s != 1.0 else "") +
+                    ", coloured by the von Mises stress", width / 72)
+    labels = ax.get_legend_handles_labels()[1]
+    columns, _, legend_h = legend_columns(measure, labels, width - 2 * BORDER)
+    top_room = BORDER + measure.height(title) + 4.0 + legend_h + 0.5 * LEGEND_SIZE
+    height = bottom + axes_h + top_room
+    fig.set_size_inches(width / 72, height / 72)
+    place(fig, ax, left + shift, bottom, axes_w, axes_h)
+    place(fig, cax, left + shift + axes_w + bar_gap, bottom + 0.05 * axes_h, bar_w, 0.9 * axes_h)
+    fig.suptitle(title, fontsize=TEXT_SIZE, y=1.0 - BORDER / height, va="top")
+    # Above the drawing, where it cannot hide a part of the body, centred like the title.
+    ax.legend(fontsize=LEGEND_SIZE, loc="lower center", frameon=False, ncol=columns,
+              bbox_to_anchor=(0.5, (bottom + axes_h) / height), bbox_transform=fig.transFigure)
+    return fig, describe_limits(ax)
 
 
-def figure_convergence(plt, summary):
+def log_formatter(minor):
+    """Labels of a log axis as 10⁻⁸ and 2×10⁻⁸, in plain text (no mathtext)."""
+    from matplotlib.ticker import LogFormatter
+
+    class PlainPowerFormatter(LogFormatter):
+        def _num_to_string(self, x, vmin, vmax):
+            e = math.floor(math.log10(x) + 1e-9)
+            m = x / 10.0 ** e
+            m_text = f"{round(m)}" if abs(m - round(m)) < 1e-6 else f"{m:.2g}"
+            return power_text(e) if m_text == "1" else f"{m_text}×{power_text(e)}"
+
+    if minor:
+        return PlainPowerFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5))
+    return PlainPowerFormatter(labelOnlyBase=True)
+
+
+def figure_convergence(summary, measure):
     import numpy as np
     from matplotlib.ticker import MaxNLocator
 
@@ -448,77 +916,262 @@ def figure_convergence(plt, summary):
     changes = np.array([np.nan if v is None else v for v in summary.get("dual_changes", [])],
                        dtype=float)
     steps = np.arange(1, len(changes) + 1)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
+    fig = new_figure(11, 4.2)
+    left = fig.add_axes([0.1, 0.1, 0.35, 0.7])
+    right = fig.add_axes([0.6, 0.1, 0.35, 0.7])
     outer = "Newton iteration" if method == "semismooth_newton" else "Uzawa iteration k"
 
+    left.set_yscale("log")
+    left.yaxis.set_major_formatter(log_formatter(False))
+    left.yaxis.set_minor_formatter(log_formatter(True))
     shown = np.isfinite(changes) & (changes > 0)
     if np.any(shown):
-        left.semilogy(steps[shown], changes[shown], "o-", color="tab:blue", ms=4,
-                      label=r"$\Vert l^k - l^{k-1}\Vert \,/\, \Vert l^k\Vert$")
+        left.plot(steps[shown], changes[shown], "o-", color="tab:blue", ms=4,
+                  label="‖lᵏ − lᵏ⁻¹‖ / ‖lᵏ‖")
     tol = summary.get("problem", {}).get("solver", {}).get("uzawa_tolerance")
     if method != "semismooth_newton" and isinstance(tol, (int, float)) and tol > 0:
         left.axhline(tol, color="tab:red", ls="--", lw=1, label=f"tolerance {tol:g}")
     left.set_xlabel(outer)
     left.set_ylabel("relative change of the contact pressure")
-    left.set_title("Uzawa residual" if method != "semismooth_newton" else
-                   "Change of the contact pressure (the method stops\nwhen the active set repeats)",
-                   fontsize=10)
+    left_title = ("Uzawa residual" if method != "semismooth_newton" else
+                  "Change of the contact pressure (the method stops\nwhen the active set repeats)")
+    left.set_title(left_title, fontsize=TEXT_SIZE, y=1.0)
     left.grid(True, which="both", alpha=0.3)
     if len(steps) <= 30:
         left.set_xticks(steps)
     if left.get_legend_handles_labels()[0]:
-        left.legend(fontsize=8)
+        left.legend(fontsize=LEGEND_SIZE)
 
     if method == "uzawa_gnm":
         gnm = np.array(summary.get("gnm_iterations", []), dtype=float)
         bars = right.bar(np.arange(1, len(gnm) + 1), gnm, color="tab:green")
         if len(gnm) <= 40:
-            right.bar_label(bars, fmt="%d", fontsize=8)
+            right.bar_label(bars, fmt="%d", fontsize=LEGEND_SIZE)
             right.set_xticks(np.arange(1, len(gnm) + 1))
         right.set_ylabel("GNM iterations")
-        right.set_title("Generalised Newton iterations per Uzawa step", fontsize=10)
+        right_title = "Generalised Newton iterations per Uzawa step"
         right.set_ylim(0, max(gnm.max() if len(gnm) else 1, 1) * 1.15)
     else:
         active = np.array(summary.get("active_set_sizes", []), dtype=float)
         right.plot(np.arange(1, len(active) + 1), active, "o-" if len(active) <= 50 else "-",
                    color="tab:green", ms=4)
         right.set_ylabel("nodes in the active set")
-        right.set_title("Active set size per iteration", fontsize=10)
+        right_title = "Active set size per iteration"
         right.yaxis.set_major_locator(MaxNLocator(integer=True))
+    right.set_title(right_title, fontsize=TEXT_SIZE, y=1.0)
     right.set_xlabel(outer)
     right.grid(True, axis="y", alpha=0.3)
-    fig.suptitle(wrapped(title_of(summary) + f"\nConvergence: {summary.get('message', '')}", 11),
-                 fontsize=10)
-    return fig
+    title = wrapped(title_of(summary) + f"\nConvergence: {summary.get('message', '')}", 11)
+    fig.suptitle(title, fontsize=TEXT_SIZE, y=1.0 - BORDER / (4.2 * 72), va="top")
+
+    w, h = 11 * 72.0, 4.2 * 72.0
+    top = (BORDER + measure.height(title) + 8.0
+           + max(measure.height(left_title), measure.height(right_title)) + TITLE_PAD)
+    for _ in range(2):  # the number of ticks depends on the size of the axes
+        l1, o1 = measure.left(left)
+        l2, o2 = measure.left(right)
+        b1, _ = measure.bottom(left)
+        b2, beyond = measure.bottom(right)
+        bottom = BORDER + max(b1, b2)
+        gap = 24.0 + l2
+        width = (w - BORDER - l1 - gap - BORDER - max(beyond, 2.0)) / 2
+        place(fig, left, BORDER + l1, bottom, width, h - bottom - top - o1)
+        place(fig, right, BORDER + l1 + width + gap, bottom, width, h - bottom - top - o2)
+    return fig, describe_limits(left)
 
 
-# Main --------------------------------------------------------------------------------------
+# Drawing and writing -----------------------------------------------------------------------
 
 
-def save_all(outdir, figures, quiet):
-    """Every file is written under a temporary name first and renamed at the end, so that a
-    failure leaves no half-written picture and keeps the pictures of an earlier run."""
-    import matplotlib.pyplot as plt
+def draw_and_save(outdir, name, make, written):
+    """Draws one figure and writes it, as PNG and SVG, under temporary names, appending
+    (temporary, final) to `written` before each file is begun."""
+    fig, description = make()
+    for fmt in FORMATS:
+        final = os.path.join(outdir, f"{name}.{fmt}")
+        tmp = os.path.join(outdir, f".{name}.{fmt}.tmp.{os.getpid()}")
+        written.append((tmp, final))
+        metadata = {"Title": name, "Description": description}
+        if fmt == "svg":
+            metadata["Date"] = None  # the same file for the same results
+        # A quick compression: files 10-30 % larger, written a quarter faster.
+        extra = {"pil_kwargs": {"compress_level": 1}} if fmt == "png" else {}
+        fig.savefig(tmp, format=fmt, dpi=DPI, metadata=metadata, **extra)
+    # A figure is a web of references that only the garbage collector frees: now, so that the
+    # next figure reuses its memory.
+    del fig
+    import gc
 
-    temporaries = []
+    gc.collect()
+
+
+def draw(outdir, next_figure, scale, written, warnings=True):
+    """Reads the results and draws the figures that `next_figure()` names, until it returns
+    None, into temporary files (listed in `written`); returns the names drawn."""
+    import_plotting()
+    summary = read_summary(outdir)
+    units = units_of_summary(summary, warnings)
+    contact = read_contact_csv(outdir)
+    # Shared by the figures along the contact boundary.
+    contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
+    contact["intervals"] = contact_intervals(contact["t"], contact["pressure"] > 0)
+    measure = Measure()
+    makers = {
+        "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),
+        "contact_pressure": lambda: figure_pressure(summary, contact, units, measure),
+        "deformed_von_mises": lambda: figure_deformed(
+            summary, read_vtu(os.path.join(outdir, "solution.vtu")), contact, scale, units,
+            measure),
+        "convergence": lambda: figure_convergence(summary, measure),
+    }
+    drawn = []
+    while (name := next_figure()) is not None:
+        drawn.append(name)
+        draw_and_save(outdir, name, makers[name], written)
+    return drawn
+
+
+def cores():
     try:
-        for name, fig in figures:
-            for fmt in FORMATS:
-                final = os.path.join(outdir, f"{name}.{fmt}")
-                tmp = os.path.join(outdir, f".{name}.{fmt}.tmp.{os.getpid()}")
-                temporaries.append((tmp, final))
-                fig.savefig(tmp, format=fmt, dpi=150)
-            plt.close(fig)
-        for tmp, final in temporaries:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+# The figures, the longest to draw first: with two processes taking them in turn, neither waits
+# long for the other at the end.
+ORDER = ["deformed_von_mises", "convergence", "contact_displacement", "contact_pressure"]
+
+
+class Helper:
+    """A second process (fork, before numpy and matplotlib are imported: the two import them at
+    the same time) that draws figures too. The two take the names of the figures from a pipe,
+    one at a time, so that a process that is faster (or started sooner) draws more; the helper
+    reports the files it wrote, or its error, through another pipe."""
+
+    def __init__(self, outdir, scale):
+        self.outdir = outdir
+        queue_read, queue_write = os.pipe()
+        os.write(queue_write, bytes(range(len(ORDER))))
+        os.close(queue_write)  # read to the end: no figure left
+        report_read, report_write = os.pipe()
+        sys.stdout.flush()
+        sys.stderr.flush()
+        self.pid = os.fork()
+        if self.pid == 0:
+            os.close(report_read)
+            self.run(queue_read, report_write, outdir, scale)  # does not return
+        os.close(report_write)
+        self.queue = queue_read
+        self.report = report_read
+
+    def next_figure(self):
+        """The next figure to draw, or None: reads one byte (atomic: each name goes to one of
+        the processes)."""
+        index = os.read(self.queue, 1)
+        return ORDER[index[0]] if index else None
+
+    @staticmethod
+    def run(queue, report_end, outdir, scale):
+        status, written = 0, []
+
+        def next_figure():
+            index = os.read(queue, 1)
+            return ORDER[index[0]] if index else None
+
+        try:
+            drawn = draw(outdir, next_figure, scale, written, warnings=False)
+            report = {"drawn": drawn}
+        except UsageError as e:
+            status, report = 2, {"usage": str(e)}
+        except BaseException as e:  # noqa: BLE001 - the parent says it
+            status, report = 1, {"bug": f"{type(e).__name__}: {e}"}
+            if os.environ.get("SIGNORINI_DEBUG"):
+                import traceback
+
+                traceback.print_exc()
+        try:
+            with os.fdopen(report_end, "w") as pipe:
+                pipe.write(json.dumps(report))
+        finally:
+            os._exit(status)
+
+    def temporaries(self, names):
+        """The files the helper writes for the figures `names`."""
+        return [(os.path.join(self.outdir, f".{name}.{fmt}.tmp.{self.pid}"),
+                 os.path.join(self.outdir, f"{name}.{fmt}")) for name in names for fmt in FORMATS]
+
+    def finish(self):
+        """Waits for the helper; returns the names of the figures it drew, or raises its error."""
+        os.close(self.queue)
+        with os.fdopen(self.report) as pipe:
+            text = pipe.read()
+        _, status = os.waitpid(self.pid, 0)
+        try:
+            report = json.loads(text)
+        except ValueError:
+            report = {}
+        if "usage" in report:
+            raise UsageError(report["usage"])
+        if "bug" in report:
+            raise RuntimeError(report["bug"])
+        if "drawn" not in report or not os.WIFEXITED(status) or os.WEXITSTATUS(status) != 0:
+            how = (f"signal {os.WTERMSIG(status)}" if os.WIFSIGNALED(status) else
+                   f"exit status {os.WEXITSTATUS(status)}")
+            raise RuntimeError(f"the second process drawing the figures ended ({how}) without "
+                               "saying what it drew")
+        return report["drawn"]
+
+    def stop(self):
+        """Ends the helper (after an error here)."""
+        import signal
+
+        for fd in (self.queue, self.report):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+        try:
+            os.kill(self.pid, signal.SIGTERM)
+            os.waitpid(self.pid, 0)
+        except (ChildProcessError, ProcessLookupError):
+            pass
+
+
+def save_all(outdir, scale, quiet):
+    """Every file is written under a temporary name first and renamed at the end, so that a
+    failure leaves no half-written picture and keeps the pictures of an earlier run. With two
+    cores or more, two processes draw the figures (about half of the time)."""
+    helper = None
+    if cores() >= 2 and hasattr(os, "fork"):
+        helper = Helper(outdir, scale)
+    written, mine = [], []
+    try:
+        if helper is None:
+            figures = iter(ORDER)
+            draw(outdir, lambda: next(figures, None), scale, written)
+        else:
+            mine = draw(outdir, helper.next_figure, scale, written)
+            waiting, helper = helper, None
+            try:
+                theirs = waiting.finish()
+            except BaseException:  # what it wrote before its error goes
+                written += waiting.temporaries([n for n in ORDER if n not in mine])
+                raise
+            written += waiting.temporaries(theirs)
+        for tmp, final in written:
             os.replace(tmp, final)
     except OSError as e:
         raise UsageError(f"cannot write the figures into '{outdir}': {e}")
     finally:
-        for tmp, _ in temporaries:
+        if helper is not None:  # an error here: the helper's work is of no use
+            helper.stop()
+            written += helper.temporaries([n for n in ORDER if n not in mine])
+        for tmp, _ in written:
             if os.path.exists(tmp):
                 os.unlink(tmp)
     if not quiet:
-        print("figures: " + ", ".join(os.path.join(outdir, f"{n}.{{png,svg}}") for n, _ in figures))
+        print("figures: " + ", ".join(os.path.join(outdir, f"{n}.{{png,svg}}") for n in FIGURES))
 
 
 def main(argv):
@@ -529,10 +1182,10 @@ def main(argv):
                              "(default: chosen so that the largest is about 10%% of the body)")
     parser.add_argument("--quiet", action="store_true", help="print nothing but errors")
     parser.add_argument("--check", action="store_true",
-                        help="only check that numpy and matplotlib can be imported")
+                        help="only check that numpy and matplotlib are installed")
     args = parser.parse_args(argv)
     try:
-        import_plotting()
+        check_plotting()
         if args.check:
             return 0
         if not args.outdir:
@@ -541,18 +1194,8 @@ def main(argv):
             raise UsageError(f"--scale {args.scale}: expected a positive number")
         if not os.path.isdir(args.outdir):
             raise UsageError(f"'{args.outdir}' is not a folder")
-        import matplotlib.pyplot as plt
-
-        summary = read_summary(args.outdir)
-        contact = read_contact_csv(args.outdir)
-        vtu = read_vtu(os.path.join(args.outdir, "solution.vtu"))
-        boundary_vtu = read_vtu(os.path.join(args.outdir, "contact.vtu"))
-        figures = [("contact_displacement", figure_displacement(plt, summary, contact)),
-                   ("contact_pressure", figure_pressure(plt, summary, contact))]
-        fig, _ = figure_deformed(plt, summary, vtu, boundary_vtu, args.scale)
-        figures.append(("deformed_von_mises", fig))
-        figures.append(("convergence", figure_convergence(plt, summary)))
-        save_all(args.outdir, figures, args.quiet)
+        check_results(args.outdir)
+        save_all(args.outdir, args.scale, args.quiet)
     except UsageError as e:
         fail(2, e)
     return 0

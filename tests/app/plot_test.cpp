@@ -5,6 +5,9 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <regex>
 
 #include "app/tool_run.hpp"
 #include "io/expect_contains.hpp"
@@ -32,13 +35,64 @@ bool have_matplotlib() {
   return std::system("/usr/bin/python3 -c 'import matplotlib, numpy' > /dev/null 2>&1") == 0;
 }
 
-// A module folder whose `matplotlib` cannot be imported, as on a machine without it.
+// A module folder that makes `matplotlib` impossible to find, as on a machine without it: its
+// sitecustomize (run at the interpreter's start) puts a finder first that refuses it. (A fake
+// package that fails when imported is not enough: the plot script's --check only looks for the
+// package, it does not import it.)
 std::string without_matplotlib(const testing::TemporaryFolder& dir) {
-  fs::create_directories(dir / "fake" / "matplotlib");
-  std::ofstream(dir / "fake" / "matplotlib" / "__init__.py")
-      << "raise ImportError('No module named matplotlib (simulated)')\n";
+  fs::create_directories(dir / "fake");
+  std::ofstream(dir / "fake" / "sitecustomize.py")
+      << "import sys\n"
+         "class NoMatplotlib:\n"
+         "    @staticmethod\n"
+         "    def find_spec(name, path=None, target=None):\n"
+         "        if name == 'matplotlib' or name.startswith('matplotlib.'):\n"
+         "            raise ModuleNotFoundError(\n"
+         "                f\"No module named '{name}' (simulated)\", name=name)\n"
+         "        return None\n"
+         "sys.meta_path.insert(0, NoMatplotlib)\n";
   return "PYTHONPATH=" + quoted((dir / "fake").string());
 }
+
+// Solves paper_small into dir/out (with the --set options `sets`, already quoted).
+fs::path solve_small(const testing::TemporaryFolder& dir, const std::string& sets = "") {
+  const fs::path out = dir / "out";
+  const ToolRun r = run_tool(dir, "solve " + kSmall + " -q -o " + quoted(out.string()) + sets);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return out;
+}
+
+// Sets summary["problem"]["units"] of the results in `out` (a string or null; with `erase`, the
+// key is removed), as the solver writes it from the problem file's `units` setting.
+void set_units(const fs::path& out, const nlohmann::json& units, bool erase = false) {
+  const fs::path path = out / "summary.json";
+  nlohmann::json summary = nlohmann::json::parse(testing::read_text(path));
+  if (erase)
+    summary["problem"].erase("units");
+  else
+    summary["problem"]["units"] = units;
+  std::ofstream(path) << summary.dump(1);
+}
+
+// The limits of the main axes of a figure, in the units of its data: the plot script writes them
+// into the description of the SVG file ("axes: x from X0 to X1, y from Y0 to Y1").
+struct Limits {
+  double x0, x1, y0, y1;
+};
+
+std::optional<Limits> axes_limits(const std::string& svg) {
+  const std::size_t at = svg.find("<dc:description>");
+  if (at == std::string::npos) return std::nullopt;
+  const std::string text = svg.substr(at, svg.find("</dc:description>", at) - at);
+  static const std::regex pattern(
+      R"(axes: x from ([-+.0-9eE]+) to ([-+.0-9eE]+), y from ([-+.0-9eE]+) to ([-+.0-9eE]+))");
+  std::smatch m;
+  if (!std::regex_search(text, m, pattern)) return std::nullopt;
+  return Limits{std::stod(m[1]), std::stod(m[2]), std::stod(m[3]), std::stod(m[4])};
+}
+
+const std::vector<std::string> kSvgFigures = {"contact_displacement.svg", "contact_pressure.svg",
+                                              "deformed_von_mises.svg", "convergence.svg"};
 
 TEST(Plot, SolveWithPlotWritesEveryFigure) {
   if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
@@ -57,12 +111,12 @@ TEST(Plot, SolveWithPlotWritesEveryFigure) {
       EXPECT_CONTAINS(contents, "<svg");
   }
   EXPECT_CONTAINS(r.out, "figures: " + listed + "\n");
-  // Text stays text in the SVG: titles with the problem and mesh, axes with units.
+  // Text stays text in the SVG: titles with the problem and mesh, axis labels (their units:
+  // UnitLabelsComeFromTheUnitsSetting).
   const std::string pressure = testing::read_text(out / "contact_pressure.svg");
   EXPECT_CONTAINS(pressure, "paper_small: 60 × 20 mesh");
-  EXPECT_CONTAINS(pressure, "contact pressure (MPa)");
-  EXPECT_CONTAINS(pressure, "x (m)");
-  EXPECT_CONTAINS(testing::read_text(out / "deformed_von_mises.svg"), "von Mises stress (MPa)");
+  EXPECT_CONTAINS(pressure, ">contact pressure");
+  EXPECT_CONTAINS(testing::read_text(out / "deformed_von_mises.svg"), ">von Mises stress");
   EXPECT_CONTAINS(testing::read_text(out / "convergence.svg"), "GNM iterations");
   // No temporary file is left behind.
   std::size_t entries = 0;
@@ -84,6 +138,131 @@ TEST(Plot, PlotCommandWithAGivenMagnification) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_CONTAINS(testing::read_text(out / "deformed_von_mises.svg"),
                   "displacements magnified s = 250 times");
+}
+
+TEST(Plot, UnitLabelsComeFromTheUnitsSetting) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const testing::TemporaryFolder dir;
+  const fs::path out = solve_small(dir);
+  // mm and N: stresses in N/mm^2 = MPa, forces per thickness in N/mm.
+  set_units(out, "mm-N");
+  ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  std::string pressure = testing::read_text(out / "contact_pressure.svg");
+  EXPECT_CONTAINS(pressure, ">x (mm)</text>");
+  EXPECT_CONTAINS(pressure, ">contact pressure (MPa)</text>");
+  EXPECT_CONTAINS(pressure, " N/mm</text>");  // the total contact force
+  EXPECT_CONTAINS(pressure, " mm)</text>");   // where the body touches, in the title
+  EXPECT_CONTAINS(testing::read_text(out / "contact_displacement.svg"),
+                  ">displacement (10⁻⁴ mm)</text>");
+  const std::string deformed = testing::read_text(out / "deformed_von_mises.svg");
+  EXPECT_CONTAINS(deformed, ">von Mises stress (MPa)</text>");
+  EXPECT_CONTAINS(deformed, ">y (mm)</text>");
+
+  // m and Pa: forces per thickness in N/m.
+  set_units(out, "m-Pa");
+  r = run_tool(dir, "plot " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  pressure = testing::read_text(out / "contact_pressure.svg");
+  EXPECT_CONTAINS(pressure, ">contact pressure (Pa)</text>");
+  EXPECT_CONTAINS(pressure, " N/m</text>");
+  EXPECT_CONTAINS(pressure, ">x (m)</text>");
+
+  // A setting the script does not know: a warning, and no units.
+  set_units(out, "furlongs");
+  r = run_tool(dir, "plot " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+  EXPECT_CONTAINS(r.err, "signorini: warning: units = \"furlongs\" in summary.json is not one of");
+  EXPECT_CONTAINS(testing::read_text(out / "contact_pressure.svg"), ">contact pressure</text>");
+}
+
+TEST(Plot, NoUnitsWithoutTheUnitsSetting) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const testing::TemporaryFolder dir;
+  const fs::path out = solve_small(dir);
+  for (const bool erase : {true, false}) {
+    SCOPED_TRACE(erase ? "no units key" : "units null");
+    set_units(out, nullptr, erase);
+    const ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    for (const std::string& f : kSvgFigures) {
+      const std::string svg = testing::read_text(out / f);
+      for (const char* unit : {"MPa", "MN/m", "(m)", " m)", "(mm)", "N/mm", " Pa"})
+        EXPECT_EQ(svg.find(unit), std::string::npos) << f << " has '" << unit << "'";
+    }
+    const std::string pressure = testing::read_text(out / "contact_pressure.svg");
+    EXPECT_CONTAINS(pressure, ">contact pressure</text>");
+    EXPECT_CONTAINS(pressure, ">x</text>");
+    EXPECT_CONTAINS(testing::read_text(out / "contact_displacement.svg"),
+                    ">displacement (×10⁻⁴)</text>");
+    EXPECT_CONTAINS(testing::read_text(out / "deformed_von_mises.svg"), ">von Mises stress</text>");
+  }
+}
+
+// A curved foundation (a cylinder of radius 3 touching the body at x = 0.4): its gap is up to
+// 1.5 m, thousands of times the displacements. The axes stay at the body, the foundation is drawn
+// at its true place, and the displacements keep their axis.
+TEST(Plot, CurvedFoundationKeepsTheAxesAtTheBody) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const testing::TemporaryFolder dir;
+  const fs::path out = solve_small(dir, " --set " + quoted("contact.gap=3 - sqrt(9 - (x-0.4)^2)"));
+  const ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+
+  const std::string deformed = testing::read_text(out / "deformed_von_mises.svg");
+  const std::optional<Limits> body = axes_limits(deformed);
+  ASSERT_TRUE(body) << "no axis limits in deformed_von_mises.svg";
+  // The body (0, 3) x (0, 1), deformed with s = 1000 (up to 0.19 m), and the foundation at most
+  // 10 % of the body's size (0.3 m) below it, plus a margin of 0.12 m.
+  EXPECT_GT(body->x0, -0.2);
+  EXPECT_LT(body->x1, 3.3);
+  EXPECT_GT(body->y0, -0.5);
+  EXPECT_LT(body->y0, -0.3);  // the foundation, curving away below the body, is in the picture
+  EXPECT_GT(body->y1, 1.1);
+  EXPECT_LT(body->y1, 1.4);
+  EXPECT_CONTAINS(deformed, ">rigid foundation at its true place x + g·ν (not magnified)</text>");
+  EXPECT_CONTAINS(deformed,
+                  ">foundation with the gap magnified 1000 times: where the magnified "
+                  "body touches it</text>");
+
+  const std::optional<Limits> along =
+      axes_limits(testing::read_text(out / "contact_displacement.svg"));
+  ASSERT_TRUE(along) << "no axis limits in contact_displacement.svg";
+  // The displacements (about -2e-4 to 6e-5 m) set the y axis, not the gap (up to 1.5 m).
+  EXPECT_GT(along->y0, -5e-4);
+  EXPECT_LT(along->y0, -1.5e-4);
+  EXPECT_LT(along->y1, 5e-4);
+  EXPECT_GT(along->y1, 5e-5);
+  EXPECT_CONTAINS(testing::read_text(out / "contact_displacement.svg"),
+                  ">gap g (the bound: uₙ ≤ g), partly off the axis</text>");
+}
+
+// g = 0 (the paper) draws the foundation along y = 0 under the body as it always did; an
+// interference (g < 0: the foundation 1 micrometre inside the body) looks the same.
+TEST(Plot, FlatFoundations) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  for (const std::string gap : {"0", "-1e-6"}) {
+    SCOPED_TRACE("gap " + gap);
+    const testing::TemporaryFolder dir;
+    const fs::path out = solve_small(dir, " --set " + quoted("contact.gap=" + gap));
+    const ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string deformed = testing::read_text(out / "deformed_von_mises.svg");
+    const std::optional<Limits> body = axes_limits(deformed);
+    ASSERT_TRUE(body);
+    EXPECT_NEAR(body->x0, -0.12, 0.01);
+    EXPECT_NEAR(body->y0, -0.12, 0.02);
+    EXPECT_GT(body->y1, 1.1);
+    EXPECT_LT(body->y1, 1.4);
+    EXPECT_CONTAINS(deformed, gap == "0" ? ">rigid foundation</text>"
+                                         : ">rigid foundation at its true place x + g·ν "
+                                           "(not magnified)</text>");
+    EXPECT_EQ(deformed.find("gap magnified"), std::string::npos);  // no second line
+    EXPECT_CONTAINS(deformed, "displacements magnified s = 1000 times");
+  }
 }
 
 TEST(Plot, FolderWithoutResults) {

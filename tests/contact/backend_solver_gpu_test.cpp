@@ -47,7 +47,9 @@ TEST(GpuSolveAggregation, AMeshThatDoesNotHalveMatchesTheCpuDirectSolve) {
   spec.solver.device = DeviceKind::Cuda;
   const Model model = build_model(spec);
   ASSERT_EQ(model.problem.multigrid.kind, HierarchyKind::Aggregation);
-  const ContactResult cpu = solve_contact(model.problem, ContactSolverOptions{});
+  ContactSolverOptions direct;  // CHOLMOD, condensed, with the same r (the paper's)
+  direct.r = spec.solver.r;
+  const ContactResult cpu = solve_contact(model.problem, direct);
   const ContactResult gpu = solve_contact(model.problem, spec.solver);
   ASSERT_TRUE(gpu.summary.converged()) << gpu.summary.message;
   EXPECT_NEAR(gpu.summary.lagrangian, cpu.summary.lagrangian,

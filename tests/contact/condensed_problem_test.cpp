@@ -85,8 +85,10 @@ TEST_P(CondensedVsPlain, ObliqueNormalsAndPartlyClampedContactNodes) {
     ProblemSpec spec = paper_benchmark(30, 10);
     spec.clamps = {{"left", {true, true, true}}};
     if (right_clamped) spec.clamps.push_back({"right", {true, false, false}});
-    spec.tractions = {
-        {"top", [](const Point& x) { return Eigen::Vector3d(0.2, -1.0 - x(0), 0.0); }, "oblique"}};
+    spec.tractions = {{"top",
+                       [](const Point& x) { return Eigen::Vector3d(0.2, -1.0 - x(0), 0.0); },
+                       "oblique",
+                       {}}};
     Model model = build_model(spec);
     Mesh& mesh = model.mesh;
     auto facets = mesh.boundary_part("bottom").facets;

@@ -27,7 +27,8 @@ TEST_P(Table1, EnergyAndIterationCountsMatchThePaper) {
   EXPECT_EQ(model.dofs.num_dofs(), row.n_dofs);
   EXPECT_EQ(model.problem.contact.size(), row.n_contact);
 
-  ContactSolverOptions options;  // the paper's defaults
+  ContactSolverOptions options;  // the paper's defaults, with its r (Section 5)
+  options.r = 1e8;
   options.schur_complement = schur;
   const ContactResult res = solve_contact(model.problem, options);
   ASSERT_TRUE(res.summary.converged()) << res.summary.message;

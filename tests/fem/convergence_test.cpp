@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/q1_element.hpp"
 #include "signorini/fem/quadrature.hpp"
 #include "signorini/linalg/linear_solver.hpp"

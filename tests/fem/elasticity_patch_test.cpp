@@ -5,6 +5,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/nodal_stress.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"

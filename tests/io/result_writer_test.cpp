@@ -49,7 +49,7 @@ std::vector<double> fields_of(const std::string& line) {
 TEST(SummaryJson, HasTheDocumentedKeys) {
   const Solved& s = solved();
   ASSERT_TRUE(s.result.summary.converged()) << s.result.summary.message;
-  const nlohmann::json j = summary_to_json(s.result.summary, s.model, s.spec);
+  const nlohmann::json j = summary_to_json(s.result, s.model, s.spec);
   for (const char* key : testing::kSummaryKeys) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["converged"], true);
   EXPECT_EQ(j["termination"], "converged");
@@ -80,12 +80,12 @@ TEST(ContactCsv, OneRowPerContactNodeWithConventions) {
   const Solved& s = solved();
   const std::vector<std::string> lines = lines_of(contact_csv(s.result, s.model));
   ASSERT_EQ(lines.size(), 14U);
-  EXPECT_EQ(lines[0], "x,y,u_n,u_t,pressure,gap");
+  EXPECT_EQ(lines[0], "x,y,u_n,u_t,pressure,gap,n_x,n_y");
   const Vector u = s.model.dofs.expand(s.result.u);
   const ContactSet& c = s.model.problem.contact;
   for (Index j = 0; j < c.size(); ++j) {
     const std::vector<double> f = fields_of(lines[static_cast<std::size_t>(j + 1)]);
-    ASSERT_EQ(f.size(), 6U);
+    ASSERT_EQ(f.size(), 8U);
     const Index node = c.nodes[static_cast<std::size_t>(j)];
     EXPECT_EQ(f[0], s.model.mesh.node(node)(0));  // 17 digits: exact round trip
     EXPECT_EQ(f[1], 0.0);
@@ -95,6 +95,8 @@ TEST(ContactCsv, OneRowPerContactNodeWithConventions) {
     EXPECT_EQ(f[4], s.result.l(j));
     EXPECT_GE(f[4], 0.0);
     EXPECT_EQ(f[5], 0.0);
+    EXPECT_EQ(f[6], 0.0);  // the outward normal of the bottom edge
+    EXPECT_EQ(f[7], -1.0);
   }
 }
 
@@ -109,7 +111,7 @@ TEST(ResultWriter, WritesEveryFileIntoANewFolder) {
   std::ifstream csv(out / "contact.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "x,y,u_n,u_t,pressure,gap");
+  EXPECT_EQ(header, "x,y,u_n,u_t,pressure,gap,n_x,n_y");
   for (const char* vtu : {"solution.vtu", "contact.vtu"}) EXPECT_TRUE(fs::exists(out / vtu)) << vtu;
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;

@@ -5,7 +5,7 @@
 
 namespace signorini::testing {
 
-inline constexpr std::array<const char*, 21> kSummaryKeys{"converged",
+inline constexpr std::array<const char*, 24> kSummaryKeys{"converged",
                                                           "termination",
                                                           "message",
                                                           "method",
@@ -23,6 +23,9 @@ inline constexpr std::array<const char*, 21> kSummaryKeys{"converged",
                                                           "contact_force",
                                                           "contact_force_vector",
                                                           "kkt",
+                                                          "kkt_tolerance",
+                                                          "resultants",
+                                                          "point_loads",
                                                           "timings",
                                                           "problem",
                                                           "signorini_version"};

@@ -34,4 +34,10 @@ CudaReport cuda_report();
 /// (the message says which and how to get one), NumericalError on a CUDA failure.
 std::unique_ptr<Backend> make_cuda_backend(int ordinal = 0);
 
+/// Opens cuBLAS and cuSPARSE as a GPU solve does when it starts (they are not loaded before:
+/// backend/cuda/cuda_libraries.hpp) and returns the files they were loaded from. Throws
+/// InputError if CUDA was not built or a library or one of its functions is missing. Needs no
+/// GPU: for tests and diagnostics.
+std::vector<std::string> load_cuda_libraries();
+
 }  // namespace signorini

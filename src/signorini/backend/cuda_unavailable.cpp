@@ -22,6 +22,10 @@ std::unique_ptr<Backend> make_cuda_backend(int /*ordinal*/) {
       "toolkit installed; see docs/gpu.md)");
 }
 
+std::vector<std::string> load_cuda_libraries() {
+  throw InputError("this signorini was built without CUDA: there are no CUDA libraries to load");
+}
+
 }  // namespace signorini
 
 #endif  // SIGNORINI_HAVE_CUDA

@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/peak_memory.hpp"
+#include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/load_assembly.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
@@ -27,7 +30,8 @@ double sum_of(const TimingTable& t, std::initializer_list<const char*> phases) {
 }
 
 ContactSolverOptions solver_options(const BenchmarkConfiguration& c) {
-  ContactSolverOptions o;  // the paper's defaults
+  ContactSolverOptions o;  // the paper's defaults, with its r = 1e8 (Section 5)
+  o.r = 1e8;
   o.method = c.method;
   o.linear.type = c.linear;
   o.schur_complement = c.schur_complement;
@@ -91,6 +95,75 @@ std::optional<PaperRow> paper_table1_row(Index nx, Index ny) {
   for (const PaperRow& r : kRows)
     if (r.nx == nx && 3 * ny == nx) return r;
   return std::nullopt;
+}
+
+std::vector<std::pair<Index, Index>> larger_paper_meshes() {
+  return {{960, 320}, {1920, 640}};
+}
+
+BenchmarkConfiguration paper_cg_configuration() {
+  return {ContactMethod::UzawaGnm, LinearSolverType::ConjugateGradient, false, 480};
+}
+
+BenchmarkConfiguration plain_sparse_configuration() {
+  return {ContactMethod::UzawaGnm, LinearSolverType::Cholmod, false, 480};
+}
+
+BenchmarkOptions full_benchmark_options() {
+  BenchmarkOptions o;
+  for (const auto& m : larger_paper_meshes()) o.meshes.push_back(m);
+  o.configurations = {
+      {ContactMethod::UzawaGnm, LinearSolverType::Cholmod, true},
+      {ContactMethod::SemismoothNewton, LinearSolverType::Cholmod, true},
+      paper_cg_configuration(),
+      plain_sparse_configuration(),
+  };
+  o.compare_plain_max_nx = 480;
+  return o;
+}
+
+double estimated_seconds(const BenchmarkOptions& options) {
+  // Seconds at 480x160 and the exponent of their growth with the number of unknowns n
+  // (docs/performance.md: condensed 0.66 s -> 130 s at 3840x1280, n^1.28).
+  constexpr double kUnknowns480 = 154882.0;
+  const auto scaled = [&](double seconds_480, double exponent, double n) {
+    return seconds_480 * std::pow(n / kUnknowns480, exponent);
+  };
+  double total = 0.0;
+  for (const auto& [nx, ny] : options.meshes) {
+    const double n = 2.0 * static_cast<double>(nx + 1) * static_cast<double>(ny + 1);
+    const int repeats = n > 1e6 ? 1 : std::max(1, options.repeats);
+    bool yardstick_direct = false, yardstick_cg = false;
+    for (const BenchmarkConfiguration& c : options.configurations) {
+      if (nx > c.max_nx) continue;
+      double run = 0.0;
+      if (c.device == DeviceKind::Cuda)
+        run = 2.0 + scaled(0.2, 1.0, n);  // start-up, then a GPU's speed
+      else if (c.linear == LinearSolverType::ConjugateGradient &&
+               c.preconditioner == PreconditionerType::Multigrid)
+        run = scaled(1.8, 1.1, n);
+      else if (c.linear == LinearSolverType::ConjugateGradient)
+        run = scaled(57.0, 1.8, n);
+      else if (c.schur_complement)
+        run = scaled(0.66, 1.28, n);
+      else
+        run = scaled(4.9, 1.4, n);
+      total += repeats * run;
+      if (c.schur_complement && c.linear == LinearSolverType::Cholmod &&
+          nx <= options.compare_plain_max_nx)
+        total += scaled(4.9, 1.4, n);
+      if (options.linear_yardstick && c.device == DeviceKind::Cpu) {
+        if (c.linear == LinearSolverType::ConjugateGradient && !yardstick_cg) {
+          yardstick_cg = true;
+          total += repeats * scaled(2.4, 1.5, n);
+        } else if (c.linear != LinearSolverType::ConjugateGradient && !yardstick_direct) {
+          yardstick_direct = true;
+          total += repeats * scaled(0.53, 1.28, n);
+        }
+      }
+    }
+  }
+  return total;
 }
 
 std::vector<BenchmarkRow> run_paper_benchmark(const BenchmarkOptions& options) {
@@ -182,7 +255,7 @@ std::vector<BenchmarkRow> run_paper_benchmark(const BenchmarkOptions& options) {
         row.diff_plain_u = (best_result.u - p.u).norm() / p.u.norm();
         row.diff_plain_l = (best_result.l - p.l).norm() / std::max(p.l.norm(), 1e-300);
       }
-      if (uses_backend_path(solver)) {  // no yardstick: compared with the CPU rows instead
+      if (uses_backend_path(solver) || !options.linear_yardstick) {  // no yardstick
         rows.push_back(std::move(row));
         continue;
       }

@@ -28,24 +28,42 @@ struct BenchmarkConfiguration {
 };
 
 struct BenchmarkOptions {
-  /// Meshes nx x ny. Default: the paper's four, then 960x320 and 1920x640.
-  std::vector<std::pair<Index, Index>> meshes{{60, 20},   {120, 40},  {240, 80},
-                                              {480, 160}, {960, 320}, {1920, 640}};
-  /// Default: the paper's method and the semismooth Newton method on the condensed problem, the
-  /// paper's own configuration (uzawa_gnm with CG) up to 480x160, and the plain sparse path of
-  /// uzawa_gnm up to 480x160.
+  /// Meshes nx x ny. Default: the paper's four (Table 1).
+  std::vector<std::pair<Index, Index>> meshes{{60, 20}, {120, 40}, {240, 80}, {480, 160}};
+  /// Default: the paper's method on the condensed problem, with the paper's r = 1e8: Table 1.
   std::vector<BenchmarkConfiguration> configurations{
       {ContactMethod::UzawaGnm, LinearSolverType::Cholmod, true},
-      {ContactMethod::SemismoothNewton, LinearSolverType::Cholmod, true},
-      {ContactMethod::UzawaGnm, LinearSolverType::ConjugateGradient, false, 480},
-      {ContactMethod::UzawaGnm, LinearSolverType::Cholmod, false, 480},
   };
   int repeats = 3;  ///< best of `repeats` for timings (meshes above 1e6 unknowns run once)
-  /// Compare each condensed result with the plain path on meshes up to this nx.
-  Index compare_plain_max_nx = 480;
+  /// Compare each condensed result with the plain path on meshes up to this nx (0: never).
+  Index compare_plain_max_nx = 0;
+  /// Time one linear-elastic solve of each mesh as the yardstick of the contact solve.
+  bool linear_yardstick = true;
   /// Called with a line of progress text.
   std::function<void(const std::string&)> progress;
 };
+
+/// The meshes beyond the paper's that `--larger` adds: 960x320 and 1920x640.
+std::vector<std::pair<Index, Index>> larger_paper_meshes();
+
+/// The whole suite (`signorini bench --full`): the paper's meshes and the larger ones; the
+/// paper's method and the semismooth Newton method on the condensed problem, the paper's own
+/// configuration (uzawa_gnm with CG) up to 480x160, and the plain sparse path of uzawa_gnm up to
+/// 480x160, compared with the condensed one.
+BenchmarkOptions full_benchmark_options();
+
+/// The paper's configuration: uzawa_gnm with Jacobi-preconditioned CG, no condensation, up to
+/// 480x160 (57 s there on two cores).
+BenchmarkConfiguration paper_cg_configuration();
+
+/// The plain sparse path of uzawa_gnm (no condensation), up to 480x160.
+BenchmarkConfiguration plain_sparse_configuration();
+
+/// A rough estimate of the wall time of run_paper_benchmark(options) on a 2-core machine like
+/// this project's, in seconds: the measured times of docs/performance.md (480x160: 0.66 s
+/// condensed, 4.9 s plain sparse, 57 s with CG, 1.8 s with multigrid), scaled to each mesh by
+/// the growth measured from 480x160 to 3840x1280, times the repeats.
+double estimated_seconds(const BenchmarkOptions& options);
 
 /// Table 1 of the paper for one of its meshes.
 struct PaperRow {

@@ -7,7 +7,7 @@ namespace signorini {
 std::string armijo_failure_message(int max_halvings, int m, int k, double gradient_norm) {
   return fmt::format(
       "Armijo rule found no decrease after {} halvings in GNM iteration {} of Uzawa step {} "
-      "(||G|| = {:.3e})",
+      "(relative ||G|| = {:.3e})",
       max_halvings, m, k, gradient_norm);
 }
 

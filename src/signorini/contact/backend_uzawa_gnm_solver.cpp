@@ -48,6 +48,7 @@ class BackendGnm {
       work_ = DeviceVector(be, n_);
       contact_ = DeviceVector(be, nc_);
       be.axpbyz(-1.0, b_, 0.0, b_, residual_);  // A x - b at x = 0
+      b_norm_ = problem.b.norm();
       be.synchronize();
     }
     // The multigrid set-up (Galerkin coarse operators on the host, their upload) is timed apart
@@ -159,7 +160,7 @@ class BackendGnm {
       upload_into(phi.contact_forces(Nx_), contact_);
       be_.copy(residual_, work_);
       H_->apply_contact_transpose(contact_, work_, 1.0);
-      gradient_norm = norm(be_, work_);
+      gradient_norm = relative_gradient(norm(be_, work_), b_norm_, norm(be_, residual_));
       const double x_norm = norm(be_, x_);
       const double d_norm = t * norm(be_, d_);
       const double step = x_norm > 0.0 ? d_norm / x_norm : d_norm;
@@ -210,6 +211,7 @@ class BackendGnm {
   DeviceVector b_, x_, x_new_, residual_, d_, Ad_, work_, contact_;
   ActiveSet weights_active_;
   Vector Nx_;
+  double b_norm_ = 0.0;
   int refreshes_ = 0;
 };
 
@@ -226,7 +228,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
     backend = make_backend(options.device);
   }
   BackendGnm gnm(problem, options, *backend, timings);
-  ModifiedLagrangian phi(problem, options.r);
+  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   run_uzawa_iteration(
       problem, options, phi,
       [&](const ModifiedLagrangian& current, int k, Vector& Nx) {

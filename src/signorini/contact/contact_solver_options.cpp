@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "signorini/contact/contact_problem.hpp"
 #include "signorini/core/error.hpp"
 
 namespace signorini {
@@ -31,7 +33,10 @@ bool uses_backend_path(const ContactSolverOptions& o) {
 }
 
 void validate(const ContactSolverOptions& o) {
-  require(positive(o.r), "r", o.r, "a positive number");
+  if (o.r) require(positive(*o.r), "r", *o.r, "a positive number (or no r: automatic)");
+  require(positive(o.auto_r_factor), "auto_r_factor", o.auto_r_factor, "a positive number");
+  require(positive(o.kkt_tolerance) && o.kkt_tolerance < 1.0, "kkt_tolerance", o.kkt_tolerance,
+          "a number in (0, 1)");
   require(positive(o.uzawa_tolerance), "uzawa_tolerance", o.uzawa_tolerance, "a positive number");
   require(positive(o.gnm_tolerance), "gnm_tolerance", o.gnm_tolerance, "a positive number");
   require(o.max_uzawa_iterations >= 1, "max_uzawa_iterations", o.max_uzawa_iterations, ">= 1");
@@ -59,6 +64,42 @@ void validate(const ContactSolverOptions& o) {
                                  o.device == DeviceKind::Cuda
                                      ? "GPU solver (solver.device = \"cuda\")"
                                      : "multigrid preconditioner"));
+}
+
+}  // namespace signorini
+
+namespace signorini {
+
+double automatic_r(const ContactProblem& p, double factor) {
+  // (N A N^T)_jj = nu_j^T A_jj nu_j over node j's free dofs is the normal stiffness of contact
+  // node j (force per length); divided by the node's share h_j of the boundary it is a stiffness
+  // per area, the units of r (stress per length). So r scales with E / h in every consistent set
+  // of units, and r h_j / (N A N^T)_jj = factor: the penalty is as stiff as the body at the node,
+  // whatever the units and the mesh size (method.md section 7).
+  const ContactSet& c = p.contact;
+  const SparseMatrix Nt = c.N.transpose();  // column j = row j of N
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(c.size()));
+  for (Index j = 0; j < c.size(); ++j) {
+    if (!c.movable[static_cast<std::size_t>(j)] || !(c.weights(j) > 0.0)) continue;
+    double stiffness = 0.0;
+    for (SparseMatrix::InnerIterator a(Nt, j); a; ++a)
+      for (SparseMatrix::InnerIterator b(Nt, j); b; ++b)
+        stiffness += a.value() * p.A.coeff(a.row(), b.row()) * b.value();
+    if (stiffness > 0.0) values.push_back(stiffness / c.weights(j));
+  }
+  if (values.empty())
+    throw InputError(
+        "solver.r: no contact node has a free normal displacement, so r cannot be chosen "
+        "automatically; give solver.r");
+  // The median: corner nodes (half weights) and nodes beside a clamp do not decide it.
+  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return factor * *mid;
+}
+
+double augmentation_parameter(const ContactProblem& problem, const ContactSolverOptions& options) {
+  return options.r ? *options.r : automatic_r(problem, options.auto_r_factor);
 }
 
 }  // namespace signorini

@@ -1,9 +1,12 @@
 #pragma once
 // Options of the contact solvers. Defaults are the paper's (Section 5 and method.md section 4):
-// r = 1e8, GNM tolerance 1e-10, Uzawa tolerance 1e-8, Armijo sigma = 1e-4, l^0 = 0. Each field
-// name is also the key of the [solver] table in a problem file.
+// GNM tolerance 1e-10, Uzawa tolerance 1e-8, Armijo sigma = 1e-4, l^0 = 0, except r, which is
+// chosen from the problem unless given (the paper's r = 1e8 suits only metres and MPa; method.md
+// section 7), and the KKT test that every "converged" must pass. Each field name is also the key
+// of the [solver] table in a problem file.
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "signorini/backend/device_kind.hpp"
@@ -28,7 +31,7 @@ struct IterationEvent {
   int outer = 0;          ///< Uzawa step k (or Newton iteration of the semismooth method)
   int inner = 0;          ///< GNM iteration m within step k (Inner events)
   Index active = 0;       ///< size of the active set
-  double residual = 0.0;  ///< Inner: max(||G||, ||dx||/||x||); Outer: ||l^k - l^{k-1}|| / ||l^k||
+  double residual = 0.0;  ///< Inner: max(||G||/f, ||dx||/||x||); Outer: ||l^k - l^{k-1}|| / ||l^k||
   int armijo = 0;         ///< Armijo halvings in this GNM iteration
   int linear_iterations = 0;
 };
@@ -39,13 +42,24 @@ struct ContactSolverOptions {
   /// "semismooth_newton": primal-dual active set method on the KKT system.
   ContactMethod method = ContactMethod::UzawaGnm;
   /// Augmentation parameter r > 0 of the modified Lagrangian (10). The solution does not depend
-  /// on it; it changes the iteration path only.
-  double r = 1e8;
+  /// on it; it changes the iteration path only. Empty: automatic, r = auto_r_factor times the
+  /// median over the contact nodes of (N A N^T)_jj / h_j, a stiffness per area of the problem
+  /// itself, so that the same physical problem takes the same iterations in any consistent units
+  /// (method.md section 7). The paper's examples give r = 1e8 (metres and MPa).
+  std::optional<double> r;
+  /// The dimensionless factor of the automatic r (ignored when r is given).
+  double auto_r_factor = 10.0;
+  /// "Converged" also requires every relative KKT residual of the result (equilibrium,
+  /// penetration, sign, complementarity; KktResiduals) to be below this, whatever the method's
+  /// own rule says (method.md section 7).
+  double kkt_tolerance = 1e-6;
   /// Uzawa (both variants) stops when ||l^k - l^{k-1}||_2 / ||l^k||_2 < uzawa_tolerance.
   double uzawa_tolerance = 1e-8;
   int max_uzawa_iterations = 1000;
-  /// GNM stops when max(||G(x_m)||_2, ||x_m - x_{m-1}||_2 / ||x_m||_2) < gnm_tolerance, or when the
-  /// active set repeats after a full Newton step (the minimiser is then exact).
+  /// GNM stops when max(||G(x_m)||_2 / f, ||x_m - x_{m-1}||_2 / ||x_m||_2) < gnm_tolerance, with
+  /// the force scale f = max(||b||_2, ||A x_m - b||_2) (the paper's rule with the gradient made
+  /// relative, method.md section 7), or when the active set repeats after a full Newton step (the
+  /// minimiser is then exact).
   double gnm_tolerance = 1e-10;
   int max_gnm_iterations = 100;
   /// Armijo rule: Phi(x + a d) <= Phi(x) + armijo_sigma a <G(x), d>, a = 1/2, 1/4, ...
@@ -76,5 +90,15 @@ struct ContactSolverOptions {
 
 /// Throws InputError naming the first bad field ("solver.r = -1: expected ...").
 void validate(const ContactSolverOptions& options);
+
+struct ContactProblem;
+
+/// The automatic r of a problem: auto_r_factor * median_j (N A N^T)_jj / h_j over the movable
+/// contact nodes (method.md section 7). Units of stress per length, like r.
+[[nodiscard]] double automatic_r(const ContactProblem& problem, double factor);
+
+/// options.r if given, else automatic_r(problem, options.auto_r_factor).
+[[nodiscard]] double augmentation_parameter(const ContactProblem& problem,
+                                            const ContactSolverOptions& options);
 
 }  // namespace signorini

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -14,6 +15,11 @@ void set_gnm_iteration_limit(GnmResult& res, const ContactSolverOptions& options
   res.message = fmt::format(
       "GNM did not converge in {} iterations at Uzawa step {} (residual {:.3e}, tolerance {:.1e})",
       options.max_gnm_iterations, outer, res.residual, options.gnm_tolerance);
+}
+
+double relative_gradient(double gradient_norm, double b_norm, double residual_norm) {
+  const double force = std::max(b_norm, residual_norm);
+  return force > 0.0 ? gradient_norm / force : gradient_norm;
 }
 
 GeneralizedNewton::GeneralizedNewton(const ContactProblem& problem,
@@ -33,6 +39,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
   // A x - b, formed once per call and then updated by t A d with each step: one product with A
   // per GNM iteration.
   Vector residual = problem_.A * x - problem_.b;
+  const double b_norm = problem_.b.norm();
   ActiveSet previous;          // active set that defined the previous Newton step
   bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
   double gradient_norm = std::numeric_limits<double>::infinity();
@@ -90,7 +97,9 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
     x += d;
     residual += t * dir.Ad;
     Nx = N * x;
-    gradient_norm = phi.gradient(residual, Nx).norm();
+    // ||G|| relative to the forces at play, so that the rule means the same in any units
+    // (method.md section 7); the paper's absolute ||G|| < 1e-10 suits metres and MPa only.
+    gradient_norm = relative_gradient(phi.gradient(residual, Nx).norm(), b_norm, residual.norm());
     const double x_norm = x.norm();
     const double step = x_norm > 0.0 ? d.norm() / x_norm : d.norm();
     res.residual = std::max(gradient_norm, step);

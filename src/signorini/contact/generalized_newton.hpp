@@ -26,6 +26,10 @@ struct GnmResult {
 /// (shared by the host and the backend GNM).
 void set_gnm_iteration_limit(GnmResult& res, const ContactSolverOptions& options, int outer);
 
+/// ||G|| / max(||b||, ||A x - b||) (||G|| itself where both are 0): the gradient part of the GNM
+/// stopping rule, free of units (method.md section 7).
+[[nodiscard]] double relative_gradient(double gradient_norm, double b_norm, double residual_norm);
+
 class GeneralizedNewton {
  public:
   GeneralizedNewton(const ContactProblem& problem, const ContactSolverOptions& options,

@@ -26,8 +26,10 @@ std::string SolveSummary::brief_report() const {
   s += fmt::format("  active contact nodes {}, contact force {:.10e}\n", num_active, contact_force);
   s += fmt::format(
       "  KKT (relative): equilibrium {:.2e}, penetration {:.2e}, sign {:.2e}, "
-      "complementarity {:.2e}\n",
-      kkt.equilibrium, kkt.penetration, kkt.sign, kkt.complementarity);
+      "complementarity {:.2e} (tolerance {:.0e})\n",
+      kkt.equilibrium, kkt.penetration, kkt.sign, kkt.complementarity, kkt_tolerance);
+  if (method == ContactMethod::UzawaGnm)
+    s += fmt::format("  r = {:.4g} ({})\n", r, r_automatic ? "automatic" : "given");
   return s;
 }
 

@@ -17,14 +17,18 @@ enum class Termination {
   ActiveSetCycling,
   LineSearchFailure,
   LinearSolverFailure,
+  /// The method's own rule was met, but the KKT residuals of the result are not below
+  /// ContactSolverOptions::kkt_tolerance (method.md section 7): not an answer to trust.
+  KktResidualsTooLarge,
 };
 
-inline constexpr EnumNames<Termination, 5> kTerminationNames{{
+inline constexpr EnumNames<Termination, 6> kTerminationNames{{
     {Termination::Converged, "converged"},
     {Termination::IterationLimit, "iteration_limit"},
     {Termination::ActiveSetCycling, "active_set_cycling"},
     {Termination::LineSearchFailure, "line_search_failure"},
     {Termination::LinearSolverFailure, "linear_solver_failure"},
+    {Termination::KktResidualsTooLarge, "kkt_residuals_too_large"},
 }};
 
 /// One outer step: a Uzawa step k (uzawa_gnm, classical_uzawa) or one Newton iteration
@@ -36,7 +40,7 @@ struct OuterStepRecord {
   int linear_iterations = 0;    ///< CG iterations in this step (0 with a direct solver)
   int factorizations = 0;       ///< numeric factorisations in this step
   int factor_updates = 0;       ///< rank-one factor updates/downdates in this step (dense systems)
-  double inner_residual = 0.0;  ///< last GNM residual max(||G||, ||dx||/||x||)
+  double inner_residual = 0.0;  ///< last GNM residual max(||G||/f, ||dx||/||x||)
   double dual_change = 0.0;     ///< ||l^k - l^{k-1}||_2 / ||l^k||_2 (0 where l^k = l^{k-1} = 0)
 };
 
@@ -66,6 +70,12 @@ struct SolveSummary {
   Eigen::Vector2d contact_force_vector = Eigen::Vector2d::Zero();  ///< -sum_j h_j l_j nu_j
   Index num_active = 0;                                            ///< contact nodes with l_j > 0
   double classical_step = 0.0;                                     ///< rho used by classical_uzawa
+  /// The augmentation parameter used (uzawa_gnm), whether it was given or automatic, and the
+  /// automatic value for comparison (method.md section 7).
+  double r = 0.0;
+  bool r_automatic = false;
+  double automatic_r = 0.0;
+  double kkt_tolerance = 0.0;  ///< the tolerance the KKT residuals were held to
   TimingTable timings;
   /// The backend path (docs/gpu.md): where it ran ("CPU, 2 threads", or the GPU's name), the most
   /// memory it held there, and the multigrid levels (unknowns, finest first; empty for Jacobi).

@@ -11,7 +11,7 @@ namespace signorini {
 
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options) {
   ContactResult out;
-  ModifiedLagrangian phi(problem, options.r);
+  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   const auto system = make_newton_system(problem, phi, options.linear);
   GeneralizedNewton gnm(problem, options, *system);
   Vector x = Vector::Zero(problem.A.rows());

@@ -2,6 +2,7 @@
 // Global assembly of the discrete problem (14): the stiffness A and the load vector b, directly
 // in the numbering of the free dofs (Dirichlet conditions by elimination).
 
+#include <functional>
 #include <string>
 
 #include "signorini/fem/dof_map.hpp"
@@ -17,21 +18,19 @@ struct ElasticityOptions {
   int gauss_points = 2;  ///< per direction in cells (the paper's 2x2 rule)
 };
 
+/// Throws InputError unless the mesh's cells have finite elements here (quad4 so far).
+void require_supported_cells(const Mesh& mesh);
+
 /// Reduced stiffness A (num_free x num_free, SPD when clamping holds the body, both triangles
 /// stored). Throws InputError on an inverted or degenerate cell, naming it.
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
                                 const ElasticityOptions& options);
 
-/// Adds the consistent load of a traction p on a boundary part, int_{part} p . v dGamma, by
-/// Gauss quadrature with `gauss_points` per facet (method.md "Conventions": consistent, not
-/// lumped). Throws InputError if p is not finite somewhere (naming `what` and the position).
-void add_traction_load(const Mesh& mesh, const DofMap& dofs, const BoundaryPart& part,
-                       const VectorField& p, int gauss_points, Vector& b,
-                       const std::string& what = "traction");
-
-/// Adds the body-force load int_Omega f . v dOmega (cell Gauss rule of `gauss_points`^dim).
-void add_body_force_load(const Mesh& mesh, const DofMap& dofs, const VectorField& f,
-                         int gauss_points, Vector& b, const std::string& what = "body force");
+/// K u for the full node-major vector u (num_nodes * dim), cell by cell, at the nodes of the
+/// cells for which `needed(cell)` holds (all cells if it is empty); zero elsewhere. With u the
+/// solution, (K u)_i - f_i at a clamped dof i is the reaction of the clamp there.
+Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,
+                       const std::function<bool(Index)>& needed = {});
 
 /// Energy J(v) = 1/2 <A v, v> - <b, v> (method.md section 1).
 double elastic_energy(const SparseMatrix& A, const Vector& b, const Vector& v);

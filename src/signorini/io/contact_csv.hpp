@@ -9,10 +9,11 @@
 
 namespace signorini {
 
-/// Header "x,y,u_n,u_t,pressure,gap", then per contact node j: its coordinates, the normal
+/// Header "x,y,u_n,u_t,pressure,gap,n_x,n_y", then per contact node j: its coordinates, the normal
 /// displacement u.nu_j, the tangential displacement u.tau_j with tau_j = (-nu_y, nu_x) (nu turned
 /// a quarter counterclockwise: on a bottom edge, nu = (0, -1) and tau = (1, 0)), the contact
-/// pressure l_j >= 0 and the gap g_j. Numbers with 17 significant digits, so that they read back
+/// pressure l_j >= 0, the gap g_j and the outward unit normal nu_j (the foundation lies at
+/// x_j + g_j nu_j). Numbers with 17 significant digits, so that they read back
 /// exactly. 2D only (throws InputError otherwise).
 std::string contact_csv(const ContactResult& result, const Model& model);
 

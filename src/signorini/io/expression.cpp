@@ -36,6 +36,10 @@ std::string one_line(const std::string& text, std::size_t max_length = 200) {
   return out;
 }
 
+// muParser's built-in functions (and the ternary `c ? a : b`, comparisons, && and ||).
+constexpr const char* kFunctionNames =
+    "sqrt, abs, exp, log (natural), log10, sin, cos, tan, atan, min, max, sign and c ? a : b";
+
 }  // namespace
 
 struct ScalarExpression::State {
@@ -60,11 +64,18 @@ ScalarExpression::ScalarExpression(const std::string& expression, const std::str
     s.parser.DefineVar("y", &s.y);
     s.parser.DefineVar("z", &s.z);
     s.parser.DefineConst("pi", std::numbers::pi);
+    s.parser.DefineConst("e", std::numbers::e);
     s.parser.SetExpr(expression);
     // muParser parses lazily, at the first Eval(): evaluate once now so that syntax errors and
     // unknown names surface here, while the problem file is read.
     s.parser.Eval();
   } catch (const mu::Parser::exception_type& e) {
+    // An unknown name is the usual mistake ("X", "t", "sqr"): say which names there are.
+    if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty())
+      throw fail(
+          fmt::format("unknown name '{}' at position {}; the variables are x, y, z and the "
+                      "constants pi and e; functions: {}",
+                      one_line(e.GetToken()), e.GetPos(), kFunctionNames));
     throw fail(e.GetMsg());
   }
   // "1, 2" is valid muParser (several results); as one component it is surely a mistake.

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -19,6 +21,7 @@
 #include "signorini/io/expression.hpp"
 #include "signorini/io/suggestion.hpp"
 #include "signorini/io/toml_emitter.hpp"
+#include "signorini/problem/unit_system.hpp"
 
 namespace signorini {
 
@@ -74,6 +77,64 @@ std::optional<std::string> expression_text(const toml::node& n) {
   return std::nullopt;
 }
 
+// Every key of a problem file, by table ("clamp" stands for each [[clamp]] entry): one list that
+// check_keys() holds each table to and that a misplaced key is looked up in.
+const std::vector<std::pair<std::string, std::vector<std::string>>>& schema() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> tables = {
+      {"",
+       {"name", "units", "mesh", "material", "fem", "clamp", "traction", "point_load", "body_force",
+        "contact", "solver"}},
+      {"mesh", {"type", "origin", "length", "height", "nx", "ny"}},
+      {"material", {"E", "nu", "plane_model"}},
+      {"fem", {"gauss_points", "boundary_gauss_points"}},
+      {"clamp", {"boundary", "components"}},
+      {"traction", {"boundary", "p", "x_range", "y_range"}},
+      {"point_load", {"at", "force", "boundary"}},
+      {"body_force", {"f"}},
+      {"contact", {"boundary", "gap"}},
+      {"solver",
+       {"method", "r", "auto_r_factor", "kkt_tolerance", "uzawa_tolerance", "max_uzawa_iterations",
+        "gnm_tolerance", "max_gnm_iterations", "armijo_sigma", "max_armijo_halvings",
+        "classical_step", "max_classical_iterations", "max_newton_iterations", "schur_complement",
+        "device", "linear"}},
+      {"solver.linear",
+       {"type", "cg_tolerance", "cg_max_iterations", "preconditioner", "coarsening",
+        "chebyshev_degree"}},
+  };
+  return tables;
+}
+
+// "clamp[2]" -> "clamp": the schema's name of a table path.
+std::string schema_path(const std::string& path) {
+  const auto bracket = path.find('[');
+  return bracket == std::string::npos ? path : path.substr(0, bracket);
+}
+
+const std::vector<std::string>& known_keys(const std::string& path) {
+  for (const auto& [table, keys] : schema())
+    if (table == schema_path(path)) return keys;
+  static const std::vector<std::string> none;
+  return none;
+}
+
+// Names that people write for our keys, which spelling distance does not find.
+std::string synonym_of(const std::string& key) {
+  std::string k;
+  for (const char c : key) k += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (k.find("young") != std::string::npos || k.find("modulus") != std::string::npos || k == "emod")
+    return "E";
+  if (k.find("poisson") != std::string::npos || k == "v" || k == "mu_poisson") return "nu";
+  if (k == "load" || k == "pressure" || k == "traction" || k == "force") return "p";
+  if (k == "clearance" || k == "initial_gap" || k == "g") return "gap";
+  return "";
+}
+
+// "<file>:<line>: " where the node came from the file (not from --set), else "<file>: ".
+std::string where(const std::string& file, const toml::source_region& source) {
+  if (source.begin.line == 0 || !source.path || *source.path != file) return file + ": ";
+  return file + ":" + std::to_string(source.begin.line) + ": ";
+}
+
 // How a file is read: its name for messages, and which keys came from --set (an unknown key says
 // so, since the user would otherwise look for it in the file).
 class Reader {
@@ -85,24 +146,45 @@ class Reader {
     throw InputError(file_ + ": " + one_line(message));
   }
 
+  // With the line of the file where the offending key or value is.
+  [[noreturn]] void fail_at(const toml::source_region& source, const std::string& message) const {
+    throw InputError(where(file_, source) + one_line(message));
+  }
+
   // Unknown keys are checked before the values of a table are read, so that a misspelt required
   // key reports "unknown key 'mesh.nxx' (did you mean 'mesh.nx'?)", not "missing 'mesh.nx'".
-  void check_keys(const toml::table& t, const std::string& path,
-                  const std::vector<std::string>& known) const {
+  void check_keys(const toml::table& t, const std::string& path) const {
+    const std::vector<std::string>& known = known_keys(path);
     for (auto&& [k, v] : t) {
       const std::string key(k.str());
       if (std::find(known.begin(), known.end(), key) != known.end()) continue;
       std::string message = "unknown key '" + join(path, key) + "'";
-      const std::string guess = closest_match(key, known);
-      if (!guess.empty()) message += " (did you mean '" + join(path, guess) + "'?)";
+      std::string guess = closest_match(key, known);
+      if (guess.empty()) {
+        const std::string synonym = synonym_of(key);
+        if (std::find(known.begin(), known.end(), synonym) != known.end()) guess = synonym;
+      }
+      if (!guess.empty()) {
+        message += " (did you mean '" + join(path, guess) + "'?)";
+      } else {
+        // A key of another table, as "nx" at the top level: name the table it belongs in.
+        for (const auto& [table, keys] : schema())
+          if (table != schema_path(path) && !table.empty() &&
+              std::find(keys.begin(), keys.end(), key) != keys.end()) {
+            const bool array = table == "clamp" || table == "traction" || table == "point_load";
+            message += " (did you mean '" + table + "." + key + "'? it belongs in the " +
+                       (array ? "[[" + table + "]]" : "[" + table + "]") + " section)";
+            break;
+          }
+      }
       if (overridden_.contains(join(path, key))) message += ", given by --set";
-      fail(message);
+      fail_at(k.source(), message);
     }
   }
 
   [[noreturn]] void wrong_type(const std::string& key, const std::string& expected,
                                const toml::node& n) const {
-    fail("key '" + key + "' must be " + expected + ", got " + type_name(n));
+    fail_at(n.source(), "key '" + key + "' must be " + expected + ", got " + type_name(n));
   }
 
   [[noreturn]] void missing(const std::string& key, const std::string& what) const {
@@ -189,6 +271,31 @@ class Reader {
     return out;
   }
 
+  // An array of exactly `count` finite numbers ("mesh.origin", "traction[0].x_range"); `entries`
+  // says what they are, for the message.
+  std::vector<double> numbers(const toml::node& n, const std::string& key, std::size_t count,
+                              const std::string& entries) const {
+    const auto* a = n.as_array();
+    if (a == nullptr) wrong_type(key, "an array of " + std::to_string(count) + " numbers", n);
+    if (a->size() != count)
+      fail_at(n.source(), "key '" + key + "' must have " + std::to_string(count) + " entries (" +
+                              entries + "), got " + std::to_string(a->size()));
+    std::vector<double> out;
+    for (std::size_t i = 0; i < count; ++i) {
+      const toml::node& e = *a->get(i);
+      double v = 0.0;
+      if (const auto* iv = e.as_integer())
+        v = static_cast<double>(iv->get());
+      else if (const auto* fv = e.as_floating_point())
+        v = fv->get();
+      else
+        wrong_type(element(key, i), "a number", e);
+      if (!std::isfinite(v)) out_of_range(element(key, i), toml_float(v), "a finite number");
+      out.push_back(v);
+    }
+    return out;
+  }
+
   const toml::table* table(const toml::table& t, const std::string& path,
                            std::string_view key) const {
     const toml::node* n = t.get(key);
@@ -226,7 +333,7 @@ class Reader {
         "key '" + join(path, key) + "' must be " + enum_choices(names) + ", got '" + *text + "'";
     const std::string guess = closest_match(*text, choices);
     if (!guess.empty()) message += " (did you mean '" + guess + "'?)";
-    fail(message);
+    fail_at(t.get(key)->source(), message);
   }
 
   // Calls a library validate() and names the file in its message.
@@ -267,40 +374,24 @@ struct ExpressionTexts {
 void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   const toml::table* t = r.table(root, "", "mesh");
   if (t == nullptr) r.missing("mesh", "a [mesh] section with length, height, nx and ny");
-  r.check_keys(*t, "mesh", {"type", "origin", "length", "height", "nx", "ny"});
+  r.check_keys(*t, "mesh");
   const std::string type = r.string(*t, "mesh", "type").value_or("rectangle");
   if (type != "rectangle")
     r.fail("key 'mesh.type' must be \"rectangle\" (the only mesh type so far), got '" + type + "'");
   RectangleMeshOptions& m = spec.mesh;
   if (const toml::node* n = t->get("origin")) {
-    const auto* a = n->as_array();
-    if (a == nullptr || a->size() != 2) {
-      if (a == nullptr) r.wrong_type("mesh.origin", "an array of 2 numbers", *n);
-      r.fail("key 'mesh.origin' must have 2 entries (x and y), got " + std::to_string(a->size()));
-    }
-    double xy[2] = {0.0, 0.0};
-    for (std::size_t i = 0; i < 2; ++i) {
-      const toml::node& e = *a->get(i);
-      if (const auto* v = e.as_integer())
-        xy[i] = static_cast<double>(v->get());
-      else if (const auto* f = e.as_floating_point())
-        xy[i] = f->get();
-      else
-        r.wrong_type(element("mesh.origin", i), "a number", e);
-      if (!std::isfinite(xy[i]))
-        r.out_of_range(element("mesh.origin", i), as_text(xy[i]), "a finite number");
-    }
+    const std::vector<double> xy = r.numbers(*n, "mesh.origin", 2, "x and y");
     m.x0 = xy[0];
     m.y0 = xy[1];
   } else {
     m.x0 = 0.0;
     m.y0 = 0.0;
   }
-  m.length = required(r, r.number(*t, "mesh", "length"), "mesh.length", "number > 0, metres");
-  m.height = required(r, r.number(*t, "mesh", "height"), "mesh.height", "number > 0, metres");
+  m.length = required(r, r.number(*t, "mesh", "length"), "mesh.length", "a number > 0");
+  m.height = required(r, r.number(*t, "mesh", "height"), "mesh.height", "a number > 0");
   const auto positive = [&](const char* key, double value) {
     if (!std::isfinite(value) || value <= 0.0)
-      r.out_of_range(key, as_text(value), "a positive number (metres)");
+      r.out_of_range(key, as_text(value), "a positive number");
   };
   positive("mesh.length", m.length);
   positive("mesh.height", m.height);
@@ -314,19 +405,23 @@ void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec,
                    std::vector<std::string>& warnings) {
   const toml::table* t = r.table(root, "", "material");
   if (t == nullptr) r.missing("material", "a [material] section with E and nu");
-  r.check_keys(*t, "material", {"E", "nu", "plane_model"});
+  r.check_keys(*t, "material");
   IsotropicMaterial& m = spec.elasticity.material;
-  m.E = required(r, r.number(*t, "material", "E"), "material.E", "Young's modulus > 0, MPa");
+  m.E = required(r, r.number(*t, "material", "E"), "material.E", "Young's modulus > 0");
   m.nu = required(r, r.number(*t, "material", "nu"), "material.nu", "Poisson's ratio in (-1, 0.5)");
   spec.elasticity.plane_model =
       r.enumeration(*t, "material", "plane_model", kPlaneModelNames, PlaneModel::PlaneStrain);
   r.validated(m);
-  // Valid, but bilinear elements lock as nu approaches 1/2: the displacements come out too small
-  // by a factor that grows without bound, which the solver cannot detect.
-  if (m.nu > 0.49)
+  // Valid, but bilinear elements lock as nu approaches 1/2: the displacements and the stresses
+  // near the contact come out wrong by a factor that grows without bound (at nu = 0.49 the
+  // stress under a contact peak overshoots the contact pressure by some 70 %), which the solver
+  // cannot detect.
+  if (m.nu >= 0.45)
     warnings.push_back(r.file() + ": material.nu = " + as_text(m.nu) +
-                       " > 0.49: nearly incompressible; Q1 elements lock, so displacements and "
-                       "stresses may be far too small");
+                       " >= 0.45: nearly incompressible, and bilinear (Q1) elements lock: "
+                       "displacements come out too small and stresses near the contact "
+                       "oscillate; quadratic elements (planned) will avoid this, until then "
+                       "check against a finer mesh");
 }
 
 void read_fem(const Reader& r, const toml::table& root, ProblemSpec& spec) {
@@ -334,7 +429,7 @@ void read_fem(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   spec.boundary_gauss_points = 2;
   const toml::table* t = r.table(root, "", "fem");
   if (t == nullptr) return;
-  r.check_keys(*t, "fem", {"gauss_points", "boundary_gauss_points"});
+  r.check_keys(*t, "fem");
   const auto points = [&](std::string_view key, int& target) {
     if (const auto v = r.integer(*t, "fem", key)) {
       // quadrature.hpp has the Gauss-Legendre rules with 1 to 5 points.
@@ -353,7 +448,7 @@ void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const toml::table& t = *entries[i];
     const std::string path = element("clamp", i);
-    r.check_keys(t, path, {"boundary", "components"});
+    r.check_keys(t, path);
     ClampSpec c;
     c.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
                           "name of a boundary part");
@@ -427,23 +522,75 @@ auto with_file(const Reader& r, Make make) {
   }
 }
 
+// A formula with a comparison or a ternary switches value between Gauss points, which sample
+// it: a load on part of an edge comes out wrong by up to a whole facet's share.
+bool looks_discontinuous(const std::string& formula) {
+  return formula.find('?') != std::string::npos || formula.find('<') != std::string::npos ||
+         formula.find('>') != std::string::npos;
+}
+
+// x_range = [a, b]: the traction acts where a <= x <= b (exactly integrated, load_assembly.hpp).
+void read_range(const Reader& r, const toml::table& t, const std::string& path,
+                std::string_view key, int axis, CoordinateBox& box) {
+  const toml::node* n = t.get(key);
+  if (n == nullptr) return;
+  const std::string full = join(path, key);
+  const std::vector<double> v = r.numbers(*n, full, 2, "lower and upper");
+  if (!(v[0] < v[1]))
+    r.fail_at(n->source(), "key '" + full + "' = [" + as_text(v[0]) + ", " + as_text(v[1]) +
+                               "]: expected [lower, upper] with lower < upper");
+  box.lower[static_cast<std::size_t>(axis)] = v[0];
+  box.upper[static_cast<std::size_t>(axis)] = v[1];
+}
+
 void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
-                    ExpressionTexts& texts) {
+                    ExpressionTexts& texts, std::vector<std::string>& warnings) {
   const auto entries = r.array_of_tables(root, "traction");
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const toml::table& t = *entries[i];
     const std::string path = element("traction", i);
-    r.check_keys(t, path, {"boundary", "p"});
+    r.check_keys(t, path);
     TractionSpec tr;
     tr.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
                            "name of a boundary part");
     const auto p = required(r, r.expressions(t, path, "p", 2), join(path, "p"),
-                            "2 expressions of x, y: the traction in MPa");
+                            "2 expressions of x, y: the traction (force per area)");
     tr.p = finite_vector_field(with_file(r, [&] { return make_vector_field(p, join(path, "p")); }),
                                join(path, "p"), p);
     tr.description = describe(p);
+    read_range(r, t, path, "x_range", 0, tr.region);
+    read_range(r, t, path, "y_range", 1, tr.region);
+    for (std::size_t k = 0; k < p.size(); ++k)
+      if (looks_discontinuous(p[k]))
+        warnings.push_back(r.file() + ": " + element(join(path, "p"), k) + " = '" + one_line(p[k]) +
+                           "' switches value inside the boundary: Gauss quadrature samples it, "
+                           "so the load can be lost or overcounted; for a load on part of a "
+                           "boundary give x_range/y_range instead (integrated exactly), and "
+                           "check the applied load in the summary");
     texts.tractions.push_back(p);
     spec.tractions.push_back(std::move(tr));
+  }
+}
+
+// [[point_load]] at = [x, y], force = [fx, fy], boundary (optional): a force at the nearest node.
+void read_point_loads(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const auto entries = r.array_of_tables(root, "point_load");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const toml::table& t = *entries[i];
+    const std::string path = element("point_load", i);
+    r.check_keys(t, path);
+    PointLoadSpec pl;
+    const auto pair = [&](std::string_view key, const char* what) {
+      const std::string full = join(path, key);
+      const toml::node* n = t.get(key);
+      if (n == nullptr) r.missing(full, what);
+      const std::vector<double> xy = r.numbers(*n, full, 2, "x and y");
+      return Eigen::Vector3d(xy[0], xy[1], 0.0);
+    };
+    pl.at = pair("at", "[x, y]: the point; the load acts at the nearest node");
+    pl.force = pair("force", "[fx, fy]: the force (per unit thickness in 2D)");
+    pl.boundary = r.string(t, path, "boundary").value_or("");
+    spec.point_loads.push_back(std::move(pl));
   }
 }
 
@@ -451,9 +598,9 @@ void read_body_force(const Reader& r, const toml::table& root, ProblemSpec& spec
                      ExpressionTexts& texts) {
   const toml::table* t = r.table(root, "", "body_force");
   if (t == nullptr) return;
-  r.check_keys(*t, "body_force", {"f"});
+  r.check_keys(*t, "body_force");
   const auto f = required(r, r.expressions(*t, "body_force", "f", 2), "body_force.f",
-                          "2 expressions of x, y: the force per volume in MN/m^3");
+                          "2 expressions of x, y: the force per volume");
   spec.body_force = finite_vector_field(
       with_file(r, [&] { return make_vector_field(f, "body_force.f"); }), "body_force.f", f);
   spec.body_force_description = describe(f);
@@ -464,7 +611,7 @@ void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
                   ExpressionTexts& texts) {
   const toml::table* t = r.table(root, "", "contact");
   if (t == nullptr) r.missing("contact", "a [contact] section with the contact boundary");
-  r.check_keys(*t, "contact", {"boundary", "gap"});
+  r.check_keys(*t, "contact");
   spec.contact.boundary = required(r, r.string(*t, "contact", "boundary"), "contact.boundary",
                                    "name of a boundary part");
   texts.gap = r.expression(*t, "contact", "gap").value_or("0");
@@ -478,11 +625,7 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   ContactSolverOptions& o = spec.solver;
   o = ContactSolverOptions{};
   if (const toml::table* t = r.table(root, "", "solver")) {
-    r.check_keys(*t, "solver",
-                 {"method", "r", "uzawa_tolerance", "max_uzawa_iterations", "gnm_tolerance",
-                  "max_gnm_iterations", "armijo_sigma", "max_armijo_halvings", "classical_step",
-                  "max_classical_iterations", "max_newton_iterations", "schur_complement", "device",
-                  "linear"});
+    r.check_keys(*t, "solver");
     o.method = r.enumeration(*t, "solver", "method", kContactMethodNames, o.method);
     const auto real = [&](std::string_view key, double& target) {
       if (const auto v = r.number(*t, "solver", key)) target = *v;
@@ -490,7 +633,16 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     const auto whole = [&](std::string_view key, int& target) {
       if (const auto v = r.small_integer(*t, "solver", key)) target = *v;
     };
-    real("r", o.r);
+    // r: a number, or "auto" (the default: chosen from the problem, method.md section 7).
+    if (const toml::node* n = t->get("r"); n != nullptr && n->is_string()) {
+      if (n->as_string()->get() != "auto")
+        r.fail_at(n->source(), "key 'solver.r' must be a positive number or \"auto\", got '" +
+                                   n->as_string()->get() + "'");
+    } else if (const auto v = r.number(*t, "solver", "r")) {
+      o.r = *v;
+    }
+    real("auto_r_factor", o.auto_r_factor);
+    real("kkt_tolerance", o.kkt_tolerance);
     real("uzawa_tolerance", o.uzawa_tolerance);
     whole("max_uzawa_iterations", o.max_uzawa_iterations);
     real("gnm_tolerance", o.gnm_tolerance);
@@ -503,9 +655,7 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     if (const auto v = r.boolean(*t, "solver", "schur_complement")) o.schur_complement = *v;
     o.device = r.enumeration(*t, "solver", "device", kDeviceKindNames, o.device);
     if (const toml::table* lt = r.table(*t, "solver", "linear")) {
-      r.check_keys(*lt, "solver.linear",
-                   {"type", "cg_tolerance", "cg_max_iterations", "preconditioner", "coarsening",
-                    "chebyshev_degree"});
+      r.check_keys(*lt, "solver.linear");
       LinearSolverOptions& l = o.linear;
       l.type = r.enumeration(*lt, "solver.linear", "type", kLinearSolverTypeNames, l.type);
       if (const auto v = r.number(*lt, "solver.linear", "cg_tolerance")) l.cg_tolerance = *v;
@@ -540,6 +690,7 @@ void check_memory(const Reader& r, const ProblemSpec& spec) {
 std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts) {
   TomlEmitter out;
   out.value("name", spec.name);
+  if (!spec.units.empty()) out.value("units", spec.units);
   out.table("mesh");
   out.value("type", "rectangle");
   out.value("origin", std::vector<double>{spec.mesh.x0, spec.mesh.y0});
@@ -566,6 +717,17 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     out.array_table("traction");
     out.value("boundary", spec.tractions[i].boundary);
     out.value("p", texts.tractions[i]);
+    const CoordinateBox& box = spec.tractions[i].region;
+    if (std::isfinite(box.lower[0]))
+      out.value("x_range", std::vector<double>{box.lower[0], box.upper[0]});
+    if (std::isfinite(box.lower[1]))
+      out.value("y_range", std::vector<double>{box.lower[1], box.upper[1]});
+  }
+  for (const PointLoadSpec& pl : spec.point_loads) {
+    out.array_table("point_load");
+    out.value("at", std::vector<double>{pl.at(0), pl.at(1)});
+    out.value("force", std::vector<double>{pl.force(0), pl.force(1)});
+    if (!pl.boundary.empty()) out.value("boundary", pl.boundary);
   }
   if (!texts.body_force.empty()) {
     out.table("body_force");
@@ -577,7 +739,12 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   const ContactSolverOptions& o = spec.solver;
   out.table("solver");
   out.value("method", enum_to_string(kContactMethodNames, o.method));
-  out.value("r", o.r);
+  if (o.r)
+    out.value("r", *o.r);
+  else
+    out.value("r", "auto");
+  out.value("auto_r_factor", o.auto_r_factor);
+  out.value("kkt_tolerance", o.kkt_tolerance);
   out.value("uzawa_tolerance", o.uzawa_tolerance);
   out.value("max_uzawa_iterations", o.max_uzawa_iterations);
   out.value("gnm_tolerance", o.gnm_tolerance);
@@ -668,7 +835,7 @@ std::string apply_override(const Reader& r, toml::table& root, const std::string
   // semismooth_newton or an expression such as 0.5*x is not, and is taken as the string it reads.
   std::optional<toml::table> parsed;
   try {
-    parsed = toml::parse("v = " + value);
+    parsed = toml::parse("v = " + value, std::string("--set"));
   } catch (const toml::parse_error&) {
   }
   const std::string& last = segments.back();
@@ -703,12 +870,138 @@ double physical_memory_bytes() {
   return static_cast<double>(pages) * static_cast<double>(page_size);
 }
 
+namespace {
+
+// The text of line `number` (1-based) of `text`.
+std::string line_of(const std::string& text, std::size_t number) {
+  std::size_t start = 0;
+  for (std::size_t n = 1; n < number && start != std::string::npos; ++n) {
+    start = text.find('\n', start);
+    if (start != std::string::npos) ++start;
+  }
+  if (start == std::string::npos) return {};
+  const auto end = text.find('\n', start);
+  return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+// The dotted name of the table that line `number` is in ("traction[1]", "solver.linear", ""),
+// from the headers above it.
+std::string table_at(const std::string& text, std::size_t number) {
+  std::string table;
+  std::map<std::string, int> entries;
+  for (std::size_t n = 1; n < number; ++n) {
+    const std::string line = trim(line_of(text, n));
+    if (line.rfind("[[", 0) == 0 && line.find("]]") != std::string::npos) {
+      const std::string name = trim(line.substr(2, line.find("]]") - 2));
+      table = name + "[" + std::to_string(entries[name]++) + "]";
+    } else if (line.rfind('[', 0) == 0 && line.find(']') != std::string::npos) {
+      table = trim(line.substr(1, line.find(']') - 1));
+    }
+  }
+  return table;
+}
+
+// The value part of "key = value # comment", without the comment (outside quotes).
+std::string value_text(const std::string& after_equals) {
+  bool quoted = false;
+  for (std::size_t i = 0; i < after_equals.size(); ++i) {
+    if (after_equals[i] == '"') quoted = !quoted;
+    if (after_equals[i] == '#' && !quoted) return trim(after_equals.substr(0, i));
+  }
+  return trim(after_equals);
+}
+
+bool is_number(const std::string& s) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  (void)std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size();
+}
+
+// The entries of "[a, b(c, d), e]" split at the commas outside parentheses.
+std::vector<std::string> array_entries(const std::string& array) {
+  std::vector<std::string> out;
+  std::string current;
+  int depth = 0;
+  for (std::size_t i = 1; i + 1 < array.size(); ++i) {
+    const char c = array[i];
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if (c == ',' && depth == 0) {
+      out.push_back(trim(current));
+      current.clear();
+    } else {
+      current += c;
+    }
+  }
+  out.push_back(trim(current));
+  return out;
+}
+
+// The usual mistakes behind a TOML syntax error, said in the problem file's terms: a number
+// with a unit ("E = 210000 MPa") and a formula without quotes ("gap = 0.1*x", "p = [0, -x]").
+// Empty when the line is none of these.
+std::string explain_syntax_error(const std::string& text, std::size_t number) {
+  const std::string line = line_of(text, number);
+  const auto eq = line.find('=');
+  if (eq == std::string::npos) return {};
+  const std::string key = trim(line.substr(0, eq));
+  const std::string value = value_text(line.substr(eq + 1));
+  if (key.empty() || value.empty() || value[0] == '"' || value[0] == '\'') return {};
+  // Only plain ASCII text is guessed at; anything else keeps the parser's own message.
+  for (const char c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e)
+      if (c != '\t' && c != '\r') return {};
+  const std::string table = table_at(text, number);
+  const std::string full = table.empty() ? key : table + "." + key;
+  // A number and a word after it: a unit.
+  const auto space = value.find_first_of(" \t");
+  if (space != std::string::npos && is_number(value.substr(0, space))) {
+    const std::string number_part = value.substr(0, space);
+    return fmt::format(
+        "key '{}' = {}: a number cannot carry a unit; write {} = {} (the numbers of a problem "
+        "are in one consistent set of units, which the top-level key units = \"m-MPa\" (or "
+        "\"mm-N\", \"m-Pa\", ...) names for the labels)",
+        full, value, key, number_part);
+  }
+  if (value[0] == '[' && value.back() == ']') {
+    std::string quoted;
+    bool any = false;
+    for (const std::string& e : array_entries(value)) {
+      const bool plain = e.empty() || e[0] == '"' || is_number(e);
+      any = any || !plain;
+      quoted += (quoted.empty() ? "" : ", ") + (plain ? e : "\"" + e + "\"");
+    }
+    if (any)
+      return fmt::format("key '{}' = {}: formulas in an array must be quoted strings, as {} = [{}]",
+                         full, value, key, quoted);
+    return {};
+  }
+  // A formula: the characters of one, and a letter or an operator among them.
+  const bool formula_characters =
+      value.find_first_not_of(
+          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_ "
+          ".+-*/^()<>?:!&|,") == std::string::npos &&
+      value.find_first_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ*/^(") !=
+          std::string::npos;
+  if (formula_characters && !is_number(value) && value != "true" && value != "false")
+    return fmt::format("key '{}' = {}: a formula or a name must be a quoted string, as {} = \"{}\"",
+                       full, value, key, value);
+  return {};
+}
+
+}  // namespace
+
 LoadedProblem parse_problem_string(const std::string& toml_text, const std::string& name_for_errors,
                                    const std::vector<std::string>& overrides) {
   toml::table root;
   try {
     root = toml::parse(toml_text, name_for_errors);
   } catch (const toml::parse_error& e) {
+    const std::string explained = explain_syntax_error(toml_text, e.source().begin.line);
+    if (!explained.empty())
+      throw InputError(
+          fmt::format("{}:{}: {}", name_for_errors, e.source().begin.line, one_line(explained)));
     throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", name_for_errors,
                                  e.source().begin.line, e.source().begin.column,
                                  one_line(std::string(e.description()))));
@@ -720,21 +1013,28 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
     for (const std::string& o : overrides) overridden.insert(apply_override(pre, root, o));
   }
   const Reader r(name_for_errors, std::move(overridden));
-  r.check_keys(
-      root, "",
-      {"name", "mesh", "material", "fem", "clamp", "traction", "body_force", "contact", "solver"});
+  r.check_keys(root, "");
 
   LoadedProblem out;
   out.path = name_for_errors;
   ProblemSpec& spec = out.spec;
   spec.name =
       r.string(root, "", "name").value_or(std::filesystem::path(name_for_errors).stem().string());
+  spec.units = r.string(root, "", "units").value_or("");
+  if (!spec.units.empty() && !is_unit_system(spec.units)) {
+    std::string message = "key 'units' = '" + spec.units + "': expected one of " +
+                          unit_system_choices() + " (labels only; or leave it out)";
+    const std::string guess = closest_match(spec.units, unit_system_names());
+    if (!guess.empty()) message += " (did you mean '" + guess + "'?)";
+    r.fail_at(root.get("units")->source(), message);
+  }
   ExpressionTexts texts;
   read_mesh(r, root, spec);
   read_material(r, root, spec, out.warnings);
   read_fem(r, root, spec);
   read_clamps(r, root, spec);
-  read_tractions(r, root, spec, texts);
+  read_tractions(r, root, spec, texts, out.warnings);
+  read_point_loads(r, root, spec);
   read_body_force(r, root, spec, texts);
   read_contact(r, root, spec, texts);
   read_solver(r, root, spec);

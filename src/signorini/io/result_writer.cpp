@@ -24,8 +24,7 @@ void write_results(const std::filesystem::path& outdir, const ContactResult& res
   // Every content is made before any file is touched, and the files are replaced together: an
   // error leaves the results of an earlier run as they were, never a mix of old and new.
   std::vector<std::pair<std::filesystem::path, std::string>> files;
-  files.emplace_back(outdir / "summary.json",
-                     summary_to_json(result.summary, model, spec).dump(2) + "\n");
+  files.emplace_back(outdir / "summary.json", summary_to_json(result, model, spec).dump(2) + "\n");
   files.emplace_back(outdir / "contact.csv", contact_csv(result, model));
   files.emplace_back(outdir / "solution.vtu", solution_vtu(result, model, spec));
   files.emplace_back(outdir / "contact.vtu", contact_vtu(result, model, spec));

@@ -1,6 +1,9 @@
 #include "signorini/io/summary_json.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "signorini/problem/resultants.hpp"
 
 namespace signorini {
 
@@ -20,9 +23,46 @@ double run_total_seconds(const Model& model, const SolveSummary& summary) {
          (has_solve ? summary.timings.seconds("contact solve") : summary.timings.total());
 }
 
-nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
+namespace {
+
+// A vector of the problem's dimension; + 0.0 turns a negative zero (from -(0 * l)) into 0: "-0.0"
+// in a file looks like a sign error.
+nlohmann::json vector_json(const Eigen::Vector3d& v, int dim) {
+  nlohmann::json a = nlohmann::json::array();
+  for (int k = 0; k < dim; ++k) a.push_back(v(k) + 0.0);
+  return a;
+}
+
+// The moment: a number (about z) in 2D, a vector in 3D.
+nlohmann::json moment_json(const Eigen::Vector3d& m, int dim) {
+  return dim == 2 ? nlohmann::json(m(2) + 0.0) : vector_json(m, dim);
+}
+
+nlohmann::json resultants_json(const Resultants& r, int dim) {
+  nlohmann::json reactions = nlohmann::json::array();
+  for (const ClampReaction& c : r.reactions)
+    reactions.push_back({{"boundary", c.boundary},
+                         {"force", vector_json(c.force, dim)},
+                         {"moment", moment_json(c.moment, dim)}});
+  return {{"reference", vector_json(r.reference, dim)},
+          {"applied", vector_json(r.applied, dim)},
+          {"applied_moment", moment_json(r.applied_moment, dim)},
+          {"reactions", reactions},
+          {"contact", vector_json(r.contact, dim)},
+          {"contact_moment", moment_json(r.contact_moment, dim)},
+          {"balance", vector_json(r.balance, dim)},
+          {"moment_balance", moment_json(r.moment_balance, dim)},
+          {"relative_balance", r.relative_balance},
+          {"relative_moment_balance", r.relative_moment_balance}};
+}
+
+}  // namespace
+
+nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
                                const ProblemSpec& spec) {
   using nlohmann::json;
+  const SolveSummary& summary = result.summary;
+  const int dim = model.mesh.dim();
   json j;
   j["signorini_version"] = SIGNORINI_VERSION;
   j["converged"] = summary.converged();
@@ -52,6 +92,11 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
   j["factorizations"] = factorizations;
   j["factor_updates"] = updates;
   if (summary.method == ContactMethod::ClassicalUzawa) j["classical_step"] = summary.classical_step;
+  if (summary.method == ContactMethod::UzawaGnm) {
+    j["r"] = summary.r;
+    j["r_automatic"] = summary.r_automatic;
+  }
+  j["kkt_tolerance"] = summary.kkt_tolerance;
   if (!summary.device.empty()) {  // the backend path (docs/gpu.md)
     j["device"] = summary.device;
     j["device_peak_bytes"] = summary.device_peak_bytes;
@@ -66,9 +111,17 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
   j["n_contact_nodes"] = model.problem.contact.size();
   j["n_active"] = summary.num_active;
   j["contact_force"] = summary.contact_force;
-  // + 0.0 turns a negative zero (from -(0 * l)) into 0: "-0.0" in a file looks like a sign error.
   j["contact_force_vector"] = {summary.contact_force_vector(0) + 0.0,
                                summary.contact_force_vector(1) + 0.0};
+  j["resultants"] = resultants_json(compute_resultants(model, result.u, result.l), dim);
+  json point_loads = json::array();
+  for (const PlacedPointLoad& p : model.point_loads)
+    point_loads.push_back({{"requested", vector_json(p.requested, dim)},
+                           {"node", p.node},
+                           {"at", vector_json(p.at, dim)},
+                           {"distance", p.distance},
+                           {"force", vector_json(p.force, dim)}});
+  j["point_loads"] = point_loads;
   j["kkt"] = {{"equilibrium", summary.kkt.equilibrium},
               {"penetration", summary.kkt.penetration},
               {"sign", summary.kkt.sign},
@@ -83,6 +136,7 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
   const ContactSolverOptions& o = spec.solver;
   json problem;
   problem["name"] = spec.name;
+  problem["units"] = spec.units.empty() ? json(nullptr) : json(spec.units);
   problem["mesh"] = {{"type", "rectangle"},        {"origin", {spec.mesh.x0, spec.mesh.y0}},
                      {"length", spec.mesh.length}, {"height", spec.mesh.height},
                      {"nx", spec.mesh.nx},         {"ny", spec.mesh.ny}};
@@ -101,14 +155,20 @@ nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
   }
   problem["clamp"] = clamps;
   json tractions = json::array();
-  for (const TractionSpec& t : spec.tractions)
-    tractions.push_back({{"boundary", t.boundary}, {"p", t.description}});
+  for (const TractionSpec& t : spec.tractions) {
+    json tr = {{"boundary", t.boundary}, {"p", t.description}};
+    if (std::isfinite(t.region.lower[0])) tr["x_range"] = {t.region.lower[0], t.region.upper[0]};
+    if (std::isfinite(t.region.lower[1])) tr["y_range"] = {t.region.lower[1], t.region.upper[1]};
+    tractions.push_back(tr);
+  }
   problem["traction"] = tractions;
   if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
   problem["contact"] = {{"boundary", spec.contact.boundary}, {"gap", spec.contact.description}};
   problem["solver"] = {
       {"method", std::string(enum_to_string(kContactMethodNames, o.method))},
-      {"r", o.r},
+      {"r", o.r ? nlohmann::json(*o.r) : nlohmann::json("auto")},
+      {"auto_r_factor", o.auto_r_factor},
+      {"kkt_tolerance", o.kkt_tolerance},
       {"uzawa_tolerance", o.uzawa_tolerance},
       {"max_uzawa_iterations", o.max_uzawa_iterations},
       {"gnm_tolerance", o.gnm_tolerance},

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "signorini/contact/solve_summary.hpp"
+#include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/problem_spec.hpp"
 
@@ -16,7 +16,11 @@ namespace signorini {
 /// n_contact_nodes, n_active, contact_force, contact_force_vector, kkt {equilibrium,
 /// penetration, sign, complementarity}, timings {phase: seconds, ..., total}, problem {...},
 /// signorini_version. Non-finite numbers come out as null (JSON has no NaN).
-nlohmann::json summary_to_json(const SolveSummary& summary, const Model& model,
+/// Also: r (the augmentation parameter used), r_automatic, kkt_tolerance, resultants {reference,
+/// applied, applied_moment, reactions [{boundary, force, moment}], contact, contact_moment,
+/// balance, moment_balance, relative_balance, relative_moment_balance}, point_loads [{requested,
+/// node, at, distance, force}] (docs/output.md).
+nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
                                const ProblemSpec& spec);
 
 /// The phases of a run: the model's (mesh, assembly, ...) then the solver's. The solver's

@@ -1,6 +1,10 @@
 #pragma once
 // From a ProblemSpec to the discrete contact problem (14): mesh, dof numbering, stiffness, loads
-// and contact set, with the time each phase took.
+// and contact set, with the time each phase took, and what the resultants of a solution need
+// (problem/resultants.hpp): the full load vector, the clamped dofs of each clamp, the material.
+
+#include <string>
+#include <vector>
 
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/core/timing_table.hpp"
@@ -10,18 +14,44 @@
 
 namespace signorini {
 
+/// The dofs that one [[clamp]] entry holds (full, node-major numbers), each counted for the first
+/// entry that clamps it, so that the reactions of the entries add up to the total.
+struct ClampedPart {
+  std::string boundary;
+  std::vector<Index> dofs;
+};
+
+/// Where a point load landed: the node it acts at, and how far that is from where it was asked.
+struct PlacedPointLoad {
+  Point requested = Point::Zero();
+  Index node = 0;
+  Point at = Point::Zero();
+  double distance = 0.0;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+};
+
 struct Model {
   Mesh mesh;
   DofMap dofs;
   ContactProblem problem;
   TimingTable timings;  ///< "mesh", "assembly", "loads", "contact set"
+  ElasticityOptions elasticity;
+  /// Every applied load (tractions, body force, point loads) on the full dofs; problem.b is its
+  /// free part.
+  Vector loads;
+  std::vector<ClampedPart> clamped_parts;
+  std::vector<PlacedPointLoad> point_loads;
 };
 
-/// Throws InputError on anything unusable: unknown boundary names, no clamped dof, bad material,
-/// non-finite loads or gaps, an empty contact boundary.
+/// Throws InputError on anything unusable: unknown boundary names, rigid motions that the clamps
+/// leave free (named), bad material, non-finite loads or gaps, an empty contact boundary, a
+/// traction on the contact boundary.
 Model build_model(const ProblemSpec& spec);
 
 /// Builds the dof numbering for a mesh and clamps (exposed for tests and other drivers).
 DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps);
+
+/// Throws InputError naming the rigid motions that the clamps leave free (fem/free_rigid_motions).
+void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs);
 
 }  // namespace signorini

@@ -9,6 +9,7 @@
 
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/vector_field.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 
@@ -20,11 +21,20 @@ struct ClampSpec {
   std::array<bool, 3> components{true, true, true};
 };
 
-/// sigma(u) n = p on a boundary part (Gamma_N).
+/// sigma(u) n = p on a boundary part (Gamma_N), or on the part of it inside `region`.
 struct TractionSpec {
   std::string boundary;
   VectorField p;
   std::string description;  ///< how p was given (e.g. the expressions), for reports
+  CoordinateBox region;     ///< unbounded: the whole boundary part
+};
+
+/// A force at one mesh node: the node nearest to `at` (on `boundary` if it is not empty). In 2D
+/// a force per unit thickness, as the tractions are per unit area.
+struct PointLoadSpec {
+  Point at = Point::Zero();
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  std::string boundary;
 };
 
 /// Possible contact with the rigid foundation on a boundary part (Gamma_K), initial gap g(x).
@@ -36,11 +46,15 @@ struct ContactSpec {
 
 struct ProblemSpec {
   std::string name = "problem";
+  /// The units the numbers are in, for labels only (e.g. "m-MPa"; empty: not said). The solver
+  /// needs none: any consistent set works (method.md section 7).
+  std::string units;
   RectangleMeshOptions mesh;  ///< the structured rectangle (the only mesh source so far)
   ElasticityOptions elasticity;
   int boundary_gauss_points = 2;  ///< Gauss points per boundary facet for tractions
   std::vector<ClampSpec> clamps;
   std::vector<TractionSpec> tractions;
+  std::vector<PointLoadSpec> point_loads;
   VectorField body_force;  ///< empty: no body force
   std::string body_force_description;
   ContactSpec contact;

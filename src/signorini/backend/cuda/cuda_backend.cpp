@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "signorini/backend/cuda/cuda_kernels.hpp"
+#include "signorini/backend/cuda/cuda_libraries.hpp"
 #include "signorini/core/error.hpp"
 
 #if CUDART_VERSION < 12000
@@ -36,6 +37,14 @@ namespace signorini {
 
 namespace {
 
+// cuBLAS and cuSPARSE, loaded at their first use (cuda_libraries.hpp).
+const cuda::CublasFunctions& blas() {
+  return cuda::cuda_libraries().cublas;
+}
+const cuda::CusparseFunctions& sparse() {
+  return cuda::cuda_libraries().cusparse;
+}
+
 // Status checks: a failure throws NumericalError naming the call and the library's message.
 void check(cudaError_t status, const char* call) {
   if (status == cudaSuccess) return;
@@ -47,13 +56,13 @@ void check(cudaError_t status, const char* call) {
 
 void check(cublasStatus_t status, const char* call) {
   if (status != CUBLAS_STATUS_SUCCESS)
-    throw NumericalError(fmt::format("cuBLAS: {} failed: {}", call, cublasGetStatusString(status)));
+    throw NumericalError(fmt::format("cuBLAS: {} failed: {}", call, blas().status_string(status)));
 }
 
 void check(cusparseStatus_t status, const char* call) {
   if (status != CUSPARSE_STATUS_SUCCESS)
     throw NumericalError(
-        fmt::format("cuSPARSE: {} failed: {}", call, cusparseGetErrorString(status)));
+        fmt::format("cuSPARSE: {} failed: {}", call, sparse().error_string(status)));
 }
 
 /// "13.0" from 13000 (CUDART_VERSION, cudaDriverGetVersion).
@@ -114,14 +123,15 @@ class CudaDenseMatrix final : public DeviceDenseMatrix {
 class DenseVectorDescriptor {
  public:
   DenseVectorDescriptor(Index n, const double* values) {
-    check(cusparseCreateConstDnVec(&constant_, n, values, CUDA_R_64F), "cusparseCreateConstDnVec");
+    check(sparse().create_const_dn_vec(&constant_, n, values, CUDA_R_64F),
+          "cusparseCreateConstDnVec");
   }
   DenseVectorDescriptor(Index n, double* values) {
-    check(cusparseCreateDnVec(&mutable_, n, values, CUDA_R_64F), "cusparseCreateDnVec");
+    check(sparse().create_dn_vec(&mutable_, n, values, CUDA_R_64F), "cusparseCreateDnVec");
     constant_ = mutable_;
   }
   ~DenseVectorDescriptor() {
-    if (constant_ != nullptr) (void)cusparseDestroyDnVec(constant_);
+    if (constant_ != nullptr) (void)sparse().destroy_dn_vec(constant_);
   }
   DenseVectorDescriptor(const DenseVectorDescriptor&) = delete;
   DenseVectorDescriptor& operator=(const DenseVectorDescriptor&) = delete;
@@ -199,7 +209,7 @@ class CudaBackend final : public Backend {
 };
 
 CudaSparseMatrix::~CudaSparseMatrix() {
-  if (descriptor != nullptr) (void)cusparseDestroySpMat(descriptor);
+  if (descriptor != nullptr) (void)sparse().destroy_sp_mat(descriptor);
   backend->release_bytes(buffer);
   backend->release_bytes(values);
   backend->release_bytes(columns);
@@ -233,18 +243,18 @@ CudaBackend::CudaBackend(int ordinal) : device_(ordinal) {
 
   try {
     check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "cudaStreamCreateWithFlags");
-    check(cublasCreate(&cublas_), "cublasCreate");
-    check(cublasSetStream(cublas_, stream_), "cublasSetStream");
+    check(blas().create(&cublas_), "cublasCreate");
+    check(blas().set_stream(cublas_, stream_), "cublasSetStream");
     // A fixed cuBLAS workspace (set after cublasSetStream, which resets it): without one, cuBLAS
     // calls inside a graph capture add allocation nodes to the graph (cuBLAS docs, "CUDA Graphs
     // Support"). 32 MiB is NVIDIA's recommendation for Hopper. Not counted in bytes_in_use():
     // it is the library's, not the problem's.
     check(cudaMalloc(&cublas_workspace_, kCublasWorkspaceBytes), "cudaMalloc (cuBLAS workspace)");
-    check(cublasSetWorkspace(cublas_, cublas_workspace_, kCublasWorkspaceBytes),
+    check(blas().set_workspace(cublas_, cublas_workspace_, kCublasWorkspaceBytes),
           "cublasSetWorkspace");
-    check(cublasSetPointerMode(cublas_, CUBLAS_POINTER_MODE_HOST), "cublasSetPointerMode");
-    check(cusparseCreate(&cusparse_), "cusparseCreate");
-    check(cusparseSetStream(cusparse_, stream_), "cusparseSetStream");
+    check(blas().set_pointer_mode(cublas_, CUBLAS_POINTER_MODE_HOST), "cublasSetPointerMode");
+    check(sparse().create(&cusparse_), "cusparseCreate");
+    check(sparse().set_stream(cusparse_, stream_), "cusparseSetStream");
   } catch (...) {
     destroy_handles();
     throw;
@@ -263,8 +273,8 @@ CudaBackend::~CudaBackend() {
 }
 
 void CudaBackend::destroy_handles() noexcept {
-  if (cusparse_ != nullptr) (void)cusparseDestroy(cusparse_);
-  if (cublas_ != nullptr) (void)cublasDestroy(cublas_);
+  if (cusparse_ != nullptr) (void)sparse().destroy(cusparse_);
+  if (cublas_ != nullptr) (void)blas().destroy(cublas_);
   if (cublas_workspace_ != nullptr) (void)cudaFree(cublas_workspace_);
   if (stream_ != nullptr) (void)cudaStreamDestroy(stream_);
   cusparse_ = nullptr;
@@ -394,9 +404,9 @@ std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload_csr(Index rows, Index co
   // The host arrays may be freed on return: the copies must be done.
   check(cudaStreamSynchronize(stream_), "cudaStreamSynchronize");
   if (rows > 0 && cols > 0 && nonzeros > 0)
-    check(cusparseCreateCsr(&m->descriptor, rows, cols, nonzeros, m->row_offsets, m->columns,
-                            m->values, CUSPARSE_INDEX_32I, CUSPARSE_INDEX_32I,
-                            CUSPARSE_INDEX_BASE_ZERO, CUDA_R_64F),
+    check(sparse().create_csr(&m->descriptor, rows, cols, nonzeros, m->row_offsets, m->columns,
+                              m->values, CUSPARSE_INDEX_32I, CUSPARSE_INDEX_32I,
+                              CUSPARSE_INDEX_BASE_ZERO, CUDA_R_64F),
           "cusparseCreateCsr");
   return m;
 }
@@ -434,25 +444,25 @@ void CudaBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, Devic
   // this may run inside a graph capture (Backend::record runs the work once before capturing).
   if (m.buffer == nullptr) {
     std::size_t needed = 0;
-    check(cusparseSpMV_bufferSize(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha, m.descriptor,
-                                  vx.constant(), &beta, vy.mutable_descriptor(), CUDA_R_64F,
-                                  kSpmvAlgorithm, &needed),
+    check(sparse().spmv_buffer_size(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha,
+                                    m.descriptor, vx.constant(), &beta, vy.mutable_descriptor(),
+                                    CUDA_R_64F, kSpmvAlgorithm, &needed),
           "cusparseSpMV_bufferSize");
     const std::size_t bytes = std::max<std::size_t>(needed, 256);  // never a null buffer
     m.buffer = allocate_bytes(bytes, "the work buffer of cusparseSpMV");
     m.buffer_bytes = bytes;
   }
   if (!m.preprocessed) {
-    check(cusparseSpMV_preprocess(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha, m.descriptor,
-                                  vx.constant(), &beta, vy.mutable_descriptor(), CUDA_R_64F,
-                                  kSpmvAlgorithm, m.buffer),
+    check(sparse().spmv_preprocess(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha,
+                                   m.descriptor, vx.constant(), &beta, vy.mutable_descriptor(),
+                                   CUDA_R_64F, kSpmvAlgorithm, m.buffer),
           "cusparseSpMV_preprocess");
     m.preprocessed = true;
   }
-  check(
-      cusparseSpMV(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha, m.descriptor, vx.constant(),
-                   &beta, vy.mutable_descriptor(), CUDA_R_64F, kSpmvAlgorithm, m.buffer),
-      "cusparseSpMV");
+  check(sparse().spmv(cusparse_, CUSPARSE_OPERATION_NON_TRANSPOSE, &alpha, m.descriptor,
+                      vx.constant(), &beta, vy.mutable_descriptor(), CUDA_R_64F, kSpmvAlgorithm,
+                      m.buffer),
+        "cusparseSpMV");
 }
 
 void CudaBackend::gemv(const DeviceDenseMatrix& A, const DeviceVector& x, DeviceVector& y) {
@@ -467,8 +477,8 @@ void CudaBackend::gemv(const DeviceDenseMatrix& A, const DeviceVector& x, Device
   }
   const double one = 1.0;
   const double zero = 0.0;  // y is not read (BLAS semantics of beta = 0)
-  check(cublasDgemv_64(cublas_, CUBLAS_OP_N, m.rows(), m.cols(), &one, m.values, m.rows(), x.data(),
-                       1, &zero, y.data(), 1),
+  check(blas().dgemv(cublas_, CUBLAS_OP_N, m.rows(), m.cols(), &one, m.values, m.rows(), x.data(),
+                     1, &zero, y.data(), 1),
         "cublasDgemv_64");
 }
 
@@ -478,7 +488,7 @@ double CudaBackend::dot(const DeviceVector& x, const DeviceVector& y) {
   require(x, x.size(), "dot", "x");
   bind();
   double result = 0.0;  // pointer mode host: cuBLAS waits for the result
-  check(cublasDdot_64(cublas_, x.size(), x.data(), 1, y.data(), 1, &result), "cublasDdot_64");
+  check(blas().ddot(cublas_, x.size(), x.data(), 1, y.data(), 1, &result), "cublasDdot_64");
   return result;
 }
 
@@ -669,6 +679,11 @@ std::unique_ptr<Backend> make_cuda_backend(int ordinal) {
         "usable, numbered from 0)",
         ordinal, report.gpus.size()));
   return std::make_unique<CudaBackend>(ordinal);
+}
+
+std::vector<std::string> load_cuda_libraries() {
+  const cuda::CudaLibraries& libraries = cuda::cuda_libraries();
+  return {libraries.cublas_path, libraries.cusparse_path};
 }
 
 }  // namespace signorini

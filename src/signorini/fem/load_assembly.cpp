@@ -1,0 +1,164 @@
+#include "signorini/fem/load_assembly.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "signorini/core/error.hpp"
+#include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/q1_element.hpp"
+#include "signorini/fem/quadrature.hpp"
+
+namespace signorini {
+
+namespace {
+
+std::string position_text(const Point& x, int dim) {
+  std::ostringstream s;
+  s << "(" << x(0) << ", " << x(1);
+  if (dim == 3) s << ", " << x(2);
+  s << ")";
+  return s.str();
+}
+
+Eigen::Vector3d checked(const VectorField& field, const Point& x, int dim,
+                        const std::string& what) {
+  const Eigen::Vector3d v = field(x);
+  if (!v.head(dim).allFinite())
+    throw InputError(what + " is not finite at x = " + position_text(x, dim) +
+                     ": expected finite values everywhere it is used");
+  return v;
+}
+
+Point point_of(const Mesh& mesh, Index node) {
+  Point x = Point::Zero();
+  for (int k = 0; k < mesh.dim(); ++k) x(k) = mesh.node(node)(k);
+  return x;
+}
+
+}  // namespace
+
+bool CoordinateBox::unbounded() const {
+  for (std::size_t k = 0; k < 3; ++k)
+    if (std::isfinite(lower[k]) || std::isfinite(upper[k])) return false;
+  return true;
+}
+
+std::array<double, 2> CoordinateBox::clip(const Point& a, const Point& b) const {
+  double t0 = 0.0, t1 = 1.0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto i = static_cast<Eigen::Index>(k);
+    const double d = b(i) - a(i);
+    if (d == 0.0) {
+      if (a(i) < lower[k] || a(i) > upper[k]) return {1.0, 0.0};  // parallel and outside
+      continue;
+    }
+    double s0 = (lower[k] - a(i)) / d;  // where the segment crosses the two planes
+    double s1 = (upper[k] - a(i)) / d;
+    if (s0 > s1) std::swap(s0, s1);
+    t0 = std::max(t0, s0);
+    t1 = std::min(t1, s1);
+  }
+  return {t0, t1};
+}
+
+void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const VectorField& p,
+                         int gauss_points, Vector& f, const std::string& what,
+                         const CoordinateBox& box) {
+  require_supported_cells(mesh);
+  const int dim = mesh.dim();
+  const auto rule = gauss_legendre(gauss_points);
+  const bool whole = box.unbounded();
+  for (const Facet& facet : part.facets) {
+    const auto fn = mesh.facet_nodes(facet);
+    const Point xa = point_of(mesh, fn[0]);
+    const Point xb = point_of(mesh, fn[1]);
+    const double length = (xb - xa).norm();
+    // The part of the facet inside the box, t in [t0, t1] along it (all of it without a box).
+    double t0 = 0.0, t1 = 1.0;
+    if (!whole) {
+      const auto [c0, c1] = box.clip(xa, xb);
+      if (!(c1 > c0)) continue;  // misses the box, or touches it at one point only
+      t0 = c0;
+      t1 = c1;
+    }
+    for (const auto& q : rule) {
+      // Shape functions of the facet's end nodes at the Gauss point of [t0, t1]; on the whole
+      // facet exactly the paper's consistent rule, (1 -+ xi) / 2 with weight w |facet| / 2.
+      double na = 0.5 * (1.0 - q.x), nb = 0.5 * (1.0 + q.x);
+      if (!whole) {
+        nb = t0 + (t1 - t0) * nb;
+        na = 1.0 - nb;
+      }
+      const Point x = na * xa + nb * xb;
+      const Eigen::Vector3d pv = checked(p, x, dim, what);
+      const double weight = 0.5 * (t1 - t0) * length * q.w;
+      for (int k = 0; k < dim; ++k) {
+        f(fn[0] * dim + k) += na * pv(k) * weight;
+        f(fn[1] * dim + k) += nb * pv(k) * weight;
+      }
+    }
+  }
+}
+
+void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,
+                     const std::string& what) {
+  require_supported_cells(mesh);
+  const auto rule = gauss_legendre(gauss_points);
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    Q1Coordinates X;
+    const auto nodes = mesh.cell(c);
+    for (int a = 0; a < 4; ++a) X.col(a) = mesh.node(nodes[static_cast<std::size_t>(a)]);
+    for (const auto& qx : rule)
+      for (const auto& qy : rule) {
+        const Eigen::Vector4d N = q1_shape(qx.x, qy.x);
+        const Eigen::Matrix2d J = q1_shape_gradients(qx.x, qy.x) * X.transpose();
+        const double det_j = J.determinant();
+        if (!(det_j > 0.0))
+          throw InputError("mesh cell " + std::to_string(c) +
+                           ": inverted or degenerate quadrilateral");
+        Point x = Point::Zero();
+        x.head<2>() = X * N;
+        const Eigen::Vector3d fv = checked(force, x, 2, what);
+        for (int a = 0; a < 4; ++a)
+          for (int k = 0; k < 2; ++k)
+            f(nodes[static_cast<std::size_t>(a)] * 2 + k) += N(a) * fv(k) * det_j * qx.w * qy.w;
+      }
+  }
+}
+
+void add_traction_load(const Mesh& mesh, const DofMap& dofs, const BoundaryPart& part,
+                       const VectorField& p, int gauss_points, Vector& b, const std::string& what) {
+  Vector f = Vector::Zero(dofs.num_dofs());
+  add_traction_forces(mesh, part, p, gauss_points, f, what);
+  b += dofs.restrict_to_free(f);
+}
+
+void add_body_force_load(const Mesh& mesh, const DofMap& dofs, const VectorField& force,
+                         int gauss_points, Vector& b, const std::string& what) {
+  Vector f = Vector::Zero(dofs.num_dofs());
+  add_body_forces(mesh, force, gauss_points, f, what);
+  b += dofs.restrict_to_free(f);
+}
+
+Index nearest_node(const Mesh& mesh, const Point& x, const std::vector<Index>& candidates) {
+  const int dim = mesh.dim();
+  Index best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  const auto consider = [&](Index n) {
+    double d = 0.0;
+    for (int k = 0; k < dim; ++k) d += (mesh.node(n)(k) - x(k)) * (mesh.node(n)(k) - x(k));
+    if (d < best_distance) {
+      best_distance = d;
+      best = n;
+    }
+  };
+  if (candidates.empty())
+    for (Index n = 0; n < mesh.num_nodes(); ++n) consider(n);
+  else
+    for (const Index n : candidates) consider(n);
+  return best;
+}
+
+}  // namespace signorini

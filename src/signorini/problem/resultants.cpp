@@ -1,0 +1,114 @@
+#include "signorini/problem/resultants.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+
+#include "signorini/fem/elasticity_assembly.hpp"
+
+namespace signorini {
+
+namespace {
+
+Eigen::Vector3d node_point(const Mesh& mesh, Index node) {
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (int k = 0; k < mesh.dim(); ++k) x(k) = mesh.node(node)(k);
+  return x;
+}
+
+// Sum of the forces of a full node-major vector over `dofs`, and their moment about `reference`.
+struct Sum {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  void add(const Mesh& mesh, const Eigen::Vector3d& reference, Index dof, double value) {
+    const int dim = mesh.dim();
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
+    f(dof % dim) = value;
+    force += f;
+    moment += (node_point(mesh, dof / dim) - reference).cross(f);
+  }
+};
+
+std::string vector_text(const Eigen::Vector3d& v, int dim) {
+  return dim == 2 ? fmt::format("({:.6e}, {:.6e})", v(0) + 0.0, v(1) + 0.0)
+                  : fmt::format("({:.6e}, {:.6e}, {:.6e})", v(0) + 0.0, v(1) + 0.0, v(2) + 0.0);
+}
+
+}  // namespace
+
+Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l) {
+  const Mesh& mesh = model.mesh;
+  const int dim = mesh.dim();
+  Resultants r;
+  const Vector centroid = mesh.coordinates().rowwise().mean();
+  for (int k = 0; k < dim; ++k) r.reference(k) = centroid(k);
+
+  // The foundation's force on the body, -h_j l_j nu_j at contact node j, on the full dofs.
+  const ContactSet& c = model.problem.contact;
+  Vector contact = Vector::Zero(model.dofs.num_dofs());
+  for (Index j = 0; j < c.size(); ++j)
+    for (int k = 0; k < dim; ++k)
+      contact(c.nodes[static_cast<std::size_t>(j)] * dim + k) -=
+          c.weights(j) * l(j) * c.normals(k, j);
+
+  Sum applied, foundation;
+  for (Index i = 0; i < model.dofs.num_dofs(); ++i) {
+    if (model.loads(i) != 0.0) applied.add(mesh, r.reference, i, model.loads(i));
+    if (contact(i) != 0.0) foundation.add(mesh, r.reference, i, contact(i));
+  }
+  r.applied = applied.force;
+  r.applied_moment = applied.moment;
+  r.contact = foundation.force;
+  r.contact_moment = foundation.moment;
+
+  // K u only where it is needed: in the cells that touch a clamped dof.
+  const Vector full_u = model.dofs.expand(u);
+  const auto touches_clamp = [&](Index cell) {
+    for (const Index node : mesh.cell(cell))
+      for (int k = 0; k < dim; ++k)
+        if (model.dofs.is_clamped(node, k)) return true;
+    return false;
+  };
+  const Vector Ku = internal_forces(mesh, model.elasticity, full_u, touches_clamp);
+  double scale = r.applied.norm() + r.contact.norm();
+  double moment_scale = r.applied_moment.norm() + r.contact_moment.norm();
+  Eigen::Vector3d total = r.applied + r.contact;
+  Eigen::Vector3d total_moment = r.applied_moment + r.contact_moment;
+  for (const ClampedPart& part : model.clamped_parts) {
+    Sum reaction;
+    for (const Index dof : part.dofs)
+      reaction.add(mesh, r.reference, dof, Ku(dof) - model.loads(dof) - contact(dof));
+    r.reactions.push_back({part.boundary, reaction.force, reaction.moment});
+    total += reaction.force;
+    total_moment += reaction.moment;
+    scale += reaction.force.norm();
+    moment_scale += reaction.moment.norm();
+  }
+  r.balance = total;
+  r.moment_balance = total_moment;
+  r.relative_balance = scale > 0.0 ? total.norm() / scale : 0.0;
+  // Moments that cancel by symmetry (a block pressed straight down) are no scale: the forces
+  // times the body's size are.
+  double size = 0.0;
+  for (Index v = 0; v < mesh.num_nodes(); ++v)
+    size = std::max(size, (node_point(mesh, v) - r.reference).norm());
+  moment_scale = std::max(moment_scale, scale * size);
+  r.relative_moment_balance = moment_scale > 0.0 ? total_moment.norm() / moment_scale : 0.0;
+  return r;
+}
+
+std::string resultants_report(const Resultants& r, int dim) {
+  std::string s = "resultants (forces on the body):\n";
+  s += fmt::format("  applied load          {}\n", vector_text(r.applied, dim));
+  for (const ClampReaction& c : r.reactions)
+    s += fmt::format("  reaction of '{}'{:<{}} {}\n", c.boundary, "",
+                     std::max(0, 9 - static_cast<int>(c.boundary.size())),
+                     vector_text(c.force, dim));
+  s += fmt::format("  contact (foundation)  {}\n", vector_text(r.contact, dim));
+  s += fmt::format("  balance               {}   relative {:.1e} (moments {:.1e})\n",
+                   vector_text(r.balance, dim), r.relative_balance, r.relative_moment_balance);
+  return s;
+}
+
+}  // namespace signorini

@@ -1,0 +1,437 @@
+#!/usr/bin/env python3
+"""Unit tests of the pure functions of tools/plot_results.py (the figures themselves are tested
+through the tool, in plot_test.cpp).
+
+    /usr/bin/python3 tests/app/plot_results_test.py        # exit status 0: all passed
+
+Needs numpy (python3-numpy); matplotlib is not imported.
+"""
+
+import importlib.util
+import os
+import sys
+import tempfile
+import unittest
+
+SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools",
+                      "plot_results.py")
+spec = importlib.util.spec_from_file_location("plot_results", SCRIPT)
+plot = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(plot)
+
+import numpy as np  # noqa: E402
+
+
+class UnitsTest(unittest.TestCase):
+    def test_every_system_of_the_table(self):
+        self.assertEqual(plot.units_of("m-Pa"), ("m", "Pa", "N/m"))
+        self.assertEqual(plot.units_of("m-kPa"), ("m", "kPa", "kN/m"))
+        self.assertEqual(plot.units_of("m-MPa"), ("m", "MPa", "MN/m"))
+        self.assertEqual(plot.units_of("m-GPa"), ("m", "GPa", "GN/m"))
+        self.assertEqual(plot.units_of("mm-MPa"), ("mm", "MPa", "N/mm"))
+
+    def test_aliases_name_the_same_systems(self):
+        self.assertEqual(plot.units_of("mm-N"), plot.units_of("mm-MPa"))
+        self.assertEqual(plot.units_of("m-N"), plot.units_of("m-Pa"))
+
+    def test_the_fields(self):
+        units = plot.units_of("mm-N")
+        self.assertEqual(units.length, "mm")
+        self.assertEqual(units.stress, "MPa")
+        self.assertEqual(units.force_per_thickness, "N/mm")
+
+    def test_absent_null_or_unknown_settings_give_no_units(self):
+        for setting in (None, "", "MPa", "m-mpa", "M-MPa", "mm-kN", "cm-Pa", " m-MPa", 3, ["m"]):
+            with self.subTest(setting=setting):
+                self.assertEqual(plot.units_of(setting), plot.NO_UNITS)
+                self.assertEqual(plot.units_of(setting), ("", "", ""))
+
+    def test_every_alias_names_a_system(self):
+        for alias, system in plot.UNIT_ALIASES.items():
+            self.assertIn(system, plot.UNIT_SYSTEMS, alias)
+
+    def test_force_per_thickness_is_stress_times_length(self):
+        # N/m^2 x m = N/m; the prefix of the stress stays, mm turns N/mm^2 (MPa) into N/mm.
+        for setting, (length, stress, force) in plot.UNIT_SYSTEMS.items():
+            with self.subTest(setting=setting):
+                self.assertTrue(force.endswith("/" + length), force)
+                if length == "m":
+                    self.assertEqual(force, stress.replace("Pa", "N") + "/m")
+
+    def test_the_setting_comes_from_the_problem_in_the_summary(self):
+        self.assertEqual(plot.units_of_summary({"problem": {"units": "m-MPa"}}).stress, "MPa")
+        self.assertEqual(plot.units_of_summary({"problem": {"units": None}}), plot.NO_UNITS)
+        self.assertEqual(plot.units_of_summary({"problem": {}}), plot.NO_UNITS)
+        self.assertEqual(plot.units_of_summary({}), plot.NO_UNITS)
+        self.assertEqual(plot.units_of_summary({"units": "m-MPa"}), plot.NO_UNITS)
+
+    def test_an_unknown_setting_is_said_on_stderr(self):
+        with tempfile.TemporaryFile("w+") as err:
+            saved, sys.stderr = sys.stderr, err
+            try:
+                units = plot.units_of_summary({"problem": {"units": "furlongs"}})
+                quiet = plot.units_of_summary({"problem": {"units": "furlongs"}}, warnings=False)
+            finally:
+                sys.stderr = saved
+            err.seek(0)
+            text = err.read()
+        self.assertEqual(units, plot.NO_UNITS)
+        self.assertEqual(quiet, plot.NO_UNITS)
+        self.assertEqual(text.count("\n"), 1)
+        self.assertIn('signorini: warning: units = "furlongs"', text)
+        self.assertIn("m-MPa", text)
+
+
+class LabelsTest(unittest.TestCase):
+    def test_axis_labels(self):
+        self.assertEqual(plot.axis_label("x", "m"), "x (m)")
+        self.assertEqual(plot.axis_label("x", ""), "x")
+        self.assertEqual(plot.axis_label("displacement", "mm", -4), "displacement (10⁻⁴ mm)")
+        self.assertEqual(plot.axis_label("displacement", "", -4), "displacement (×10⁻⁴)")
+        self.assertEqual(plot.axis_label("contact pressure", "Pa", 6),
+                         "contact pressure (10⁶ Pa)")
+
+    def test_numbers_with_units(self):
+        self.assertEqual(plot.with_unit("0.648", "MN/m"), "0.648 MN/m")
+        self.assertEqual(plot.with_unit("0.648", ""), "0.648")
+
+    def test_powers_of_ten_in_plain_text(self):
+        self.assertEqual(plot.power_text(-12), "10⁻¹²")
+        self.assertEqual(plot.power_text(0), "10⁰")
+        self.assertEqual(plot.power_text(3), "10³")
+
+    def test_power_of_ten_of_an_axis(self):
+        self.assertEqual(plot.power_of_ten(np.array([-1.9e-4, 6e-5])), -4)
+        self.assertEqual(plot.power_of_ten(np.array([1.5, 0.0])), 0)
+        self.assertEqual(plot.power_of_ten(np.array([150.0])), 0)  # 10^-2 .. 10^2 stay
+        self.assertEqual(plot.power_of_ten(np.array([1.5e6, np.nan])), 6)
+        self.assertEqual(plot.power_of_ten(np.array([0.0, 0.0])), 0)
+        self.assertEqual(plot.power_of_ten(np.array([np.nan])), 0)
+
+
+class HelpersTest(unittest.TestCase):
+    def test_nice_below(self):
+        self.assertEqual(plot.nice_below(1234.0), 1000)
+        self.assertEqual(plot.nice_below(0.3), 0.2)
+        self.assertEqual(plot.nice_below(5.0), 5)
+
+    def test_the_magnification_of_the_paper(self):
+        points = np.array([[0.0, 0.0], [3.0, 0.0], [3.0, 1.0]])
+        u = np.array([[0.0, 0.0], [1e-4, 2e-4], [0.0, 0.0]])
+        self.assertEqual(plot.magnification(points, u), 1000)
+        self.assertEqual(plot.magnification(points, np.zeros((3, 2))), 1.0)
+
+    def test_contact_intervals(self):
+        t = np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
+        self.assertEqual(plot.contact_intervals(t, np.array([0, 1, 1, 0, 0, 1]) > 0),
+                         [(0.5, 2.5), (4.5, 5.0)])
+        self.assertEqual(plot.contact_intervals(t, np.zeros(6, bool)), [])
+        self.assertEqual(plot.contact_intervals(t, np.ones(6, bool)), [(0.0, 5.0)])
+
+    def test_padded(self):
+        self.assertEqual(plot.padded(0.0, 10.0), (-0.5, 10.5))
+        lo, hi = plot.padded(0.0, 0.0)
+        self.assertLess(lo, 0.0)
+        self.assertGreater(hi, 0.0)
+
+    def test_the_abscissa_along_the_boundary(self):
+        flat = {"x": np.array([0.0, 1.0, 2.0]), "y": np.zeros(3)}
+        t, label = plot.boundary_coordinate(flat, plot.units_of("m-MPa"))
+        self.assertEqual(label, "x (m)")
+        np.testing.assert_array_equal(t, flat["x"])
+        upright = {"x": np.zeros(3), "y": np.array([0.0, 0.5, 1.0])}
+        self.assertEqual(plot.boundary_coordinate(upright, plot.NO_UNITS)[1], "y")
+        bent = {"x": np.array([0.0, 3.0, 3.0]), "y": np.array([0.0, 0.0, 4.0])}
+        t, label = plot.boundary_coordinate(bent, plot.units_of("mm-N"))
+        np.testing.assert_allclose(t, [0.0, 3.0, 7.0])
+        self.assertEqual(label, "arc length along the contact boundary (mm)")
+
+
+class ReadingTest(unittest.TestCase):
+    def write(self, folder, name, text):
+        with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
+            f.write(text)
+
+    def test_the_normal_comes_from_contact_csv(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.write(d, "contact.csv", "x,y,u_n,u_t,pressure,gap,n_x,n_y\n"
+                                         "0,1,1e-5,2e-5,0.5,0.25,1,0\n"
+                                         "0,2,0,0,0,0.5,0.6,0.8\n")
+            c = plot.read_contact_csv(d)
+        np.testing.assert_array_equal(c["n_x"], [1.0, 0.6])
+        np.testing.assert_array_equal(c["n_y"], [0.0, 0.8])
+        np.testing.assert_array_equal(c["gap"], [0.25, 0.5])
+        np.testing.assert_array_equal(c["pressure"], [0.5, 0.0])
+
+    def test_older_files_without_the_normal_have_the_bottom_edge_one(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.write(d, "contact.csv", "x,y,u_n,u_t,pressure,gap\n0,0,0,0,0,0\n1,0,0,0,1,0\n")
+            c = plot.read_contact_csv(d)
+        np.testing.assert_array_equal(c["n_x"], [0.0, 0.0])
+        np.testing.assert_array_equal(c["n_y"], [-1.0, -1.0])
+
+    def test_unusable_files_are_usage_errors(self):
+        with tempfile.TemporaryDirectory() as d:
+            with self.assertRaisesRegex(plot.UsageError, "not found"):
+                plot.read_contact_csv(d)
+            self.write(d, "contact.csv", "x,y,pressure\n0,0,0\n")
+            with self.assertRaisesRegex(plot.UsageError, "expected the columns"):
+                plot.read_contact_csv(d)
+            self.write(d, "contact.csv", "x,y,u_n,u_t,pressure,gap\n")
+            with self.assertRaisesRegex(plot.UsageError, "no contact nodes"):
+                plot.read_contact_csv(d)
+            self.write(d, "solution.vtu", "")
+            with self.assertRaisesRegex(plot.UsageError, "not a VTU file"):
+                plot.read_vtu(os.path.join(d, "solution.vtu"))
+
+
+class MeshTest(unittest.TestCase):
+    @staticmethod
+    def rectangle(nx, ny):
+        """The cells of signorini's rectangle mesh: node i + j (nx + 1), counterclockwise."""
+        n0 = (np.arange(ny)[:, None] * (nx + 1) + np.arange(nx)[None, :]).ravel()
+        conn = np.stack([n0, n0 + 1, n0 + 2 + nx, n0 + 1 + nx], axis=1).ravel()
+        return {"points": np.zeros(((nx + 1) * (ny + 1), 3)), "connectivity": conn,
+                "offsets": 4 * np.arange(1, nx * ny + 1), "types": np.full(nx * ny, 9, np.uint8)}
+
+    def test_a_rectangle_mesh_is_a_grid(self):
+        self.assertEqual(plot.structured_grid(self.rectangle(3, 2)), (3, 4))
+        self.assertEqual(plot.structured_grid(self.rectangle(1, 1)), (2, 2))
+
+    def test_other_meshes_are_not(self):
+        mesh = self.rectangle(3, 2)
+        mesh["connectivity"] = mesh["connectivity"].copy()
+        mesh["connectivity"][[4, 5]] = mesh["connectivity"][[5, 4]]
+        self.assertIsNone(plot.structured_grid(mesh))
+        triangles = {"points": np.zeros((4, 3)), "connectivity": np.array([0, 1, 2, 0, 2, 3]),
+                     "offsets": np.array([3, 6]), "types": np.array([5, 5])}
+        self.assertIsNone(plot.structured_grid(triangles))
+
+    def test_the_outline_is_one_closed_chain(self):
+        cells, outline = plot.cells_and_outline(self.rectangle(3, 2))
+        self.assertEqual(cells.shape, (6, 4))
+        self.assertEqual(len(outline), 1)
+        chain = outline[0]
+        self.assertEqual(chain[0], chain[-1])
+        self.assertEqual(sorted(set(chain)), [0, 1, 2, 3, 4, 7, 8, 9, 10, 11])  # not 5, 6
+
+    def test_the_outline_of_triangles(self):
+        triangles = {"points": np.zeros((4, 3)), "connectivity": np.array([0, 1, 2, 0, 2, 3]),
+                     "offsets": np.array([3, 6]), "types": np.array([5, 5])}
+        _, outline = plot.cells_and_outline(triangles)
+        self.assertEqual(len(outline), 1)
+        self.assertEqual(sorted(set(outline[0])), [0, 1, 2, 3])
+        self.assertEqual(len(outline[0]), 5)  # four edges, closed
+
+
+class CheckTest(unittest.TestCase):
+    def test_check_finds_numpy_and_matplotlib_without_importing_them(self):
+        before = set(sys.modules)
+        try:
+            plot.check_plotting()
+        except plot.UsageError as e:
+            self.skipTest(f"no matplotlib here: {e}")
+        self.assertNotIn("matplotlib", set(sys.modules) - before)
+
+
+@unittest.skipUnless(hasattr(os, "fork"), "no fork")
+class TwoProcessesTest(unittest.TestCase):
+    """save_all with two processes (forced), drawing with a stand-in for `draw`: what either
+    process wrote goes when either fails."""
+
+    def run_save_all(self, folder, fails):
+        """`fails`: None, "helper" (which raises after writing its first figure) or "here"
+        (which raises after the helper has written its figures). This process waits a little
+        first, so that the helper takes figures."""
+        import time
+
+        here = os.getpid()
+
+        def fake_draw(outdir, next_figure, scale, written, warnings=True):
+            if os.getpid() == here:
+                time.sleep(0.3)
+                if fails == "here":
+                    raise plot.UsageError("here fails")
+            drawn = []
+            while (name := next_figure()) is not None:
+                drawn.append(name)
+                for fmt in plot.FORMATS:
+                    tmp = os.path.join(outdir, f".{name}.{fmt}.tmp.{os.getpid()}")
+                    written.append((tmp, os.path.join(outdir, f"{name}.{fmt}")))
+                    with open(tmp, "w") as f:
+                        f.write("a figure")
+                if fails == "helper" and os.getpid() != here:
+                    raise plot.UsageError("helper fails")
+            return drawn
+
+        saved = plot.draw, plot.cores
+        plot.draw, plot.cores = fake_draw, lambda: 2
+        try:
+            plot.save_all(folder, None, quiet=True)
+        finally:
+            plot.draw, plot.cores = saved
+
+    def test_all_figures_when_both_succeed(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.run_save_all(d, fails=None)
+            self.assertEqual(sorted(os.listdir(d)),
+                             sorted(f"{n}.{e}" for n in plot.FIGURES for e in plot.FORMATS))
+
+    def test_nothing_when_either_fails(self):
+        for fails in ("helper", "here"):
+            with self.subTest(fails=fails), tempfile.TemporaryDirectory() as d:
+                with self.assertRaisesRegex(plot.UsageError, f"{fails} fails"):
+                    self.run_save_all(d, fails)
+                self.assertEqual(os.listdir(d), [])
+
+
+def write_results(folder, gap=lambda x: 0.0 * x, units="m-MPa", normals=True, nx=12, ny=4):
+    """A small set of results as signorini writes them (docs/output.md): the strip (0, 3) x (0, 1)
+    lifted at its right end, resting on a foundation with the gap `gap(x)` along its bottom
+    edge (where the gap is 0, it touches)."""
+    import json
+    import struct
+
+    xs, ys = np.meshgrid(np.linspace(0.0, 3.0, nx + 1), np.linspace(0.0, 1.0, ny + 1))
+    x, y = xs.ravel(), ys.ravel()
+    u = np.stack([1e-5 * y * x, 2e-5 * (x / 3.0) ** 2, 0.0 * x], axis=1)
+    von_mises = 1.0 + x * (1.0 - y)
+    bottom = np.flatnonzero(y == 0.0)
+    g = gap(x[bottom])
+    touching = g <= 0.0
+    pressure = np.where(touching, 1.0, 0.0)
+    n0 = (np.arange(ny)[:, None] * (nx + 1) + np.arange(nx)[None, :]).ravel()
+    cells = np.stack([n0, n0 + 1, n0 + 2 + nx, n0 + 1 + nx], axis=1)
+    active = np.zeros(len(x), np.uint8)
+    active[bottom[touching]] = 1
+    arrays = [("displacement", "Float64", 3, u), ("von_mises", "Float64", 1, von_mises),
+              ("contact_active", "UInt8", 1, active)]
+    point_data, blob, offset = "", b"", 0
+    geometry = [("Points", "Float64", 3, np.stack([x, y, 0.0 * x], axis=1)),
+                ("connectivity", "Int64", 1, cells.ravel()),
+                ("offsets", "Int64", 1, 4 * np.arange(1, len(cells) + 1)),
+                ("types", "UInt8", 1, np.full(len(cells), 9))]
+    tags = {}
+    for name, kind, components, values in arrays + geometry:
+        raw = np.ascontiguousarray(values, "<f8" if kind == "Float64" else
+                                   "<i8" if kind == "Int64" else "u1").tobytes()
+        tags[name] = (f'<DataArray type="{kind}" Name="{name}" NumberOfComponents="{components}" '
+                      f'format="appended" offset="{offset}"/>')
+        blob += struct.pack("<Q", len(raw)) + raw
+        offset += 8 + len(raw)
+    point_data = "".join(tags[name] for name, *_ in arrays)
+    header = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0" '
+              'byte_order="LittleEndian" header_type="UInt64"><UnstructuredGrid>'
+              f'<Piece NumberOfPoints="{len(x)}" NumberOfCells="{len(cells)}">'
+              f'<PointData>{point_data}</PointData><Points>{tags["Points"]}</Points>'
+              f'<Cells>{tags["connectivity"]}{tags["offsets"]}{tags["types"]}</Cells></Piece>'
+              '</UnstructuredGrid><AppendedData encoding="raw">_')
+    with open(os.path.join(folder, "solution.vtu"), "wb") as f:
+        f.write(header.encode() + blob + b"</AppendedData></VTKFile>\n")
+    with open(os.path.join(folder, "contact.csv"), "w") as f:
+        f.write("x,y,u_n,u_t,pressure,gap" + (",n_x,n_y" if normals else "") + "\n")
+        for j, node in enumerate(bottom):
+            row = [x[node], 0.0, -u[node, 1], u[node, 0], pressure[j], g[j]]
+            f.write(",".join(repr(float(v)) for v in row + ([0.0, -1.0] if normals else [])) + "\n")
+    summary = {"converged": True, "method": "uzawa_gnm", "n_dofs": 2 * len(x),
+               "message": "converged", "contact_force": float(pressure.sum()),
+               "dual_changes": [1.0, 1e-3, 1e-6, 1e-9], "gnm_iterations": [5, 2, 2, 1],
+               "problem": {"name": "synthetic", "units": units, "mesh": {"nx": nx, "ny": ny},
+                           "solver": {"uzawa_tolerance": 1e-8}}}
+    with open(os.path.join(folder, "summary.json"), "w") as f:
+        json.dump(summary, f)
+
+
+def have_matplotlib():
+    return importlib.util.find_spec("matplotlib") is not None
+
+
+@unittest.skipUnless(have_matplotlib(), "no matplotlib")
+class ScriptTest(unittest.TestCase):
+    """The whole script on small synthetic results, with one process and with two."""
+
+    def run_script(self, folder, one_core=False):
+        import subprocess
+
+        return subprocess.run(
+            [sys.executable, SCRIPT, "--quiet", folder], capture_output=True, text=True,
+            preexec_fn=(lambda: os.sched_setaffinity(0, {min(os.sched_getaffinity(0))}))
+            if one_core else None)
+
+    @staticmethod
+    def limits(svg_path):
+        import re
+
+        with open(svg_path, encoding="utf-8") as f:
+            text = f.read()
+        number = r"([-+0-9.eE]+|nan|inf|-inf)"
+        m = re.search(f"axes: x from {number} to {number}, y from {number} to {number}", text)
+        return [float(v) for v in m.groups()], text
+
+    def test_a_curved_foundation_with_one_and_with_two_processes(self):
+        for one_core in (True, False):
+            with self.subTest(one_core=one_core), tempfile.TemporaryDirectory() as d:
+                # A cylinder of radius 3 touching the strip at x = 1.5: gaps up to 0.4 m, 10^4
+                # times the displacements.
+                write_results(d, gap=lambda x: 3.0 - np.sqrt(9.0 - (x - 1.5) ** 2))
+                r = self.run_script(d, one_core)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                self.assertEqual(r.stderr, "")
+                self.assertEqual(sorted(f for f in os.listdir(d) if f.endswith((".png", ".svg"))),
+                                 sorted(f"{n}.{e}" for n in plot.FIGURES for e in plot.FORMATS))
+                self.assertFalse([f for f in os.listdir(d) if ".tmp." in f])
+                (x0, x1, y0, y1), svg = self.limits(os.path.join(d, "deformed_von_mises.svg"))
+                self.assertGreater(x0, -0.2)
+                self.assertLess(x1, 3.3)
+                self.assertGreater(y0, -0.5)  # the foundation, 0.4 m below at the ends: cut
+                self.assertLess(y1, 1.3)
+                self.assertIn(">von Mises stress (MPa)</text>", svg)
+                self.assertIn(">rigid foundation at its true place x + g·ν (not magnified)<", svg)
+                (_, _, y0, y1), svg = self.limits(os.path.join(d, "contact_displacement.svg"))
+                self.assertLess(abs(y0), 1e-3)  # the displacements, not the gap, set the axis
+                self.assertLess(abs(y1), 1e-3)
+                self.assertIn(">displacement (10⁻⁵ m)</text>", svg)
+
+    def test_older_results_without_the_normal_or_the_units(self):
+        with tempfile.TemporaryDirectory() as d:
+            write_results(d, units=None, normals=False)
+            r = self.run_script(d)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            for name in plot.FIGURES:
+                with open(os.path.join(d, name + ".svg"), encoding="utf-8") as f:
+                    self.assertNotIn("MPa", f.read(), name)
+            (x0, x1, y0, y1), svg = self.limits(os.path.join(d, "deformed_von_mises.svg"))
+            self.assertAlmostEqual(y0, -0.12, delta=0.02)  # g = 0: the foundation at y = 0
+            self.assertIn(">rigid foundation</text>", svg)
+
+    def test_an_error_in_either_process_leaves_nothing_behind(self):
+        # A missing file is found before the drawing begins; a broken one by the process that
+        # draws the deformed body (either of the two), after the others have drawn their figures.
+        for broken in (False, True):
+            for one_core in (True, False):
+                with self.subTest(broken=broken, one_core=one_core), \
+                        tempfile.TemporaryDirectory() as d:
+                    write_results(d)
+                    vtu = os.path.join(d, "solution.vtu")
+                    os.unlink(vtu)
+                    if broken:
+                        with open(vtu, "w") as f:
+                            f.write("<VTKFile> not really")
+                    with open(os.path.join(d, "convergence.png"), "w") as f:
+                        f.write("an earlier figure")
+                    r = self.run_script(d, one_core)
+                    self.assertEqual(r.returncode, 2)
+                    self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+                    self.assertTrue(r.stderr.startswith(
+                        f"signorini: error: cannot read '{vtu}': not a VTU file" if broken else
+                        f"signorini: error: '{vtu}' not found (results of an older signorini? "
+                        "run solve again)"), r.stderr)
+                    self.assertEqual(sorted(os.listdir(d)),
+                                     sorted(["contact.csv", "convergence.png", "summary.json"]
+                                            + (["solution.vtu"] if broken else [])))
+                    with open(os.path.join(d, "convergence.png")) as f:
+                        self.assertEqual(f.read(), "an earlier figure")
+
+
+if __name__ == "__main__":
+    unittest.main()
