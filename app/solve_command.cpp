@@ -98,11 +98,12 @@ int solve(const SolveArguments& args, LogFormat format) {
   const ContactResult result = solve_contact(model.problem, spec.solver);
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
+  // Once, for the report, the log and summary.json.
+  const Resultants resultants = compute_resultants(model, result.u, result.l);
   {
-    nlohmann::json event = summary_to_json(result, model, spec);
+    nlohmann::json event = summary_to_json(result, model, spec, resultants);
     event.erase("problem");  // the settings event has it
     event["event"] = "summary";
-    const Resultants resultants = compute_resultants(model, result.u, result.l);
     progress.report(
         fmt::format("\n{}{}\ntimings:\n{}", summary.brief_report(),
                     resultants_report(resultants, model.mesh.dim()), timing_report(model, summary)),
@@ -110,24 +111,16 @@ int solve(const SolveArguments& args, LogFormat format) {
   }
 
   progress.phase("writing the results");
-  write_results(args.output_dir, result, model, spec);
+  write_results(args.output_dir, result, model, spec, resultants);
   progress.report(fmt::format("results: {}\n", listed(args.output_dir, kResultFiles)),
                   {{"event", "results"}, {"files", paths(args.output_dir, kResultFiles)}});
 
   if (!summary.converged()) {
     progress.suspend();
     std::fflush(stdout);
-    // The KKT residuals are in the message already when they are why it stopped.
-    const std::string kkt =
-        summary.termination == Termination::KktResidualsTooLarge
-            ? std::string()
-            : fmt::format(
-                  "; KKT residuals: equilibrium {:.2e}, penetration {:.2e}, sign {:.2e}, "
-                  "complementarity {:.2e}",
-                  summary.kkt.equilibrium, summary.kkt.penetration, summary.kkt.sign,
-                  summary.kkt.complementarity);
-    fmt::print(stderr, "signorini: not converged ({}): {}{}; results written to '{}'\n",
-               enum_to_string(kTerminationNames, summary.termination), summary.message, kkt,
+    // The message has the KKT residuals and what to try (solve_contact).
+    fmt::print(stderr, "signorini: not converged ({}): {}; results written to '{}'\n",
+               enum_to_string(kTerminationNames, summary.termination), summary.message,
                args.output_dir);
   }
 

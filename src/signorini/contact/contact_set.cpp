@@ -83,8 +83,7 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
                        " has no defined normal (facets cancel out)");
     cs.normals.col(j) /= len;
     const Index node = cs.nodes[static_cast<std::size_t>(j)];
-    Point x = Point::Zero();
-    x.head<2>() = mesh.node(node);
+    const Point x = mesh.point(node);
     cs.gaps(j) = gap(x);
     if (!std::isfinite(cs.gaps(j)))
       throw InputError("contact.gap is not finite at x = (" + std::to_string(x(0)) + ", " +

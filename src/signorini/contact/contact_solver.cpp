@@ -152,6 +152,8 @@ ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOp
         "the method's rule was met ({}), but the KKT residuals are above solver.kkt_tolerance = "
         "{:.1e}: {}",
         s.message, options.kkt_tolerance, residual_list(s.kkt));
+  } else if (!s.converged()) {
+    s.message += "; KKT residuals: " + residual_list(s.kkt);
   }
   if (!s.converged()) s.message += "; to try: " + advice(s, options);
   return result;

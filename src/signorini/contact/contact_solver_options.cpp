@@ -66,10 +66,6 @@ void validate(const ContactSolverOptions& o) {
                                      : "multigrid preconditioner"));
 }
 
-}  // namespace signorini
-
-namespace signorini {
-
 double automatic_r(const ContactProblem& p, double factor) {
   // (N A N^T)_jj = nu_j^T A_jj nu_j over node j's free dofs is the normal stiffness of contact
   // node j (force per length); divided by the node's share h_j of the boundary it is a stiffness

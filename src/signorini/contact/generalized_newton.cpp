@@ -24,7 +24,7 @@ double relative_gradient(double gradient_norm, double b_norm, double residual_no
 
 GeneralizedNewton::GeneralizedNewton(const ContactProblem& problem,
                                      const ContactSolverOptions& options, NewtonSystem& system)
-    : problem_(problem), options_(options), system_(system) {}
+    : problem_(problem), options_(options), system_(system), b_norm_(problem.b.norm()) {}
 
 GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, int outer) {
   const SparseMatrix& N = problem_.contact.N;
@@ -39,7 +39,6 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
   // A x - b, formed once per call and then updated by t A d with each step: one product with A
   // per GNM iteration.
   Vector residual = problem_.A * x - problem_.b;
-  const double b_norm = problem_.b.norm();
   ActiveSet previous;          // active set that defined the previous Newton step
   bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
   double gradient_norm = std::numeric_limits<double>::infinity();
@@ -99,7 +98,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, Vector& x, 
     Nx = N * x;
     // ||G|| relative to the forces at play, so that the rule means the same in any units
     // (method.md section 7); the paper's absolute ||G|| < 1e-10 suits metres and MPa only.
-    gradient_norm = relative_gradient(phi.gradient(residual, Nx).norm(), b_norm, residual.norm());
+    gradient_norm = relative_gradient(phi.gradient(residual, Nx).norm(), b_norm_, residual.norm());
     const double x_norm = x.norm();
     const double step = x_norm > 0.0 ? d.norm() / x_norm : d.norm();
     res.residual = std::max(gradient_norm, step);

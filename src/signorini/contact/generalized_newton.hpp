@@ -43,6 +43,7 @@ class GeneralizedNewton {
   const ContactProblem& problem_;
   const ContactSolverOptions& options_;
   NewtonSystem& system_;
+  double b_norm_;  // ||b||, the load part of the force scale of relative_gradient()
 };
 
 }  // namespace signorini

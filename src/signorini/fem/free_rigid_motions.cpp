@@ -104,34 +104,27 @@ std::vector<RigidMotion> free_rigid_motions(const Mesh& mesh, const DofMap& dofs
   const int rotations = modes - dim;
   std::vector<Index> piece;
   const Index pieces = label_pieces(mesh, piece);
+  // The nodes of each piece, in one pass.
+  std::vector<std::vector<Index>> members(static_cast<std::size_t>(pieces));
+  for (Index v = 0; v < mesh.num_nodes(); ++v)
+    if (piece[static_cast<std::size_t>(v)] >= 0)
+      members[static_cast<std::size_t>(piece[static_cast<std::size_t>(v)])].push_back(v);
   std::vector<RigidMotion> out;
   for (Index p = 0; p < pieces; ++p) {
+    const std::vector<Index>& nodes = members[static_cast<std::size_t>(p)];
     // Centre and size of the piece.
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    Index count = 0, first = -1;
-    for (Index v = 0; v < mesh.num_nodes(); ++v)
-      if (piece[static_cast<std::size_t>(v)] == p) {
-        for (int k = 0; k < dim; ++k) c(k) += mesh.node(v)(k);
-        ++count;
-        if (first < 0) first = v;
-      }
-    c /= static_cast<double>(count);
+    for (const Index v : nodes) c += mesh.point(v);
+    c /= static_cast<double>(nodes.size());
     double L = 0.0;
-    for (Index v = 0; v < mesh.num_nodes(); ++v)
-      if (piece[static_cast<std::size_t>(v)] == p) {
-        double d2 = 0.0;
-        for (int k = 0; k < dim; ++k) d2 += (mesh.node(v)(k) - c(k)) * (mesh.node(v)(k) - c(k));
-        L = std::max(L, std::sqrt(d2));
-      }
+    for (const Index v : nodes) L = std::max(L, (mesh.point(v) - c).norm());
     if (!(L > 0.0)) L = 1.0;
 
     // G = C^T C, C: the value of each rigid mode at each clamped dof of the piece. A mode is
     // free exactly where C vanishes on it: the null space of G.
     Eigen::MatrixXd G = Eigen::MatrixXd::Zero(modes, modes);
-    for (Index v = 0; v < mesh.num_nodes(); ++v) {
-      if (piece[static_cast<std::size_t>(v)] != p) continue;
-      Eigen::Vector3d x = Eigen::Vector3d::Zero();
-      for (int k = 0; k < dim; ++k) x(k) = mesh.node(v)(k);
+    for (const Index v : nodes) {
+      const Eigen::Vector3d x = mesh.point(v);
       for (int k = 0; k < dim; ++k) {
         if (!dofs.is_clamped(v, k)) continue;
         Eigen::VectorXd row(modes);
@@ -163,7 +156,7 @@ std::vector<RigidMotion> free_rigid_motions(const Mesh& mesh, const DofMap& dofs
     const auto add = [&](const Eigen::VectorXd& w) {
       RigidMotion m;
       m.piece = p;
-      m.piece_node = first;
+      m.piece_node = nodes.front();
       for (int k = 0; k < dim; ++k) m.translation(k) = w(k);
       if (dim == 2)
         m.rotation(2) = w(2) / L;

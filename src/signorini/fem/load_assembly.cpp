@@ -31,12 +31,6 @@ Eigen::Vector3d checked(const VectorField& field, const Point& x, int dim,
   return v;
 }
 
-Point point_of(const Mesh& mesh, Index node) {
-  Point x = Point::Zero();
-  for (int k = 0; k < mesh.dim(); ++k) x(k) = mesh.node(node)(k);
-  return x;
-}
-
 }  // namespace
 
 bool CoordinateBox::unbounded() const {
@@ -72,8 +66,8 @@ void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const Vecto
   const bool whole = box.unbounded();
   for (const Facet& facet : part.facets) {
     const auto fn = mesh.facet_nodes(facet);
-    const Point xa = point_of(mesh, fn[0]);
-    const Point xb = point_of(mesh, fn[1]);
+    const Point xa = mesh.point(fn[0]);
+    const Point xb = mesh.point(fn[1]);
     const double length = (xb - xa).norm();
     // The part of the facet inside the box, t in [t0, t1] along it (all of it without a box).
     double t0 = 0.0, t1 = 1.0;
@@ -143,12 +137,10 @@ void add_body_force_load(const Mesh& mesh, const DofMap& dofs, const VectorField
 }
 
 Index nearest_node(const Mesh& mesh, const Point& x, const std::vector<Index>& candidates) {
-  const int dim = mesh.dim();
   Index best = -1;
   double best_distance = std::numeric_limits<double>::infinity();
   const auto consider = [&](Index n) {
-    double d = 0.0;
-    for (int k = 0; k < dim; ++k) d += (mesh.node(n)(k) - x(k)) * (mesh.node(n)(k) - x(k));
+    const double d = (mesh.point(n) - x).squaredNorm();
     if (d < best_distance) {
       best_distance = d;
       best = n;

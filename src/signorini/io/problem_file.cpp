@@ -872,25 +872,13 @@ double physical_memory_bytes() {
 
 namespace {
 
-// The text of line `number` (1-based) of `text`.
-std::string line_of(const std::string& text, std::size_t number) {
-  std::size_t start = 0;
-  for (std::size_t n = 1; n < number && start != std::string::npos; ++n) {
-    start = text.find('\n', start);
-    if (start != std::string::npos) ++start;
-  }
-  if (start == std::string::npos) return {};
-  const auto end = text.find('\n', start);
-  return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
-}
-
-// The dotted name of the table that line `number` is in ("traction[1]", "solver.linear", ""),
-// from the headers above it.
-std::string table_at(const std::string& text, std::size_t number) {
+// The dotted name of the table that line `number` (1-based) of `lines` is in ("traction[1]",
+// "solver.linear", ""), from the headers above it.
+std::string table_at(const std::vector<std::string>& lines, std::size_t number) {
   std::string table;
   std::map<std::string, int> entries;
-  for (std::size_t n = 1; n < number; ++n) {
-    const std::string line = trim(line_of(text, n));
+  for (std::size_t n = 1; n < number && n <= lines.size(); ++n) {
+    const std::string line = trim(lines[n - 1]);
     if (line.rfind("[[", 0) == 0 && line.find("]]") != std::string::npos) {
       const std::string name = trim(line.substr(2, line.find("]]") - 2));
       table = name + "[" + std::to_string(entries[name]++) + "]";
@@ -942,7 +930,9 @@ std::vector<std::string> array_entries(const std::string& array) {
 // with a unit ("E = 210000 MPa") and a formula without quotes ("gap = 0.1*x", "p = [0, -x]").
 // Empty when the line is none of these.
 std::string explain_syntax_error(const std::string& text, std::size_t number) {
-  const std::string line = line_of(text, number);
+  const std::vector<std::string> lines = split(text, '\n');
+  if (number < 1 || number > lines.size()) return {};
+  const std::string line = lines[number - 1];
   const auto eq = line.find('=');
   if (eq == std::string::npos) return {};
   const std::string key = trim(line.substr(0, eq));
@@ -952,7 +942,7 @@ std::string explain_syntax_error(const std::string& text, std::size_t number) {
   for (const char c : line)
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e)
       if (c != '\t' && c != '\r') return {};
-  const std::string table = table_at(text, number);
+  const std::string table = table_at(lines, number);
   const std::string full = table.empty() ? key : table + "." + key;
   // A number and a word after it: a unit.
   const auto space = value.find_first_of(" \t");

@@ -20,11 +20,17 @@ void create_output_folder(const std::filesystem::path& outdir) {
 
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec) {
+  write_results(outdir, result, model, spec, compute_resultants(model, result.u, result.l));
+}
+
+void write_results(const std::filesystem::path& outdir, const ContactResult& result,
+                   const Model& model, const ProblemSpec& spec, const Resultants& resultants) {
   create_output_folder(outdir);
   // Every content is made before any file is touched, and the files are replaced together: an
   // error leaves the results of an earlier run as they were, never a mix of old and new.
   std::vector<std::pair<std::filesystem::path, std::string>> files;
-  files.emplace_back(outdir / "summary.json", summary_to_json(result, model, spec).dump(2) + "\n");
+  files.emplace_back(outdir / "summary.json",
+                     summary_to_json(result, model, spec, resultants).dump(2) + "\n");
   files.emplace_back(outdir / "contact.csv", contact_csv(result, model));
   files.emplace_back(outdir / "solution.vtu", solution_vtu(result, model, spec));
   files.emplace_back(outdir / "contact.vtu", contact_vtu(result, model, spec));

@@ -8,6 +8,7 @@
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/problem_spec.hpp"
+#include "signorini/problem/resultants.hpp"
 
 namespace signorini {
 
@@ -16,6 +17,9 @@ namespace signorini {
 /// write '<path>': <reason>").
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec);
+/// As above, with the resultants the caller has already computed (problem/resultants.hpp).
+void write_results(const std::filesystem::path& outdir, const ContactResult& result,
+                   const Model& model, const ProblemSpec& spec, const Resultants& resultants);
 
 /// Creates a folder and its parents; throws InputError "cannot create output folder ...". Called
 /// by write_results; the tool also calls it before the solve, so that a bad -o fails fast.

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "signorini/problem/resultants.hpp"
-
 namespace signorini {
 
 TimingTable run_timings(const Model& model, const SolveSummary& summary) {
@@ -60,6 +58,11 @@ nlohmann::json resultants_json(const Resultants& r, int dim) {
 
 nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
                                const ProblemSpec& spec) {
+  return summary_to_json(result, model, spec, compute_resultants(model, result.u, result.l));
+}
+
+nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
+                               const ProblemSpec& spec, const Resultants& resultants) {
   using nlohmann::json;
   const SolveSummary& summary = result.summary;
   const int dim = model.mesh.dim();
@@ -111,9 +114,9 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   j["n_contact_nodes"] = model.problem.contact.size();
   j["n_active"] = summary.num_active;
   j["contact_force"] = summary.contact_force;
-  j["contact_force_vector"] = {summary.contact_force_vector(0) + 0.0,
-                               summary.contact_force_vector(1) + 0.0};
-  j["resultants"] = resultants_json(compute_resultants(model, result.u, result.l), dim);
+  j["contact_force_vector"] = vector_json(
+      Eigen::Vector3d(summary.contact_force_vector(0), summary.contact_force_vector(1), 0.0), 2);
+  j["resultants"] = resultants_json(resultants, dim);
   json point_loads = json::array();
   for (const PlacedPointLoad& p : model.point_loads)
     point_loads.push_back({{"requested", vector_json(p.requested, dim)},

@@ -7,6 +7,7 @@
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/problem_spec.hpp"
+#include "signorini/problem/resultants.hpp"
 
 namespace signorini {
 
@@ -20,6 +21,9 @@ namespace signorini {
 /// applied, applied_moment, reactions [{boundary, force, moment}], contact, contact_moment,
 /// balance, moment_balance, relative_balance, relative_moment_balance}, point_loads [{requested,
 /// node, at, distance, force}] (docs/output.md).
+nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
+                               const ProblemSpec& spec, const Resultants& resultants);
+/// As above, with the resultants computed here (compute_resultants).
 nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
                                const ProblemSpec& spec);
 

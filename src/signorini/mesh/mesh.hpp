@@ -43,6 +43,13 @@ class Mesh {
 
   /// Coordinates of a node (dim entries).
   [[nodiscard]] auto node(Index i) const { return coordinates_.col(i); }
+  /// A node as a point of space (z = 0 in 2D), for formulas and geometry written once for 2D
+  /// and 3D.
+  [[nodiscard]] Point point(Index i) const {
+    Point x = Point::Zero();
+    for (int k = 0; k < dim(); ++k) x(k) = coordinates_(k, i);
+    return x;
+  }
   [[nodiscard]] const Eigen::MatrixXd& coordinates() const { return coordinates_; }
   /// Node numbers of a cell.
   [[nodiscard]] std::span<const Index> cell(Index c) const {

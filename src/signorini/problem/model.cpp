@@ -28,9 +28,10 @@ void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs) {
   if (free.empty()) return;
   std::string list;
   Index piece = -1;
+  const bool several_pieces = count_mesh_pieces(mesh) > 1;
   for (const RigidMotion& m : free) {
     if (!list.empty()) list += ", ";
-    if (m.piece != piece && count_mesh_pieces(mesh) > 1) {
+    if (m.piece != piece && several_pieces) {
       const auto x = mesh.node(m.piece_node);
       list +=
           fmt::format("the mesh piece with node {} at ({:g}, {:g}): ", m.piece_node, x(0), x(1));
@@ -112,7 +113,7 @@ Model build_model(const ProblemSpec& spec) {
       PlacedPointLoad p;
       p.requested = pl.at;
       p.node = nearest_node(mesh, pl.at, candidates);
-      for (int k = 0; k < mesh.dim(); ++k) p.at(k) = mesh.node(p.node)(k);
+      p.at = mesh.point(p.node);
       p.distance = (p.at - pl.at).norm();
       p.force = pl.force;
       for (int k = 0; k < mesh.dim(); ++k) loads(p.node * mesh.dim() + k) += pl.force(k);

@@ -11,12 +11,6 @@ namespace signorini {
 
 namespace {
 
-Eigen::Vector3d node_point(const Mesh& mesh, Index node) {
-  Eigen::Vector3d x = Eigen::Vector3d::Zero();
-  for (int k = 0; k < mesh.dim(); ++k) x(k) = mesh.node(node)(k);
-  return x;
-}
-
 // Sum of the forces of a full node-major vector over `dofs`, and their moment about `reference`.
 struct Sum {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
@@ -26,7 +20,7 @@ struct Sum {
     Eigen::Vector3d f = Eigen::Vector3d::Zero();
     f(dof % dim) = value;
     force += f;
-    moment += (node_point(mesh, dof / dim) - reference).cross(f);
+    moment += (mesh.point(dof / dim) - reference).cross(f);
   }
 };
 
@@ -92,7 +86,7 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   // times the body's size are.
   double size = 0.0;
   for (Index v = 0; v < mesh.num_nodes(); ++v)
-    size = std::max(size, (node_point(mesh, v) - r.reference).norm());
+    size = std::max(size, (mesh.point(v) - r.reference).norm());
   moment_scale = std::max(moment_scale, scale * size);
   r.relative_moment_balance = moment_scale > 0.0 ? total_moment.norm() / moment_scale : 0.0;
   return r;

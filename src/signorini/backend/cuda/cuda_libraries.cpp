@@ -66,30 +66,21 @@ CudaLibraries load() {
   void* cusparse = open_library(SIGNORINI_CUSPARSE_SONAME);
   libs.cublas_path = path_of(cublas);
   libs.cusparse_path = path_of(cusparse);
-  const char* b = SIGNORINI_CUBLAS_SONAME;
-  CublasFunctions& f = libs.cublas;
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasCreate), f.create);
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasDestroy), f.destroy);
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasSetStream), f.set_stream);
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasSetWorkspace), f.set_workspace);
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasSetPointerMode), f.set_pointer_mode);
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasDdot_64), f.ddot);
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasDgemv_64), f.dgemv);
-  resolve(cublas, b, SIGNORINI_SYMBOL(cublasGetStatusString), f.status_string);
-  const char* s = SIGNORINI_CUSPARSE_SONAME;
-  CusparseFunctions& g = libs.cusparse;
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseCreate), g.create);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseDestroy), g.destroy);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseSetStream), g.set_stream);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseCreateCsr), g.create_csr);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseDestroySpMat), g.destroy_sp_mat);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseCreateDnVec), g.create_dn_vec);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseCreateConstDnVec), g.create_const_dn_vec);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseDestroyDnVec), g.destroy_dn_vec);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseSpMV_bufferSize), g.spmv_buffer_size);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseSpMV_preprocess), g.spmv_preprocess);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseSpMV), g.spmv);
-  resolve(cusparse, s, SIGNORINI_SYMBOL(cusparseGetErrorString), g.error_string);
+#define SIGNORINI_RESOLVE(member, function) \
+  resolve(handle, library, SIGNORINI_SYMBOL(function), table.member);
+  {
+    void* handle = cublas;
+    const char* library = SIGNORINI_CUBLAS_SONAME;
+    CublasFunctions& table = libs.cublas;
+    SIGNORINI_CUBLAS_FUNCTIONS(SIGNORINI_RESOLVE)
+  }
+  {
+    void* handle = cusparse;
+    const char* library = SIGNORINI_CUSPARSE_SONAME;
+    CusparseFunctions& table = libs.cusparse;
+    SIGNORINI_CUSPARSE_FUNCTIONS(SIGNORINI_RESOLVE)
+  }
+#undef SIGNORINI_RESOLVE
   return libs;  // the handles stay open for the life of the process
 }
 

@@ -12,34 +12,43 @@
 
 namespace signorini::cuda {
 
-/// The functions of cuBLAS that the backend calls (cublas_v2.h maps the names to their _v2
-/// symbols, which are what is looked up).
+// The functions the backend calls, each named once: (member, function of the library's header).
+// cublas_v2.h maps the names to their _v2 symbols, which are what is looked up.
+#define SIGNORINI_CUBLAS_FUNCTIONS(X)       \
+  X(create, cublasCreate)                   \
+  X(destroy, cublasDestroy)                 \
+  X(set_stream, cublasSetStream)            \
+  X(set_workspace, cublasSetWorkspace)      \
+  X(set_pointer_mode, cublasSetPointerMode) \
+  X(ddot, cublasDdot_64)                    \
+  X(dgemv, cublasDgemv_64)                  \
+  X(status_string, cublasGetStatusString)
+
+#define SIGNORINI_CUSPARSE_FUNCTIONS(X)            \
+  X(create, cusparseCreate)                        \
+  X(destroy, cusparseDestroy)                      \
+  X(set_stream, cusparseSetStream)                 \
+  X(create_csr, cusparseCreateCsr)                 \
+  X(destroy_sp_mat, cusparseDestroySpMat)          \
+  X(create_dn_vec, cusparseCreateDnVec)            \
+  X(create_const_dn_vec, cusparseCreateConstDnVec) \
+  X(destroy_dn_vec, cusparseDestroyDnVec)          \
+  X(spmv_buffer_size, cusparseSpMV_bufferSize)     \
+  X(spmv_preprocess, cusparseSpMV_preprocess)      \
+  X(spmv, cusparseSpMV)                            \
+  X(error_string, cusparseGetErrorString)
+
+#define SIGNORINI_FUNCTION_POINTER(member, function) decltype(&::function) member = nullptr;
+
 struct CublasFunctions {
-  decltype(&::cublasCreate) create = nullptr;
-  decltype(&::cublasDestroy) destroy = nullptr;
-  decltype(&::cublasSetStream) set_stream = nullptr;
-  decltype(&::cublasSetWorkspace) set_workspace = nullptr;
-  decltype(&::cublasSetPointerMode) set_pointer_mode = nullptr;
-  decltype(&::cublasDdot_64) ddot = nullptr;
-  decltype(&::cublasDgemv_64) dgemv = nullptr;
-  decltype(&::cublasGetStatusString) status_string = nullptr;
+  SIGNORINI_CUBLAS_FUNCTIONS(SIGNORINI_FUNCTION_POINTER)
 };
 
-/// The functions of cuSPARSE that the backend calls.
 struct CusparseFunctions {
-  decltype(&::cusparseCreate) create = nullptr;
-  decltype(&::cusparseDestroy) destroy = nullptr;
-  decltype(&::cusparseSetStream) set_stream = nullptr;
-  decltype(&::cusparseCreateCsr) create_csr = nullptr;
-  decltype(&::cusparseDestroySpMat) destroy_sp_mat = nullptr;
-  decltype(&::cusparseCreateDnVec) create_dn_vec = nullptr;
-  decltype(&::cusparseCreateConstDnVec) create_const_dn_vec = nullptr;
-  decltype(&::cusparseDestroyDnVec) destroy_dn_vec = nullptr;
-  decltype(&::cusparseSpMV_bufferSize) spmv_buffer_size = nullptr;
-  decltype(&::cusparseSpMV_preprocess) spmv_preprocess = nullptr;
-  decltype(&::cusparseSpMV) spmv = nullptr;
-  decltype(&::cusparseGetErrorString) error_string = nullptr;
+  SIGNORINI_CUSPARSE_FUNCTIONS(SIGNORINI_FUNCTION_POINTER)
 };
+
+#undef SIGNORINI_FUNCTION_POINTER
 
 struct CudaLibraries {
   CublasFunctions cublas;
