@@ -20,6 +20,7 @@
 #include <new>
 
 #include "commands.hpp"
+#include "process_tuning.hpp"
 #include "signorini/core/error.hpp"
 
 namespace {
@@ -38,6 +39,7 @@ int fail(int status, const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  signorini::app::tune_process(argc, argv);  // may re-execute the program (process_tuning.hpp)
   CLI::App app{
       "Frictionless contact of a linear elastic body with a rigid foundation (Signorini "
       "problem), by the modified-Lagrangian Uzawa method with generalised Newton steps.\n"

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "data_files.hpp"
 #include "signorini/core/error.hpp"
 
 extern char** environ;
@@ -58,15 +59,7 @@ std::string find_python() {
 }
 
 std::string find_script() {
-  const char* chosen = std::getenv("SIGNORINI_PLOT_SCRIPT");
-  const std::string script = chosen != nullptr ? chosen : SIGNORINI_PLOT_SCRIPT;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(script, ec))
-    throw InputError(
-        fmt::format("plotting: the plot script '{}' does not exist (was the source tree moved? set "
-                    "SIGNORINI_PLOT_SCRIPT to tools/plot_results.py)",
-                    script));
-  return script;
+  return find_data_file("plot_results.py", "tools/plot_results.py", "SIGNORINI_PLOT_SCRIPT");
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #pragma once
 // The figures of an output folder, drawn by tools/plot_results.py with matplotlib in the
-// system's Python (docs/output.md, "Figures"). The script's path is compiled in
-// (SIGNORINI_PLOT_SCRIPT, in the source tree); the environment variables SIGNORINI_PLOT_SCRIPT and
-// SIGNORINI_PYTHON override the script and the interpreter.
+// system's Python (docs/output.md, "Figures"). The script is found beside an installed tool
+// (share/signorini/) or in the source tree (data_files.hpp); the environment variables
+// SIGNORINI_PLOT_SCRIPT and SIGNORINI_PYTHON override the script and the interpreter.
 
 #include <optional>
 #include <string>

@@ -9,6 +9,7 @@
 #endif
 
 #include "commands.hpp"
+#include "signorini/config.hpp"
 #include "signorini/backend/cuda_backend.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
 

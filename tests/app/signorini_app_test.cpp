@@ -11,6 +11,7 @@
 #include "app/tool_run.hpp"
 #include "io/expect_contains.hpp"
 #include "io/summary_keys.hpp"
+#include "signorini/config.hpp"
 #include "signorini/backend/cuda_backend.hpp"
 
 namespace signorini {

@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 
+#include "signorini/config.hpp"
 #include "signorini/backend/cuda_backend.hpp"
 #include "signorini/core/error.hpp"
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/backend/cuda_backend.hpp"
 #include "test_problems.hpp"
 

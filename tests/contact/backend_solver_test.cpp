@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/core/error.hpp"
 #include "test_problems.hpp"
 

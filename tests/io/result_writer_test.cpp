@@ -1,6 +1,7 @@
 // summary.json and contact.csv of a solved problem: the keys scripts rely on, one CSV row per
 // contact node with the documented sign conventions, and files written only whole.
 
+#include "signorini/config.hpp"
 #include "signorini/io/result_writer.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,8 @@
 // The CUDA backend's entry points in a build without CUDA: they say so (the real ones are in
 // cuda/cuda_backend.cpp, compiled only when the build has CUDA).
 
+#include "signorini/config.hpp"
+
 #ifndef SIGNORINI_HAVE_CUDA
 
 #include "signorini/backend/cuda_backend.hpp"

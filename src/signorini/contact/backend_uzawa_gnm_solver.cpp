@@ -13,7 +13,7 @@
 
 #include "signorini/backend/make_backend.hpp"
 #include "signorini/contact/armijo_rule.hpp"
-#include "signorini/contact/contact_solver.hpp"
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/uzawa_iteration.hpp"

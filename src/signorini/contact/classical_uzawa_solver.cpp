@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "signorini/contact/contact_solver.hpp"
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/core/error.hpp"
 
 namespace signorini {

@@ -1,4 +1,5 @@
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/contact/contact_methods.hpp"
 
 #include <fmt/format.h>
 

@@ -19,7 +19,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 
-#include "signorini/contact/contact_solver.hpp"
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/normal_rotation.hpp"
 #include "signorini/core/error.hpp"

@@ -2,7 +2,7 @@
 // minimised by the generalised Newton method (17) (method.md sections 2-4), on the host with a
 // sparse or dense Newton system.
 
-#include "signorini/contact/contact_solver.hpp"
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/newton_system.hpp"
 #include "signorini/contact/uzawa_iteration.hpp"

@@ -1,3 +1,4 @@
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/uzawa_iteration.hpp"
 
 #include <fmt/format.h>

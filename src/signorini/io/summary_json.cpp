@@ -1,3 +1,4 @@
+#include "signorini/config.hpp"
 #include "signorini/io/summary_json.hpp"
 
 #include <algorithm>

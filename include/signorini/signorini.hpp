@@ -1,0 +1,20 @@
+#pragma once
+// The public API of the signorini library in one include: problem description, model building,
+// the contact solvers with their options and summary, and the result writers.
+//
+//   #include <signorini/signorini.hpp>
+//
+// examples/cpp/ shows a complete program built against the installed package
+// (find_package(signorini) and the target signorini::signorini).
+
+#include "signorini/config.hpp"
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/io/problem_file.hpp"
+#include "signorini/io/result_writer.hpp"
+#include "signorini/io/summary_json.hpp"
+#include "signorini/mesh/rectangle_mesh.hpp"
+#include "signorini/problem/model.hpp"
+#include "signorini/problem/problem_spec.hpp"
+#include "signorini/problem/resultants.hpp"
+#include "signorini/problem/unit_system.hpp"
