@@ -23,7 +23,8 @@ ArmijoStep armijo_step(const ModifiedLagrangian& phi, const ModifiedLagrangian::
   do {
     alpha *= 0.5;
     ++step.halvings;
-    if (step.halvings > max_halvings) {
+    if (step.halvings > max_halvings) {  // the halvings tried were max_halvings
+      step.halvings = max_halvings;
       step.failed = true;
       return step;
     }

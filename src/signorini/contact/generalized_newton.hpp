@@ -1,12 +1,14 @@
 #pragma once
 // The generalised Newton method (17) with the Armijo rule for step (i) of the Uzawa method:
-// minimises Phi for fixed multipliers l (method.md section 4).
+// minimises Phi for fixed multipliers l (method.md section 4). Written once, against
+// NewtonSpace, for the host (sparse or dense Newton systems) and for a backend (PCG on a CPU or
+// GPU backend).
 
 #include <string>
 
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
-#include "signorini/contact/newton_system.hpp"
+#include "signorini/contact/newton_space.hpp"
 #include "signorini/contact/solve_summary.hpp"
 
 namespace signorini {
@@ -22,28 +24,24 @@ struct GnmResult {
   double residual = 0.0;  ///< max(||G(x_m)||, ||x_m - x_{m-1}|| / ||x_m||) at the last iteration
 };
 
-/// Marks `res` as stopped by the GNM iteration limit at Uzawa step `outer`, with the message
-/// (shared by the host and the backend GNM).
-void set_gnm_iteration_limit(GnmResult& res, const ContactSolverOptions& options, int outer);
-
 /// ||G|| / max(||b||, ||A x - b||) (||G|| itself where both are 0): the gradient part of the GNM
 /// stopping rule, free of units (method.md section 7).
 [[nodiscard]] double relative_gradient(double gradient_norm, double b_norm, double residual_norm);
 
 class GeneralizedNewton {
  public:
-  GeneralizedNewton(const ContactProblem& problem, const ContactSolverOptions& options,
-                    NewtonSystem& system);
+  /// `b_norm` = ||b||, the load part of the force scale of relative_gradient(); `weights` the
+  /// h_j of the contact nodes.
+  GeneralizedNewton(const ContactSolverOptions& options, double b_norm, const Vector& weights);
 
-  /// Minimises Phi (set up in `phi`) starting from x, which holds the minimiser on return.
-  /// `outer` is the Uzawa step number, passed to the observer.
-  GnmResult minimize(const ModifiedLagrangian& phi, Vector& x, int outer);
+  /// Minimises Phi (set up in `phi`) starting from the point held by `space`, which holds the
+  /// minimiser on return. `outer` is the Uzawa step number, passed to the observer.
+  GnmResult minimize(const ModifiedLagrangian& phi, NewtonSpace& space, int outer) const;
 
  private:
-  const ContactProblem& problem_;
   const ContactSolverOptions& options_;
-  NewtonSystem& system_;
-  double b_norm_;  // ||b||, the load part of the force scale of relative_gradient()
+  double b_norm_;
+  const Vector& weights_;
 };
 
 }  // namespace signorini

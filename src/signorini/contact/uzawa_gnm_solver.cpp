@@ -1,30 +1,71 @@
 // The paper's method: Uzawa iterations (13) on the modified Lagrangian (10), each step (i)
-// minimised by the generalised Newton method (17) (method.md sections 2-4), on the host with a
-// sparse or dense Newton system.
+// minimised by the generalised Newton method (17) (method.md sections 2-4). One loop of each
+// (uzawa_iteration.cpp, generalized_newton.cpp); what differs between the host and a backend is
+// only where the vectors live and how the Newton systems are solved (NewtonSpace).
 
+#include <memory>
+
+#include "signorini/backend/make_backend.hpp"
+#include "signorini/contact/backend_newton_space.hpp"
 #include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/generalized_newton.hpp"
+#include "signorini/contact/host_newton_space.hpp"
 #include "signorini/contact/newton_system.hpp"
 #include "signorini/contact/uzawa_iteration.hpp"
 
 namespace signorini {
 
+namespace {
+
+void run_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
+                   ModifiedLagrangian& phi, NewtonSpace& space, ContactResult& out) {
+  const GeneralizedNewton gnm(options, problem.b.norm(), problem.contact.weights);
+  run_uzawa_iteration(
+      problem, options, phi,
+      [&](const ModifiedLagrangian& current, int k, Vector& Nx) {
+        const GnmResult g = gnm.minimize(current, space, k);
+        Nx = space.contact_values();
+        return g;
+      },
+      out);
+}
+
+}  // namespace
+
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options) {
   ContactResult out;
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   const auto system = make_newton_system(problem, phi, options.linear);
-  GeneralizedNewton gnm(problem, options, *system);
-  Vector x = Vector::Zero(problem.A.rows());
-  run_uzawa_iteration(
-      problem, options, phi,
-      [&](const ModifiedLagrangian& current, int k, Vector& Nx) {
-        const GnmResult g = gnm.minimize(current, x, k);
-        Nx = problem.contact.N * x;
-        return g;
-      },
-      out);
+  HostNewtonSpace space(problem, *system, Vector::Zero(problem.A.rows()));  // x^0 = 0
+  run_uzawa_gnm(problem, options, phi, space, out);
   out.summary.timings.merge(system->timings());
-  out.u = std::move(x);
+  out.u = space.take_x();
+  return out;
+}
+
+ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
+                                         const ContactSolverOptions& options) {
+  ContactResult out;
+  SolveSummary& s = out.summary;
+  TimingTable timings;
+  std::unique_ptr<Backend> backend;
+  {
+    ScopedTimer t(timings, "device setup");
+    backend = make_backend(options.device);
+  }
+  BackendNewtonSpace space(problem, options, *backend, timings,
+                           Vector::Zero(problem.A.rows()));  // x^0 = 0
+  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
+  run_uzawa_gnm(problem, options, phi, space, out);
+  {
+    ScopedTimer t(timings, "device download");
+    out.u = space.solution();
+  }
+  s.device = backend->description();
+  s.device_peak_bytes = backend->peak_bytes();
+  s.multigrid_levels = space.levels();
+  s.multigrid_hierarchy = problem.multigrid.kind;
+  s.timings = std::move(timings);
   return out;
 }
 

@@ -1,0 +1,59 @@
+#pragma once
+// The GNM vectors on a backend (docs/gpu.md): every vector of the size of the mesh in the
+// backend's memory (the GPU's with solver.device = "cuda"), the Newton systems solved there by
+// preconditioned conjugate gradients (Jacobi or a multigrid V-cycle). The stiffness is uploaded
+// once; per GNM iteration only scalars (dot products) and vectors of the contact nodes (N x, N d)
+// cross between host and device.
+
+#include <memory>
+#include <vector>
+
+#include "signorini/backend/backend.hpp"
+#include "signorini/contact/contact_solver_options.hpp"
+#include "signorini/contact/newton_space.hpp"
+#include "signorini/core/timing_table.hpp"
+#include "signorini/iterative/linear_operator.hpp"
+#include "signorini/iterative/penalized_operator.hpp"
+#include "signorini/iterative/pcg.hpp"
+
+namespace signorini {
+
+class BackendNewtonSpace final : public NewtonSpace {
+ public:
+  /// Uploads A, N and b, sets up the preconditioner (timed in `timings`), starts at x0.
+  BackendNewtonSpace(const ContactProblem& problem, const ContactSolverOptions& options,
+                     Backend& backend, TimingTable& timings, const Vector& x0);
+
+  [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
+  void set_active(const ActiveSet& active, double r) override;
+  NewtonSolveStats solve(const Vector& terms) override;
+  void direction(ModifiedLagrangian::Direction& dir) override;
+  void step(double t) override;
+  NewtonStepNorms norms(const Vector& contact_forces) override;
+  [[nodiscard]] int factorizations() const override { return refreshes_; }
+
+  /// x, downloaded.
+  [[nodiscard]] Vector solution() const { return to_host(x_); }
+  /// Unknowns per multigrid level (empty with Jacobi).
+  [[nodiscard]] const std::vector<Index>& levels() const { return levels_; }
+
+ private:
+  Vector contact_values_of(const DeviceVector& v);
+
+  const ContactProblem& p_;
+  const ContactSolverOptions& o_;
+  Backend& be_;
+  TimingTable& timings_;
+  Index n_, nc_;
+  std::unique_ptr<PenalizedOperator> H_;
+  std::unique_ptr<Preconditioner> preconditioner_;
+  std::vector<Index> levels_;
+  std::unique_ptr<Pcg> pcg_;
+  DeviceVector b_, x_, x_new_, residual_, d_, Ad_, work_, contact_;
+  ActiveSet weights_active_;
+  Vector Nx_;
+  double last_t_ = 1.0;
+  int refreshes_ = 0;
+};
+
+}  // namespace signorini

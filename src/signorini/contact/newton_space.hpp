@@ -1,0 +1,56 @@
+#pragma once
+// Where a generalised Newton minimisation (17) keeps its vectors and solves its linear systems:
+// the one GNM loop (generalized_newton.cpp) is written against this interface and runs on the
+// host (Eigen vectors, a sparse or dense Newton system: host_newton_space.hpp) or on a backend
+// (vectors in the backend's memory, PCG there: backend_newton_space.hpp). Only vectors of the
+// contact nodes (n_c values: N x, N d, the active set) and scalars cross the interface.
+
+#include <string>
+
+#include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/core/types.hpp"
+
+namespace signorini {
+
+/// What one linear solve of a Newton system reports.
+struct NewtonSolveStats {
+  bool converged = true;
+  int iterations = 0;     ///< iterations of an iterative solver, 0 for a direct one
+  double residual = 0.0;  ///< relative residual reached by an iterative solver
+  std::string solver;     ///< what solved it, for messages ("CHOLMOD", "conjugate gradients")
+  double tolerance = 0.0; ///< the iterative solver's tolerance (0 for a direct one)
+};
+
+/// Norms after a step, for the stopping rule of GNM (method.md sections 4 and 7).
+struct NewtonStepNorms {
+  double gradient = 0.0;  ///< ||G(x)|| = ||(A x - b) + N^T (h z_+)||
+  double residual = 0.0;  ///< ||A x - b||
+  double x = 0.0;         ///< ||x||
+  double step = 0.0;      ///< ||t d||, the step just taken
+};
+
+class NewtonSpace {
+ public:
+  virtual ~NewtonSpace() = default;
+
+  /// N x at the current point x (n_c values).
+  [[nodiscard]] virtual const Vector& contact_values() const = 0;
+  /// Makes H(P) = A + r N^T diag(h on P) N the Newton matrix (no work when P has not changed).
+  virtual void set_active(const ActiveSet& active, double r) = 0;
+  /// Solves H(P) x_new = b - N^T terms (17), starting from x_new = x; `terms` are
+  /// ModifiedLagrangian::newton_contact_terms(P).
+  virtual NewtonSolveStats solve(const Vector& terms) = 0;
+  /// d = x_new - x: fills dir's <A x - b, d>, <A d, d> and N d (not z, which the loop sets).
+  virtual void direction(ModifiedLagrangian::Direction& dir) = 0;
+  /// x += t d, A x - b += t A d, N x updated.
+  virtual void step(double t) = 0;
+  /// The norms at the current point; `contact_forces` are h z_+ at x (n_c values).
+  virtual NewtonStepNorms norms(const Vector& contact_forces) = 0;
+
+  /// Numeric factorisations (direct solvers) or preconditioner refreshes (iterative) so far.
+  [[nodiscard]] virtual int factorizations() const = 0;
+  /// Rank-one factor updates and downdates so far (the dense Newton system).
+  [[nodiscard]] virtual int factor_updates() const { return 0; }
+};
+
+}  // namespace signorini

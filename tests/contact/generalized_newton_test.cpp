@@ -1,0 +1,130 @@
+// The one GNM loop (generalized_newton.cpp) against NewtonSpace: its failure exits, driven by a
+// scripted space, and its agreement between the host and the CPU backend spaces.
+
+#include "signorini/contact/generalized_newton.hpp"
+
+#include <gtest/gtest.h>
+
+#include "signorini/backend/make_backend.hpp"
+#include "signorini/contact/armijo_rule.hpp"
+#include "signorini/contact/backend_newton_space.hpp"
+#include "signorini/contact/host_newton_space.hpp"
+#include "signorini/contact/newton_system.hpp"
+#include "test_problems.hpp"
+
+namespace signorini {
+namespace {
+
+// A space whose Newton solve and direction are scripted: no linear algebra at all.
+class ScriptedSpace final : public NewtonSpace {
+ public:
+  explicit ScriptedSpace(Index nc) : Nx_(Vector::Zero(nc)) {}
+  NewtonSolveStats next_solve;
+  ModifiedLagrangian::Direction next_direction;
+  int steps = 0;
+
+  [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
+  void set_active(const ActiveSet&, double) override { ++refreshes_; }
+  NewtonSolveStats solve(const Vector&) override { return next_solve; }
+  void direction(ModifiedLagrangian::Direction& dir) override {
+    dir.residual_dot_d = next_direction.residual_dot_d;
+    dir.d_A_d = next_direction.d_A_d;
+    dir.Nd = next_direction.Nd;
+  }
+  void step(double) override { ++steps; }
+  NewtonStepNorms norms(const Vector&) override { return {1.0, 1.0, 1.0, 1.0}; }
+  [[nodiscard]] int factorizations() const override { return refreshes_; }
+
+ private:
+  Vector Nx_;
+  int refreshes_ = 0;
+};
+
+TEST(GeneralizedNewton, ArmijoFailureStopsWithTheHalvingsTried) {
+  const ContactProblem& p = testing::paper_model(30).problem;
+  ModifiedLagrangian phi(p, 1e3);
+  ContactSolverOptions o;
+  o.max_armijo_halvings = 3;
+  ScriptedSpace space(p.contact.size());
+  // A descent direction (slope -1) along which Phi rises at once (curvature 1e6): no step of
+  // length 1, 1/2, 1/4 or 1/8 decreases Phi enough.
+  space.next_direction.residual_dot_d = -1.0;
+  space.next_direction.d_A_d = 1e6;
+  space.next_direction.Nd = Vector::Zero(p.contact.size());
+  const GeneralizedNewton gnm(o, 1.0, p.contact.weights);
+  const GnmResult g = gnm.minimize(phi, space, 4);
+  EXPECT_EQ(g.termination, Termination::LineSearchFailure);
+  EXPECT_EQ(g.armijo_reductions, 3);  // the halvings tried, not one more
+  EXPECT_EQ(g.iterations, 1);
+  EXPECT_EQ(space.steps, 0);
+  EXPECT_NE(g.message.find("Armijo rule found no decrease after 3 halvings in GNM iteration 1 of "
+                           "Uzawa step 4"),
+            std::string::npos)
+      << g.message;
+}
+
+TEST(GeneralizedNewton, LinearSolverFailureNamesTheSolverAndItsResidual) {
+  const ContactProblem& p = testing::paper_model(30).problem;
+  ModifiedLagrangian phi(p, 1e3);
+  ContactSolverOptions o;
+  ScriptedSpace space(p.contact.size());
+  space.next_solve.converged = false;
+  space.next_solve.iterations = 17;
+  space.next_solve.residual = 3.5e-4;
+  space.next_solve.solver = "conjugate gradients";
+  space.next_solve.tolerance = 1e-12;
+  const GnmResult g = GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 2);
+  EXPECT_EQ(g.termination, Termination::LinearSolverFailure);
+  EXPECT_EQ(g.linear_iterations, 17);
+  EXPECT_EQ(g.message,
+            "conjugate gradients did not converge in GNM iteration 1 of Uzawa step 2 (17 "
+            "iterations, relative residual 3.500e-04, tolerance 1.0e-12)");
+}
+
+// After a full step, the same active set again means x minimises Phi: GNM stops at m = 2 without
+// another solve, although the (scripted) norms never fall below the tolerance.
+TEST(GeneralizedNewton, RepeatedActiveSetAfterAFullStepEndsTheMinimisation) {
+  const ContactProblem& p = testing::paper_model(30).problem;
+  ModifiedLagrangian phi(p, 1e3);
+  ContactSolverOptions o;
+  o.max_gnm_iterations = 2;
+  ScriptedSpace space(p.contact.size());
+  space.next_direction.residual_dot_d = -1.0;  // a full step that decreases Phi
+  space.next_direction.d_A_d = 1.0;
+  space.next_direction.Nd = Vector::Zero(p.contact.size());
+  const GnmResult g = GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1);
+  EXPECT_EQ(g.termination, Termination::Converged);
+  EXPECT_EQ(g.iterations, 2);
+  EXPECT_EQ(space.steps, 1);
+}
+
+// The same minimisation in the host space (CHOLMOD) and in the CPU backend's space (PCG with a
+// tight tolerance): the same iterates to the solvers' accuracy.
+TEST(GeneralizedNewton, HostAndBackendSpacesAgree) {
+  const ContactProblem& p = testing::paper_model(30).problem;
+  ContactSolverOptions o;
+  o.linear.cg_tolerance = 1e-14;
+  ModifiedLagrangian phi(p, 1e3);
+  phi.set_multipliers(Vector::Constant(p.contact.size(), 0.05));
+  const GeneralizedNewton gnm(o, p.b.norm(), p.contact.weights);
+
+  const auto system = make_newton_system(p, phi, o.linear);
+  HostNewtonSpace host(p, *system, Vector::Zero(p.A.rows()));
+  const GnmResult gh = gnm.minimize(phi, host, 1);
+
+  TimingTable timings;
+  const auto backend = make_backend(DeviceKind::Cpu);
+  BackendNewtonSpace device(p, o, *backend, timings, Vector::Zero(p.A.rows()));
+  const GnmResult gd = gnm.minimize(phi, device, 1);
+
+  ASSERT_EQ(gh.termination, Termination::Converged) << gh.message;
+  ASSERT_EQ(gd.termination, Termination::Converged) << gd.message;
+  EXPECT_EQ(gh.iterations, gd.iterations);
+  EXPECT_GT(gd.linear_iterations, 0);
+  EXPECT_EQ(gh.linear_iterations, 0);
+  const Vector xd = device.solution();
+  EXPECT_LT((host.x() - xd).norm(), 1e-9 * host.x().norm());
+}
+
+}  // namespace
+}  // namespace signorini
