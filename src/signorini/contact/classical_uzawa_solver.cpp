@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/outer_iteration.hpp"
 #include "signorini/core/error.hpp"
 
 namespace signorini {
@@ -56,52 +57,47 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
   s.classical_step = rho;
 
   Vector x = Vector::Zero(problem.A.rows());
-  Vector l = Vector::Zero(c.size());
-  s.termination = Termination::IterationLimit;
-  for (int k = 1; k <= options.max_classical_iterations; ++k) {
+  OuterLoop loop;
+  loop.max_steps = options.max_classical_iterations;
+  loop.step = [&](int k, const Vector& l) {
+    OuterStepOutcome o;
+    OuterStepRecord& rec = o.record;
     // (i) A u = b - N^T H l: the contact pressure acts as a load.
     const LinearSolveStats st =
         solver->solve(problem.b - c.N.transpose() * c.weights.cwiseProduct(l), x);
-    OuterStepRecord rec;
     rec.inner_iterations = 1;
     rec.linear_iterations = st.iterations;
     rec.factorizations = k == 1 ? 1 : 0;
     if (!st.converged) {
-      s.steps.push_back(rec);
-      s.termination = Termination::LinearSolverFailure;
-      s.message = fmt::format("linear solver did not converge at Uzawa step {} (residual {:.3e})",
+      o.stop = Termination::LinearSolverFailure;
+      o.message = fmt::format("linear solver did not converge at Uzawa step {} (residual {:.3e})",
                               k, st.residual);
-      break;
+      return o;
     }
     // (ii) l^{k+1} = (l^k + rho ((N u)_j - g_j))_+
-    Vector l_new = (l + rho * (c.N * x - c.gaps)).cwiseMax(0.0);
+    o.l = (l + rho * (c.N * x - c.gaps)).cwiseMax(0.0);
     for (Index j = 0; j < c.size(); ++j)
-      if (!c.movable[static_cast<std::size_t>(j)]) l_new(j) = 0.0;
-    rec.dual_change = relative_change(l_new, l);
-    rec.active_set_size = (l_new.array() > 0.0).count();
-    l = std::move(l_new);
-    s.steps.push_back(rec);
-    if (options.observer && (k <= 10 || k % 100 == 0))
-      options.observer({IterationEvent::Kind::Outer, k, 1, rec.active_set_size, rec.dual_change, 0,
-                        rec.linear_iterations});
-    if (rec.dual_change < options.uzawa_tolerance) {
-      s.termination = Termination::Converged;
-      s.message = fmt::format(
-          "||l^k - l^(k-1)|| / ||l^k|| = {:.3e} < {:.1e} after {} classical Uzawa steps (rho = "
-          "{:.4e})",
-          rec.dual_change, options.uzawa_tolerance, k, rho);
-      break;
+      if (!c.movable[static_cast<std::size_t>(j)]) o.l(j) = 0.0;
+    rec.dual_change = relative_change(o.l, l);
+    rec.active_set_size = (o.l.array() > 0.0).count();
+    if (dual_change_converged(rec, options.uzawa_tolerance)) {
+      o.stop = Termination::Converged;
+      o.message = dual_change_message(rec, options.uzawa_tolerance, k,
+                                      fmt::format("classical Uzawa steps (rho = {:.4e})", rho));
     }
-  }
-  if (s.termination == Termination::IterationLimit)
-    s.message = fmt::format(
+    return o;
+  };
+  loop.limit_message = [&](const OuterStepRecord& last) {
+    return fmt::format(
         "classical Uzawa did not converge in {} steps: ||l^k - l^(k-1)|| / ||l^k|| = {:.3e} "
         "(tolerance {:.1e}, rho = {:.4e})",
-        options.max_classical_iterations, s.steps.empty() ? 0.0 : s.steps.back().dual_change,
-        options.uzawa_tolerance, rho);
+        options.max_classical_iterations, last.dual_change, options.uzawa_tolerance, rho);
+  };
+  // Thousands of cheap steps: the first ten and every hundredth go to the observer.
+  loop.report = [](int k) { return k <= 10 || k % 100 == 0; };
+  run_outer_loop(loop, c.size(), options, out);
   s.timings.merge(solver->timings());
   out.u = std::move(x);
-  out.l = std::move(l);
   return out;
 }
 

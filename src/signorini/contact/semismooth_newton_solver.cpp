@@ -20,6 +20,7 @@
 #include <algorithm>
 
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/outer_iteration.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/normal_rotation.hpp"
 #include "signorini/core/error.hpp"
@@ -192,59 +193,55 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
 
   ActiveSet active(static_cast<std::size_t>(nc), false);
   std::vector<ActiveSet> history;
-  Vector l = Vector::Zero(nc);
-  s.termination = Termination::IterationLimit;
-
-  for (int it = 1; it <= options.max_newton_iterations; ++it) {
-    Vector l_new, gap_residual;
-    const LinearSolveStats st = solver->solve(active, l_new, gap_residual);
-    OuterStepRecord rec;
+  OuterLoop loop;
+  loop.max_steps = options.max_newton_iterations;
+  loop.step = [&](int it, const Vector& l) {
+    OuterStepOutcome o;
+    OuterStepRecord& rec = o.record;
+    Vector gap_residual;
+    const LinearSolveStats st = solver->solve(active, o.l, gap_residual);
     rec.inner_iterations = 1;
     rec.factorizations = 1;
     rec.linear_iterations = st.iterations;
     if (!st.converged) {
-      s.steps.push_back(rec);
-      s.termination = Termination::LinearSolverFailure;
-      s.message =
+      o.l.resize(0);  // not a step: l^(k-1) stays
+      o.stop = Termination::LinearSolverFailure;
+      o.message =
           fmt::format("linear solver did not converge at Newton iteration {} (residual {:.3e})", it,
                       st.residual);
-      break;
+      return o;
     }
+    // The next active set: nodes pressed (l_j > 0) stay, free nodes that penetrate join.
     ActiveSet next(static_cast<std::size_t>(nc), false);
     for (Index j = 0; j < nc; ++j) {
       if (!c.movable[static_cast<std::size_t>(j)]) continue;
       next[static_cast<std::size_t>(j)] =
-          active[static_cast<std::size_t>(j)] ? l_new(j) > 0.0 : gap_residual(j) > 0.0;
+          active[static_cast<std::size_t>(j)] ? o.l(j) > 0.0 : gap_residual(j) > 0.0;
     }
-    rec.dual_change = relative_change(l_new, l);
+    rec.dual_change = relative_change(o.l, l);
     rec.active_set_size = count_active(active);
-    l = std::move(l_new);
-    s.steps.push_back(rec);
-    if (options.observer)
-      options.observer({IterationEvent::Kind::Outer, it, 1, rec.active_set_size, rec.dual_change, 0,
-                        rec.linear_iterations});
     if (next == active) {
-      s.termination = Termination::Converged;
-      s.message = fmt::format("active set repeated after {} Newton iterations ({} active nodes)",
+      o.stop = Termination::Converged;
+      o.message = fmt::format("active set repeated after {} Newton iterations ({} active nodes)",
                               it, count_active(active));
-      break;
-    }
-    if (std::find(history.begin(), history.end(), next) != history.end()) {
-      s.termination = Termination::ActiveSetCycling;
-      s.message = fmt::format(
+    } else if (std::find(history.begin(), history.end(), next) != history.end()) {
+      o.stop = Termination::ActiveSetCycling;
+      o.message = fmt::format(
           "active set cycles: iteration {} returns to an earlier active set ({} active nodes)", it,
           count_active(next));
-      break;
+    } else {
+      history.push_back(active);
+      active = std::move(next);
     }
-    history.push_back(active);
-    active = std::move(next);
-  }
-  if (s.termination == Termination::IterationLimit)
-    s.message = fmt::format("active set still changing after {} Newton iterations",
-                            options.max_newton_iterations);
+    return o;
+  };
+  loop.limit_message = [&](const OuterStepRecord&) {
+    return fmt::format("active set still changing after {} Newton iterations",
+                       options.max_newton_iterations);
+  };
+  run_outer_loop(loop, nc, options, out);
   s.timings.merge(solver->timings());
   out.u = solver->displacement();
-  out.l = std::move(l);
   return out;
 }
 
