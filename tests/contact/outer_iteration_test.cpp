@@ -33,7 +33,7 @@ TEST(OuterIteration, IterationLimitKeepsEveryRecordAndReportsEachStep) {
   std::vector<IterationEvent> events;
   o.observer = [&](const IterationEvent& e) { events.push_back(e); };
   ContactResult out;
-  run_outer_loop(halving_loop(4), 3, o, out);
+  run_outer_loop(halving_loop(4), Vector::Zero(3), o, out);
   EXPECT_EQ(out.summary.termination, Termination::IterationLimit);
   EXPECT_EQ(out.summary.steps.size(), 4U);
   EXPECT_EQ(out.summary.message, "limit, last change " + std::to_string(0.25));
@@ -57,7 +57,7 @@ TEST(OuterIteration, ConvergedStepEndsTheLoopWithItsMultipliers) {
     return o;
   };
   ContactResult out;
-  run_outer_loop(loop, 2, ContactSolverOptions{}, out);
+  run_outer_loop(loop, Vector::Zero(2), ContactSolverOptions{}, out);
   EXPECT_TRUE(out.summary.converged());
   EXPECT_EQ(out.summary.message, "done");
   EXPECT_EQ(out.summary.steps.size(), 3U);
@@ -82,7 +82,7 @@ TEST(OuterIteration, FailedStepKeepsThePreviousMultipliersAndItsMessage) {
   ContactSolverOptions o;
   o.observer = [&](const IterationEvent&) { ++reported; };
   ContactResult out;
-  run_outer_loop(loop, 2, o, out);
+  run_outer_loop(loop, Vector::Zero(2), o, out);
   EXPECT_EQ(out.summary.termination, Termination::IterationLimit);
   EXPECT_EQ(out.summary.message, "GNM did not converge");
   EXPECT_EQ(out.summary.steps.size(), 2U);
@@ -97,7 +97,7 @@ TEST(OuterIteration, ReportFilterChoosesTheStepsTheObserverSees) {
   ContactSolverOptions o;
   o.observer = [&](const IterationEvent& e) { seen.push_back(e.outer); };
   ContactResult out;
-  run_outer_loop(loop, 1, o, out);
+  run_outer_loop(loop, Vector::Zero(1), o, out);
   EXPECT_EQ(seen, (std::vector<int>{1, 2, 100, 200}));
 }
 

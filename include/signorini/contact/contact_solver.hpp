@@ -1,7 +1,10 @@
 #pragma once
-// Entry point of the contact solvers: solve_contact() validates the options, runs the chosen
-// method on the discrete problem (14) and completes the summary with KKT residuals, energies,
-// contact force and timings.
+// Entry point of the contact solvers. ContactSolver is set up once for a problem (options
+// validated, r resolved, the path chosen, the condensation factorised) and then solves, again
+// for new loads or gaps, from a warm start if asked; solve_contact() is the one-shot form. Every
+// solve completes the summary with KKT residuals, energies, contact force and timings.
+
+#include <memory>
 
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
@@ -15,9 +18,50 @@ struct ContactResult {
   SolveSummary summary;
 };
 
-/// Never fails silently: a run that stops short of convergence returns with
-/// summary.termination saying why and summary.message giving the residuals. Throws InputError
-/// for invalid options and NumericalError if a factorisation fails.
+/// A contact solver set up once for one problem (A, N and the contact boundary fixed) and solved
+/// as often as needed, as in quasi-static load stepping or a fixed point on the contact data:
+///
+///   ContactSolver solver(model.problem, options);   // validation, r, condensation (the costly
+///   ContactResult first = solver.solve();           //  sparse factorisation) done once
+///   solver.set_loads(b2);                           // same A: one forward substitution
+///   solver.warm_start(first);                       // start from (u, l) of `first`
+///   ContactResult second = solver.solve();
+///
+/// The problem must outlive the solver; it is not changed (new loads and gaps are kept in the
+/// solver, in a copy of the problem made at the first change). Never fails silently: a run that
+/// stops short of convergence returns with summary.termination saying why and summary.message
+/// giving the residuals.
+class ContactSolver {
+ public:
+  /// Throws InputError for invalid options and NumericalError if a factorisation fails.
+  ContactSolver(const ContactProblem& problem, const ContactSolverOptions& options);
+  ~ContactSolver();
+  ContactSolver(ContactSolver&&) noexcept;
+  ContactSolver& operator=(ContactSolver&&) noexcept;
+
+  /// Solves for the current loads and gaps, from the warm start if one was set (and kept for
+  /// later solves), otherwise from the paper's start u = 0, l = 0.
+  ContactResult solve();
+  /// New loads b (free dofs, the size of the problem's b).
+  void set_loads(const Vector& b);
+  /// New gaps g_j of the contact nodes (the size of the problem's gaps).
+  void set_gaps(const Vector& gaps);
+  /// Start the next solves from (u, l) of an earlier result for this problem.
+  void warm_start(const ContactResult& previous);
+  /// Back to the paper's start u = 0, l = 0.
+  void cold_start();
+
+  /// How this solver solves (from the options; recorded in every summary).
+  [[nodiscard]] SolvePath path() const;
+  /// Time of the set-up (condensation phases), also merged into the first solve's timings.
+  [[nodiscard]] const TimingTable& setup_timings() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// One solve: ContactSolver(problem, options).solve().
 ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& options);
 
 }  // namespace signorini

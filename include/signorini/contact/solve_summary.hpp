@@ -57,8 +57,31 @@ struct KktResiduals {
   [[nodiscard]] double max() const;
 };
 
+/// How the discrete problem was solved (the choice follows from the options: solver.method,
+/// schur_complement, linear.type, linear.preconditioner, device; docs/solvers.md).
+enum class SolvePath {
+  /// Condensed onto the contact nodes by one sparse Cholesky factorisation; the method iterates
+  /// on the dense Schur complement (linear.type = "cholmod", schur_complement = true).
+  CondensedDirect,
+  /// The method iterates on the full sparse system, factorised by CHOLMOD or dense Cholesky.
+  SparseDirect,
+  /// The full sparse system with Eigen's Jacobi-preconditioned conjugate gradients (host).
+  Iterative,
+  /// Vectors and PCG on a backend (the CPU backend or a GPU, docs/gpu.md).
+  Backend,
+};
+
+inline constexpr EnumNames<SolvePath, 4> kSolvePathNames{{
+    {SolvePath::CondensedDirect, "condensed_direct"},
+    {SolvePath::SparseDirect, "sparse_direct"},
+    {SolvePath::Iterative, "iterative"},
+    {SolvePath::Backend, "backend"},
+}};
+
 struct SolveSummary {
   ContactMethod method = ContactMethod::UzawaGnm;
+  SolvePath path = SolvePath::CondensedDirect;  ///< how it was solved
+  bool warm_started = false;  ///< started from an earlier solution (ContactSolver::warm_start)
   Termination termination = Termination::Converged;
   std::string message;                 ///< one line: why it stopped, with the residuals
   int outer_iterations = 0;            ///< Uzawa iterations (or Newton iterations)

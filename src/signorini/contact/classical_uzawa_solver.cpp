@@ -44,7 +44,8 @@ double dual_operator_norm(const ContactProblem& p, LinearSolver& solver) {
 }  // namespace
 
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
-                                    const ContactSolverOptions& options) {
+                                    const ContactSolverOptions& options,
+                                    const MethodStart& start) {
   ContactResult out;
   SolveSummary& s = out.summary;
   const ContactSet& c = problem.contact;
@@ -56,7 +57,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
                                                   : 1.5 / dual_operator_norm(problem, *solver);
   s.classical_step = rho;
 
-  Vector x = Vector::Zero(problem.A.rows());
+  Vector x = start.displacement(problem.A.rows());
   OuterLoop loop;
   loop.max_steps = options.max_classical_iterations;
   loop.step = [&](int k, const Vector& l) {
@@ -95,7 +96,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
   };
   // Thousands of cheap steps: the first ten and every hundredth go to the observer.
   loop.report = [](int k) { return k <= 10 || k % 100 == 0; };
-  run_outer_loop(loop, c.size(), options, out);
+  run_outer_loop(loop, start.multipliers(c.size()), options, out);
   s.timings.merge(solver->timings());
   out.u = std::move(x);
   return out;

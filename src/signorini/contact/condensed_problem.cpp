@@ -61,6 +61,18 @@ Vector CondensedProblem::expand(const Vector& v) const {
   return rotation_.from_rotated(y);
 }
 
+void CondensedProblem::set_load(const Vector& b) {
+  ScopedTimer t(timings_, "condensation solve");
+  reduced_.b = schur_->condensed_load(rotation_.to_rotated(b));
+}
+
+Vector CondensedProblem::condense(const Vector& u) const {
+  const Vector y = rotation_.to_rotated(u);  // Q^T u: node j's normal displacement at normal_dofs_
+  Vector v(static_cast<Index>(normal_dofs_.size()));
+  for (std::size_t k = 0; k < normal_dofs_.size(); ++k) v(static_cast<Index>(k)) = y(normal_dofs_[k]);
+  return v;
+}
+
 TimingTable CondensedProblem::timings() const {
   TimingTable t = timings_;
   t.merge(schur_->timings());

@@ -32,6 +32,14 @@ class CondensedProblem {
   [[nodiscard]] const ContactProblem& reduced() const { return reduced_; }
   /// Displacement in the free dofs of the full problem for condensed unknowns v (one solve).
   [[nodiscard]] Vector expand(const Vector& v) const;
+  /// New loads b of the full problem (same A): the condensed load g again (one forward
+  /// substitution with the factor kept from the set-up).
+  void set_load(const Vector& b);
+  /// New gaps of the contact nodes (the condensed problem has the same).
+  void set_gaps(const Vector& gaps) { reduced_.contact.gaps = gaps; }
+  /// The condensed unknowns v of a displacement u of the full problem: its normal components at
+  /// the movable contact nodes (a warm start).
+  [[nodiscard]] Vector condense(const Vector& u) const;
   [[nodiscard]] TimingTable timings() const;
 
  private:

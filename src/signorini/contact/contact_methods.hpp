@@ -10,15 +10,30 @@ namespace signorini {
 /// +infinity if only l_new is.
 double relative_change(const Vector& l_new, const Vector& l_old);
 
-// The methods themselves; solve_contact() calls one and completes its summary.
-ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options);
+/// Where a method starts: multipliers l^0 and displacement x^0 (free dofs of the problem it is
+/// given). Empty vectors mean zero, the paper's start (method.md "Conventions"); ContactSolver
+/// fills them for a warm start from an earlier solution.
+struct MethodStart {
+  Vector l;
+  Vector x;
+  [[nodiscard]] Vector multipliers(Index n) const { return l.size() == n ? l : Vector::Zero(n); }
+  [[nodiscard]] Vector displacement(Index n) const { return x.size() == n ? x : Vector::Zero(n); }
+};
+
+// The methods themselves; ContactSolver calls one and completes its summary.
+ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
+                              const MethodStart& start = {});
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
-                                    const ContactSolverOptions& options);
+                                    const ContactSolverOptions& options,
+                                    const MethodStart& start = {});
 /// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
 /// uses_backend_path(options).
 ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
-                                         const ContactSolverOptions& options);
+                                         const ContactSolverOptions& options,
+                                         const MethodStart& start = {});
+/// Starts from the active set {l_j > 0} of start.l (empty: no node active).
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
-                                      const ContactSolverOptions& options);
+                                      const ContactSolverOptions& options,
+                                      const MethodStart& start = {});
 
 }  // namespace signorini

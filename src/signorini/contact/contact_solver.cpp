@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,14 +25,15 @@ double relative_change(const Vector& l_new, const Vector& l_old) {
 }
 
 namespace {
-ContactResult run_method(const ContactProblem& problem, const ContactSolverOptions& options) {
+ContactResult run_method(const ContactProblem& problem, const ContactSolverOptions& options,
+                         const MethodStart& start) {
   switch (options.method) {
     case ContactMethod::UzawaGnm:
-      return solve_uzawa_gnm(problem, options);
+      return solve_uzawa_gnm(problem, options, start);
     case ContactMethod::ClassicalUzawa:
-      return solve_classical_uzawa(problem, options);
+      return solve_classical_uzawa(problem, options, start);
     case ContactMethod::SemismoothNewton:
-      return solve_semismooth_newton(problem, options);
+      return solve_semismooth_newton(problem, options, start);
   }
   throw InputError("unknown contact method");
 }
@@ -95,45 +98,155 @@ std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
 
 }  // namespace
 
-ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& given) {
+struct ContactSolver::Impl {
+  const ContactProblem* problem;         // the user's, or `changed` after set_loads/set_gaps
+  std::unique_ptr<ContactProblem> changed;
+  ContactSolverOptions given;            // as the user gave them (r may be "auto")
+  ContactSolverOptions options;          // r resolved
+  double r_auto = 0.0;
+  SolvePath path = SolvePath::CondensedDirect;
+  std::unique_ptr<CondensedProblem> condensed;
+  TimingTable setup_timings;             // "contact solve" of the set-up, condensation phases
+  double setup_seconds = 0.0;            // reported once, in the first solve's "contact solve"
+  TimingTable condensation_reported;     // condensation phases already in a solve's timings
+  std::optional<ContactResult> start;    // warm start
+
+  // The problem to change: copied once, at the first change.
+  ContactProblem& own_problem() {
+    if (!changed) {
+      changed = std::make_unique<ContactProblem>(*problem);
+      problem = changed.get();
+    }
+    return *changed;
+  }
+};
+
+namespace {
+
+SolvePath choose_path(const ContactSolverOptions& o) {
+  if (uses_backend_path(o)) return SolvePath::Backend;
+  if (o.schur_complement && o.linear.type == LinearSolverType::Cholmod)
+    return SolvePath::CondensedDirect;
+  if (o.linear.type == LinearSolverType::ConjugateGradient) return SolvePath::Iterative;
+  return SolvePath::SparseDirect;
+}
+
+}  // namespace
+
+ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverOptions& given)
+    : impl_(std::make_unique<Impl>()) {
   validate(given);
   const Index n = problem.A.rows();
   if (problem.A.cols() != n || problem.b.size() != n || problem.contact.N.cols() != n)
     throw InputError("contact problem: sizes of A, b and N do not match");
-
+  Impl& m = *impl_;
+  m.problem = &problem;
+  m.given = given;
+  m.options = given;
   // r is resolved here, on the full problem, so that the condensed and backend paths use the
   // same value (method.md section 7).
-  ContactSolverOptions options = given;
-  const double r_auto = automatic_r(problem, given.auto_r_factor);
-  options.r = given.r ? *given.r : r_auto;
+  m.r_auto = automatic_r(problem, given.auto_r_factor);
+  m.options.r = given.r ? *given.r : m.r_auto;
+  m.path = choose_path(m.options);
+  if (m.path == SolvePath::CondensedDirect) {
+    ScopedTimer timer(m.setup_timings, "contact solve");
+    m.condensed = std::make_unique<CondensedProblem>(problem);  // the sparse factorisation
+    timer.stop();
+    m.setup_seconds = m.setup_timings.seconds("contact solve");
+    m.setup_timings.merge(m.condensed->timings());
+  }
+}
+
+ContactSolver::~ContactSolver() = default;
+ContactSolver::ContactSolver(ContactSolver&&) noexcept = default;
+ContactSolver& ContactSolver::operator=(ContactSolver&&) noexcept = default;
+
+SolvePath ContactSolver::path() const { return impl_->path; }
+const TimingTable& ContactSolver::setup_timings() const { return impl_->setup_timings; }
+
+void ContactSolver::set_loads(const Vector& b) {
+  Impl& m = *impl_;
+  if (b.size() != m.problem->b.size())
+    throw InputError(fmt::format("ContactSolver::set_loads: {} values for {} free dofs", b.size(),
+                                 m.problem->b.size()));
+  m.own_problem().b = b;
+  if (m.condensed) m.condensed->set_load(b);
+}
+
+void ContactSolver::set_gaps(const Vector& gaps) {
+  Impl& m = *impl_;
+  if (gaps.size() != m.problem->contact.size())
+    throw InputError(fmt::format("ContactSolver::set_gaps: {} values for {} contact nodes",
+                                 gaps.size(), m.problem->contact.size()));
+  m.own_problem().contact.gaps = gaps;
+  if (m.condensed) m.condensed->set_gaps(gaps);
+}
+
+void ContactSolver::warm_start(const ContactResult& previous) {
+  const Impl& m = *impl_;
+  if (previous.u.size() != m.problem->A.rows() || previous.l.size() != m.problem->contact.size())
+    throw InputError("ContactSolver::warm_start: the result is not one of this problem");
+  impl_->start = previous;
+}
+
+void ContactSolver::cold_start() { impl_->start.reset(); }
+
+ContactResult ContactSolver::solve() {
+  Impl& m = *impl_;
+  const ContactProblem& problem = *m.problem;
+  const ContactSolverOptions& options = m.options;
+  MethodStart start;
+  if (m.start) {
+    start.l = m.start->l;
+    start.x = m.condensed ? m.condensed->condense(m.start->u) : m.start->u;
+  }
 
   ContactResult result;
   {
     TimingTable solve_time;
     ScopedTimer timer(solve_time, "contact solve");
-    if (uses_backend_path(options)) {
-      result = solve_uzawa_gnm_on_backend(problem, options);
-    } else if (options.schur_complement && options.linear.type == LinearSolverType::Cholmod) {
-      const CondensedProblem condensed(problem);
-      ContactSolverOptions reduced_options = options;
-      reduced_options.linear.type = LinearSolverType::Dense;
-      result = run_method(condensed.reduced(), reduced_options);
-      result.u = condensed.expand(result.u);
-      TimingTable t = condensed.timings();
-      t.merge(result.summary.timings);
-      result.summary.timings = std::move(t);
-    } else {
-      result = run_method(problem, options);
+    switch (m.path) {
+      case SolvePath::Backend:
+        result = solve_uzawa_gnm_on_backend(problem, options, start);
+        break;
+      case SolvePath::CondensedDirect: {
+        ContactSolverOptions reduced_options = options;
+        reduced_options.linear.type = LinearSolverType::Dense;
+        result = run_method(m.condensed->reduced(), reduced_options, start);
+        result.u = m.condensed->expand(result.u);
+        break;
+      }
+      case SolvePath::SparseDirect:
+      case SolvePath::Iterative:
+        result = run_method(problem, options, start);
+        break;
     }
     timer.stop();
-    result.summary.timings.merge(solve_time);
+    // The set-up's time goes into the first solve's "contact solve" (the one-shot report is the
+    // whole cost); the condensation phases of each solve (expansion, new loads) into its own.
+    TimingTable t;
+    if (m.setup_seconds > 0.0) t.add("contact solve", m.setup_seconds);
+    m.setup_seconds = 0.0;
+    if (m.condensed) {
+      const TimingTable now = m.condensed->timings();
+      for (const auto& [phase, seconds] : now.phases()) {
+        const double fresh = seconds - m.condensation_reported.seconds(phase);
+        if (fresh > 0.0) t.add(phase, fresh);
+      }
+      m.condensation_reported = now;
+    }
+    t.merge(result.summary.timings);
+    t.merge(solve_time);
+    result.summary.timings = std::move(t);
   }
   SolveSummary& s = result.summary;
   s.method = options.method;
+  s.path = m.path;
+  s.warm_started = m.start.has_value();
   s.outer_iterations = static_cast<int>(s.steps.size());
   s.r = *options.r;
-  s.r_automatic = !given.r.has_value();
-  s.automatic_r = r_auto;
+  s.r_automatic = !m.given.r.has_value();
+  s.automatic_r = m.r_auto;
   s.kkt_tolerance = options.kkt_tolerance;
   s.kkt = kkt_residuals(problem, result.u, result.l);
   s.energy = 0.5 * result.u.dot(problem.A * result.u) - problem.b.dot(result.u);
@@ -158,6 +271,10 @@ ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOp
   }
   if (!s.converged()) s.message += "; to try: " + advice(s, options);
   return result;
+}
+
+ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& options) {
+  return ContactSolver(problem, options).solve();
 }
 
 }  // namespace signorini

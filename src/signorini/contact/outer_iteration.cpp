@@ -4,10 +4,11 @@
 
 namespace signorini {
 
-void run_outer_loop(const OuterLoop& loop, Index num_contact, const ContactSolverOptions& options,
+void run_outer_loop(const OuterLoop& loop, Vector l0, const ContactSolverOptions& options,
                     ContactResult& out) {
   SolveSummary& s = out.summary;
-  Vector l = Vector::Zero(num_contact);  // l^0 = 0
+  Vector l = std::move(l0);
+  const Index num_contact = l.size();
   s.termination = Termination::IterationLimit;
   bool stopped = false;  // by convergence or by the method (a failure of its step)
   for (int k = 1; k <= loop.max_steps; ++k) {

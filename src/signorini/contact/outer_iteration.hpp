@@ -32,9 +32,9 @@ struct OuterLoop {
   std::function<bool(int k)> report;
 };
 
-/// Runs `loop` from l^0 = 0 (method.md "Conventions") on `num_contact` nodes; fills out.l and
-/// out.summary's steps, termination and message (not out.u).
-void run_outer_loop(const OuterLoop& loop, Index num_contact, const ContactSolverOptions& options,
+/// Runs `loop` from l^0 = `l0` (zero for the paper's start, method.md "Conventions"); fills
+/// out.l and out.summary's steps, termination and message (not out.u).
+void run_outer_loop(const OuterLoop& loop, Vector l0, const ContactSolverOptions& options,
                     ContactResult& out);
 
 /// The Uzawa stopping rule ||l^k - l^(k-1)|| / ||l^k|| < tolerance, and its message.

@@ -180,7 +180,8 @@ class DelassusSolver final : public ActiveSetSolver {
 }  // namespace
 
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
-                                      const ContactSolverOptions& options) {
+                                      const ContactSolverOptions& options,
+                                      const MethodStart& start) {
   ContactResult out;
   SolveSummary& s = out.summary;
   const ContactSet& c = problem.contact;
@@ -191,7 +192,10 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
   else
     solver = std::make_unique<RotatedEliminationSolver>(problem, options.linear);
 
+  const Vector l0 = start.multipliers(nc);
   ActiveSet active(static_cast<std::size_t>(nc), false);
+  for (Index j = 0; j < nc; ++j)
+    active[static_cast<std::size_t>(j)] = c.movable[static_cast<std::size_t>(j)] && l0(j) > 0.0;
   std::vector<ActiveSet> history;
   OuterLoop loop;
   loop.max_steps = options.max_newton_iterations;
@@ -239,7 +243,7 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
     return fmt::format("active set still changing after {} Newton iterations",
                        options.max_newton_iterations);
   };
-  run_outer_loop(loop, nc, options, out);
+  run_outer_loop(loop, l0, options, out);
   s.timings.merge(solver->timings());
   out.u = solver->displacement();
   return out;

@@ -18,33 +18,36 @@ namespace signorini {
 namespace {
 
 void run_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
-                   ModifiedLagrangian& phi, NewtonSpace& space, ContactResult& out) {
+                   const MethodStart& start, ModifiedLagrangian& phi, NewtonSpace& space,
+                   ContactResult& out) {
   const GeneralizedNewton gnm(options, problem.b.norm(), problem.contact.weights);
   run_uzawa_iteration(
-      problem, options, phi,
+      options, phi,
       [&](const ModifiedLagrangian& current, int k, Vector& Nx) {
         const GnmResult g = gnm.minimize(current, space, k);
         Nx = space.contact_values();
         return g;
       },
-      out);
+      start.multipliers(problem.contact.size()), out);
 }
 
 }  // namespace
 
-ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options) {
+ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
+                              const MethodStart& start) {
   ContactResult out;
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   const auto system = make_newton_system(problem, phi, options.linear);
-  HostNewtonSpace space(problem, *system, Vector::Zero(problem.A.rows()));  // x^0 = 0
-  run_uzawa_gnm(problem, options, phi, space, out);
+  HostNewtonSpace space(problem, *system, start.displacement(problem.A.rows()));
+  run_uzawa_gnm(problem, options, start, phi, space, out);
   out.summary.timings.merge(system->timings());
   out.u = space.take_x();
   return out;
 }
 
 ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
-                                         const ContactSolverOptions& options) {
+                                         const ContactSolverOptions& options,
+                                         const MethodStart& start) {
   ContactResult out;
   SolveSummary& s = out.summary;
   TimingTable timings;
@@ -54,9 +57,9 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
     backend = make_backend(options.device);
   }
   BackendNewtonSpace space(problem, options, *backend, timings,
-                           Vector::Zero(problem.A.rows()));  // x^0 = 0
+                           start.displacement(problem.A.rows()));
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
-  run_uzawa_gnm(problem, options, phi, space, out);
+  run_uzawa_gnm(problem, options, start, phi, space, out);
   {
     ScopedTimer t(timings, "device download");
     out.u = space.solution();

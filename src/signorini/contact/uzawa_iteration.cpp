@@ -6,8 +6,8 @@
 
 namespace signorini {
 
-void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
-                         ModifiedLagrangian& phi, const UzawaInnerStep& inner, ContactResult& out) {
+void run_uzawa_iteration(const ContactSolverOptions& options, ModifiedLagrangian& phi,
+                         const UzawaInnerStep& inner, Vector l0, ContactResult& out) {
   Vector Nx;
   OuterLoop loop;
   loop.max_steps = options.max_uzawa_iterations;
@@ -44,7 +44,7 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
         "{:.1e})",
         options.max_uzawa_iterations, last.dual_change, options.uzawa_tolerance);
   };
-  run_outer_loop(loop, problem.contact.size(), options, out);
+  run_outer_loop(loop, std::move(l0), options, out);
 }
 
 }  // namespace signorini

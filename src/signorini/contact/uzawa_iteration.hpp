@@ -15,9 +15,9 @@ namespace signorini {
 /// the minimiser is written to `Nx`.
 using UzawaInnerStep = std::function<GnmResult(const ModifiedLagrangian& phi, int k, Vector& Nx)>;
 
-/// Runs (13) from l^0 = 0 with `phi` (whose multipliers it sets); fills out.l and out.summary
-/// (steps, termination, message), not out.u.
-void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
-                         ModifiedLagrangian& phi, const UzawaInnerStep& inner, ContactResult& out);
+/// Runs (13) from l^0 (zero for the paper's start) with `phi` (whose multipliers it sets); fills
+/// out.l and out.summary (steps, termination, message), not out.u.
+void run_uzawa_iteration(const ContactSolverOptions& options, ModifiedLagrangian& phi,
+                         const UzawaInnerStep& inner, Vector l0, ContactResult& out);
 
 }  // namespace signorini
