@@ -95,7 +95,7 @@ int solve(const SolveArguments& args, LogFormat format) {
 
   progress.phase("contact solve");
   spec.solver.observer = [&progress](const IterationEvent& e) { progress.iteration(e); };
-  const ContactResult result = solve_contact(model.problem, spec.solver);
+  const ContactResult result = solve_contact(model.problem, spec.solver, &model.multigrid);
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
   // Once, for the report, the log and summary.json.

@@ -17,14 +17,19 @@ inline const Model& paper_model(Index nx) {
   return it->second;
 }
 
-/// The paper's benchmark problem with its multigrid hierarchy (for the multigrid preconditioner).
-inline ContactProblem paper_problem_with_hierarchy(Index nx) {
+/// The paper's benchmark problem and its geometric multigrid hierarchy (for the multigrid
+/// preconditioner, a set-up argument of the solver).
+struct ProblemWithHierarchy {
+  const ContactProblem& problem;
+  MultigridHierarchy multigrid;
+};
+inline ProblemWithHierarchy paper_problem_with_hierarchy(Index nx) {
   const Model& model = paper_model(nx);
   const ProblemSpec spec = paper_benchmark(nx, nx / 3);
-  ContactProblem p = model.problem;
-  p.multigrid.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
-  p.multigrid.kind = HierarchyKind::Geometric;
-  return p;
+  MultigridHierarchy h;
+  h.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
+  h.kind = HierarchyKind::Geometric;
+  return {model.problem, std::move(h)};
 }
 
 /// Relative difference ||a - b|| / ||b||.

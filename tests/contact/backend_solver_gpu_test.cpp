@@ -22,13 +22,13 @@ class GpuSolve : public ::testing::TestWithParam<std::tuple<Index, Preconditione
 TEST_P(GpuSolve, MatchesTheCpuDirectSolve) {
   SKIP_WITHOUT_GPU();
   const auto [nx, preconditioner] = GetParam();
-  const ContactProblem p = testing::paper_problem_with_hierarchy(nx);
+  const auto [p, multigrid] = testing::paper_problem_with_hierarchy(nx);
   const ContactResult cpu = solve_contact(p, ContactSolverOptions{});
   ContactSolverOptions o;
   o.device = DeviceKind::Cuda;
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.preconditioner = preconditioner;
-  const ContactResult gpu = solve_contact(p, o);
+  const ContactResult gpu = solve_contact(p, o, &multigrid);
   ASSERT_TRUE(gpu.summary.converged()) << gpu.summary.message;
   EXPECT_NEAR(gpu.summary.lagrangian, cpu.summary.lagrangian,
               1e-8 * std::abs(cpu.summary.lagrangian));
@@ -47,11 +47,11 @@ TEST(GpuSolveAggregation, AMeshThatDoesNotHalveMatchesTheCpuDirectSolve) {
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
   spec.solver.device = DeviceKind::Cuda;
   const Model model = build_model(spec);
-  ASSERT_EQ(model.problem.multigrid.kind, HierarchyKind::Aggregation);
+  ASSERT_EQ(model.multigrid.kind, HierarchyKind::Aggregation);
   ContactSolverOptions direct;  // CHOLMOD, condensed, with the same r (the paper's)
   direct.r = spec.solver.r;
   const ContactResult cpu = solve_contact(model.problem, direct);
-  const ContactResult gpu = solve_contact(model.problem, spec.solver);
+  const ContactResult gpu = solve_contact(model.problem, spec.solver, &model.multigrid);
   ASSERT_TRUE(gpu.summary.converged()) << gpu.summary.message;
   EXPECT_NEAR(gpu.summary.lagrangian, cpu.summary.lagrangian,
               1e-8 * std::abs(cpu.summary.lagrangian));
@@ -63,13 +63,13 @@ TEST(GpuSolveAggregation, AMeshThatDoesNotHalveMatchesTheCpuDirectSolve) {
 TEST_P(GpuSolve, MatchesTheSameAlgorithmOnTheCpuBackend) {
   SKIP_WITHOUT_GPU();
   const auto [nx, preconditioner] = GetParam();
-  const ContactProblem p = testing::paper_problem_with_hierarchy(nx);
+  const auto [p, multigrid] = testing::paper_problem_with_hierarchy(nx);
   ContactSolverOptions o;
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.preconditioner = preconditioner;
-  const ContactResult host = solve_uzawa_gnm_on_backend(p, o);
+  const ContactResult host = solve_uzawa_gnm_on_backend(p, o, {}, &multigrid);
   o.device = DeviceKind::Cuda;
-  const ContactResult gpu = solve_uzawa_gnm_on_backend(p, o);
+  const ContactResult gpu = solve_uzawa_gnm_on_backend(p, o, {}, &multigrid);
   ASSERT_EQ(gpu.summary.steps.size(), host.summary.steps.size());
   for (std::size_t k = 0; k < host.summary.steps.size(); ++k)
     EXPECT_EQ(gpu.summary.steps[k].inner_iterations, host.summary.steps[k].inner_iterations) << k;

@@ -16,13 +16,13 @@ class BackendPath : public ::testing::TestWithParam<Index> {};
 
 TEST_P(BackendPath, MultigridCgMatchesTheDirectSolve) {
   const Index nx = GetParam();
-  const ContactProblem p = testing::paper_problem_with_hierarchy(nx);
+  const auto [p, multigrid] = testing::paper_problem_with_hierarchy(nx);
   const ContactResult direct = solve_contact(p, ContactSolverOptions{});
   ContactSolverOptions o;
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.preconditioner = PreconditionerType::Multigrid;
   ASSERT_TRUE(uses_backend_path(o));
-  const ContactResult it = solve_contact(p, o);
+  const ContactResult it = solve_contact(p, o, &multigrid);
   ASSERT_TRUE(it.summary.converged()) << it.summary.message;
   EXPECT_NEAR(it.summary.lagrangian, direct.summary.lagrangian,
               1e-8 * std::abs(direct.summary.lagrangian));
@@ -70,9 +70,9 @@ std::string model_error(const ProblemSpec& spec) {
 // Multigrid CG on the backend path against the direct solve of the same model.
 void expect_matches_the_direct_solve(const ProblemSpec& spec, HierarchyKind kind) {
   const Model model = build_model(spec);
-  ASSERT_EQ(model.problem.multigrid.kind, kind);
-  ASSERT_FALSE(model.problem.multigrid.prolongations.empty());
-  const ContactResult it = solve_contact(model.problem, spec.solver);
+  ASSERT_EQ(model.multigrid.kind, kind);
+  ASSERT_FALSE(model.multigrid.prolongations.empty());
+  const ContactResult it = solve_contact(model.problem, spec.solver, &model.multigrid);
   ContactSolverOptions direct_options;  // CHOLMOD, condensed, with the same r
   direct_options.r = spec.solver.r;
   const ContactResult direct = solve_contact(model.problem, direct_options);
@@ -99,11 +99,11 @@ TEST(BackendPathCoarsening, AMeshThatHalvesTooLittleGetsAggregationBelowItsGeome
   // continues from there by aggregation, and "geometric" alone is refused.
   const ProblemSpec spec = multigrid_spec(122, 40, MultigridCoarsening::Auto);
   const Model model = build_model(spec);
-  EXPECT_EQ(model.problem.multigrid.coarse_operators.size(),
-            model.problem.multigrid.prolongations.size());
-  EXPECT_EQ(model.problem.multigrid.prolongations.front().cols(),
+  EXPECT_EQ(model.multigrid.coarse_operators.size(),
+            model.multigrid.prolongations.size());
+  EXPECT_EQ(model.multigrid.prolongations.front().cols(),
             build_model(multigrid_spec(61, 20, MultigridCoarsening::Auto)).dofs.num_free());
-  EXPECT_LE(model.problem.multigrid.coarse_operators.back().rows(), 2000);
+  EXPECT_LE(model.multigrid.coarse_operators.back().rows(), 2000);
   expect_matches_the_direct_solve(spec, HierarchyKind::GeometricThenAggregation);
   EXPECT_NE(model_error(multigrid_spec(122, 40, MultigridCoarsening::Geometric))
                 .find("halves only down to 61x20"),
@@ -111,10 +111,10 @@ TEST(BackendPathCoarsening, AMeshThatHalvesTooLittleGetsAggregationBelowItsGeome
 }
 
 TEST(BackendPathCoarsening, EvenMeshesTakeTheGeometricLevelsUnlessAggregationIsAsked) {
-  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Auto)).problem.multigrid.kind,
+  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Auto)).multigrid.kind,
             HierarchyKind::Geometric);
   EXPECT_EQ(
-      build_model(multigrid_spec(60, 20, MultigridCoarsening::Aggregation)).problem.multigrid.kind,
+      build_model(multigrid_spec(60, 20, MultigridCoarsening::Aggregation)).multigrid.kind,
       HierarchyKind::Aggregation);
 }
 

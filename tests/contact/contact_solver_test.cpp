@@ -40,13 +40,11 @@ class EveryPath : public ::testing::TestWithParam<SolvePath> {};
 
 TEST_P(EveryPath, NewLoadsAndGapsGiveTheAnswerOfAFreshSolve) {
   const SolvePath path = GetParam();
-  // The backend path's multigrid needs the problem with its hierarchy.
-  const ContactProblem problem = path == SolvePath::Backend
-                                     ? testing::paper_problem_with_hierarchy(30)
-                                     : paper_model(30).problem;
+  // The backend path's multigrid takes the hierarchy as a set-up argument.
+  const auto [problem, multigrid] = testing::paper_problem_with_hierarchy(30);
   const ContactSolverOptions o = options_for(path);
 
-  ContactSolver solver(problem, o);
+  ContactSolver solver(problem, o, &multigrid);
   EXPECT_EQ(solver.path(), path);
   const ContactResult first = solver.solve();
   ASSERT_TRUE(first.summary.converged()) << first.summary.message;
@@ -60,7 +58,7 @@ TEST_P(EveryPath, NewLoadsAndGapsGiveTheAnswerOfAFreshSolve) {
   solver.set_loads(changed.b);
   solver.set_gaps(changed.contact.gaps);
   const ContactResult second = solver.solve();
-  const ContactResult fresh = solve_contact(changed, o);
+  const ContactResult fresh = solve_contact(changed, o, &multigrid);
   ASSERT_TRUE(second.summary.converged()) << second.summary.message;
   ASSERT_TRUE(fresh.summary.converged()) << fresh.summary.message;
   EXPECT_LT(relative_difference(second.u, fresh.u), 1e-9);

@@ -114,7 +114,7 @@ TEST(GeneralizedNewton, HostAndBackendSpacesAgree) {
 
   TimingTable timings;
   const auto backend = make_backend(DeviceKind::Cpu);
-  BackendNewtonSpace device(p, o, *backend, timings, Vector::Zero(p.A.rows()));
+  BackendNewtonSpace device(p, o, nullptr, *backend, timings, Vector::Zero(p.A.rows()));
   const GnmResult gd = gnm.minimize(phi, device, 1);
 
   ASSERT_EQ(gh.termination, Termination::Converged) << gh.message;

@@ -28,7 +28,8 @@ TEST_P(GpuMultigrid, CycleAndCgMatchTheCpu) {
   spec.solver.linear.coarsening = coarsening;
   const Model model = build_model(spec);
   const ContactProblem& p = model.problem;
-  ASSERT_EQ(p.multigrid.kind, kind);
+  const MultigridHierarchy& h = model.multigrid;
+  ASSERT_EQ(h.kind, kind);
   const Vector c = 1e8 * p.contact.weights;  // every contact node active
 
   HostBackend host;
@@ -36,10 +37,10 @@ TEST_P(GpuMultigrid, CycleAndCgMatchTheCpu) {
   PenalizedOperator host_op(host, p.A, p.contact.N), gpu_op(*gpu, p.A, p.contact.N);
   host_op.set_weights(c);
   gpu_op.set_weights(c);
-  MultigridPreconditioner host_mg(host_op, p.A, p.contact.N, p.multigrid.prolongations, {},
-                                  p.multigrid.coarse_operators);
-  MultigridPreconditioner gpu_mg(gpu_op, p.A, p.contact.N, p.multigrid.prolongations, {},
-                                 p.multigrid.coarse_operators);
+  MultigridPreconditioner host_mg(host_op, p.A, p.contact.N, h.prolongations, {},
+                                  h.coarse_operators);
+  MultigridPreconditioner gpu_mg(gpu_op, p.A, p.contact.N, h.prolongations, {},
+                                 h.coarse_operators);
   EXPECT_EQ(gpu_mg.level_sizes(), host_mg.level_sizes());
 
   const DeviceVector hb = to_device(host, p.b), gb = to_device(*gpu, p.b);

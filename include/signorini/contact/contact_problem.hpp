@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "signorini/contact/contact_set.hpp"
-#include "signorini/iterative/multigrid_hierarchy.hpp"
 
 namespace signorini {
 
@@ -13,9 +12,6 @@ struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
   Vector b;        ///< load vector
   ContactSet contact;
-  /// The multigrid levels (iterative/multigrid_hierarchy.hpp): empty unless a multigrid
-  /// preconditioner was asked for; from the mesh, from A, or both (problem/model_hierarchy.hpp).
-  MultigridHierarchy multigrid;
 };
 
 }  // namespace signorini

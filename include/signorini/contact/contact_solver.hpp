@@ -9,6 +9,7 @@
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/solve_summary.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 
 namespace signorini {
 
@@ -33,8 +34,12 @@ struct ContactResult {
 /// giving the residuals.
 class ContactSolver {
  public:
-  /// Throws InputError for invalid options and NumericalError if a factorisation fails.
-  ContactSolver(const ContactProblem& problem, const ContactSolverOptions& options);
+  /// `multigrid`: the levels of the multigrid preconditioner (solver.linear.preconditioner =
+  /// "multigrid"; build_model makes them from the mesh, Model::multigrid), which must outlive the
+  /// solver too; without them the "multigrid" is Chebyshev smoothing on the finest level alone.
+  /// Throws InputError for invalid options, NumericalError if a factorisation fails.
+  ContactSolver(const ContactProblem& problem, const ContactSolverOptions& options,
+                const MultigridHierarchy* multigrid = nullptr);
   ~ContactSolver();
   ContactSolver(ContactSolver&&) noexcept;
   ContactSolver& operator=(ContactSolver&&) noexcept;
@@ -61,7 +66,8 @@ class ContactSolver {
   std::unique_ptr<Impl> impl_;
 };
 
-/// One solve: ContactSolver(problem, options).solve().
-ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& options);
+/// One solve: ContactSolver(problem, options, multigrid).solve().
+ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& options,
+                            const MultigridHierarchy* multigrid = nullptr);
 
 }  // namespace signorini

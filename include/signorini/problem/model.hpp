@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 #include "signorini/core/timing_table.hpp"
 #include "signorini/fem/dof_map.hpp"
 #include "signorini/mesh/mesh.hpp"
@@ -34,7 +35,11 @@ struct Model {
   Mesh mesh;
   DofMap dofs;
   ContactProblem problem;
-  TimingTable timings;  ///< "mesh", "assembly", "loads", "contact set"
+  /// The levels of the multigrid preconditioner, made from the mesh (and A) when the solver
+  /// options ask for multigrid; empty otherwise. A set-up argument of the solver
+  /// (solve_contact(model.problem, options, &model.multigrid)), not part of the problem.
+  MultigridHierarchy multigrid;
+  TimingTable timings;  ///< "mesh", "assembly", "loads", "contact set", "multigrid hierarchy"
   ElasticityOptions elasticity;
   /// Every applied load (tractions, body force, point loads) on the full dofs; problem.b is its
   /// free part.

@@ -9,7 +9,8 @@
 namespace signorini {
 
 BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
-                                       const ContactSolverOptions& options, Backend& backend,
+                                       const ContactSolverOptions& options,
+                                       const MultigridHierarchy* multigrid, Backend& backend,
                                        TimingTable& timings, const Vector& x0)
     : p_(problem),
       o_(options),
@@ -38,11 +39,13 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
                               ? "multigrid setup"
                               : "preconditioner setup");
   if (o_.linear.preconditioner == PreconditionerType::Multigrid) {
+    static const MultigridHierarchy kSingleLevel;  // no hierarchy: smoothing alone
+    const MultigridHierarchy& levels = multigrid != nullptr ? *multigrid : kSingleLevel;
     MultigridOptions mo;
     mo.smoother.degree = o_.linear.chebyshev_degree;
     auto mg = std::make_unique<MultigridPreconditioner>(*H_, problem.A, problem.contact.N,
-                                                        problem.multigrid.prolongations, mo,
-                                                        problem.multigrid.coarse_operators);
+                                                        levels.prolongations, mo,
+                                                        levels.coarse_operators);
     levels_ = mg->level_sizes();
     preconditioner_ = std::move(mg);
   } else {

@@ -13,6 +13,7 @@
 #include "signorini/contact/newton_space.hpp"
 #include "signorini/core/timing_table.hpp"
 #include "signorini/iterative/linear_operator.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 #include "signorini/iterative/penalized_operator.hpp"
 #include "signorini/iterative/pcg.hpp"
 
@@ -20,9 +21,11 @@ namespace signorini {
 
 class BackendNewtonSpace final : public NewtonSpace {
  public:
-  /// Uploads A, N and b, sets up the preconditioner (timed in `timings`), starts at x0.
+  /// Uploads A, N and b, sets up the preconditioner (timed in `timings`; `multigrid` gives the
+  /// levels when it is multigrid), starts at x0.
   BackendNewtonSpace(const ContactProblem& problem, const ContactSolverOptions& options,
-                     Backend& backend, TimingTable& timings, const Vector& x0);
+                     const MultigridHierarchy* multigrid, Backend& backend, TimingTable& timings,
+                     const Vector& x0);
 
   [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
   void set_active(const ActiveSet& active, double r) override;

@@ -28,9 +28,11 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
                                     const MethodStart& start = {});
 /// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
 /// uses_backend_path(options).
+/// `multigrid`: the levels when the preconditioner is multigrid (null otherwise).
 ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
                                          const ContactSolverOptions& options,
-                                         const MethodStart& start = {});
+                                         const MethodStart& start = {},
+                                         const MultigridHierarchy* multigrid = nullptr);
 /// Starts from the active set {l_j > 0} of start.l (empty: no node active).
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options,

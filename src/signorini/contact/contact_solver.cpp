@@ -110,6 +110,7 @@ struct ContactSolver::Impl {
   double setup_seconds = 0.0;            // reported once, in the first solve's "contact solve"
   TimingTable condensation_reported;     // condensation phases already in a solve's timings
   std::optional<ContactResult> start;    // warm start
+  const MultigridHierarchy* multigrid = nullptr;
 
   // The problem to change: copied once, at the first change.
   ContactProblem& own_problem() {
@@ -133,7 +134,8 @@ SolvePath choose_path(const ContactSolverOptions& o) {
 
 }  // namespace
 
-ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverOptions& given)
+ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverOptions& given,
+                             const MultigridHierarchy* multigrid)
     : impl_(std::make_unique<Impl>()) {
   validate(given);
   const Index n = problem.A.rows();
@@ -148,6 +150,7 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
   m.path = choose_path(m.options);
+  m.multigrid = multigrid;
   if (m.path == SolvePath::CondensedDirect) {
     ScopedTimer timer(m.setup_timings, "contact solve");
     m.condensed = std::make_unique<CondensedProblem>(problem);  // the sparse factorisation
@@ -207,7 +210,7 @@ ContactResult ContactSolver::solve() {
     ScopedTimer timer(solve_time, "contact solve");
     switch (m.path) {
       case SolvePath::Backend:
-        result = solve_uzawa_gnm_on_backend(problem, options, start);
+        result = solve_uzawa_gnm_on_backend(problem, options, start, m.multigrid);
         break;
       case SolvePath::CondensedDirect: {
         ContactSolverOptions reduced_options = options;
@@ -273,8 +276,9 @@ ContactResult ContactSolver::solve() {
   return result;
 }
 
-ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& options) {
-  return ContactSolver(problem, options).solve();
+ContactResult solve_contact(const ContactProblem& problem, const ContactSolverOptions& options,
+                            const MultigridHierarchy* multigrid) {
+  return ContactSolver(problem, options, multigrid).solve();
 }
 
 }  // namespace signorini

@@ -47,7 +47,8 @@ ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolver
 
 ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
                                          const ContactSolverOptions& options,
-                                         const MethodStart& start) {
+                                         const MethodStart& start,
+                                         const MultigridHierarchy* multigrid) {
   ContactResult out;
   SolveSummary& s = out.summary;
   TimingTable timings;
@@ -56,7 +57,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
     ScopedTimer t(timings, "device setup");
     backend = make_backend(options.device);
   }
-  BackendNewtonSpace space(problem, options, *backend, timings,
+  BackendNewtonSpace space(problem, options, multigrid, *backend, timings,
                            start.displacement(problem.A.rows()));
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   run_uzawa_gnm(problem, options, start, phi, space, out);
@@ -67,7 +68,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   s.device = backend->description();
   s.device_peak_bytes = backend->peak_bytes();
   s.multigrid_levels = space.levels();
-  s.multigrid_hierarchy = problem.multigrid.kind;
+  s.multigrid_hierarchy = multigrid != nullptr ? multigrid->kind : HierarchyKind::None;
   s.timings = std::move(timings);
   return out;
 }

@@ -126,15 +126,17 @@ Model build_model(const ProblemSpec& spec) {
     problem.contact =
         make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, spec.contact.gap);
   }
+  MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = spec.solver.linear;
   if (linear.type == LinearSolverType::ConjugateGradient &&
       linear.preconditioner == PreconditionerType::Multigrid) {
     ScopedTimer t(timings, "multigrid hierarchy");
-    problem.multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
+    multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps);
-  return Model{std::move(mesh), std::move(dofs),  std::move(problem), std::move(timings),
-               spec.elasticity, std::move(loads), std::move(clamps),  std::move(placed)};
+  return Model{std::move(mesh),   std::move(dofs),      std::move(problem),
+               std::move(multigrid), std::move(timings), spec.elasticity,
+               std::move(loads),  std::move(clamps),    std::move(placed)};
 }
 
 }  // namespace signorini
