@@ -1,13 +1,12 @@
 #pragma once
-// The discrete contact boundary (method.md section 3): contact nodes P in boundary order, their
-// outward unit normals nu_j, nodal quadrature weights h_j (trapezoid rule) and gaps g_j, and the
-// sparse operator N with (N x)_j = (x . nu)_j over the free dofs of node j.
+// The discrete contact boundary (method.md section 3) as the solvers see it: contact nodes P,
+// their outward unit normals nu_j, nodal quadrature weights h_j and gaps g_j, and the sparse
+// operator N with (N x)_j = (x . nu)_j over the free dofs of node j. Pure algebra: it is built
+// from a mesh in fem/ (fem/contact_boundary.hpp), or by hand.
 
 #include <vector>
 
-#include "signorini/fem/dof_map.hpp"
-#include "signorini/fem/vector_field.hpp"
-#include "signorini/mesh/mesh.hpp"
+#include "signorini/core/types.hpp"
 
 namespace signorini {
 
@@ -20,14 +19,12 @@ struct ContactSet {
   /// false where node j has no free unknown in its normal direction (clamped): its multiplier is
   /// kept at 0 (method.md section 4, last paragraph).
   std::vector<bool> movable;
+  /// The contact facets, each as the positions j (in `nodes`) of its nodes: what the result
+  /// files draw (contact.vtu). Empty for a contact set made by hand without facets.
+  std::vector<std::vector<Index>> facets;
 
   [[nodiscard]] Index size() const { return static_cast<Index>(nodes.size()); }
   [[nodiscard]] Index num_movable() const;
 };
-
-/// Builds the contact set of a boundary part. Throws InputError if the part is empty, has no
-/// movable node (it lies on the clamped boundary entirely), or a gap value is not finite.
-ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
-                            const ScalarField& gap);
 
 }  // namespace signorini

@@ -1,110 +1,11 @@
 #include "signorini/contact/contact_set.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <map>
-
-#include "signorini/core/error.hpp"
 
 namespace signorini {
 
 Index ContactSet::num_movable() const {
   return static_cast<Index>(std::count(movable.begin(), movable.end(), true));
-}
-
-namespace {
-
-// Orders the nodes of a 2D boundary part by walking its facets (edges a -> b, oriented with the
-// body on the left) from a start node; chains that are not connected follow one another.
-std::vector<Index> walk_edges(const Mesh& mesh, const BoundaryPart& part) {
-  std::map<Index, Index> next;  // a -> b
-  std::map<Index, int> in_degree;
-  for (const Facet& f : part.facets) {
-    const auto fn = mesh.facet_nodes(f);
-    next[fn[0]] = fn[1];
-    in_degree[fn[1]] += 1;
-    in_degree.try_emplace(fn[0], 0);
-  }
-  std::vector<Index> order;
-  std::map<Index, bool> seen;
-  auto walk_from = [&](Index start) {
-    Index n = start;
-    while (!seen[n]) {
-      seen[n] = true;
-      order.push_back(n);
-      const auto it = next.find(n);
-      if (it == next.end()) break;
-      n = it->second;
-    }
-  };
-  for (const auto& [node, deg] : in_degree)  // open chains start where no edge comes in
-    if (deg == 0) walk_from(node);
-  for (const auto& [node, deg] : in_degree)  // closed loops
-    if (!seen[node]) walk_from(node);
-  return order;
-}
-
-}  // namespace
-
-ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
-                            const ScalarField& gap) {
-  if (mesh.dim() != 2)
-    throw InputError(
-        "contact: only 2D meshes are supported so far (3D contact is not implemented)");
-  if (part.facets.empty())
-    throw InputError("contact.boundary = '" + part.name + "': the boundary part has no facets");
-  ContactSet cs;
-  cs.nodes = walk_edges(mesh, part);
-  const Index n = cs.size();
-  std::map<Index, Index> position;
-  for (Index j = 0; j < n; ++j) position[cs.nodes[static_cast<std::size_t>(j)]] = j;
-
-  // Trapezoid weights and length-weighted facet normals (method.md section 3).
-  cs.normals = Eigen::MatrixXd::Zero(2, n);
-  cs.weights = Vector::Zero(n);
-  for (const Facet& f : part.facets) {
-    const auto fn = mesh.facet_nodes(f);
-    const Eigen::Vector2d t = mesh.node(fn[1]) - mesh.node(fn[0]);
-    const Eigen::Vector2d outward(t(1), -t(0));  // |outward| = facet length
-    for (const Index v : fn) {
-      const Index j = position.at(v);
-      cs.weights(j) += 0.5 * t.norm();
-      cs.normals.col(j) += outward;
-    }
-  }
-  cs.gaps.resize(n);
-  cs.movable.assign(static_cast<std::size_t>(n), false);
-  std::vector<Eigen::Triplet<double, int>> triplets;
-  for (Index j = 0; j < n; ++j) {
-    const double len = cs.normals.col(j).norm();
-    if (!(len > 0.0))
-      throw InputError("contact.boundary = '" + part.name + "': node " +
-                       std::to_string(cs.nodes[static_cast<std::size_t>(j)]) +
-                       " has no defined normal (facets cancel out)");
-    cs.normals.col(j) /= len;
-    const Index node = cs.nodes[static_cast<std::size_t>(j)];
-    const Point x = mesh.point(node);
-    cs.gaps(j) = gap(x);
-    if (!std::isfinite(cs.gaps(j)))
-      throw InputError("contact.gap is not finite at x = (" + std::to_string(x(0)) + ", " +
-                       std::to_string(x(1)) + "): expected finite values on the contact boundary");
-    double free_normal = 0.0;
-    for (int k = 0; k < 2; ++k) {
-      const Index d = dofs.free_index(node, k);
-      if (d < 0) continue;
-      triplets.emplace_back(static_cast<int>(j), static_cast<int>(d), cs.normals(k, j));
-      free_normal += cs.normals(k, j) * cs.normals(k, j);
-    }
-    cs.movable[static_cast<std::size_t>(j)] = free_normal > 1e-24;
-  }
-  cs.N.resize(n, dofs.num_free());
-  cs.N.setFromTriplets(triplets.begin(), triplets.end());
-  cs.N.makeCompressed();
-  if (cs.num_movable() == 0)
-    throw InputError("contact.boundary = '" + part.name +
-                     "': every contact node is clamped in its normal direction, so no contact can "
-                     "occur (does it coincide with the clamped boundary?)");
-  return cs;
 }
 
 }  // namespace signorini

@@ -83,18 +83,14 @@ std::string contact_vtu(const ContactResult& result, const Model& model, const P
   const Vector u = model.dofs.expand(result.u);
 
   Eigen::MatrixXd points(2, m);
-  std::map<Index, Index> position;  // mesh node -> point of this file
   for (Index j = 0; j < m; ++j) {
     const Index node = c.nodes[static_cast<std::size_t>(j)];
     points.col(j) = mesh.node(node);
-    position[node] = j;
   }
   VtuFile vtu(points);
-  for (const Facet& f : mesh.boundary_part(spec.contact.boundary).facets) {
-    std::vector<Index> line;
-    for (const Index node : mesh.facet_nodes(f)) line.push_back(position.at(node));
-    vtu.add_cell(VtkCellType::Line, line);
-  }
+  // The facets of the contact set itself, so that contact.vtu shows the boundary the solver used
+  // (also for a contact set not made from spec.contact).
+  for (const std::vector<Index>& facet : c.facets) vtu.add_cell(VtkCellType::Line, facet);
 
   std::vector<double> displacement(static_cast<std::size_t>(3 * m), 0.0);
   std::vector<double> normal(static_cast<std::size_t>(3 * m), 0.0);

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "signorini/contact/contact_set.hpp"
+#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
 #include "signorini/fem/load_assembly.hpp"

@@ -1,4 +1,4 @@
-#include "signorini/contact/contact_set.hpp"
+#include "signorini/fem/contact_boundary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,6 +32,12 @@ TEST(ContactSet, BottomEdgeOfThePaperMesh) {
   EXPECT_TRUE(cs.movable[1]);
   EXPECT_EQ(cs.N.row(0).norm(), 0.0);
   EXPECT_EQ(cs.num_movable(), 6);
+  // The facets are kept, as positions in the set: (0,1), (1,2), ... (5,6).
+  ASSERT_EQ(cs.facets.size(), 6U);
+  for (std::size_t k = 0; k < cs.facets.size(); ++k) {
+    const std::vector<Index> expected = {static_cast<Index>(k), static_cast<Index>(k + 1)};
+    EXPECT_EQ(cs.facets[k], expected);
+  }
 }
 
 TEST(ContactSet, CornerNormalsAverageTheFacets) {
