@@ -1,7 +1,6 @@
 // summary.json and contact.csv of a solved problem: the keys scripts rely on, one CSV row per
 // contact node with the documented sign conventions, and files written only whole.
 
-#include "signorini/config.hpp"
 #include "signorini/io/result_writer.hpp"
 
 #include <gtest/gtest.h>
@@ -13,8 +12,10 @@
 #include "io/expect_contains.hpp"
 #include "io/summary_keys.hpp"
 #include "io/temporary_folder.hpp"
+#include "signorini/config.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/contact_csv.hpp"
+#include "signorini/io/problem_schema.hpp"
 #include "signorini/io/summary_json.hpp"
 
 namespace signorini {
@@ -75,6 +76,56 @@ TEST(SummaryJson, HasTheDocumentedKeys) {
   EXPECT_EQ(j["problem"]["solver"]["r"].get<double>(), 1e8);
   EXPECT_EQ(j["problem"]["solver"]["linear"]["type"], "cholmod");
   EXPECT_EQ(j["signorini_version"], SIGNORINI_VERSION);
+}
+
+// Every entry of `expected` is in `actual`, with the same value and JSON type (2, not 2.0).
+void expect_within(const nlohmann::json& expected, const nlohmann::json& actual,
+                   const std::string& path) {
+  if (expected.is_object() && actual.is_object()) {
+    for (const auto& [key, value] : expected.items()) {
+      ASSERT_TRUE(actual.contains(key)) << path << "." << key;
+      expect_within(value, actual[key], path + "." + key);
+    }
+  } else {
+    EXPECT_EQ(actual.dump(), expected.dump()) << path;
+  }
+}
+
+// The settings block, made from the option tables, says what it always said, key for key and
+// type for type: scripts read it. (Options added later only add keys.)
+TEST(SummaryJson, ProblemBlockIsUnchanged) {
+  const Solved& s = solved();
+  const nlohmann::json j = summary_to_json(s.result, s.model, s.spec);
+  const nlohmann::json expected = nlohmann::json::parse(R"json({
+    "name": "paper", "units": null,
+    "mesh": {"type": "rectangle", "origin": [0.0, 0.0], "length": 3.0, "height": 1.0,
+             "nx": 12, "ny": 4},
+    "material": {"E": 211900.0, "nu": 0.277, "plane_model": "plane_strain"},
+    "fem": {"gauss_points": 2, "boundary_gauss_points": 2},
+    "clamp": [{"boundary": "left", "components": ["x", "y"]}],
+    "traction": [{"boundary": "right", "p": "(0, 1)"},
+                 {"boundary": "top", "p": "(0, -2/3 (3 - x))"}],
+    "contact": {"boundary": "bottom", "gap": "0"},
+    "solver": {"method": "uzawa_gnm", "r": 100000000.0, "auto_r_factor": 10.0,
+               "kkt_tolerance": 1e-06, "uzawa_tolerance": 1e-08, "max_uzawa_iterations": 1000,
+               "gnm_tolerance": 1e-10, "max_gnm_iterations": 100, "armijo_sigma": 0.0001,
+               "max_armijo_halvings": 60, "classical_step": 0.0,
+               "max_classical_iterations": 200000, "max_newton_iterations": 200,
+               "schur_complement": true, "device": "cpu",
+               "linear": {"type": "cholmod", "cg_tolerance": 1e-13, "cg_max_iterations": 0,
+                          "preconditioner": "jacobi", "coarsening": "auto",
+                          "chebyshev_degree": 2}}})json");
+  expect_within(expected, j["problem"], "problem");
+  // Every option of the tables is there, under its table's path.
+  for (const auto& [key, value] : option_values(s.spec)) {
+    nlohmann::json at = j["problem"];
+    std::string rest = key;
+    for (auto dot = rest.find('.'); dot != std::string::npos; dot = rest.find('.')) {
+      at = at[rest.substr(0, dot)];
+      rest = rest.substr(dot + 1);
+    }
+    EXPECT_TRUE(at.contains(rest)) << key;
+  }
 }
 
 TEST(ContactCsv, OneRowPerContactNodeWithConventions) {

@@ -3,7 +3,9 @@
 // GNM tolerance 1e-10, Uzawa tolerance 1e-8, Armijo sigma = 1e-4, l^0 = 0, except r, which is
 // chosen from the problem unless given (the paper's r = 1e8 suits only metres and MPa; method.md
 // section 7), and the KKT test that every "converged" must pass. Each field name is also the key
-// of the [solver] table in a problem file.
+// of the [solver] table in a problem file, declared once with its range and doc in
+// contact_solver_option_table() (src/signorini/contact/contact_solver_option_table.hpp), which
+// the file reader, validate(), the reports and docs/problem-format.md all use.
 
 #include <functional>
 #include <optional>

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "signorini/problem/memory_estimate.hpp"
 #include "signorini/problem/problem_spec.hpp"
 
 namespace signorini {
@@ -37,21 +38,5 @@ LoadedProblem read_problem_file(const std::string& path,
 /// messages (and gives the default problem name, its stem).
 LoadedProblem parse_problem_string(const std::string& toml_text, const std::string& name_for_errors,
                                    const std::vector<std::string>& overrides = {});
-
-/// The effective settings of a loaded problem as TOML text (same as loaded.effective_toml).
-inline const std::string& effective_settings(const LoadedProblem& loaded) {
-  return loaded.effective_toml;
-}
-
-/// Rough peak memory of a 2D solve with `num_nodes` mesh nodes: 4 KB per node with the sparse
-/// Cholesky factor, 2 KB with CG, and the full dense matrix (8 bytes per entry) on top with the
-/// dense solver. Measured peaks on the paper's meshes: 3.4 KB/node (240 x 80)
-/// and 3.8 KB/node (480 x 160) with CHOLMOD, the factor's fill growing slowly with the mesh;
-/// 2.2 KB/node with CG, mostly the assembly. Used only to refuse meshes that surely cannot fit,
-/// before any time is spent on them: a mesh below the limit may still be too large.
-double estimated_memory_bytes(double num_nodes, LinearSolverType solver);
-
-/// Physical memory of this machine in bytes, or 0 if unknown.
-double physical_memory_bytes();
 
 }  // namespace signorini

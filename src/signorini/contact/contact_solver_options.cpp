@@ -3,29 +3,72 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/contact_solver_option_table.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/linalg/linear_solver_option_table.hpp"
 
 namespace signorini {
 
-namespace {
-std::string text(double v) {
-  return fmt::format("{:g}", v);
+const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
+  using O = ContactSolverOptions;
+  static const OptionTable<O> table = [] {
+    OptionTable<O> t("solver");
+    t.choice("method", &O::method, kContactMethodNames,
+             "`uzawa_gnm`: the paper's Uzawa method on the modified Lagrangian with generalised "
+             "Newton steps; `classical_uzawa`: Uzawa on the ordinary Lagrangian (the baseline the "
+             "paper improves on, slow); `semismooth_newton`: primal-dual active set method on the "
+             "KKT system");
+    t.number_or_auto(
+        "r", &O::r, positive(),
+        "augmentation parameter of the modified Lagrangian (a stress per length). The solution "
+        "does not depend on it, only the iteration path does. `\"auto\"` (or no `r`): chosen "
+        "from the problem, `auto_r_factor` times the median over the contact nodes of the "
+        "normal stiffness per boundary area, so that the same physical problem takes the same "
+        "iterations in any units ([method.md](method.md) section 7). The paper's examples give "
+        "`r = 1e8` (metres and MPa) to reproduce Table 1");
+    t.number("auto_r_factor", &O::auto_r_factor, positive(),
+             "the dimensionless factor of the automatic r: larger takes fewer Uzawa steps (7 on "
+             "every Table 1 mesh at 10) and harder Newton steps");
+    t.number("kkt_tolerance", &O::kkt_tolerance, open_interval(0.0, 1.0),
+             "a run is reported converged only when the method's own rule holds and every "
+             "relative KKT residual (equilibrium, penetration, sign, complementarity; "
+             "[solvers.md](solvers.md)) is below this; otherwise it ends with "
+             "`kkt_residuals_too_large`, exit status 3");
+    t.number("uzawa_tolerance", &O::uzawa_tolerance, positive(),
+             "Uzawa stops when ||l^k - l^(k-1)|| / ||l^k|| is below it");
+    t.integer("max_uzawa_iterations", &O::max_uzawa_iterations, at_least(1),
+              "Uzawa iteration limit");
+    t.number("gnm_tolerance", &O::gnm_tolerance, positive(),
+             "GNM stops when max(||G(x_m)|| / f, ||x_m - x_(m-1)|| / ||x_m||) is below it, "
+             "f = max(||b||, ||A x_m - b||) (the paper's rule, with the gradient made relative "
+             "so that it means the same in any units)");
+    t.integer("max_gnm_iterations", &O::max_gnm_iterations, at_least(1),
+              "GNM iteration limit per Uzawa step");
+    t.number("armijo_sigma", &O::armijo_sigma, open_interval(0.0, 0.5),
+             "sufficient-decrease constant of the Armijo rule");
+    t.integer("max_armijo_halvings", &O::max_armijo_halvings, at_least(1),
+              "step halvings before a line search counts as failed");
+    t.number("classical_step", &O::classical_step, at_least(0.0),
+             "step rho of `classical_uzawa`; 0 chooses 1.5 / lambda_max of the dual operator")
+        .range_note("(0: automatic)");
+    t.integer("max_classical_iterations", &O::max_classical_iterations, at_least(1),
+              "iteration limit of `classical_uzawa`");
+    t.integer("max_newton_iterations", &O::max_newton_iterations, at_least(1),
+              "iteration limit of `semismooth_newton`");
+    t.boolean("schur_complement", &O::schur_complement,
+              "with the `cholmod` linear solver: condense the problem onto the contact nodes by "
+              "one sparse factorisation (a Schur complement) and iterate on that small dense "
+              "problem (docs/solvers.md). Same solution, lower cost. Ignored for `cg` and "
+              "`dense`");
+    t.choice("device", &O::device, kDeviceKindNames,
+             "where the solve runs; `\"cuda\"`: the whole Uzawa–GNM loop on an NVIDIA GPU, with "
+             "`[solver.linear] type = \"cg\"` ([gpu.md](gpu.md))");
+    return t;
+  }();
+  return table;
 }
-std::string text(int v) {
-  return std::to_string(v);
-}
-
-template <class T>
-void require(bool ok, const std::string& field, T value, const std::string& expected) {
-  if (!ok) throw InputError("solver." + field + " = " + text(value) + ": expected " + expected);
-}
-bool positive(double v) {
-  return std::isfinite(v) && v > 0.0;
-}
-}  // namespace
 
 bool uses_backend_path(const ContactSolverOptions& o) {
   return o.device == DeviceKind::Cuda || (o.linear.type == LinearSolverType::ConjugateGradient &&
@@ -33,22 +76,10 @@ bool uses_backend_path(const ContactSolverOptions& o) {
 }
 
 void validate(const ContactSolverOptions& o) {
-  if (o.r) require(positive(*o.r), "r", *o.r, "a positive number (or no r: automatic)");
-  require(positive(o.auto_r_factor), "auto_r_factor", o.auto_r_factor, "a positive number");
-  require(positive(o.kkt_tolerance) && o.kkt_tolerance < 1.0, "kkt_tolerance", o.kkt_tolerance,
-          "a number in (0, 1)");
-  require(positive(o.uzawa_tolerance), "uzawa_tolerance", o.uzawa_tolerance, "a positive number");
-  require(positive(o.gnm_tolerance), "gnm_tolerance", o.gnm_tolerance, "a positive number");
-  require(o.max_uzawa_iterations >= 1, "max_uzawa_iterations", o.max_uzawa_iterations, ">= 1");
-  require(o.max_gnm_iterations >= 1, "max_gnm_iterations", o.max_gnm_iterations, ">= 1");
-  require(positive(o.armijo_sigma) && o.armijo_sigma < 0.5, "armijo_sigma", o.armijo_sigma,
-          "a number in (0, 0.5)");
-  require(o.max_armijo_halvings >= 1, "max_armijo_halvings", o.max_armijo_halvings, ">= 1");
-  require(std::isfinite(o.classical_step) && o.classical_step >= 0.0, "classical_step",
-          o.classical_step, "a number >= 0 (0: automatic)");
-  require(o.max_classical_iterations >= 1, "max_classical_iterations", o.max_classical_iterations,
-          ">= 1");
-  require(o.max_newton_iterations >= 1, "max_newton_iterations", o.max_newton_iterations, ">= 1");
+  // Key names and ranges from the tables ("solver.r = -1: expected a positive number or
+  // \"auto\""), then linalg's own check of its options, then what no single option says.
+  check_ranges(contact_solver_option_table(), o);
+  check_ranges(linear_solver_option_table(), o.linear);
   validate(o.linear);
   // The backend path (docs/gpu.md) runs the paper's method with conjugate gradients only.
   const bool backend_path = uses_backend_path(o);

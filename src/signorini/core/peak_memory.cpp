@@ -1,5 +1,7 @@
 #include "signorini/core/peak_memory.hpp"
 
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -25,6 +27,13 @@ bool reset_peak_resident() {
   if (!clear) return false;
   clear << "5";
   return static_cast<bool>(clear.flush());
+}
+
+double physical_memory_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return 0.0;
+  return static_cast<double>(pages) * static_cast<double>(page_size);
 }
 
 }  // namespace signorini

@@ -1,6 +1,7 @@
 #pragma once
 // Peak resident memory of this process, resettable so that a benchmark can measure one case at a
-// time (Linux: VmHWM in /proc/self/status, reset by writing 5 to /proc/self/clear_refs).
+// time (Linux: VmHWM in /proc/self/status, reset by writing 5 to /proc/self/clear_refs), and the
+// physical memory of the machine.
 
 namespace signorini {
 
@@ -9,5 +10,7 @@ double peak_resident_bytes();
 /// Starts a new peak measurement from the current resident size. Returns false where the system
 /// cannot reset it (the peak then covers the whole run so far).
 bool reset_peak_resident();
+/// Physical memory of this machine in bytes, or 0 if unknown.
+double physical_memory_bytes();
 
 }  // namespace signorini

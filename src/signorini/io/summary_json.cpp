@@ -1,8 +1,12 @@
-#include "signorini/config.hpp"
 #include "signorini/io/summary_json.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "signorini/config.hpp"
+#include "signorini/contact/contact_solver_option_table.hpp"
+#include "signorini/io/problem_schema.hpp"
+#include "signorini/linalg/linear_solver_option_table.hpp"
 
 namespace signorini {
 
@@ -53,6 +57,24 @@ nlohmann::json resultants_json(const Resultants& r, int dim) {
           {"moment_balance", moment_json(r.moment_balance, dim)},
           {"relative_balance", r.relative_balance},
           {"relative_moment_balance", r.relative_moment_balance}};
+}
+
+nlohmann::json option_json(const OptionValue& value) {
+  if (const auto* x = std::get_if<double>(&value)) return *x;
+  if (const auto* i = std::get_if<std::int64_t>(&value)) return *i;
+  if (const auto* b = std::get_if<bool>(&value)) return *b;
+  if (const auto* s = std::get_if<std::string>(&value)) return *s;
+  if (const auto* p = std::get_if<std::array<double, 2>>(&value)) return {(*p)[0], (*p)[1]};
+  return "auto";  // a NumberOrAuto without a number
+}
+
+// {key: value} for every option of `table` that lives in the struct.
+template <class S>
+nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < table.options.size(); ++i)
+    if (table.getter(i)) out[table.options[i].key] = option_json(table.getter(i)(s));
+  return out;
 }
 
 }  // namespace
@@ -137,19 +159,13 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   timings["total"] = run_total_seconds(model, summary);
   j["timings"] = timings;
 
-  const ContactSolverOptions& o = spec.solver;
-  json problem;
-  problem["name"] = spec.name;
+  // The settings, from the option tables (as the effective settings are); the sections of
+  // formulas say how each was given.
+  json problem = options_json(top_level_options(), spec);
   problem["units"] = spec.units.empty() ? json(nullptr) : json(spec.units);
-  problem["mesh"] = {{"type", "rectangle"},        {"origin", {spec.mesh.x0, spec.mesh.y0}},
-                     {"length", spec.mesh.length}, {"height", spec.mesh.height},
-                     {"nx", spec.mesh.nx},         {"ny", spec.mesh.ny}};
-  problem["material"] = {
-      {"E", spec.elasticity.material.E},
-      {"nu", spec.elasticity.material.nu},
-      {"plane_model", std::string(enum_to_string(kPlaneModelNames, spec.elasticity.plane_model))}};
-  problem["fem"] = {{"gauss_points", spec.elasticity.gauss_points},
-                    {"boundary_gauss_points", spec.boundary_gauss_points}};
+  problem["mesh"] = options_json(mesh_options(), spec);
+  problem["material"] = options_json(material_options(), spec);
+  problem["fem"] = options_json(fem_options(), spec);
   json clamps = json::array();
   for (const ClampSpec& c : spec.clamps) {
     json components = json::array();
@@ -168,30 +184,8 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   problem["traction"] = tractions;
   if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
   problem["contact"] = {{"boundary", spec.contact.boundary}, {"gap", spec.contact.description}};
-  problem["solver"] = {
-      {"method", std::string(enum_to_string(kContactMethodNames, o.method))},
-      {"r", o.r ? nlohmann::json(*o.r) : nlohmann::json("auto")},
-      {"auto_r_factor", o.auto_r_factor},
-      {"kkt_tolerance", o.kkt_tolerance},
-      {"uzawa_tolerance", o.uzawa_tolerance},
-      {"max_uzawa_iterations", o.max_uzawa_iterations},
-      {"gnm_tolerance", o.gnm_tolerance},
-      {"max_gnm_iterations", o.max_gnm_iterations},
-      {"armijo_sigma", o.armijo_sigma},
-      {"max_armijo_halvings", o.max_armijo_halvings},
-      {"classical_step", o.classical_step},
-      {"max_classical_iterations", o.max_classical_iterations},
-      {"max_newton_iterations", o.max_newton_iterations},
-      {"schur_complement", o.schur_complement},
-      {"device", std::string(enum_to_string(kDeviceKindNames, o.device))},
-      {"linear",
-       {{"type", std::string(enum_to_string(kLinearSolverTypeNames, o.linear.type))},
-        {"cg_tolerance", o.linear.cg_tolerance},
-        {"cg_max_iterations", o.linear.cg_max_iterations},
-        {"preconditioner",
-         std::string(enum_to_string(kPreconditionerTypeNames, o.linear.preconditioner))},
-        {"coarsening", std::string(enum_to_string(kMultigridCoarseningNames, o.linear.coarsening))},
-        {"chebyshev_degree", o.linear.chebyshev_degree}}}};
+  problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
+  problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);
   j["problem"] = problem;
   return j;
 }

@@ -44,6 +44,16 @@ std::string toml_float(double number) {
   return s;
 }
 
+std::string toml_value_text(const OptionValue& value) {
+  if (const auto* x = std::get_if<double>(&value)) return toml_float(*x);
+  if (const auto* i = std::get_if<std::int64_t>(&value)) return std::to_string(*i);
+  if (const auto* b = std::get_if<bool>(&value)) return *b ? "true" : "false";
+  if (const auto* s = std::get_if<std::string>(&value)) return toml_quote(*s);
+  if (const auto* p = std::get_if<std::array<double, 2>>(&value))
+    return fmt::format("[{}, {}]", toml_float((*p)[0]), toml_float((*p)[1]));
+  return toml_quote("auto");
+}
+
 void TomlEmitter::header(std::string_view line) {
   if (!text_.empty()) text_ += '\n';
   text_ += line;
@@ -60,6 +70,10 @@ void TomlEmitter::array_table(std::string_view name) {
 
 void TomlEmitter::value(std::string_view key, std::string_view text) {
   text_ += fmt::format("{} = {}\n", key, toml_quote(text));
+}
+
+void TomlEmitter::value(std::string_view key, const OptionValue& option) {
+  text_ += fmt::format("{} = {}\n", key, toml_value_text(option));
 }
 
 void TomlEmitter::value(std::string_view key, double number) {

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "signorini/core/option_table.hpp"
+
 namespace signorini {
 
 class TomlEmitter {
@@ -18,12 +20,16 @@ class TomlEmitter {
 
   void value(std::string_view key, std::string_view text);
   void value(std::string_view key, const char* text) { value(key, std::string_view(text)); }
+  // Without it a std::string would convert as well to a string_view as to an OptionValue.
+  void value(std::string_view key, const std::string& text) { value(key, std::string_view(text)); }
   void value(std::string_view key, double number);
   void value(std::string_view key, std::int64_t number);
   void value(std::string_view key, int number) { value(key, std::int64_t{number}); }
   void value(std::string_view key, bool flag);
   void value(std::string_view key, const std::vector<std::string>& texts);
   void value(std::string_view key, const std::vector<double>& numbers);
+  /// An option's value as toml_value() spells it.
+  void value(std::string_view key, const OptionValue& option);
 
   [[nodiscard]] const std::string& text() const { return text_; }
 
@@ -37,5 +43,8 @@ std::string toml_quote(std::string_view text);
 /// A TOML float that reads back to the same double: shortest form, always with '.' or an
 /// exponent ("1.0", "1e-10"), and inf/nan spelt the TOML way.
 std::string toml_float(double number);
+/// An option's value as TOML that reads back to it: "auto" (a NumberOrAuto without a number) is
+/// the string "auto", a pair an array of 2 floats.
+std::string toml_value_text(const OptionValue& value);
 
 }  // namespace signorini

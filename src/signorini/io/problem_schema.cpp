@@ -1,0 +1,232 @@
+#include "signorini/io/problem_schema.hpp"
+
+#include "signorini/contact/contact_solver_option_table.hpp"
+#include "signorini/linalg/linear_solver_option_table.hpp"
+#include "signorini/problem/unit_system.hpp"
+
+namespace signorini {
+
+namespace {
+
+using P = ProblemSpec;
+
+// Fields below the top level of ProblemSpec, as projections (one lambda serves the getter on a
+// const spec and the setter alike).
+constexpr auto mesh_length = [](auto& s) -> auto& {
+  return s.mesh.length;
+};
+constexpr auto mesh_height = [](auto& s) -> auto& {
+  return s.mesh.height;
+};
+constexpr auto mesh_nx = [](auto& s) -> auto& {
+  return s.mesh.nx;
+};
+constexpr auto mesh_ny = [](auto& s) -> auto& {
+  return s.mesh.ny;
+};
+constexpr auto young_modulus = [](auto& s) -> auto& {
+  return s.elasticity.material.E;
+};
+constexpr auto poisson_ratio = [](auto& s) -> auto& {
+  return s.elasticity.material.nu;
+};
+constexpr auto plane_model = [](auto& s) -> auto& {
+  return s.elasticity.plane_model;
+};
+constexpr auto gauss_points = [](auto& s) -> auto& {
+  return s.elasticity.gauss_points;
+};
+
+// `"m-Pa"`, `"m-kPa"`, ...: the unit systems for the docs' type column.
+std::string unit_system_list() {
+  std::string out;
+  for (const std::string& name : unit_system_names())
+    out += (out.empty() ? "`\"" : ", `\"") + name + "\"`";
+  return out;
+}
+
+template <class S>
+void append_values(std::vector<std::pair<std::string, OptionValue>>& out,
+                   const OptionTable<S>& table, const S& s) {
+  for (std::size_t i = 0; i < table.options.size(); ++i)
+    if (table.getter(i)) out.emplace_back(table.full_key(table.options[i].key), table.getter(i)(s));
+}
+
+}  // namespace
+
+const OptionTable<P>& top_level_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("");
+    t.text("name", &P::name, "name of the problem, in reports and `summary.json`")
+        .default_text("the file name without folder and extension");
+    t.custom("units", unit_system_list(),
+             "the consistent set of units the numbers are in, as LENGTH-STRESS (`\"mm-N\"` = mm "
+             "and N, so N/mm^2; `\"m-N\"` = m and N/m^2 = Pa). Labels only: the figures and "
+             "reports print units only when it is given; the solver does not use it")
+        .default_text("none");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& mesh_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("mesh");
+    t.fixed("type", "rectangle", "the only mesh type so far");
+    const auto get_origin = [](const P& s) { return std::array<double, 2>{s.mesh.x0, s.mesh.y0}; };
+    const auto set_origin = [](P& s, const std::array<double, 2>& xy) {
+      s.mesh.x0 = xy[0];
+      s.mesh.y0 = xy[1];
+    };
+    t.pair("origin", get_origin, set_origin, "lower-left corner (x0, y0)").unit("L");
+    t.number("length", mesh_length, positive(), "extent in x").unit("L").required();
+    t.number("height", mesh_height, positive(), "extent in y").unit("L").required();
+    t.integer("nx", mesh_nx, at_least(1), "cells along x").required();
+    t.integer("ny", mesh_ny, at_least(1), "cells along y").required();
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& material_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("material");
+    t.number("E", young_modulus, positive(), "Young's modulus")
+        .unit("S")
+        .required()
+        .synonyms({"*young", "*modulus", "emod"});
+    t.number("nu", poisson_ratio, open_interval(-1.0, 0.5),
+             "Poisson's ratio; from 0.45 on a warning is printed (the run goes on): bilinear "
+             "elements lock as nu approaches 0.5, so displacements come out too small and "
+             "stresses near the contact oscillate (at 0.49 the stress under a contact peak "
+             "overshoots the pressure by some 70 %). Quadratic elements, planned, will avoid "
+             "this; until then compare with a finer mesh")
+        .required()
+        .synonyms({"*poisson", "v", "mu_poisson"});
+    t.choice("plane_model", plane_model, kPlaneModelNames,
+             "how the 2D problem stands for a 3D body: plane strain (eps_zz = 0, a long body) or "
+             "plane stress (sigma_zz = 0, a thin plate)");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& fem_options() {
+  // quadrature.hpp has the Gauss-Legendre rules with 1 to 5 points.
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("fem");
+    t.integer("gauss_points", gauss_points, closed_interval(1.0, 5.0),
+              "Gauss points per direction in each cell (2: the paper's 2 x 2 rule, exact for the "
+              "Q1 stiffness of a parallelogram)");
+    t.integer("boundary_gauss_points", &P::boundary_gauss_points, closed_interval(1.0, 5.0),
+              "Gauss points per boundary edge for the traction loads (integrated consistently, "
+              "not lumped to nodes)");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& clamp_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("clamp", true);
+    t.custom("boundary", "string", "a boundary part: `left`, `right`, `bottom`, `top`").required();
+    t.custom("components", "array of `\"x\"`, `\"y\"`",
+             "the displacement components held at 0 (`[\"x\"]`: a roller that slides along y)")
+        .default_text("`[\"x\", \"y\"]`");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& traction_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("traction", true);
+    t.custom("boundary", "string", "a boundary part (not the contact boundary)").required();
+    t.custom("p", "array of 2 expressions of x, y", "the traction (p_x, p_y)")
+        .unit("S")
+        .required()
+        .synonyms({"load", "pressure", "traction", "force"});
+    t.custom("x_range", "array of 2 numbers [lower, upper]",
+             "the traction acts only where lower <= x <= upper")
+        .unit("L")
+        .default_text("the whole part");
+    t.custom("y_range", "array of 2 numbers [lower, upper]", "likewise in y")
+        .unit("L")
+        .default_text("the whole part");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& point_load_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("point_load", true);
+    t.custom("at", "array of 2 numbers", "where the load acts (the nearest node takes it)")
+        .unit("L")
+        .required();
+    t.custom("force", "array of 2 numbers", "the force (f_x, f_y)").unit("S L").required();
+    t.custom("boundary", "string", "look for the nearest node on this boundary part only")
+        .default_text("all nodes");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& body_force_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("body_force");
+    t.custom("f", "array of 2 expressions of x, y",
+             "force per unit volume (f_x, f_y); without the section, f = 0")
+        .unit("S/L")
+        .default_text("required in the section");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& contact_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("contact");
+    t.custom("boundary", "string", "a boundary part").required();
+    t.custom("gap", "expression of x, y",
+             "initial gap g(x) between body and foundation along the outward normal: g > 0 a "
+             "clearance, 0 touching, g < 0 an initial interference (the foundation starts "
+             "inside the body and pushes it out: a way to press a body onto an obstacle by a "
+             "given depth). A function of x gives a curved foundation: "
+             "`\"R - sqrt(R^2 - (x - c)^2)\"` for a cylinder of radius R under a flat face, "
+             "touching at x = c")
+        .unit("L")
+        .default_text("`\"0\"`")
+        .synonyms({"clearance", "initial_gap", "g"});
+    return t;
+  }();
+  return table;
+}
+
+const std::vector<const OptionTableInfo*>& problem_schema() {
+  static const std::vector<const OptionTableInfo*> tables = {&top_level_options(),
+                                                             &mesh_options(),
+                                                             &material_options(),
+                                                             &fem_options(),
+                                                             &clamp_options(),
+                                                             &traction_options(),
+                                                             &point_load_options(),
+                                                             &body_force_options(),
+                                                             &contact_options(),
+                                                             &contact_solver_option_table(),
+                                                             &linear_solver_option_table()};
+  return tables;
+}
+
+std::vector<std::pair<std::string, OptionValue>> option_values(const ProblemSpec& spec) {
+  std::vector<std::pair<std::string, OptionValue>> out;
+  append_values(out, top_level_options(), spec);
+  append_values(out, mesh_options(), spec);
+  append_values(out, material_options(), spec);
+  append_values(out, fem_options(), spec);
+  append_values(out, contact_solver_option_table(), spec.solver);
+  append_values(out, linear_solver_option_table(), spec.solver.linear);
+  return out;
+}
+
+}  // namespace signorini

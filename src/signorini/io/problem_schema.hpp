@@ -1,0 +1,38 @@
+#pragma once
+// Every key of a problem file (docs/problem-format.md), table by table, declared once
+// (core/option_table.hpp): the tables of ProblemSpec's own sections here, [solver] and
+// [solver.linear] beside their structs. The reader, the unknown-key check, the effective
+// settings, summary.json and the generated tables of the docs all take their keys from these.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "signorini/core/option_table.hpp"
+#include "signorini/problem/problem_spec.hpp"
+
+namespace signorini {
+
+/// name, units (and the sections, which are tables of their own).
+[[nodiscard]] const OptionTable<ProblemSpec>& top_level_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& mesh_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& material_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& fem_options();
+// Sections of formulas and lists, read by their own readers (io/problem_file.cpp): their keys and
+// docs are declared here all the same, so that the unknown-key check and the docs know them.
+[[nodiscard]] const OptionTable<ProblemSpec>& clamp_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& traction_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& point_load_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& body_force_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& contact_options();
+
+/// Every table of a problem file, in the order of the file and the docs, [solver] and
+/// [solver.linear] included. A table's subtables are the tables whose path extends its own.
+[[nodiscard]] const std::vector<const OptionTableInfo*>& problem_schema();
+
+/// The value of every option that a table reaches in `spec` ("solver.linear.type", "cg"), in
+/// the order of problem_schema(): what two specs are compared by.
+[[nodiscard]] std::vector<std::pair<std::string, OptionValue>> option_values(
+    const ProblemSpec& spec);
+
+}  // namespace signorini
