@@ -39,7 +39,6 @@ std::string version_text() {
                        g.multiprocessors);
     if (cuda.gpus.empty()) s += fmt::format("    no usable GPU: {}\n", cuda.problem);
   }
-  s += "  PETSc: not built\n";
   return s;
 }
 

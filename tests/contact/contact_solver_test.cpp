@@ -72,8 +72,8 @@ TEST_P(EveryPath, NewLoadsAndGapsGiveTheAnswerOfAFreshSolve) {
 INSTANTIATE_TEST_SUITE_P(ContactSolver, EveryPath,
                          ::testing::Values(SolvePath::CondensedDirect, SolvePath::SparseDirect,
                                            SolvePath::Iterative, SolvePath::Backend),
-                         [](const auto& info) {
-                           return std::string(enum_to_string(kSolvePathNames, info.param));
+                         [](const auto& param_info) {
+                           return std::string(enum_to_string(kSolvePathNames, param_info.param));
                          });
 
 // A warm start from the solution of the same problem: Uzawa-GNM needs one step (the multipliers

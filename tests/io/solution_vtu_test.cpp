@@ -110,7 +110,7 @@ TEST(SolutionVtu, MeshAndFieldsEqualTheSolution) {
 
 TEST(ContactVtu, LinesAlongTheContactBoundaryWithTheCsvValues) {
   const Solved& s = solved();
-  const testing::VtuContents v = testing::read_vtu_text(contact_vtu(s.result, s.model, s.spec));
+  const testing::VtuContents v = testing::read_vtu_text(contact_vtu(s.result, s.model));
   const ContactSet& c = s.model.problem.contact;
   ASSERT_EQ(v.points, c.size());
   ASSERT_EQ(v.cells, c.size() - 1);  // the bottom edge: one line per facet

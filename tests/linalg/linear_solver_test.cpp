@@ -70,6 +70,28 @@ TEST(CholmodSolver, PatternChangeIsDetected) {
   EXPECT_THROW(s.factorize(laplacian(11, 0.0)), NumericalError);
 }
 
+// Same size and the same number of entries, but one coupling moved: its values would land in the
+// wrong places of CHOLMOD's copy, so factorize() refuses it.
+TEST(CholmodSolver, SameCountOtherPatternIsDetected) {
+  const Index n = 6;
+  auto matrix = [n](int far) {
+    std::vector<Eigen::Triplet<double, int>> t;
+    for (int i = 0; i < n; ++i) t.emplace_back(i, i, 4.0);
+    t.emplace_back(0, far, -1.0);
+    t.emplace_back(far, 0, -1.0);
+    SparseMatrix A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    A.makeCompressed();
+    return A;
+  };
+  const SparseMatrix A = matrix(2), B = matrix(4);
+  ASSERT_EQ(A.nonZeros(), B.nonZeros());
+  CholmodSolver s;
+  s.analyze(A);
+  EXPECT_NO_THROW(s.factorize(A));
+  EXPECT_THROW(s.factorize(B), NumericalError);
+}
+
 TEST(CholmodSolver, ReportsVersionAndFactorSize) {
   CholmodSolver s;
   const SparseMatrix A = laplacian(50, 0.1);

@@ -45,7 +45,7 @@ struct OuterStepRecord {
 };
 
 /// KKT residuals of (u, l) for the discrete problem (14), each relative (see docs/solvers.md):
-///   equilibrium     ||A u - b + N^T H l||_2 / ||b||_2            (H = diag(h))
+///   equilibrium     ||A u - b + N^T H l||_2 / max(||b||_2, ||N^T H l||_2)   (H = diag(h))
 ///   penetration     max_j (N u - g)_j^+ / max(||u||_inf, max|g|)
 ///   sign            max_j (-l_j)^+ / ||l||_inf
 ///   complementarity max_j |l_j (N u - g)_j| / (||l||_inf max(||u||_inf, max|g|))

@@ -7,7 +7,9 @@
 
 namespace signorini {
 
-using Index = std::int64_t;  // node, cell and dof numbers: meshes beyond 2^31 dofs fit.
+// Node, cell and dof numbers. 64-bit, but the matrices below use 32-bit indices, so a problem is
+// limited by its number of matrix entries (< 2^31, sparsity_pattern.cpp refuses more).
+using Index = std::int64_t;
 using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
 // Column-major (CSC) with 32-bit indices: the stiffness of a 10-million-dof 2D problem has about

@@ -23,7 +23,6 @@ class DofMap {
   [[nodiscard]] Index num_nodes() const { return num_nodes_; }
   [[nodiscard]] Index num_dofs() const { return num_nodes_ * dim_; }
   [[nodiscard]] Index num_free() const { return num_free_; }
-  [[nodiscard]] Index num_clamped() const { return num_dofs() - num_free_; }
   /// Free-dof number of (node, component), or -1 if clamped.
   [[nodiscard]] Index free_index(Index node, int component) const {
     return free_[static_cast<std::size_t>(node * dim_ + component)];

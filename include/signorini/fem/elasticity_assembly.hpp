@@ -32,7 +32,4 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
 Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,
                        const std::function<bool(Index)>& needed = {});
 
-/// Energy J(v) = 1/2 <A v, v> - <b, v> (method.md section 1).
-double elastic_energy(const SparseMatrix& A, const Vector& b, const Vector& v);
-
 }  // namespace signorini

@@ -28,6 +28,6 @@ std::string solution_vtu(const ContactResult& result, const Model& model, const 
 /// point data displacement, normal (nu_j, 3 components), normal_displacement (u . nu),
 /// tangential_displacement (u . tau, tau = (-nu_y, nu_x)), contact_pressure, gap, deformed_gap
 /// (g - u . nu: 0 where the body touches, > 0 where it has lifted off) and contact_active.
-std::string contact_vtu(const ContactResult& result, const Model& model, const ProblemSpec& spec);
+std::string contact_vtu(const ContactResult& result, const Model& model);
 
 }  // namespace signorini

@@ -1,6 +1,7 @@
 #pragma once
 // One interface for the linear solvers of the Newton steps (method.md section 4): a direct sparse
-// Cholesky (CHOLMOD, the default) and preconditioned conjugate gradients (the paper's choice).
+// Cholesky (CHOLMOD, the default), a dense Cholesky (condensed problems) and Jacobi-preconditioned
+// conjugate gradients (the paper's choice).
 // analyze() does the symbolic work once per sparsity pattern; factorize() the numeric work for
 // each new matrix of that pattern; solve() can then be called any number of times.
 

@@ -23,7 +23,13 @@ Index find_entry(const SparseMatrix& A, Index row, Index col) {
 }  // namespace
 
 ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r)
-    : p_(problem), r_(r), l_(Vector::Zero(problem.contact.size())) {
+    : p_(problem), r_(r), l_(Vector::Zero(problem.contact.size())) {}
+
+// Made at the first hessian(): only the host's sparse Newton systems need it, not the backend
+// path or the condensed problems' dense systems.
+const std::vector<std::vector<std::pair<Index, double>>>& ModifiedLagrangian::block_entries()
+    const {
+  if (block_entries_ready_) return block_entries_;
   const SparseMatrix& N = p_.contact.N;
   // Row j of N lists the free dofs of node j with the normal components; N^T diag N adds
   // nu_a nu_b to the (a, b) entries of node j's block, which A has since the dofs of one node
@@ -38,6 +44,8 @@ ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r)
         block_entries_[static_cast<std::size_t>(j)].emplace_back(pos, ia.value() * ib.value());
       }
   }
+  block_entries_ready_ = true;
+  return block_entries_;
 }
 
 void ModifiedLagrangian::set_multipliers(const Vector& l) {
@@ -76,7 +84,7 @@ void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const
   for (std::size_t j = 0; j < active.size(); ++j) {
     if (!active[j]) continue;
     const double scale = r_ * p_.contact.weights(static_cast<Index>(j));
-    for (const auto& [pos, c] : block_entries_[j]) v[pos] += scale * c;
+    for (const auto& [pos, c] : block_entries()[j]) v[pos] += scale * c;
   }
 }
 

@@ -65,7 +65,9 @@ class ModifiedLagrangian {
   double r_;
   Vector l_;
   // For each contact node j: positions in A's value array of its node block and nu_a nu_b there.
-  std::vector<std::vector<std::pair<Index, double>>> block_entries_;
+  [[nodiscard]] const std::vector<std::vector<std::pair<Index, double>>>& block_entries() const;
+  mutable std::vector<std::vector<std::pair<Index, double>>> block_entries_;
+  mutable bool block_entries_ready_ = false;
 };
 
 }  // namespace signorini

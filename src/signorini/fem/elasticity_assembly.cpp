@@ -88,8 +88,4 @@ Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const
   return f;
 }
 
-double elastic_energy(const SparseMatrix& A, const Vector& b, const Vector& v) {
-  return 0.5 * v.dot(A * v) - b.dot(v);
-}
-
 }  // namespace signorini

@@ -94,18 +94,4 @@ void SparsityPattern::block_positions(Index node_a, Index node_b, Index* out) co
   }
 }
 
-Index SparsityPattern::position(Index node_a, int comp_a, Index node_b, int comp_b) const {
-  const Index row = dofs_.free_index(node_a, comp_a);
-  const Index col = dofs_.free_index(node_b, comp_b);
-  if (row < 0 || col < 0) return -1;
-  const Index s0 = neighbor_start_[static_cast<std::size_t>(node_b)];
-  const Index s1 = neighbor_start_[static_cast<std::size_t>(node_b + 1)];
-  const auto first = neighbors_.begin() + s0;
-  const auto it = std::lower_bound(first, neighbors_.begin() + s1, node_a);
-  const Index s = it - neighbors_.begin();
-  Index within = 0;  // free components of node_a before comp_a
-  for (int k = 0; k < comp_a; ++k) within += dofs_.free_index(node_a, k) >= 0 ? 1 : 0;
-  return outer_[static_cast<std::size_t>(col)] + row_offset_[static_cast<std::size_t>(s)] + within;
-}
-
 }  // namespace signorini

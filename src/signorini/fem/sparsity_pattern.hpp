@@ -17,9 +17,6 @@ class SparsityPattern {
 
   /// A compressed matrix with this pattern and zero values.
   [[nodiscard]] SparseMatrix zero_matrix() const;
-  /// Position in the value array of entry (row dof (node_a, comp_a), column dof (node_b,
-  /// comp_b)), both free and coupled; -1 if either is clamped.
-  [[nodiscard]] Index position(Index node_a, int comp_a, Index node_b, int comp_b) const;
   /// The positions of the whole dim x dim block coupling node_a (rows) and node_b (columns):
   /// out[ka * dim + kb], -1 for clamped components.
   void block_positions(Index node_a, Index node_b, Index* out) const;

@@ -75,7 +75,7 @@ std::string solution_vtu(const ContactResult& result, const Model& model, const 
   return vtu.text();
 }
 
-std::string contact_vtu(const ContactResult& result, const Model& model, const ProblemSpec& spec) {
+std::string contact_vtu(const ContactResult& result, const Model& model) {
   require_2d(model, "contact.vtu");
   const Mesh& mesh = model.mesh;
   const ContactSet& c = model.problem.contact;

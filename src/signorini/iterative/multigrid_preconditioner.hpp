@@ -1,5 +1,6 @@
 #pragma once
-// One V-cycle of geometric multigrid as the preconditioner of conjugate gradients for the
+// One V-cycle of multigrid (geometric or smoothed-aggregation levels, multigrid_hierarchy.hpp) as
+// the preconditioner of conjugate gradients for the
 // generalised Hessian H = A + N^T diag(c) N (penalized_operator.hpp), docs/gpu.md.
 //
 // Levels come from the mesh (prolongations P_l from level l to level l-1, e.g. bilinear

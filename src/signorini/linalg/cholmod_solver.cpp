@@ -57,7 +57,10 @@ void CholmodSolver::analyze(const SparseMatrix& pattern) {
 void CholmodSolver::factorize(const SparseMatrix& H) {
   Impl& s = *impl_;
   if (s.upper.matrix == nullptr) analyze(H);
-  if (H.rows() != s.n || H.nonZeros() != s.upper.full_nnz)
+  // The values are copied by position (value_map): a matrix with another pattern, even with the
+  // same number of entries, would be factorised with misplaced values.
+  if (H.rows() != s.n || H.nonZeros() != s.upper.full_nnz ||
+      detail::pattern_hash(H) != s.upper.pattern_hash)
     throw NumericalError("CHOLMOD: factorize() got a matrix whose pattern differs from analyze()");
   ScopedTimer timer(timings_, "linear factorization");
   s.upper.copy_values(H);
@@ -78,26 +81,6 @@ LinearSolveStats CholmodSolver::solve(const Vector& rhs, Vector& x) {
 
 double CholmodSolver::factor_nonzeros() const {
   return impl_->factor == nullptr ? 0.0 : impl_->common.lnz;
-}
-
-std::string_view CholmodSolver::ordering_name() const {
-  if (impl_->factor == nullptr) return "none";
-  switch (impl_->factor->ordering) {
-    case CHOLMOD_NATURAL:
-      return "natural";
-    case CHOLMOD_GIVEN:
-      return "AMD (node graph)";
-    case CHOLMOD_AMD:
-      return "AMD";
-    case CHOLMOD_METIS:
-      return "METIS";
-    case CHOLMOD_NESDIS:
-      return "NESDIS";
-    case CHOLMOD_COLAMD:
-      return "COLAMD";
-    default:
-      return "other";
-  }
 }
 
 std::string cholmod_version() {

@@ -24,8 +24,6 @@ class CholmodSolver final : public LinearSolver {
 
   /// Nonzeros of the Cholesky factor after the last factorisation (0 before).
   [[nodiscard]] double factor_nonzeros() const;
-  /// "AMD", "METIS", ...: the ordering CHOLMOD chose in analyze().
-  [[nodiscard]] std::string_view ordering_name() const;
 
  private:
   struct Impl;  // CHOLMOD's state, freed by its destructor

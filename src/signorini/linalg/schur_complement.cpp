@@ -45,8 +45,8 @@ void SchurComplement::build(const SparseMatrix& A, SparseMatrix* owned) {
   {
     ScopedTimer t(timings_, "condensation analysis");
     s.upper = detail::make_cholmod_upper(A, s.common, /*keep_value_map=*/false);
-    // Interior ordered on the node graph (nested dissection for large meshes), C last in the
-    // caller's order so that S comes out in it.
+    // Interior ordered by AMD on the node graph (fill_reducing_ordering), C last in the caller's
+    // order so that S comes out in it.
     const std::vector<Index> order = fill_reducing_ordering(A, last);
     std::vector<CholmodInt> perm(order.begin(), order.end());
     s.common.nmethods = 1;
@@ -107,13 +107,11 @@ Vector SchurComplement::condensed_load(const Vector& b) {
   // With z = L^-1 P b, the last rows of L z = P b read L_CI z_I + L_CC z_C = b_C, and
   // L_CI z_I = A_CI A_II^-1 b_I (since L_II z_I = b_I and L_CI = A_CI L_II^-T): so g = L_CC z_C.
   cholmod_dense bd = detail::dense_view(b);
-  cholmod_dense* pb = cholmod_l_solve(CHOLMOD_P, s.factor, &bd, &s.common);
+  const detail::OwnedDense pb(cholmod_l_solve(CHOLMOD_P, s.factor, &bd, &s.common), s.common);
   check_cholmod(s.common, "permutation");
-  cholmod_dense* z = cholmod_l_solve(CHOLMOD_L, s.factor, pb, &s.common);
+  const detail::OwnedDense z(cholmod_l_solve(CHOLMOD_L, s.factor, pb.get(), &s.common), s.common);
   check_cholmod(s.common, "forward substitution");
-  forward_load_ = Eigen::Map<const Vector>(static_cast<const double*>(z->x), s.n);
-  cholmod_l_free_dense(&pb, &s.common);
-  cholmod_l_free_dense(&z, &s.common);
+  forward_load_ = Eigen::Map<const Vector>(z.values(), s.n);
   return L_cc_.triangularView<Eigen::Lower>() * forward_load_.tail(nc);
 }
 
@@ -126,29 +124,20 @@ Vector SchurComplement::solve_with_condensed_forces(const Vector& f) const {
   Vector w = forward_load_;
   w.tail(nc) += L_cc_.triangularView<Eigen::Lower>().solve(f);
   cholmod_dense wd = detail::dense_view(w);
-  cholmod_dense* y = cholmod_l_solve(CHOLMOD_Lt, s.factor, &wd, &s.common);
+  const detail::OwnedDense y(cholmod_l_solve(CHOLMOD_Lt, s.factor, &wd, &s.common), s.common);
   check_cholmod(s.common, "back substitution");
-  cholmod_dense* x = cholmod_l_solve(CHOLMOD_Pt, s.factor, y, &s.common);
+  const detail::OwnedDense x(cholmod_l_solve(CHOLMOD_Pt, s.factor, y.get(), &s.common), s.common);
   check_cholmod(s.common, "permutation");
-  Vector out = Eigen::Map<const Vector>(static_cast<const double*>(x->x), s.n);
-  cholmod_l_free_dense(&y, &s.common);
-  cholmod_l_free_dense(&x, &s.common);
-  return out;
+  return Eigen::Map<const Vector>(x.values(), s.n);
 }
 
 Vector SchurComplement::solve(const Vector& rhs) const {
   ScopedTimer t(timings_, "condensation solve");
   Impl& s = *impl_;
   cholmod_dense bd = detail::dense_view(rhs);
-  cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, s.factor, &bd, &s.common);
+  const detail::OwnedDense x(cholmod_l_solve(CHOLMOD_A, s.factor, &bd, &s.common), s.common);
   check_cholmod(s.common, "solve");
-  Vector out = Eigen::Map<const Vector>(static_cast<const double*>(x->x), s.n);
-  cholmod_l_free_dense(&x, &s.common);
-  return out;
-}
-
-double SchurComplement::factor_nonzeros() const {
-  return impl_->common.lnz;
+  return Eigen::Map<const Vector>(x.values(), s.n);
 }
 
 }  // namespace signorini

@@ -1,6 +1,7 @@
 #pragma once
 // Static condensation of an SPD matrix onto a small set C of unknowns by one sparse Cholesky
-// factorisation: with C ordered last (CAMD, a constrained minimum-degree ordering),
+// factorisation: with C ordered last (AMD on the node graph, C appended after it;
+// fill_reducing_ordering.hpp),
 //   P A P^T = L L^T,  L = [L_II 0; L_CI L_CC],
 // and the Schur complement S = A_CC - A_CI A_II^-1 A_IC equals L_CC L_CC^T. The trailing block of
 // the factor is read out of CHOLMOD's supernodes, so S costs no extra solves. The contact solvers
@@ -40,7 +41,6 @@ class SchurComplement {
   /// Phases: "condensation analysis", "condensation factorization", "condensation Schur
   /// complement", "condensation solve".
   [[nodiscard]] const TimingTable& timings() const { return timings_; }
-  [[nodiscard]] double factor_nonzeros() const;
 
  private:
   void build(const SparseMatrix& A, SparseMatrix* owned);

@@ -5,6 +5,7 @@
 #include <cholmod.h>
 
 #include <string>
+#include <cstdint>
 #include <vector>
 
 #include "signorini/core/error.hpp"
@@ -47,6 +48,7 @@ struct CholmodUpper {
   cholmod_sparse* matrix = nullptr;
   std::vector<CholmodInt> value_map;  // entry k of `matrix` is A.valuePtr()[value_map[k]]
   Index full_nnz = 0;
+  std::uint64_t pattern_hash = 0;  // of A's full pattern (pattern_hash()), checked before a copy
 
   /// Copies the values of A (same pattern as at construction) into `matrix`.
   void copy_values(const SparseMatrix& A) const {
@@ -54,6 +56,37 @@ struct CholmodUpper {
     const double* av = A.valuePtr();
     for (std::size_t k = 0; k < value_map.size(); ++k) vals[k] = av[value_map[k]];
   }
+};
+
+/// A 64-bit FNV-1a hash of the pattern of A (sizes, column starts, row indices): two patterns
+/// with the same count but entries elsewhere differ in it (with overwhelming probability).
+inline std::uint64_t pattern_hash(const SparseMatrix& A) {
+  std::uint64_t h = 14695981039346656037ULL;
+  auto mix = [&h](std::uint64_t v) {
+    h ^= v;
+    h *= 1099511628211ULL;
+  };
+  mix(static_cast<std::uint64_t>(A.rows()));
+  mix(static_cast<std::uint64_t>(A.cols()));
+  for (Index j = 0; j <= A.cols(); ++j) mix(static_cast<std::uint64_t>(A.outerIndexPtr()[j]));
+  for (Index k = 0; k < A.nonZeros(); ++k) mix(static_cast<std::uint64_t>(A.innerIndexPtr()[k]));
+  return h;
+}
+
+/// Owns a cholmod_dense that CHOLMOD allocated (a solve's result): freed on every path, also when
+/// a later CHOLMOD call throws.
+class OwnedDense {
+ public:
+  OwnedDense(cholmod_dense* d, cholmod_common& common) : d_(d), common_(&common) {}
+  ~OwnedDense() { cholmod_l_free_dense(&d_, common_); }
+  OwnedDense(const OwnedDense&) = delete;
+  OwnedDense& operator=(const OwnedDense&) = delete;
+  [[nodiscard]] cholmod_dense* get() const { return d_; }
+  [[nodiscard]] const double* values() const { return static_cast<const double*>(d_->x); }
+
+ private:
+  cholmod_dense* d_;
+  cholmod_common* common_;
 };
 
 /// Allocates the upper triangle of A (values copied too). Free with cholmod_l_free_sparse.
@@ -64,6 +97,7 @@ inline CholmodUpper make_cholmod_upper(const SparseMatrix& A, cholmod_common& co
   const Index n = A.rows();
   CholmodUpper out;
   out.full_nnz = A.nonZeros();
+  if (keep_value_map) out.pattern_hash = pattern_hash(A);
   out.value_map.reserve(static_cast<std::size_t>(A.nonZeros() / 2 + n));
   std::vector<CholmodInt> colptr(static_cast<std::size_t>(n + 1), 0);
   for (Index j = 0; j < n; ++j) {
