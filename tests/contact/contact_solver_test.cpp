@@ -120,6 +120,33 @@ TEST(ContactSolver, LoadSteppingWithWarmStarts) {
   EXPECT_LT(warm_steps, cold_steps);
 }
 
+// A callback may stop a run: after the third outer step (Uzawa) or the fifth GNM iteration, the
+// solve ends with stopped_by_callback, the records so far and the current iterate.
+TEST(ContactSolver, CallbackStopsTheRun) {
+  const ContactProblem& p = paper_model(60).problem;
+  for (const bool inner : {false, true}) {
+    ContactSolverOptions o;
+    int events = 0;
+    o.callback = [&](const IterationEvent& e) {
+      ++events;
+      if (inner) return e.kind == IterationEvent::Kind::Inner && e.inner == 5
+                            ? CallbackAction::Stop
+                            : CallbackAction::Continue;
+      return e.kind == IterationEvent::Kind::Outer && e.outer == 3 ? CallbackAction::Stop
+                                                                   : CallbackAction::Continue;
+    };
+    const ContactResult r = solve_contact(p, o);
+    EXPECT_EQ(r.summary.termination, Termination::StoppedByCallback) << r.summary.message;
+    EXPECT_FALSE(r.summary.converged());
+    EXPECT_EQ(r.summary.outer_iterations, inner ? 1 : 3);
+    EXPECT_NE(r.summary.message.find("stopped by the callback"), std::string::npos)
+        << r.summary.message;
+    EXPECT_EQ(r.summary.message.find("to try"), std::string::npos) << r.summary.message;
+    EXPECT_EQ(r.u.size(), p.A.rows());
+    EXPECT_GT(events, 0);
+  }
+}
+
 TEST(ContactSolver, WrongSizesAreRefused) {
   const ContactProblem& p = paper_model(30).problem;
   ContactSolver solver(p, ContactSolverOptions{});

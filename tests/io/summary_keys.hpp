@@ -5,10 +5,12 @@
 
 namespace signorini::testing {
 
-inline constexpr std::array<const char*, 24> kSummaryKeys{"converged",
+inline constexpr std::array<const char*, 26> kSummaryKeys{"converged",
                                                           "termination",
                                                           "message",
                                                           "method",
+                                                          "path",
+                                                          "warm_started",
                                                           "M",
                                                           "energy",
                                                           "uzawa_iterations",

@@ -38,6 +38,9 @@ struct IterationEvent {
   int linear_iterations = 0;
 };
 
+/// What a callback (ContactSolverOptions::callback) wants after an iteration.
+enum class CallbackAction { Continue, Stop };
+
 struct ContactSolverOptions {
   /// "uzawa_gnm": the paper's modified-Lagrangian Uzawa method (13) with the generalised Newton
   /// method (17) for step (i); "classical_uzawa": Uzawa on the ordinary Lagrangian (the baseline);
@@ -84,7 +87,15 @@ struct ContactSolverOptions {
   bool schur_complement = true;
   /// Called after every inner and outer iteration; may be empty.
   std::function<void(const IterationEvent&)> observer;
+  /// Called after the observer at every event; returning CallbackAction::Stop ends the solve at
+  /// once with termination "stopped_by_callback" and the current iterate (a user abort, a time
+  /// limit). May be empty.
+  std::function<CallbackAction(const IterationEvent&)> callback;
 };
+
+/// Reports `event` to the observer and the callback of `options`; true when the callback asks to
+/// stop.
+[[nodiscard]] bool notify(const ContactSolverOptions& options, const IterationEvent& event);
 
 /// True when the solve runs on the backend path (docs/gpu.md): on a GPU, or with the multigrid
 /// preconditioner of conjugate gradients.

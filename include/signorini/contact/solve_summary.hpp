@@ -20,15 +20,18 @@ enum class Termination {
   /// The method's own rule was met, but the KKT residuals of the result are not below
   /// ContactSolverOptions::kkt_tolerance (method.md section 7): not an answer to trust.
   KktResidualsTooLarge,
+  /// ContactSolverOptions::callback asked to stop.
+  StoppedByCallback,
 };
 
-inline constexpr EnumNames<Termination, 6> kTerminationNames{{
+inline constexpr EnumNames<Termination, 7> kTerminationNames{{
     {Termination::Converged, "converged"},
     {Termination::IterationLimit, "iteration_limit"},
     {Termination::ActiveSetCycling, "active_set_cycling"},
     {Termination::LineSearchFailure, "line_search_failure"},
     {Termination::LinearSolverFailure, "linear_solver_failure"},
     {Termination::KktResidualsTooLarge, "kkt_residuals_too_large"},
+    {Termination::StoppedByCallback, "stopped_by_callback"},
 }};
 
 /// One outer step: a Uzawa step k (uzawa_gnm, classical_uzawa) or one Newton iteration

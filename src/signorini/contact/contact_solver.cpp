@@ -272,7 +272,8 @@ ContactResult ContactSolver::solve() {
   } else if (!s.converged()) {
     s.message += "; KKT residuals: " + residual_list(s.kkt);
   }
-  if (!s.converged()) s.message += "; to try: " + advice(s, options);
+  if (!s.converged() && s.termination != Termination::StoppedByCallback)
+    s.message += "; to try: " + advice(s, options);
   return result;
 }
 

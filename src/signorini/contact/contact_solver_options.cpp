@@ -70,6 +70,11 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
   return table;
 }
 
+bool notify(const ContactSolverOptions& options, const IterationEvent& event) {
+  if (options.observer) options.observer(event);
+  return options.callback && options.callback(event) == CallbackAction::Stop;
+}
+
 bool uses_backend_path(const ContactSolverOptions& o) {
   return o.device == DeviceKind::Cuda || (o.linear.type == LinearSolverType::ConjugateGradient &&
                                           o.linear.preconditioner == PreconditionerType::Multigrid);

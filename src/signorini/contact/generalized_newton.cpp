@@ -15,6 +15,14 @@ double relative_gradient(double gradient_norm, double b_norm, double residual_no
   return force > 0.0 ? gradient_norm / force : gradient_norm;
 }
 
+namespace {
+void stopped_by_callback(GnmResult& res, int m, int outer) {
+  res.termination = Termination::StoppedByCallback;
+  res.message = fmt::format("stopped by the callback after GNM iteration {} of Uzawa step {}", m,
+                            outer);
+}
+}  // namespace
+
 GeneralizedNewton::GeneralizedNewton(const ContactSolverOptions& options, double b_norm,
                                      const Vector& weights)
     : options_(options), b_norm_(b_norm), weights_(weights) {}
@@ -45,7 +53,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
       res.iterations = m;
       res.residual = gradient_norm;
       ev.residual = res.residual;
-      if (options_.observer) options_.observer(ev);
+      if (notify(options_, ev)) stopped_by_callback(res, m, outer);
       return finish();
     }
 
@@ -89,7 +97,10 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
     res.residual = std::max(gradient_norm, step);
     res.iterations = m;
     ev.residual = res.residual;
-    if (options_.observer) options_.observer(ev);
+    if (notify(options_, ev)) {
+      stopped_by_callback(res, m, outer);
+      return finish();
+    }
     if (res.residual < options_.gnm_tolerance) return finish();  // the paper's stopping rule
     previous = active;
     previous_full = full;

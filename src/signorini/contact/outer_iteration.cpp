@@ -18,14 +18,20 @@ void run_outer_loop(const OuterLoop& loop, Vector l0, const ContactSolverOptions
     // stops on what they show (active-set cycling); a failed step leaves l^(k-1).
     if (o.l.size() == num_contact) {
       l = std::move(o.l);
-      if (options.observer && (!loop.report || loop.report(k)))
-        options.observer({.kind = IterationEvent::Kind::Outer,
-                          .outer = k,
-                          .inner = o.record.inner_iterations,
-                          .active = o.record.active_set_size,
-                          .residual = o.record.dual_change,
-                          .armijo = o.record.armijo_reductions,
-                          .linear_iterations = o.record.linear_iterations});
+      const bool report = !loop.report || loop.report(k);
+      const IterationEvent event{.kind = IterationEvent::Kind::Outer,
+                                 .outer = k,
+                                 .inner = o.record.inner_iterations,
+                                 .active = o.record.active_set_size,
+                                 .residual = o.record.dual_change,
+                                 .armijo = o.record.armijo_reductions,
+                                 .linear_iterations = o.record.linear_iterations};
+      // The callback sees every step (it may enforce a time limit); the observer the reported.
+      if (report && options.observer) options.observer(event);
+      if (!o.stop && options.callback && options.callback(event) == CallbackAction::Stop) {
+        o.stop = Termination::StoppedByCallback;
+        o.message = fmt::format("stopped by the callback after outer step {}", k);
+      }
     }
     if (o.stop) {
       s.termination = *o.stop;

@@ -95,6 +95,8 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   j["termination"] = std::string(enum_to_string(kTerminationNames, summary.termination));
   j["message"] = summary.message;
   j["method"] = std::string(enum_to_string(kContactMethodNames, summary.method));
+  j["path"] = std::string(enum_to_string(kSolvePathNames, summary.path));
+  j["warm_started"] = summary.warm_started;
   j["M"] = summary.lagrangian;
   j["energy"] = summary.energy;
   j["uzawa_iterations"] = summary.outer_iterations;
