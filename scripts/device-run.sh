@@ -22,7 +22,7 @@ on_library_path() {
   for d in ${LD_LIBRARY_PATH//:/ }; do [[ -e "$d/$1" ]] && return 0; done
   ldconfig -p 2>/dev/null | grep -q "$1"
 }
-for lib in libcusparse.so.12 libcublas.so.13 libcudart.so.13; do
+for lib in libcusparse.so.12 libcublas.so.13; do  # the CUDA runtime is linked statically
   if ! on_library_path "$lib"; then
     dir=$(dirname "$(find / -name "$lib" -not -path "*/proc/*" 2>/dev/null | head -1)")
     [[ "$dir" != "." ]] && export LD_LIBRARY_PATH="$LD_LIBRARY_PATH:$dir"
