@@ -23,8 +23,7 @@ std::string find_data_file(const std::string& relative, const std::string& sourc
   std::vector<fs::path> places;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec)
-    places.push_back(exe.parent_path().parent_path() / SIGNORINI_DATA_SUBDIR / relative);
+  if (!ec) places.push_back(exe.parent_path().parent_path() / SIGNORINI_DATA_SUBDIR / relative);
   places.push_back(fs::path(SIGNORINI_SOURCE_DIR) / source_relative);
   for (const fs::path& place : places)
     if (fs::is_regular_file(place, ec)) return place.string();

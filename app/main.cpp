@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
       "bench",
       "Time the paper's benchmark: by default Table 1 beside the paper's (seconds); more meshes "
       "and solver configurations on request (docs/performance.md)");
-  bench_cmd->add_option("--repeats", bench.repeats, "Best of N runs (default 3)")
+  bench_cmd->add_option("--repeats,--repeat", bench.repeats, "Best of N runs (default 3)")
       ->check(CLI::PositiveNumber);
   bench_cmd->add_flag("--full", bench.full,
                       "The whole suite: meshes up to 1920x640, semismooth Newton, the paper's CG "
@@ -130,6 +130,17 @@ int main(int argc, char** argv) {
   bench_cmd->add_flag(
       "--largest", bench.largest,
       "With --device cuda: also the largest nx = 3 ny mesh that fits in GPU memory");
+  bench_cmd->add_flag("--whole-process", bench.whole_process,
+                      "Run each solve as a separate process (signorini solve) and measure it "
+                      "from outside: wall, CPU, page faults, peak memory");
+  bench_cmd->add_flag("--peers", bench.peers,
+                      "As --whole-process, and the same problem by PETSc SNESVI "
+                      "(bench/peers/petsc_snesvi.py; needs python3-petsc4py) in the same run");
+  bench_cmd
+      ->add_option("--peer-config", bench.peer_configs,
+                   "With --peers: the peer's configuration (mumps, cholmod, petsc, gamg; "
+                   "repeatable; default: the script's)")
+      ->type_name("NAME");
 
   try {
     app.parse(argc, argv);

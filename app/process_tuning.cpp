@@ -30,8 +30,7 @@ bool transparent_huge_pages_available() {
   std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
   std::string mode;
   std::getline(in, mode);
-  return mode.find("[always]") != std::string::npos ||
-         mode.find("[madvise]") != std::string::npos;
+  return mode.find("[always]") != std::string::npos || mode.find("[madvise]") != std::string::npos;
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 #endif
 
 #include "commands.hpp"
-#include "signorini/config.hpp"
 #include "signorini/backend/cuda_backend.hpp"
+#include "signorini/config.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
 
 namespace signorini::app {

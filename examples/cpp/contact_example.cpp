@@ -25,8 +25,7 @@ int main(int argc, char** argv) {
 
     std::printf("signorini %s: %s after %d Uzawa steps, J(u) = %.10e, %d active contact nodes\n",
                 SIGNORINI_VERSION, s.converged() ? "converged" : "NOT converged",
-                s.outer_iterations, s.energy,
-                static_cast<int>(s.num_active));
+                s.outer_iterations, s.energy, static_cast<int>(s.num_active));
     if (argc > 3 || argc == 2) {
       const std::string folder = argv[argc > 3 ? 3 : 1];
       signorini::write_results(folder, result, model, spec);

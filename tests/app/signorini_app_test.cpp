@@ -11,8 +11,8 @@
 #include "app/tool_run.hpp"
 #include "io/expect_contains.hpp"
 #include "io/summary_keys.hpp"
-#include "signorini/config.hpp"
 #include "signorini/backend/cuda_backend.hpp"
+#include "signorini/config.hpp"
 
 namespace signorini {
 namespace {

@@ -6,8 +6,8 @@
 #include <set>
 #include <string>
 
-#include "signorini/config.hpp"
 #include "signorini/backend/cuda_backend.hpp"
+#include "signorini/config.hpp"
 #include "signorini/core/error.hpp"
 
 namespace signorini {

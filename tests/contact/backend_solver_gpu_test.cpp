@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "signorini/contact/contact_methods.hpp"
 #include "signorini/backend/cuda_backend.hpp"
+#include "signorini/contact/contact_methods.hpp"
 #include "test_problems.hpp"
 
 namespace signorini {

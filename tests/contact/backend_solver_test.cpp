@@ -99,8 +99,7 @@ TEST(BackendPathCoarsening, AMeshThatHalvesTooLittleGetsAggregationBelowItsGeome
   // continues from there by aggregation, and "geometric" alone is refused.
   const ProblemSpec spec = multigrid_spec(122, 40, MultigridCoarsening::Auto);
   const Model model = build_model(spec);
-  EXPECT_EQ(model.multigrid.coarse_operators.size(),
-            model.multigrid.prolongations.size());
+  EXPECT_EQ(model.multigrid.coarse_operators.size(), model.multigrid.prolongations.size());
   EXPECT_EQ(model.multigrid.prolongations.front().cols(),
             build_model(multigrid_spec(61, 20, MultigridCoarsening::Auto)).dofs.num_free());
   EXPECT_LE(model.multigrid.coarse_operators.back().rows(), 2000);
@@ -113,9 +112,8 @@ TEST(BackendPathCoarsening, AMeshThatHalvesTooLittleGetsAggregationBelowItsGeome
 TEST(BackendPathCoarsening, EvenMeshesTakeTheGeometricLevelsUnlessAggregationIsAsked) {
   EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Auto)).multigrid.kind,
             HierarchyKind::Geometric);
-  EXPECT_EQ(
-      build_model(multigrid_spec(60, 20, MultigridCoarsening::Aggregation)).multigrid.kind,
-      HierarchyKind::Aggregation);
+  EXPECT_EQ(build_model(multigrid_spec(60, 20, MultigridCoarsening::Aggregation)).multigrid.kind,
+            HierarchyKind::Aggregation);
 }
 
 TEST(BackendPathJacobi, PaperConfigurationMatchesTheDirectSolve) {

@@ -2,13 +2,13 @@
 // same u and l to round-off, same iteration counts on the paper's meshes, for every method, also
 // with oblique normals and contact nodes that are clamped in one direction only.
 
-#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/contact/condensed_problem.hpp"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
 
+#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/linalg/schur_complement.hpp"
 #include "test_problems.hpp"
 

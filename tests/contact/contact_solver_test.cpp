@@ -129,9 +129,9 @@ TEST(ContactSolver, CallbackStopsTheRun) {
     int events = 0;
     o.callback = [&](const IterationEvent& e) {
       ++events;
-      if (inner) return e.kind == IterationEvent::Kind::Inner && e.inner == 5
-                            ? CallbackAction::Stop
-                            : CallbackAction::Continue;
+      if (inner)
+        return e.kind == IterationEvent::Kind::Inner && e.inner == 5 ? CallbackAction::Stop
+                                                                     : CallbackAction::Continue;
       return e.kind == IterationEvent::Kind::Outer && e.outer == 3 ? CallbackAction::Stop
                                                                    : CallbackAction::Continue;
     };

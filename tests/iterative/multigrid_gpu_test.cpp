@@ -39,8 +39,7 @@ TEST_P(GpuMultigrid, CycleAndCgMatchTheCpu) {
   gpu_op.set_weights(c);
   MultigridPreconditioner host_mg(host_op, p.A, p.contact.N, h.prolongations, {},
                                   h.coarse_operators);
-  MultigridPreconditioner gpu_mg(gpu_op, p.A, p.contact.N, h.prolongations, {},
-                                 h.coarse_operators);
+  MultigridPreconditioner gpu_mg(gpu_op, p.A, p.contact.N, h.prolongations, {}, h.coarse_operators);
   EXPECT_EQ(gpu_mg.level_sizes(), host_mg.level_sizes());
 
   const DeviceVector hb = to_device(host, p.b), gb = to_device(*gpu, p.b);

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "signorini/contact/contact_problem.hpp"
-#include "signorini/iterative/multigrid_hierarchy.hpp"
 #include "signorini/core/timing_table.hpp"
 #include "signorini/fem/dof_map.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 #include "signorini/mesh/mesh.hpp"
 #include "signorini/problem/problem_spec.hpp"
 

@@ -173,7 +173,8 @@ void HostBackend::reciprocal(const DeviceVector& x, DeviceVector& y) {
 }
 
 void HostBackend::copy(const DeviceVector& x, DeviceVector& y) {
-  if (x.size() > 0) std::memcpy(y.data(), x.data(), static_cast<std::size_t>(x.size()) * sizeof(double));
+  if (x.size() > 0)
+    std::memcpy(y.data(), x.data(), static_cast<std::size_t>(x.size()) * sizeof(double));
 }
 
 void HostBackend::fill(DeviceVector& x, double value) {

@@ -43,9 +43,8 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
     const MultigridHierarchy& levels = multigrid != nullptr ? *multigrid : kSingleLevel;
     MultigridOptions mo;
     mo.smoother.degree = o_.linear.chebyshev_degree;
-    auto mg = std::make_unique<MultigridPreconditioner>(*H_, problem.A, problem.contact.N,
-                                                        levels.prolongations, mo,
-                                                        levels.coarse_operators);
+    auto mg = std::make_unique<MultigridPreconditioner>(
+        *H_, problem.A, problem.contact.N, levels.prolongations, mo, levels.coarse_operators);
     levels_ = mg->level_sizes();
     preconditioner_ = std::move(mg);
   } else {

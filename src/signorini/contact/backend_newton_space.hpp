@@ -14,8 +14,8 @@
 #include "signorini/core/timing_table.hpp"
 #include "signorini/iterative/linear_operator.hpp"
 #include "signorini/iterative/multigrid_hierarchy.hpp"
-#include "signorini/iterative/penalized_operator.hpp"
 #include "signorini/iterative/pcg.hpp"
+#include "signorini/iterative/penalized_operator.hpp"
 
 namespace signorini {
 

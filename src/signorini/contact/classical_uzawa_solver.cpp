@@ -44,8 +44,7 @@ double dual_operator_norm(const ContactProblem& p, LinearSolver& solver) {
 }  // namespace
 
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
-                                    const ContactSolverOptions& options,
-                                    const MethodStart& start) {
+                                    const ContactSolverOptions& options, const MethodStart& start) {
   ContactResult out;
   SolveSummary& s = out.summary;
   const ContactSet& c = problem.contact;

@@ -69,7 +69,8 @@ void CondensedProblem::set_load(const Vector& b) {
 Vector CondensedProblem::condense(const Vector& u) const {
   const Vector y = rotation_.to_rotated(u);  // Q^T u: node j's normal displacement at normal_dofs_
   Vector v(static_cast<Index>(normal_dofs_.size()));
-  for (std::size_t k = 0; k < normal_dofs_.size(); ++k) v(static_cast<Index>(k)) = y(normal_dofs_[k]);
+  for (std::size_t k = 0; k < normal_dofs_.size(); ++k)
+    v(static_cast<Index>(k)) = y(normal_dofs_[k]);
   return v;
 }
 

@@ -1,5 +1,4 @@
 #include "signorini/contact/contact_solver.hpp"
-#include "signorini/contact/contact_methods.hpp"
 
 #include <fmt/format.h>
 
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "signorini/contact/condensed_problem.hpp"
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/kkt_residuals.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/core/error.hpp"
@@ -99,17 +99,17 @@ std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
 }  // namespace
 
 struct ContactSolver::Impl {
-  const ContactProblem* problem;         // the user's, or `changed` after set_loads/set_gaps
+  const ContactProblem* problem;  // the user's, or `changed` after set_loads/set_gaps
   std::unique_ptr<ContactProblem> changed;
-  ContactSolverOptions given;            // as the user gave them (r may be "auto")
-  ContactSolverOptions options;          // r resolved
+  ContactSolverOptions given;    // as the user gave them (r may be "auto")
+  ContactSolverOptions options;  // r resolved
   double r_auto = 0.0;
   SolvePath path = SolvePath::CondensedDirect;
   std::unique_ptr<CondensedProblem> condensed;
-  TimingTable setup_timings;             // "contact solve" of the set-up, condensation phases
-  double setup_seconds = 0.0;            // reported once, in the first solve's "contact solve"
-  TimingTable condensation_reported;     // condensation phases already in a solve's timings
-  std::optional<ContactResult> start;    // warm start
+  TimingTable setup_timings;           // "contact solve" of the set-up, condensation phases
+  double setup_seconds = 0.0;          // reported once, in the first solve's "contact solve"
+  TimingTable condensation_reported;   // condensation phases already in a solve's timings
+  std::optional<ContactResult> start;  // warm start
   const MultigridHierarchy* multigrid = nullptr;
 
   // The problem to change: copied once, at the first change.
@@ -164,8 +164,12 @@ ContactSolver::~ContactSolver() = default;
 ContactSolver::ContactSolver(ContactSolver&&) noexcept = default;
 ContactSolver& ContactSolver::operator=(ContactSolver&&) noexcept = default;
 
-SolvePath ContactSolver::path() const { return impl_->path; }
-const TimingTable& ContactSolver::setup_timings() const { return impl_->setup_timings; }
+SolvePath ContactSolver::path() const {
+  return impl_->path;
+}
+const TimingTable& ContactSolver::setup_timings() const {
+  return impl_->setup_timings;
+}
 
 void ContactSolver::set_loads(const Vector& b) {
   Impl& m = *impl_;
@@ -192,7 +196,9 @@ void ContactSolver::warm_start(const ContactResult& previous) {
   impl_->start = previous;
 }
 
-void ContactSolver::cold_start() { impl_->start.reset(); }
+void ContactSolver::cold_start() {
+  impl_->start.reset();
+}
 
 ContactResult ContactSolver::solve() {
   Impl& m = *impl_;

@@ -18,8 +18,8 @@ double relative_gradient(double gradient_norm, double b_norm, double residual_no
 namespace {
 void stopped_by_callback(GnmResult& res, int m, int outer) {
   res.termination = Termination::StoppedByCallback;
-  res.message = fmt::format("stopped by the callback after GNM iteration {} of Uzawa step {}", m,
-                            outer);
+  res.message =
+      fmt::format("stopped by the callback after GNM iteration {} of Uzawa step {}", m, outer);
 }
 }  // namespace
 

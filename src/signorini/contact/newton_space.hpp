@@ -15,10 +15,10 @@ namespace signorini {
 /// What one linear solve of a Newton system reports.
 struct NewtonSolveStats {
   bool converged = true;
-  int iterations = 0;     ///< iterations of an iterative solver, 0 for a direct one
-  double residual = 0.0;  ///< relative residual reached by an iterative solver
-  std::string solver;     ///< what solved it, for messages ("CHOLMOD", "conjugate gradients")
-  double tolerance = 0.0; ///< the iterative solver's tolerance (0 for a direct one)
+  int iterations = 0;      ///< iterations of an iterative solver, 0 for a direct one
+  double residual = 0.0;   ///< relative residual reached by an iterative solver
+  std::string solver;      ///< what solved it, for messages ("CHOLMOD", "conjugate gradients")
+  double tolerance = 0.0;  ///< the iterative solver's tolerance (0 for a direct one)
 };
 
 /// Norms after a step, for the stopping rule of GNM (method.md sections 4 and 7).

@@ -16,7 +16,7 @@ namespace signorini {
 /// What one outer step of a method reports.
 struct OuterStepOutcome {
   OuterStepRecord record;  ///< complete: counts, dual change, active set size
-  Vector l;  ///< l^k; left empty by a step that failed before producing it
+  Vector l;                ///< l^k; left empty by a step that failed before producing it
   /// Empty: go on; Converged: l is the answer; anything else: stop with that reason (a failure
   /// of the step, GNM's own iteration limit among them).
   std::optional<Termination> stop;

@@ -20,9 +20,9 @@
 #include <algorithm>
 
 #include "signorini/contact/contact_methods.hpp"
-#include "signorini/contact/outer_iteration.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/normal_rotation.hpp"
+#include "signorini/contact/outer_iteration.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 

@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
@@ -134,9 +134,9 @@ Model build_model(const ProblemSpec& spec) {
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps);
-  return Model{std::move(mesh),   std::move(dofs),      std::move(problem),
+  return Model{std::move(mesh),      std::move(dofs),    std::move(problem),
                std::move(multigrid), std::move(timings), spec.elasticity,
-               std::move(loads),  std::move(clamps),    std::move(placed)};
+               std::move(loads),     std::move(clamps),  std::move(placed)};
 }
 
 }  // namespace signorini

@@ -4,8 +4,8 @@
 
 #include <cholmod.h>
 
-#include <string>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "signorini/core/error.hpp"
