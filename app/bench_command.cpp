@@ -15,6 +15,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/io/atomic_file.hpp"
 #include "timing_report.hpp"
+#include "whole_process_bench.hpp"
 
 namespace signorini::app {
 
@@ -186,6 +187,34 @@ void print_table1(const std::vector<BenchmarkRow>& rows) {
         std::thread::hardware_concurrency());
 }
 
+// --whole-process, --peers: each solve a separate process (whole_process_bench.hpp), the paper's
+// configuration only.
+int whole_process(const BenchArguments& args, const std::vector<std::pair<Index, Index>>& meshes) {
+  const std::vector<std::pair<bool, const char*>> other = {{args.full, "--full"},
+                                                           {!args.methods.empty(), "--method"},
+                                                           {args.cg, "--cg"},
+                                                           {args.plain, "--plain"},
+                                                           {args.no_cg, "--no-cg"},
+                                                           {args.no_plain, "--no-plain"},
+                                                           {args.device != "cpu", "--device"},
+                                                           {args.largest, "--largest"}};
+  for (const auto& [given, flag] : other)
+    if (given)
+      throw InputError(fmt::format(
+          "{} does not go with --whole-process or --peers, which run the paper's configuration "
+          "(signorini solve examples/paper.toml) on the meshes of --mesh, --larger, --huge",
+          flag));
+  if (!args.peer_configs.empty() && !args.peers)
+    throw InputError("--peer-config goes with --peers");
+  WholeProcessOptions o;
+  o.meshes = meshes;
+  o.repeats = args.repeats;
+  o.peers = args.peers;
+  o.peer_configs = args.peer_configs;
+  o.json_file = args.json_file;
+  return run_whole_process_bench(o);
+}
+
 }  // namespace
 
 int run_bench(const BenchArguments& args) {
@@ -200,6 +229,8 @@ int run_bench(const BenchArguments& args) {
       if (std::find(options.meshes.begin(), options.meshes.end(), m) == options.meshes.end())
         options.meshes.push_back(m);
   if (args.huge) options.meshes.emplace_back(3840, 1280);
+  if (args.whole_process || args.peers || !args.peer_configs.empty())
+    return whole_process(args, options.meshes);
   for (const auto& name : args.methods) {
     const auto m = enum_from_string(kContactMethodNames, name);
     if (!m)

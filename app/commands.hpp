@@ -50,6 +50,11 @@ struct BenchArguments {
   std::string json_file;             ///< also write the rows as JSON here
   std::string device = "cpu";        ///< "cuda": add the GPU configurations and the GPU table
   bool largest = false;  ///< with cuda: also the largest nx = 3 ny mesh that fits on the GPU
+  /// Each run a separate process (`signorini solve`), measured from outside: wall, CPU, page
+  /// faults, peak memory (whole_process_bench.hpp).
+  bool whole_process = false;
+  bool peers = false;                     ///< with the whole process: also the PETSc peer
+  std::vector<std::string> peer_configs;  ///< the peer's --config values; empty: its default
 };
 
 /// `signorini bench`: the paper's benchmark on several meshes and solver configurations.
