@@ -16,6 +16,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "process_tuning.hpp"
+
 extern char** environ;
 
 namespace signorini::app {
@@ -23,12 +25,10 @@ namespace signorini::app {
 namespace {
 
 // What process_tuning.cpp adds to the environment before it re-executes the tool: its marker,
-// OPENBLAS_NUM_THREADS=1 and these malloc tunables, appended to the user's GLIBC_TUNABLES (after
-// a ':') when the user had set no glibc.malloc tunable. Keep in step with process_tuning.cpp.
-constexpr std::string_view kTunedMarker = "SIGNORINI_PROCESS_TUNED";
-constexpr std::string_view kTunedMalloc =
-    "glibc.malloc.hugetlb=1:glibc.malloc.trim_threshold=4294967296:"
-    "glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864";
+// OPENBLAS_NUM_THREADS=1 and its malloc tunables, appended to the user's GLIBC_TUNABLES (after
+// a ':') when the user had set no glibc.malloc tunable (process_tuning.hpp declares them).
+constexpr std::string_view kTunedMarker = kProcessTunedMarker;
+constexpr std::string_view kTunedMalloc = kTunedMallocSettings;
 
 double seconds(const timeval& t) {
   return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);

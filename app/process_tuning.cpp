@@ -12,8 +12,6 @@ namespace signorini::app {
 
 namespace {
 
-constexpr const char* kMarker = "SIGNORINI_PROCESS_TUNED";
-
 bool heavy_command(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
@@ -36,7 +34,7 @@ bool transparent_huge_pages_available() {
 }  // namespace
 
 void tune_process(int argc, char** argv) {
-  if (std::getenv(kMarker) != nullptr || !heavy_command(argc, argv)) return;
+  if (std::getenv(kProcessTunedMarker) != nullptr || !heavy_command(argc, argv)) return;
   if (const char* off = std::getenv("SIGNORINI_PROCESS_TUNING");
       off != nullptr && std::strcmp(off, "off") == 0)
     return;
@@ -52,17 +50,15 @@ void tune_process(int argc, char** argv) {
   // divides the first-touch faults of the large arrays by 512 (docs/performance.md).
   if (!user_set_malloc && transparent_huge_pages_available()) {
     std::string value = tunables != nullptr && *tunables != '\0' ? std::string(tunables) + ":" : "";
-    value +=
-        "glibc.malloc.hugetlb=1:glibc.malloc.trim_threshold=4294967296:"
-        "glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864";
+    value += kTunedMallocSettings;
     ::setenv("GLIBC_TUNABLES", value.c_str(), 1);
   }
   if (!user_set_blas) ::setenv("OPENBLAS_NUM_THREADS", "1", 1);
-  ::setenv(kMarker, "1", 1);
+  ::setenv(kProcessTunedMarker, "1", 1);
   ::execv("/proc/self/exe", argv);
   // Not reached unless /proc is missing or exec is refused: go on untuned, with the environment
   // as it was for anything this process starts.
-  ::unsetenv(kMarker);
+  ::unsetenv(kProcessTunedMarker);
   if (!user_set_blas) ::unsetenv("OPENBLAS_NUM_THREADS");
   if (tunables == nullptr)
     ::unsetenv("GLIBC_TUNABLES");

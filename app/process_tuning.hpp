@@ -16,4 +16,11 @@ namespace signorini::app {
 // why a re-execution is needed. Returns normally (untuned) where the re-execution is not possible.
 void tune_process(int argc, char** argv);
 
+/// What tune_process() sets: the marker variable of a tuned process and the malloc tunables it
+/// appends to GLIBC_TUNABLES (child_process.cpp takes them out again for the children).
+inline constexpr const char* kProcessTunedMarker = "SIGNORINI_PROCESS_TUNED";
+inline constexpr const char* kTunedMallocSettings =
+    "glibc.malloc.hugetlb=1:glibc.malloc.trim_threshold=4294967296:"
+    "glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864";
+
 }  // namespace signorini::app
