@@ -15,4 +15,10 @@ namespace signorini::app {
 std::string find_data_file(const std::string& relative, const std::string& source_relative,
                            const char* env_override);
 
+/// The Python interpreter for the scripts: SIGNORINI_PYTHON when set (InputError, prefixed by
+/// `purpose`, when it is not an executable file: "expected ... with `packages`"), else the Debian
+/// interpreter /usr/bin/python3 (python3 on PATH may be a virtual environment or a pyenv shim
+/// without the Debian packages), else python3 on PATH; "" when there is none.
+std::string find_python(const std::string& purpose, const std::string& packages);
+
 }  // namespace signorini::app

@@ -24,38 +24,13 @@ namespace signorini::app {
 
 namespace {
 
-bool executable(const std::string& path) {
-  std::error_code ec;
-  return !path.empty() && std::filesystem::is_regular_file(path, ec) &&
-         ::access(path.c_str(), X_OK) == 0;
-}
-
-// The Debian interpreter first: `python3` on PATH may be a virtual environment or a pyenv shim
-// without the Debian packages (python3-matplotlib) that setup.sh installs.
-std::string find_python() {
-  if (const char* chosen = std::getenv("SIGNORINI_PYTHON")) {
-    if (!executable(chosen))
-      throw InputError(fmt::format(
-          "plotting: SIGNORINI_PYTHON = '{}' is not an executable file: expected a Python 3 "
-          "interpreter with numpy and matplotlib",
-          chosen));
-    return chosen;
-  }
-  if (executable("/usr/bin/python3")) return "/usr/bin/python3";
-  if (const char* path = std::getenv("PATH")) {
-    std::string dirs = path;
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-      const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-      const std::string dir = dirs.substr(start, end - start);
-      const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/python3";
-      if (executable(candidate)) return candidate;
-      start = end + 1;
-    }
-  }
-  throw InputError(
-      "plotting needs python3 with matplotlib, and no python3 was found (Debian: apt-get install "
-      "python3-matplotlib)");
+std::string plotting_python() {
+  std::string python = find_python("plotting", "numpy and matplotlib");
+  if (python.empty())
+    throw InputError(
+        "plotting needs python3 with matplotlib, and no python3 was found (Debian: apt-get "
+        "install python3-matplotlib)");
+  return python;
 }
 
 std::string find_script() {
@@ -73,7 +48,7 @@ std::vector<std::string> figure_files() {
 }
 
 PlotRun run_plot_script(const std::vector<std::string>& arguments, bool capture) {
-  std::vector<std::string> argv_text = {find_python(), find_script()};
+  std::vector<std::string> argv_text = {plotting_python(), find_script()};
   argv_text.insert(argv_text.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
   for (std::string& a : argv_text) argv.push_back(a.data());

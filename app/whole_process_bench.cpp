@@ -94,37 +94,6 @@ std::string paper_problem_toml() {
   return text;
 }
 
-bool executable(const fs::path& path) {
-  std::error_code ec;
-  return fs::is_regular_file(path, ec) && ::access(path.c_str(), X_OK) == 0;
-}
-
-// As for the plotting script: the Debian interpreter first (python3 on PATH may be a virtual
-// environment or a pyenv shim without the Debian packages), SIGNORINI_PYTHON to choose another.
-std::string find_python() {
-  if (const char* chosen = std::getenv("SIGNORINI_PYTHON")) {
-    if (!executable(chosen))
-      throw InputError(
-          fmt::format("SIGNORINI_PYTHON = '{}' is not an executable file: expected a Python 3 "
-                      "interpreter with numpy and petsc4py",
-                      chosen));
-    return chosen;
-  }
-  if (executable("/usr/bin/python3")) return "/usr/bin/python3";
-  if (const char* path = std::getenv("PATH")) {
-    const std::string dirs = path;
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-      const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-      const std::string dir = dirs.substr(start, end - start);
-      const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "python3";
-      if (executable(candidate)) return candidate.string();
-      start = end + 1;
-    }
-  }
-  return "";
-}
-
 std::string last_line(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   const auto newline = text.rfind('\n');
@@ -244,7 +213,7 @@ int run_whole_process_bench(const WholeProcessOptions& options) {
   if (options.peers) {
     script = find_data_file("peers/petsc_snesvi.py", "bench/peers/petsc_snesvi.py",
                             "SIGNORINI_PEER_SCRIPT");
-    python = find_python();
+    python = find_python("bench --peers", "numpy and petsc4py");
     std::string why;
     if (python.empty()) {
       why = "no python3 was found";

@@ -80,7 +80,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
       if (!c.movable[static_cast<std::size_t>(j)]) o.l(j) = 0.0;
     rec.dual_change = relative_change(o.l, l);
     rec.active_set_size = (o.l.array() > 0.0).count();
-    if (dual_change_converged(rec, options.uzawa_tolerance)) {
+    if (rec.dual_change < options.uzawa_tolerance) {
       o.stop = Termination::Converged;
       o.message = dual_change_message(rec, options.uzawa_tolerance, k,
                                       fmt::format("classical Uzawa steps (rho = {:.4e})", rho));

@@ -106,10 +106,10 @@ struct ContactSolver::Impl {
   double r_auto = 0.0;
   SolvePath path = SolvePath::CondensedDirect;
   std::unique_ptr<CondensedProblem> condensed;
-  TimingTable setup_timings;           // "contact solve" of the set-up, condensation phases
-  double setup_seconds = 0.0;          // reported once, in the first solve's "contact solve"
-  TimingTable condensation_reported;   // condensation phases already in a solve's timings
-  std::optional<ContactResult> start;  // warm start
+  TimingTable setup_timings;          // "contact solve" of the set-up, condensation phases
+  bool setup_reported = false;        // the set-up's time went into a solve's "contact solve"
+  TimingTable condensation_reported;  // condensation phases already in a solve's timings
+  std::optional<MethodStart> start;   // warm start: u (full problem) and l
   const MultigridHierarchy* multigrid = nullptr;
 
   // The problem to change: copied once, at the first change.
@@ -155,7 +155,6 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
     ScopedTimer timer(m.setup_timings, "contact solve");
     m.condensed = std::make_unique<CondensedProblem>(problem);  // the sparse factorisation
     timer.stop();
-    m.setup_seconds = m.setup_timings.seconds("contact solve");
     m.setup_timings.merge(m.condensed->timings());
   }
 }
@@ -193,7 +192,7 @@ void ContactSolver::warm_start(const ContactResult& previous) {
   const Impl& m = *impl_;
   if (previous.u.size() != m.problem->A.rows() || previous.l.size() != m.problem->contact.size())
     throw InputError("ContactSolver::warm_start: the result is not one of this problem");
-  impl_->start = previous;
+  impl_->start = MethodStart{previous.l, previous.u};
 }
 
 void ContactSolver::cold_start() {
@@ -207,7 +206,7 @@ ContactResult ContactSolver::solve() {
   MethodStart start;
   if (m.start) {
     start.l = m.start->l;
-    start.x = m.condensed ? m.condensed->condense(m.start->u) : m.start->u;
+    start.x = m.condensed ? m.condensed->condense(m.start->x) : m.start->x;
   }
 
   ContactResult result;
@@ -234,8 +233,9 @@ ContactResult ContactSolver::solve() {
     // The set-up's time goes into the first solve's "contact solve" (the one-shot report is the
     // whole cost); the condensation phases of each solve (expansion, new loads) into its own.
     TimingTable t;
-    if (m.setup_seconds > 0.0) t.add("contact solve", m.setup_seconds);
-    m.setup_seconds = 0.0;
+    if (!m.setup_reported && m.condensed)
+      t.add("contact solve", m.setup_timings.seconds("contact solve"));
+    m.setup_reported = true;
     if (m.condensed) {
       const TimingTable now = m.condensed->timings();
       for (const auto& [phase, seconds] : now.phases()) {

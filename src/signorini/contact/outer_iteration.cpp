@@ -45,10 +45,6 @@ void run_outer_loop(const OuterLoop& loop, Vector l0, const ContactSolverOptions
   out.l = std::move(l);
 }
 
-bool dual_change_converged(const OuterStepRecord& rec, double tolerance) {
-  return rec.dual_change < tolerance;
-}
-
 std::string dual_change_message(const OuterStepRecord& rec, double tolerance, int k,
                                 const std::string& steps_name) {
   return fmt::format("||l^k - l^(k-1)|| / ||l^k|| = {:.3e} < {:.1e} after {} {}", rec.dual_change,

@@ -37,8 +37,7 @@ struct OuterLoop {
 void run_outer_loop(const OuterLoop& loop, Vector l0, const ContactSolverOptions& options,
                     ContactResult& out);
 
-/// The Uzawa stopping rule ||l^k - l^(k-1)|| / ||l^k|| < tolerance, and its message.
-[[nodiscard]] bool dual_change_converged(const OuterStepRecord& rec, double tolerance);
+/// The message of the Uzawa stopping rule ||l^k - l^(k-1)|| / ||l^k|| < tolerance.
 [[nodiscard]] std::string dual_change_message(const OuterStepRecord& rec, double tolerance, int k,
                                               const std::string& steps_name);
 

@@ -8,30 +8,11 @@
 #include "signorini/backend/make_backend.hpp"
 #include "signorini/contact/backend_newton_space.hpp"
 #include "signorini/contact/contact_methods.hpp"
-#include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/host_newton_space.hpp"
 #include "signorini/contact/newton_system.hpp"
 #include "signorini/contact/uzawa_iteration.hpp"
 
 namespace signorini {
-
-namespace {
-
-void run_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
-                   const MethodStart& start, ModifiedLagrangian& phi, NewtonSpace& space,
-                   ContactResult& out) {
-  const GeneralizedNewton gnm(options, problem.b.norm(), problem.contact.weights);
-  run_uzawa_iteration(
-      options, phi,
-      [&](const ModifiedLagrangian& current, int k, Vector& Nx) {
-        const GnmResult g = gnm.minimize(current, space, k);
-        Nx = space.contact_values();
-        return g;
-      },
-      start.multipliers(problem.contact.size()), out);
-}
-
-}  // namespace
 
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
                               const MethodStart& start) {
@@ -39,7 +20,7 @@ ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolver
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   const auto system = make_newton_system(problem, phi, options.linear);
   HostNewtonSpace space(problem, *system, start.displacement(problem.A.rows()));
-  run_uzawa_gnm(problem, options, start, phi, space, out);
+  run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.size()), out);
   out.summary.timings.merge(system->timings());
   out.u = space.take_x();
   return out;
@@ -60,7 +41,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   BackendNewtonSpace space(problem, options, multigrid, *backend, timings,
                            start.displacement(problem.A.rows()));
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
-  run_uzawa_gnm(problem, options, start, phi, space, out);
+  run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.size()), out);
   {
     ScopedTimer t(timings, "device download");
     out.u = space.solution();

@@ -2,19 +2,21 @@
 
 #include <fmt/format.h>
 
+#include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/outer_iteration.hpp"
 
 namespace signorini {
 
-void run_uzawa_iteration(const ContactSolverOptions& options, ModifiedLagrangian& phi,
-                         const UzawaInnerStep& inner, Vector l0, ContactResult& out) {
-  Vector Nx;
+void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
+                         ModifiedLagrangian& phi, NewtonSpace& space, Vector l0,
+                         ContactResult& out) {
+  const GeneralizedNewton gnm(options, problem.b.norm(), problem.contact.weights);
   OuterLoop loop;
   loop.max_steps = options.max_uzawa_iterations;
   loop.step = [&](int k, const Vector& l) {
     OuterStepOutcome o;
     phi.set_multipliers(l);
-    const GnmResult g = inner(phi, k, Nx);  // step (i): x = argmin Phi
+    const GnmResult g = gnm.minimize(phi, space, k);  // step (i): x = argmin Phi
     OuterStepRecord& rec = o.record;
     rec.inner_iterations = g.iterations;
     rec.armijo_reductions = g.armijo_reductions;
@@ -29,10 +31,10 @@ void run_uzawa_iteration(const ContactSolverOptions& options, ModifiedLagrangian
       return o;
     }
     // Step (ii): l^{k+1} = (l^k + r ((N x)_j - g_j))_+, non-movable nodes stay at 0.
-    o.l = phi.shifted_multipliers(Nx).cwiseMax(0.0);
+    o.l = phi.shifted_multipliers(space.contact_values()).cwiseMax(0.0);
     rec.dual_change = relative_change(o.l, l);
     rec.active_set_size = (o.l.array() > 0.0).count();
-    if (dual_change_converged(rec, options.uzawa_tolerance)) {
+    if (rec.dual_change < options.uzawa_tolerance) {
       o.stop = Termination::Converged;
       o.message = dual_change_message(rec, options.uzawa_tolerance, k, "Uzawa steps");
     }

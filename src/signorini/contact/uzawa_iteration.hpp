@@ -4,20 +4,16 @@
 // step (ii) updates l^{k+1} = (l^k + r ((N x)_j - g_j))_+, until ||l^k - l^{k-1}|| / ||l^k|| is
 // below the tolerance (method.md sections 2-4).
 
-#include <functional>
-
 #include "signorini/contact/contact_solver.hpp"
-#include "signorini/contact/generalized_newton.hpp"
+#include "signorini/contact/newton_space.hpp"
 
 namespace signorini {
 
-/// Step (i) for Uzawa step k: minimises phi (multipliers set) and returns the GNM record; N x at
-/// the minimiser is written to `Nx`.
-using UzawaInnerStep = std::function<GnmResult(const ModifiedLagrangian& phi, int k, Vector& Nx)>;
-
-/// Runs (13) from l^0 (zero for the paper's start) with `phi` (whose multipliers it sets); fills
-/// out.l and out.summary (steps, termination, message), not out.u.
-void run_uzawa_iteration(const ContactSolverOptions& options, ModifiedLagrangian& phi,
-                         const UzawaInnerStep& inner, Vector l0, ContactResult& out);
+/// Runs (13) from l^0 (zero for the paper's start) with `phi` (whose multipliers it sets), each
+/// step (i) by GNM in `space` (host or backend), which holds x; fills out.l and out.summary
+/// (steps, termination, message), not out.u.
+void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
+                         ModifiedLagrangian& phi, NewtonSpace& space, Vector l0,
+                         ContactResult& out);
 
 }  // namespace signorini
