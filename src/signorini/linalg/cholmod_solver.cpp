@@ -64,7 +64,10 @@ void CholmodSolver::factorize(const SparseMatrix& H) {
     throw NumericalError("CHOLMOD: factorize() got a matrix whose pattern differs from analyze()");
   ScopedTimer timer(timings_, "linear factorization");
   s.upper.copy_values(H);
-  cholmod_l_factorize(s.upper.matrix, s.factor, &s.common);
+  {
+    const detail::SerialOpenMpScope serial;
+    cholmod_l_factorize(s.upper.matrix, s.factor, &s.common);
+  }
   check_cholmod(s.common, "factorization");
 }
 

@@ -63,7 +63,10 @@ void SchurComplement::build(const SparseMatrix& A, SparseMatrix* owned) {
   }
   {
     ScopedTimer t(timings_, "condensation factorization");
-    cholmod_l_factorize(s.upper.matrix, s.factor, &s.common);
+    {
+      const detail::SerialOpenMpScope serial;
+      cholmod_l_factorize(s.upper.matrix, s.factor, &s.common);
+    }
     check_cholmod(s.common, "factorization");
     if (!s.factor->is_super) throw NumericalError("CHOLMOD: expected a supernodal factor");
     cholmod_l_free_sparse(&s.upper.matrix, &s.common);  // only the factor is used from here on

@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "signorini/core/error.hpp"
 #include "signorini/core/types.hpp"
 
@@ -27,6 +31,32 @@ struct CholmodCommon {
   ~CholmodCommon() { cholmod_l_finish(&common); }
   CholmodCommon(const CholmodCommon&) = delete;
   CholmodCommon& operator=(const CholmodCommon&) = delete;
+};
+
+/// Runs CHOLMOD's numeric factorisation on the calling thread alone. Debian's CHOLMOD 3 is built
+/// with CHOLMOD_OMP_NUM_THREADS = 4 and asks for four OpenMP threads in its supernodal assembly
+/// loops whatever the machine has (num_threads(4) overrides OMP_NUM_THREADS). Those loops are
+/// short scatters, not flops (the flops are BLAS calls), and the team costs more than it saves:
+/// on the 2-core development machine the paper's problem at 480x160 factorised in 0.70-0.90 s
+/// with the four threads and 0.42-0.50 s without, and at 960x320 in 4.3-4.7 s against 2.4-2.6 s
+/// (docs/performance.md). max-active-levels 0 makes every parallel region inactive; the previous
+/// value comes back when the scope ends. The ICV is process-wide: a program that runs its own
+/// OpenMP regions on other threads during a factorisation gets them serial for that time.
+class SerialOpenMpScope {
+ public:
+#ifdef _OPENMP
+  SerialOpenMpScope() : saved_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
+  ~SerialOpenMpScope() { omp_set_max_active_levels(saved_); }
+#else
+  SerialOpenMpScope() = default;  // without OpenMP here, CHOLMOD keeps its own thread count
+#endif
+  SerialOpenMpScope(const SerialOpenMpScope&) = delete;
+  SerialOpenMpScope& operator=(const SerialOpenMpScope&) = delete;
+
+ private:
+#ifdef _OPENMP
+  int saved_;
+#endif
 };
 
 /// Throws NumericalError if the last CHOLMOD call failed.
