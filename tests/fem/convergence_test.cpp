@@ -1,16 +1,17 @@
 // Convergence under refinement for a linear-elastic problem with a known solution: on the unit
 // square, clamped on all edges, u_1 = u_2 = sin(pi x) sin(pi y) with the matching body force.
-// Q1 elements converge at O(h) in the energy norm and O(h^2) in L2.
+// First-order elements (P1, Q1) converge at O(h) in the energy norm and O(h^2) in L2, second-order
+// ones (P2, Q8, Q2) at O(h^2) and O(h^3).
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/load_assembly.hpp"
-#include "signorini/fem/q1_element.hpp"
-#include "signorini/fem/quadrature.hpp"
+#include "signorini/fem/isoparametric_element.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
@@ -25,7 +26,7 @@ struct Errors {
   double energy;
 };
 
-Errors solve_and_measure(Index n) {
+Errors solve_and_measure(CellType type, Index n) {
   ElasticityOptions opt;
   opt.material = {100.0, 0.3};
   const double E = opt.material.E, nu = opt.material.nu;
@@ -38,7 +39,9 @@ Errors solve_and_measure(Index n) {
     const double v = kPi * kPi * ((lambda + 3.0 * mu) * s - (lambda + mu) * cc);
     return Eigen::Vector3d(v, v, 0.0);
   };
-  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 1.0, 1.0, n, n});
+  RectangleMeshOptions o{0.0, 0.0, 1.0, 1.0, n, n};
+  o.cell = type;
+  const Mesh mesh = make_rectangle_mesh(o);
   const DofMap dofs = make_dof_map(mesh, {{"left"}, {"right"}, {"bottom"}, {"top"}});
   const SparseMatrix A = assemble_stiffness(mesh, dofs, opt);
   Vector b = Vector::Zero(dofs.num_free());
@@ -51,48 +54,69 @@ Errors solve_and_measure(Index n) {
   const Vector full = dofs.expand(u);
 
   const Eigen::Matrix3d D = plane_elasticity_matrix(opt.material, opt.plane_model);
-  const auto rule = gauss_legendre(4);
   double l2 = 0.0, energy = 0.0;
+  ShapeValues N;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
-    Q1Coordinates X;
-    Eigen::Matrix<double, 8, 1> ue;
+    const CellType t = mesh.cell_type(c);
+    const CellCoordinates X = cell_coordinates(mesh, c);
     const auto nodes = mesh.cell(c);
-    for (int a = 0; a < 4; ++a) {
-      const Index v = nodes[static_cast<std::size_t>(a)];
-      X.col(a) = mesh.node(v);
-      ue.segment<2>(2 * a) = full.segment<2>(2 * v);
+    const auto nn = static_cast<Index>(nodes.size());
+    ElementVector ue(2 * nn);
+    for (Index a = 0; a < nn; ++a)
+      ue.segment<2>(2 * a) = full.segment<2>(2 * nodes[static_cast<std::size_t>(a)]);
+    // Errors integrated with more points than the stiffness uses: 4x4 on Q1 cells, the degree-4
+    // rule on triangles.
+    const CellType rule_type = (t == CellType::Tri3 || t == CellType::Tri6) ? CellType::Tri6 : t;
+    for (const QuadraturePoint& q : cell_quadrature(rule_type, 4)) {
+      double det_j = 0.0;
+      const StrainMatrix B = strain_matrix(t, X, q.xi, det_j);
+      shape_functions(t, q.xi, N);
+      const Eigen::Vector2d x = X * N;
+      const double w = det_j * q.w;
+      const double s = std::sin(kPi * x(0)) * std::sin(kPi * x(1));
+      const double cx = kPi * std::cos(kPi * x(0)) * std::sin(kPi * x(1));
+      const double cy = kPi * std::sin(kPi * x(0)) * std::cos(kPi * x(1));
+      Eigen::Vector2d uh = Eigen::Vector2d::Zero();
+      for (Index a = 0; a < nn; ++a) uh += N(a) * ue.segment<2>(2 * a);
+      l2 += w * ((uh - Eigen::Vector2d(s, s)).squaredNorm());
+      const Eigen::Vector3d e = Eigen::Vector3d(cx, cy, cy + cx) - B * ue;
+      energy += w * e.dot(D * e);
     }
-    for (const auto& qx : rule)
-      for (const auto& qy : rule) {
-        double det_j = 0.0;
-        const Q1Strain B = q1_strain_matrix(X, qx.x, qy.x, det_j);
-        const Eigen::Vector2d x = X * q1_shape(qx.x, qy.x);
-        const double w = det_j * qx.w * qy.w;
-        const double s = std::sin(kPi * x(0)) * std::sin(kPi * x(1));
-        const double cx = kPi * std::cos(kPi * x(0)) * std::sin(kPi * x(1));
-        const double cy = kPi * std::sin(kPi * x(0)) * std::cos(kPi * x(1));
-        Eigen::Vector2d uh = Eigen::Vector2d::Zero();
-        const Eigen::Vector4d N = q1_shape(qx.x, qy.x);
-        for (int a = 0; a < 4; ++a) uh += N(a) * ue.segment<2>(2 * a);
-        l2 += w * ((uh - Eigen::Vector2d(s, s)).squaredNorm());
-        const Eigen::Vector3d e = Eigen::Vector3d(cx, cy, cy + cx) - B * ue;
-        energy += w * e.dot(D * e);
-      }
   }
   return {std::sqrt(l2), std::sqrt(energy)};
 }
 
-TEST(Convergence, EnergyNormOrderOneAndL2OrderTwo) {
-  const Errors e8 = solve_and_measure(8);
-  const Errors e16 = solve_and_measure(16);
-  const Errors e32 = solve_and_measure(32);
-  const double rate_energy = std::log2(e16.energy / e32.energy);
-  const double rate_l2 = std::log2(e16.l2 / e32.l2);
-  EXPECT_NEAR(rate_energy, 1.0, 0.05) << e8.energy << " " << e16.energy << " " << e32.energy;
-  EXPECT_NEAR(rate_l2, 2.0, 0.1) << e8.l2 << " " << e16.l2 << " " << e32.l2;
-  EXPECT_GT(std::log2(e8.energy / e16.energy), 0.9);
-  EXPECT_GT(std::log2(e8.l2 / e16.l2), 1.8);
+struct RateCase {
+  CellType type;
+  int order;
+  std::array<Index, 3> meshes;
+};
+
+class Convergence : public ::testing::TestWithParam<RateCase> {};
+
+TEST_P(Convergence, EnergyNormOrderPAndL2OrderPPlusOne) {
+  const RateCase k = GetParam();
+  const Errors e0 = solve_and_measure(k.type, k.meshes[0]);
+  const Errors e1 = solve_and_measure(k.type, k.meshes[1]);
+  const Errors e2 = solve_and_measure(k.type, k.meshes[2]);
+  const double rate_energy = std::log2(e1.energy / e2.energy);
+  const double rate_l2 = std::log2(e1.l2 / e2.l2);
+  const double p = k.order;
+  EXPECT_NEAR(rate_energy, p, 0.06) << e0.energy << " " << e1.energy << " " << e2.energy;
+  EXPECT_NEAR(rate_l2, p + 1.0, 0.12) << e0.l2 << " " << e1.l2 << " " << e2.l2;
+  EXPECT_GT(std::log2(e0.energy / e1.energy), p - 0.1);
+  EXPECT_GT(std::log2(e0.l2 / e1.l2), p + 0.8);
 }
+
+INSTANTIATE_TEST_SUITE_P(CellTypes, Convergence,
+                         ::testing::Values(RateCase{CellType::Quad4, 1, {8, 16, 32}},
+                                           RateCase{CellType::Tri3, 1, {8, 16, 32}},
+                                           RateCase{CellType::Quad8, 2, {4, 8, 16}},
+                                           RateCase{CellType::Quad9, 2, {4, 8, 16}},
+                                           RateCase{CellType::Tri6, 2, {4, 8, 16}}),
+                         [](const auto& param_info) {
+                           return std::string(enum_to_string(kCellTypeNames, param_info.param.type));
+                         });
 
 }  // namespace
 }  // namespace signorini

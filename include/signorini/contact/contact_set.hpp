@@ -13,13 +13,16 @@ namespace signorini {
 struct ContactSet {
   std::vector<Index> nodes;  ///< mesh node numbers, in order along the boundary part
   Eigen::MatrixXd normals;   ///< dim x size(): outward unit normal nu_j
-  Vector weights;            ///< h_j: half the lengths of the contact facets that touch node j
+  /// h_j = int N_j ds over the contact facets: half the lengths of the straight two-node facets
+  /// that touch node j; on quadratic facets the integrals of the quadratic shape functions.
+  Vector weights;
   Vector gaps;               ///< g_j = g(x_j), the initial gap to the foundation
   SparseMatrix N;            ///< size() x num_free
   /// false where node j has no free unknown in its normal direction (clamped): its multiplier is
   /// kept at 0 (method.md section 4, last paragraph).
   std::vector<bool> movable;
-  /// The contact facets, each as the positions j (in `nodes`) of its nodes: what the result
+  /// The contact facets, each as the positions j (in `nodes`) of its nodes (two ends, then the
+  /// middle node of a quadratic facet): what the result
   /// files draw (contact.vtu). Empty for a contact set made by hand without facets.
   std::vector<std::vector<Index>> facets;
 

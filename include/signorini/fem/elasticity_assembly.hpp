@@ -15,10 +15,14 @@ namespace signorini {
 struct ElasticityOptions {
   IsotropicMaterial material;
   PlaneModel plane_model = PlaneModel::PlaneStrain;
-  int gauss_points = 2;  ///< per direction in cells (the paper's 2x2 rule)
+  /// Gauss points per direction in Q1 quadrilaterals (the paper's 2x2 rule); the other cell
+  /// types have their own rules (3x3 on quadratic quadrilaterals, 3 and 6 points on P1 and P2
+  /// triangles).
+  int gauss_points = 2;
 };
 
-/// Throws InputError unless the mesh's cells have finite elements here (quad4 so far).
+/// Throws InputError unless the mesh is 2D and every cell type has a finite element (tri3, tri6,
+/// quad4, quad8, quad9).
 void require_supported_cells(const Mesh& mesh);
 
 /// Reduced stiffness A (num_free x num_free, SPD when clamping holds the body, both triangles

@@ -34,12 +34,15 @@ struct CoordinateBox {
 /// quadrature with `gauss_points` on the part of each facet inside the box (method.md
 /// "Conventions": consistent, not lumped). The box cuts facets where its faces cross them, so a
 /// load on part of an edge is integrated exactly for polynomial p (degree <= 2 gauss_points - 2),
-/// wherever the mesh nodes lie. Throws InputError if p is not finite somewhere (naming `what`).
+/// wherever the mesh nodes lie. Quadratic (curved) edges are integrated along the curve; a box
+/// on them is allowed only where they are straight. Throws InputError if p is not finite
+/// somewhere (naming `what`).
 void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const VectorField& p,
                          int gauss_points, Vector& f, const std::string& what = "traction",
                          const CoordinateBox& box = {});
 
-/// Adds int_Omega f . v dOmega to the full vector (cell Gauss rule of `gauss_points`^dim).
+/// Adds int_Omega f . v dOmega to the full vector (each cell type's rule, cell_quadrature(); Q1
+/// cells with `gauss_points` per direction).
 void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,
                      const std::string& what = "body force");
 

@@ -1,7 +1,9 @@
 #pragma once
-// Reference cells: how many nodes a cell has, and which local nodes make up each facet.
-// Only Quad4 is implemented by the finite elements today; the others are listed so that meshes of
-// triangles and 3D cells can be held by the same Mesh type when their elements arrive.
+// Reference cells: how many nodes a cell has, its dimension and order, and which local nodes make
+// up each facet. Node orders are Gmsh's (and VTK's, which agree for these types): corners first,
+// counterclockwise in 2D, then the mid-edge nodes in the order of the edges, then a centre node.
+// Finite elements exist for the 2D types (fem/reference_element.hpp); Tet4 and Hex8 are listed
+// so that 3D meshes can be held by the same Mesh type when their elements arrive.
 
 #include <span>
 #include <string_view>
@@ -10,53 +12,103 @@
 
 namespace signorini {
 
-enum class CellType { Quad4, Tri3, Hex8, Tet4 };
+enum class CellType { Line2, Line3, Tri3, Tri6, Quad4, Quad8, Quad9, Tet4, Hex8 };
 
-inline constexpr EnumNames<CellType, 4> kCellTypeNames{{
-    {CellType::Quad4, "quad4"},
+inline constexpr EnumNames<CellType, 9> kCellTypeNames{{
+    {CellType::Line2, "line2"},
+    {CellType::Line3, "line3"},
     {CellType::Tri3, "tri3"},
-    {CellType::Hex8, "hex8"},
+    {CellType::Tri6, "tri6"},
+    {CellType::Quad4, "quad4"},
+    {CellType::Quad8, "quad8"},
+    {CellType::Quad9, "quad9"},
     {CellType::Tet4, "tet4"},
+    {CellType::Hex8, "hex8"},
 }};
 
-/// Spatial dimension of a cell type.
+/// Spatial dimension of the reference cell (1 for lines, which are the facets of 2D cells).
 constexpr int cell_dimension(CellType t) {
-  return (t == CellType::Quad4 || t == CellType::Tri3) ? 2 : 3;
+  switch (t) {
+    case CellType::Line2:
+    case CellType::Line3:
+      return 1;
+    case CellType::Tri3:
+    case CellType::Tri6:
+    case CellType::Quad4:
+    case CellType::Quad8:
+    case CellType::Quad9:
+      return 2;
+    case CellType::Tet4:
+    case CellType::Hex8:
+      return 3;
+  }
+  return 0;
 }
 
 /// Number of nodes of a cell.
 constexpr int nodes_per_cell(CellType t) {
   switch (t) {
-    case CellType::Quad4:
-      return 4;
+    case CellType::Line2:
+      return 2;
+    case CellType::Line3:
     case CellType::Tri3:
       return 3;
-    case CellType::Hex8:
-      return 8;
+    case CellType::Tri6:
+      return 6;
+    case CellType::Quad4:
     case CellType::Tet4:
       return 4;
+    case CellType::Quad8:
+    case CellType::Hex8:
+      return 8;
+    case CellType::Quad9:
+      return 9;
   }
   return 0;
 }
 
-/// Number of facets (edges in 2D, faces in 3D) of a cell.
+/// Polynomial order of the geometry and of the displacement (1: linear, 2: quadratic).
+constexpr int cell_order(CellType t) {
+  switch (t) {
+    case CellType::Line3:
+    case CellType::Tri6:
+    case CellType::Quad8:
+    case CellType::Quad9:
+      return 2;
+    default:
+      return 1;
+  }
+}
+
+/// Number of facets (end points of lines, edges in 2D, faces in 3D) of a cell.
 constexpr int facets_per_cell(CellType t) {
   switch (t) {
-    case CellType::Quad4:
-      return 4;
+    case CellType::Line2:
+    case CellType::Line3:
+      return 2;
     case CellType::Tri3:
+    case CellType::Tri6:
       return 3;
-    case CellType::Hex8:
-      return 6;
+    case CellType::Quad4:
+    case CellType::Quad8:
+    case CellType::Quad9:
+      return 4;
     case CellType::Tet4:
       return 4;
+    case CellType::Hex8:
+      return 6;
   }
   return 0;
 }
+
+/// The cell type of the facets of a 2D or 3D cell (Line2 for linear 2D cells, Line3 for
+/// quadratic ones). Lines have no facet type; asking is a logic error.
+CellType facet_type(CellType t);
 
 /// Local node numbers of facet `f` of a cell, ordered so that the facet's outward normal follows
 /// from the right-hand rule (counterclockwise cells in 2D: edge (a, b) has outward normal
-/// (t_y, -t_x) with t = x_b - x_a).
+/// (t_y, -t_x) with t = x_b - x_a). Quadratic edges list their two ends, then the middle node
+/// (the Line3 order).
 std::span<const int> facet_local_nodes(CellType t, int facet);
 
 }  // namespace signorini

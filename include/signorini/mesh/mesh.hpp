@@ -1,7 +1,8 @@
 #pragma once
-// An unstructured mesh of one cell type, with named boundary parts (sets of boundary facets).
-// Callers go through cell(), facet_nodes() and node(); nothing assumes a structured grid, so
-// meshes read from files, triangles and 3D cells fit the same interface.
+// An unstructured mesh whose cells may be of several types (triangles and quadrilaterals of first
+// and second order in one 2D mesh, say), with named boundary parts (sets of boundary facets).
+// Callers go through cell(), cell_type(), facet_nodes() and node(); nothing assumes a structured
+// grid or one cell type, so meshes read from files and 3D cells fit the same interface.
 
 #include <map>
 #include <span>
@@ -29,17 +30,22 @@ struct BoundaryPart {
 
 class Mesh {
  public:
-  /// `coordinates` is dim x num_nodes; `connectivity` holds nodes_per_cell(type) node numbers per
-  /// cell. Throws InputError on node numbers out of range or a dimension mismatch.
+  /// Cells of one type. `coordinates` is dim x num_nodes; `connectivity` holds
+  /// nodes_per_cell(type) node numbers per cell. Throws InputError on node numbers out of range
+  /// or a dimension mismatch.
   Mesh(CellType type, Eigen::MatrixXd coordinates, std::vector<Index> connectivity);
+  /// Cells of several types: cell c has type types[c] and the next nodes_per_cell(types[c])
+  /// numbers of `connectivity`. Every type must have the dimension of the coordinates.
+  Mesh(std::vector<CellType> types, Eigen::MatrixXd coordinates, std::vector<Index> connectivity);
 
   [[nodiscard]] int dim() const { return static_cast<int>(coordinates_.rows()); }
-  [[nodiscard]] CellType cell_type() const { return type_; }
-  [[nodiscard]] int nodes_per_cell() const { return signorini::nodes_per_cell(type_); }
   [[nodiscard]] Index num_nodes() const { return coordinates_.cols(); }
-  [[nodiscard]] Index num_cells() const {
-    return static_cast<Index>(connectivity_.size()) / nodes_per_cell();
-  }
+  [[nodiscard]] Index num_cells() const { return static_cast<Index>(types_.size()); }
+  [[nodiscard]] CellType cell_type(Index c) const { return types_[static_cast<std::size_t>(c)]; }
+  /// The distinct cell types, in the order of CellType.
+  [[nodiscard]] std::vector<CellType> cell_types() const;
+  /// The most nodes any cell has.
+  [[nodiscard]] int max_nodes_per_cell() const { return max_nodes_per_cell_; }
 
   /// Coordinates of a node (dim entries).
   [[nodiscard]] auto node(Index i) const { return coordinates_.col(i); }
@@ -53,8 +59,9 @@ class Mesh {
   [[nodiscard]] const Eigen::MatrixXd& coordinates() const { return coordinates_; }
   /// Node numbers of a cell.
   [[nodiscard]] std::span<const Index> cell(Index c) const {
-    return {connectivity_.data() + c * nodes_per_cell(),
-            static_cast<std::size_t>(nodes_per_cell())};
+    const auto k = static_cast<std::size_t>(c);
+    return {connectivity_.data() + offsets_[k],
+            static_cast<std::size_t>(offsets_[k + 1] - offsets_[k])};
   }
   /// Node numbers of a facet, in the orientation of facet_local_nodes().
   [[nodiscard]] std::vector<Index> facet_nodes(const Facet& f) const;
@@ -69,9 +76,13 @@ class Mesh {
   [[nodiscard]] std::vector<Index> boundary_part_nodes(std::string_view name) const;
 
  private:
-  CellType type_;
+  void check();
+
+  std::vector<CellType> types_;
   Eigen::MatrixXd coordinates_;
   std::vector<Index> connectivity_;
+  std::vector<Index> offsets_;  // cell c: connectivity_[offsets_[c] .. offsets_[c + 1])
+  int max_nodes_per_cell_ = 0;
   std::map<std::string, BoundaryPart, std::less<>> parts_;
 };
 

@@ -1,7 +1,9 @@
 #pragma once
-// Structured mesh of a rectangle by nx x ny Q1 quadrilaterals, with the four edges named
-// `left`, `right`, `bottom`, `top` (the paper's benchmark mesh, Section 5).
+// Structured mesh of a rectangle by nx x ny quadrilaterals (the paper's benchmark mesh, Section 5,
+// with Q1 cells), or by 2 nx ny triangles, of first or second order, with the four edges named
+// `left`, `right`, `bottom`, `top`.
 
+#include "signorini/mesh/cell_type.hpp"
 #include "signorini/mesh/mesh.hpp"
 
 namespace signorini {
@@ -13,11 +15,17 @@ struct RectangleMeshOptions {
   double height = 1.0;  ///< extent in y (m)
   Index nx = 60;        ///< cells along x, >= 1
   Index ny = 20;        ///< cells along y, >= 1
+  /// quad4 (the paper's), quad8, quad9, or tri3 / tri6: each square split into two triangles
+  /// along its diagonal from lower left to upper right.
+  CellType cell = CellType::Quad4;
 };
 
-/// Node (i, j) has number j * (nx + 1) + i; cell (i, j) has number j * nx + i and its nodes are
-/// counterclockwise. Boundary facets are listed in increasing x (bottom, top) or y (left, right).
-/// Throws InputError on non-positive sizes.
+/// Quad4: node (i, j) has number j * (nx + 1) + i; cell (i, j) has number j * nx + i and its
+/// nodes are counterclockwise. The other types number the nodes of the (order nx + 1) x (order
+/// ny + 1) lattice row by row, leaving out the cell centres that Quad8 does not use; triangles
+/// (i, j) are cells 2 (j nx + i) (below the diagonal) and 2 (j nx + i) + 1. Boundary facets are
+/// listed in increasing x (bottom, top) or y (left, right). Throws InputError on non-positive
+/// sizes or a cell type that is not a 2D one.
 Mesh make_rectangle_mesh(const RectangleMeshOptions& options);
 
 }  // namespace signorini

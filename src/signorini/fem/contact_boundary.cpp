@@ -5,19 +5,22 @@
 #include <map>
 
 #include "signorini/core/error.hpp"
+#include "signorini/fem/quadrature.hpp"
+#include "signorini/fem/reference_element.hpp"
 
 namespace signorini {
 
 namespace {
 
 // Orders the nodes of a 2D boundary part by walking its facets (edges a -> b, oriented with the
-// body on the left) from a start node; chains that are not connected follow one another.
+// body on the left, a quadratic edge's middle node between its ends) from a start node; chains
+// that are not connected follow one another.
 std::vector<Index> walk_edges(const Mesh& mesh, const BoundaryPart& part) {
-  std::map<Index, Index> next;  // a -> b
+  std::map<Index, std::pair<Index, Index>> next;  // a -> (b, middle node or -1)
   std::map<Index, int> in_degree;
   for (const Facet& f : part.facets) {
     const auto fn = mesh.facet_nodes(f);
-    next[fn[0]] = fn[1];
+    next[fn[0]] = {fn[1], fn.size() > 2 ? fn[2] : -1};
     in_degree[fn[1]] += 1;
     in_degree.try_emplace(fn[0], 0);
   }
@@ -30,7 +33,8 @@ std::vector<Index> walk_edges(const Mesh& mesh, const BoundaryPart& part) {
       order.push_back(n);
       const auto it = next.find(n);
       if (it == next.end()) break;
-      n = it->second;
+      if (it->second.second >= 0) order.push_back(it->second.second);
+      n = it->second.first;
     }
   };
   for (const auto& [node, deg] : in_degree)  // open chains start where no edge comes in
@@ -55,19 +59,44 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
   std::map<Index, Index> position;
   for (Index j = 0; j < n; ++j) position[cs.nodes[static_cast<std::size_t>(j)]] = j;
 
-  // Trapezoid weights and length-weighted facet normals (method.md section 3).
+  // Weights h_j = int N_j ds and normals along int N_j nu ds (method.md section 3): on straight
+  // two-node edges the trapezoid weights |e|/2 and the length-weighted edge normals; on
+  // quadratic edges by Gauss quadrature along the curve (weights |e|/6, 2|e|/3, |e|/6 on a
+  // straight one: all positive, so every node carries a constraint of its own).
   cs.normals = Eigen::MatrixXd::Zero(2, n);
   cs.weights = Vector::Zero(n);
+  ShapeValues N;
+  ShapeGradients dN;
+  const auto rule = gauss_legendre(3);
   for (const Facet& f : part.facets) {
     const auto fn = mesh.facet_nodes(f);
-    const Eigen::Vector2d t = mesh.node(fn[1]) - mesh.node(fn[0]);
-    const Eigen::Vector2d outward(t(1), -t(0));  // |outward| = facet length
-    for (const Index v : fn) {
-      const Index j = position.at(v);
-      cs.weights(j) += 0.5 * t.norm();
-      cs.normals.col(j) += outward;
+    std::vector<Index> facet;
+    for (const Index v : fn) facet.push_back(position.at(v));
+    cs.facets.push_back(facet);
+    if (fn.size() == 2) {
+      const Eigen::Vector2d t = mesh.node(fn[1]) - mesh.node(fn[0]);
+      const Eigen::Vector2d outward(t(1), -t(0));  // |outward| = facet length
+      for (const Index j : facet) {
+        cs.weights(j) += 0.5 * t.norm();
+        cs.normals.col(j) += outward;
+      }
+      continue;
     }
-    cs.facets.push_back({position.at(fn[0]), position.at(fn[1])});
+    const CellType type = facet_type(mesh.cell_type(f.cell));
+    for (const auto& q : rule) {
+      const Eigen::Vector3d s(q.x, 0.0, 0.0);
+      shape_functions(type, s, N);
+      shape_gradients(type, s, dN);
+      Eigen::Vector2d dx = Eigen::Vector2d::Zero();  // dx/ds
+      for (std::size_t a = 0; a < fn.size(); ++a)
+        dx += dN(0, static_cast<Index>(a)) * mesh.node(fn[a]);
+      const Eigen::Vector2d outward(dx(1), -dx(0));  // |outward| ds = the arc length element
+      for (std::size_t a = 0; a < fn.size(); ++a) {
+        const Index j = facet[a];
+        cs.weights(j) += N(static_cast<Index>(a)) * dx.norm() * q.w;
+        cs.normals.col(j) += N(static_cast<Index>(a)) * outward * q.w;
+      }
+    }
   }
   cs.gaps.resize(n);
   cs.movable.assign(static_cast<std::size_t>(n), false);

@@ -1,33 +1,34 @@
 #include "signorini/fem/elasticity_assembly.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
 #include "signorini/core/error.hpp"
-#include "signorini/fem/q1_element.hpp"
-#include "signorini/fem/quadrature.hpp"
+#include "signorini/fem/isoparametric_element.hpp"
 #include "signorini/fem/sparsity_pattern.hpp"
 
 namespace signorini {
 
 namespace {
 
-Q1Coordinates cell_coordinates(const Mesh& mesh, Index c) {
-  Q1Coordinates X;
-  const auto nodes = mesh.cell(c);
-  for (int a = 0; a < 4; ++a) X.col(a) = mesh.node(nodes[static_cast<std::size_t>(a)]);
-  return X;
+// "mesh cell 12 (quad4, nodes 3 4 9 8)": how errors name a cell.
+std::string cell_name(const Mesh& mesh, Index c) {
+  std::string s = "mesh cell " + std::to_string(c) + " (" +
+                  std::string(enum_to_string(kCellTypeNames, mesh.cell_type(c))) + ", nodes";
+  for (const Index n : mesh.cell(c)) s += " " + std::to_string(n);
+  return s + ")";
 }
 
 }  // namespace
 
 void require_supported_cells(const Mesh& mesh) {
-  if (mesh.cell_type() != CellType::Quad4)
-    throw InputError("finite elements for cell type '" +
-                     std::string(enum_to_string(kCellTypeNames, mesh.cell_type())) +
-                     "' are not implemented yet (only quad4)");
+  if (mesh.dim() != 2)
+    throw InputError("finite elements for " + std::to_string(mesh.dim()) +
+                     "D meshes are not implemented yet (2D only)");
+  for (const CellType t : mesh.cell_types()) require_finite_element(t);
 }
 
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
@@ -37,26 +38,41 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
   const SparsityPattern pattern(mesh, dofs);
   SparseMatrix A = pattern.zero_matrix();
   double* values = A.valuePtr();
-  // Cells that are translates of the previous one (all of them on a structured mesh) share its
-  // element matrix: compare the node coordinates relative to the first node.
-  Q1Coordinates previous = Q1Coordinates::Constant(std::numeric_limits<double>::quiet_NaN());
-  Q1Stiffness K;
+  // Cells of the type of the previous one that are its translates (all of them on a structured
+  // mesh) share its element matrix: compare the node coordinates relative to the first node.
+  CellType previous_type = mesh.num_cells() > 0 ? mesh.cell_type(0) : CellType::Quad4;
+  CellCoordinates previous = CellCoordinates::Zero(2, 0);
+  std::vector<QuadraturePoint> rule;
+  ElementMatrix K;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const Q1Coordinates X = cell_coordinates(mesh, c);
-    const Q1Coordinates relative = X.colwise() - X.col(0);
-    const double size = relative.cwiseAbs().maxCoeff();
-    if (!((relative - previous).cwiseAbs().maxCoeff() <= 1e-13 * size)) {
+    const CellType type = mesh.cell_type(c);
+    const CellCoordinates X = cell_coordinates(mesh, c);
+    const CellCoordinates relative = X.colwise() - X.col(0);
+    bool same = c > 0 && type == previous_type;
+    if (same) {
+      double size = 0.0, change = 0.0;
+      for (Index a = 0; a < relative.cols(); ++a) {
+        size = std::max(size, relative.col(a).cwiseAbs().maxCoeff());
+        change = std::max(change, (relative.col(a) - previous.col(a)).cwiseAbs().maxCoeff());
+      }
+      same = change <= 1e-13 * size;
+    }
+    if (!same) {
+      if (rule.empty() || type != previous_type)
+        rule = cell_quadrature(type, options.gauss_points);
       try {
-        K = q1_stiffness(X, D, options.gauss_points);
+        K = element_stiffness(type, X, D, rule);
       } catch (const InputError& e) {
-        throw InputError("mesh cell " + std::to_string(c) + ": " + e.what());
+        throw InputError(cell_name(mesh, c) + ": " + e.what());
       }
       previous = relative;
+      previous_type = type;
     }
     const auto nodes = mesh.cell(c);
+    const auto n = static_cast<int>(nodes.size());
     std::array<Index, 4> block{};
-    for (int b = 0; b < 4; ++b)
-      for (int a = 0; a < 4; ++a) {
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
         pattern.block_positions(nodes[static_cast<std::size_t>(a)],
                                 nodes[static_cast<std::size_t>(b)], block.data());
         for (int ka = 0; ka < 2; ++ka)
@@ -74,15 +90,20 @@ Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const
   require_supported_cells(mesh);
   const Eigen::Matrix3d D = plane_elasticity_matrix(options.material, options.plane_model);
   Vector f = Vector::Zero(u.size());
-  Eigen::Matrix<double, 8, 1> ue;
+  ElementVector ue;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     if (needed && !needed(c)) continue;
+    const CellType type = mesh.cell_type(c);
     const auto nodes = mesh.cell(c);
-    for (int a = 0; a < 4; ++a)
+    const auto n = static_cast<Index>(nodes.size());
+    ue.resize(2 * n);
+    for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) ue(2 * a + k) = u(nodes[static_cast<std::size_t>(a)] * 2 + k);
-    const Eigen::Matrix<double, 8, 1> fe =
-        q1_stiffness(cell_coordinates(mesh, c), D, options.gauss_points) * ue;
-    for (int a = 0; a < 4; ++a)
+    const ElementVector fe =
+        element_stiffness(type, cell_coordinates(mesh, c), D,
+                          cell_quadrature(type, options.gauss_points)) *
+        ue;
+    for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) f(nodes[static_cast<std::size_t>(a)] * 2 + k) += fe(2 * a + k);
   }
   return f;

@@ -7,7 +7,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
-#include "signorini/fem/q1_element.hpp"
+#include "signorini/fem/isoparametric_element.hpp"
 #include "signorini/fem/quadrature.hpp"
 
 namespace signorini {
@@ -62,36 +62,46 @@ void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const Vecto
                          const CoordinateBox& box) {
   require_supported_cells(mesh);
   const int dim = mesh.dim();
-  const auto rule = gauss_legendre(gauss_points);
   const bool whole = box.unbounded();
+  ShapeValues N;
+  ShapeGradients dN;
   for (const Facet& facet : part.facets) {
+    const CellType type = facet_type(mesh.cell_type(facet.cell));
     const auto fn = mesh.facet_nodes(facet);
+    const auto n = static_cast<int>(fn.size());
     const Point xa = mesh.point(fn[0]);
     const Point xb = mesh.point(fn[1]);
-    const double length = (xb - xa).norm();
-    // The part of the facet inside the box, t in [t0, t1] along it (all of it without a box).
-    double t0 = 0.0, t1 = 1.0;
+    // The part of the facet inside the box, reference coordinate s in [s0, s1] (all of it
+    // without a box). Clipping is done on the chord, which is the facet for straight ones.
+    double s0 = -1.0, s1 = 1.0;
     if (!whole) {
+      if (type == CellType::Line3) {
+        const Point mid = mesh.point(fn[2]);
+        if ((mid - 0.5 * (xa + xb)).norm() > 1e-10 * (xb - xa).norm())
+          throw InputError(what + ": a box on a boundary part with curved quadratic edges is not "
+                                  "supported; make the loaded part a boundary part of its own");
+      }
       const auto [c0, c1] = box.clip(xa, xb);
       if (!(c1 > c0)) continue;  // misses the box, or touches it at one point only
-      t0 = c0;
-      t1 = c1;
+      s0 = 2.0 * c0 - 1.0;
+      s1 = 2.0 * c1 - 1.0;
     }
-    for (const auto& q : rule) {
-      // Shape functions of the facet's end nodes at the Gauss point of [t0, t1]; on the whole
-      // facet exactly the paper's consistent rule, (1 -+ xi) / 2 with weight w |facet| / 2.
-      double na = 0.5 * (1.0 - q.x), nb = 0.5 * (1.0 + q.x);
-      if (!whole) {
-        nb = t0 + (t1 - t0) * nb;
-        na = 1.0 - nb;
+    for (const auto& q : gauss_legendre(gauss_points)) {
+      // The Gauss point of [s0, s1]; on the whole facet exactly the paper's consistent rule.
+      const Eigen::Vector3d s(whole ? q.x : s0 + 0.5 * (s1 - s0) * (q.x + 1.0), 0.0, 0.0);
+      shape_functions(type, s, N);
+      shape_gradients(type, s, dN);
+      Point x = Point::Zero();
+      Point dx = Point::Zero();  // dx/ds
+      for (int a = 0; a < n; ++a) {
+        x += N(a) * mesh.point(fn[static_cast<std::size_t>(a)]);
+        dx += dN(0, a) * mesh.point(fn[static_cast<std::size_t>(a)]);
       }
-      const Point x = na * xa + nb * xb;
       const Eigen::Vector3d pv = checked(p, x, dim, what);
-      const double weight = 0.5 * (t1 - t0) * length * q.w;
-      for (int k = 0; k < dim; ++k) {
-        f(fn[0] * dim + k) += na * pv(k) * weight;
-        f(fn[1] * dim + k) += nb * pv(k) * weight;
-      }
+      const double weight = 0.5 * (s1 - s0) * dx.norm() * q.w;
+      for (int a = 0; a < n; ++a)
+        for (int k = 0; k < dim; ++k)
+          f(fn[static_cast<std::size_t>(a)] * dim + k) += N(a) * pv(k) * weight;
     }
   }
 }
@@ -99,26 +109,25 @@ void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const Vecto
 void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,
                      const std::string& what) {
   require_supported_cells(mesh);
-  const auto rule = gauss_legendre(gauss_points);
+  ShapeValues N;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
-    Q1Coordinates X;
+    const CellType type = mesh.cell_type(c);
+    const CellCoordinates X = cell_coordinates(mesh, c);
     const auto nodes = mesh.cell(c);
-    for (int a = 0; a < 4; ++a) X.col(a) = mesh.node(nodes[static_cast<std::size_t>(a)]);
-    for (const auto& qx : rule)
-      for (const auto& qy : rule) {
-        const Eigen::Vector4d N = q1_shape(qx.x, qy.x);
-        const Eigen::Matrix2d J = q1_shape_gradients(qx.x, qy.x) * X.transpose();
-        const double det_j = J.determinant();
-        if (!(det_j > 0.0))
-          throw InputError("mesh cell " + std::to_string(c) +
-                           ": inverted or degenerate quadrilateral");
-        Point x = Point::Zero();
-        x.head<2>() = X * N;
-        const Eigen::Vector3d fv = checked(force, x, 2, what);
-        for (int a = 0; a < 4; ++a)
-          for (int k = 0; k < 2; ++k)
-            f(nodes[static_cast<std::size_t>(a)] * 2 + k) += N(a) * fv(k) * det_j * qx.w * qy.w;
-      }
+    for (const QuadraturePoint& q : cell_quadrature(type, gauss_points)) {
+      shape_functions(type, q.xi, N);
+      const double det_j = cell_jacobian(type, X, q.xi).determinant();
+      if (!(det_j > 0.0))
+        throw InputError("mesh cell " + std::to_string(c) + ": inverted or degenerate " +
+                         std::string(enum_to_string(kCellTypeNames, type)) +
+                         " (det J = " + std::to_string(det_j) + " at a quadrature point)");
+      Point x = Point::Zero();
+      x.head<2>() = X * N;
+      const Eigen::Vector3d fv = checked(force, x, 2, what);
+      for (Index a = 0; a < N.size(); ++a)
+        for (int k = 0; k < 2; ++k)
+          f(nodes[static_cast<std::size_t>(a)] * 2 + k) += N(a) * fv(k) * det_j * q.w;
+    }
   }
 }
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "signorini/fem/q1_element.hpp"
+#include "signorini/fem/isoparametric_element.hpp"
 
 namespace signorini {
 
@@ -13,34 +13,36 @@ double von_mises_stress(double sxx, double syy, double szz, double sxy) {
 }
 
 NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, const Vector& u_full) {
+  require_supported_cells(mesh);
   const Eigen::Matrix3d D = plane_elasticity_matrix(options.material, options.plane_model);
   const double nu = options.material.nu;
   const bool plane_strain = options.plane_model == PlaneModel::PlaneStrain;
   NodalStress out;
   out.sigma = Eigen::MatrixXd::Zero(4, mesh.num_nodes());
   Vector count = Vector::Zero(mesh.num_nodes());
-  constexpr double kXi[4] = {-1.0, 1.0, 1.0, -1.0};
-  constexpr double kEta[4] = {-1.0, -1.0, 1.0, 1.0};
+  ElementVector ue;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const CellType type = mesh.cell_type(c);
     const auto nodes = mesh.cell(c);
-    Q1Coordinates X;
-    Eigen::Matrix<double, 8, 1> ue;
-    for (int a = 0; a < 4; ++a) {
-      const Index n = nodes[static_cast<std::size_t>(a)];
-      X.col(a) = mesh.node(n);
-      ue(2 * a) = u_full(2 * n);
-      ue(2 * a + 1) = u_full(2 * n + 1);
+    const auto n = static_cast<int>(nodes.size());
+    const CellCoordinates X = cell_coordinates(mesh, c);
+    ue.resize(2 * n);
+    for (int a = 0; a < n; ++a) {
+      const Index v = nodes[static_cast<std::size_t>(a)];
+      ue(2 * a) = u_full(2 * v);
+      ue(2 * a + 1) = u_full(2 * v + 1);
     }
-    for (int a = 0; a < 4; ++a) {
+    // The strain of the cell at each of its nodes (the cell's own polynomial, not a recovery).
+    for (int a = 0; a < n; ++a) {
       double det_j = 0.0;
-      const Q1Strain B = q1_strain_matrix(X, kXi[a], kEta[a], det_j);
+      const StrainMatrix B = strain_matrix(type, X, reference_node(type, a), det_j);
       const Eigen::Vector3d s = D * (B * ue);
-      const Index n = nodes[static_cast<std::size_t>(a)];
-      out.sigma(0, n) += s(0);
-      out.sigma(1, n) += s(1);
-      out.sigma(2, n) += plane_strain ? nu * (s(0) + s(1)) : 0.0;
-      out.sigma(3, n) += s(2);
-      count(n) += 1.0;
+      const Index v = nodes[static_cast<std::size_t>(a)];
+      out.sigma(0, v) += s(0);
+      out.sigma(1, v) += s(1);
+      out.sigma(2, v) += plane_strain ? nu * (s(0) + s(1)) : 0.0;
+      out.sigma(3, v) += s(2);
+      count(v) += 1.0;
     }
   }
   out.von_mises.resize(mesh.num_nodes());

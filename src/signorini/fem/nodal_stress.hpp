@@ -13,7 +13,7 @@ struct NodalStress {
   Vector von_mises;  ///< num_nodes
 };
 
-/// Evaluates the strain of every cell at its corners from the full displacement vector
+/// Evaluates the strain of every cell at each of its nodes from the full displacement vector
 /// (num_dofs, node-major), converts it to stress and averages at each node.
 NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, const Vector& u_full);
 

@@ -38,8 +38,8 @@ std::string solution_vtu(const ContactResult& result, const Model& model, const 
   const Vector u = model.dofs.expand(result.u);  // clamped dofs are 0
 
   VtuFile vtu(mesh.coordinates());
-  const VtkCellType type = vtk_cell_type(mesh.cell_type());
-  for (Index c = 0; c < mesh.num_cells(); ++c) vtu.add_cell(type, mesh.cell(c));
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    vtu.add_cell(vtk_cell_type(mesh.cell_type(c)), mesh.cell(c));
 
   vtu.add_point_data("displacement", 3, displacement_xyz(u, n), {"X", "Y", "Z"});
 
@@ -90,7 +90,8 @@ std::string contact_vtu(const ContactResult& result, const Model& model) {
   VtuFile vtu(points);
   // The facets of the contact set itself, so that contact.vtu shows the boundary the solver used
   // (also for a contact set not made from spec.contact).
-  for (const std::vector<Index>& facet : c.facets) vtu.add_cell(VtkCellType::Line, facet);
+  for (const std::vector<Index>& facet : c.facets)
+    vtu.add_cell(facet.size() == 3 ? VtkCellType::QuadraticEdge : VtkCellType::Line, facet);
 
   std::vector<double> displacement(static_cast<std::size_t>(3 * m), 0.0);
   std::vector<double> normal(static_cast<std::size_t>(3 * m), 0.0);

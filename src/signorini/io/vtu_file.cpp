@@ -45,16 +45,47 @@ std::string xml_escaped(const std::string& text) {
 
 VtkCellType vtk_cell_type(CellType type) {
   switch (type) {
-    case CellType::Quad4:
-      return VtkCellType::Quad;
+    case CellType::Line2:
+      return VtkCellType::Line;
+    case CellType::Line3:
+      return VtkCellType::QuadraticEdge;
     case CellType::Tri3:
       return VtkCellType::Triangle;
-    case CellType::Hex8:
-      return VtkCellType::Hexahedron;
+    case CellType::Tri6:
+      return VtkCellType::QuadraticTriangle;
+    case CellType::Quad4:
+      return VtkCellType::Quad;
+    case CellType::Quad8:
+      return VtkCellType::QuadraticQuad;
+    case CellType::Quad9:
+      return VtkCellType::BiquadraticQuad;
     case CellType::Tet4:
       return VtkCellType::Tetra;
+    case CellType::Hex8:
+      return VtkCellType::Hexahedron;
   }
   return VtkCellType::Quad;
+}
+
+int vtk_points_per_cell(VtkCellType type) {
+  switch (type) {
+    case VtkCellType::Line:
+      return 2;
+    case VtkCellType::Triangle:
+    case VtkCellType::QuadraticEdge:
+      return 3;
+    case VtkCellType::Quad:
+    case VtkCellType::Tetra:
+      return 4;
+    case VtkCellType::QuadraticTriangle:
+      return 6;
+    case VtkCellType::Hexahedron:
+    case VtkCellType::QuadraticQuad:
+      return 8;
+    case VtkCellType::BiquadraticQuad:
+      return 9;
+  }
+  return 0;
 }
 
 VtuFile::VtuFile(const Eigen::MatrixXd& points) : num_points_(points.cols()) {
@@ -66,6 +97,11 @@ VtuFile::VtuFile(const Eigen::MatrixXd& points) : num_points_(points.cols()) {
 }
 
 void VtuFile::add_cell(VtkCellType type, std::span<const Index> points) {
+  if (static_cast<int>(points.size()) != vtk_points_per_cell(type))
+    throw std::invalid_argument("VtuFile: a cell of VTK type " +
+                                std::to_string(static_cast<int>(type)) + " has " +
+                                std::to_string(vtk_points_per_cell(type)) + " points, got " +
+                                std::to_string(points.size()));
   for (const Index p : points) {
     if (p < 0 || p >= num_points_)
       throw std::invalid_argument("VtuFile: point number out of range");

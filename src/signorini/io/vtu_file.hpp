@@ -22,9 +22,15 @@ enum class VtkCellType : std::uint8_t {
   Quad = 9,
   Tetra = 10,
   Hexahedron = 12,
+  QuadraticEdge = 21,
+  QuadraticTriangle = 22,
+  QuadraticQuad = 23,
+  BiquadraticQuad = 28,
 };
 
 VtkCellType vtk_cell_type(CellType type);
+/// The number of points of a VTK cell of this type.
+int vtk_points_per_cell(VtkCellType type);
 
 class VtuFile {
  public:

@@ -7,20 +7,56 @@
 namespace signorini {
 
 Mesh::Mesh(CellType type, Eigen::MatrixXd coordinates, std::vector<Index> connectivity)
-    : type_(type), coordinates_(std::move(coordinates)), connectivity_(std::move(connectivity)) {
-  if (coordinates_.rows() != cell_dimension(type_))
-    throw InputError("mesh: coordinates have " + std::to_string(coordinates_.rows()) +
-                     " rows, expected the cell dimension " + std::to_string(cell_dimension(type_)));
-  if (connectivity_.size() % static_cast<std::size_t>(nodes_per_cell()) != 0)
+    : coordinates_(std::move(coordinates)), connectivity_(std::move(connectivity)) {
+  const auto per_cell = static_cast<std::size_t>(nodes_per_cell(type));
+  if (connectivity_.size() % per_cell != 0)
     throw InputError("mesh: connectivity length is not a multiple of the nodes per cell");
+  types_.assign(connectivity_.size() / per_cell, type);
+  check();
+}
+
+Mesh::Mesh(std::vector<CellType> types, Eigen::MatrixXd coordinates,
+           std::vector<Index> connectivity)
+    : types_(std::move(types)),
+      coordinates_(std::move(coordinates)),
+      connectivity_(std::move(connectivity)) {
+  check();
+}
+
+void Mesh::check() {
+  offsets_.resize(types_.size() + 1);
+  offsets_[0] = 0;
+  for (std::size_t c = 0; c < types_.size(); ++c) {
+    const CellType t = types_[c];
+    if (cell_dimension(t) != dim())
+      throw InputError("mesh: cell " + std::to_string(c) + " is a " +
+                       std::string(enum_to_string(kCellTypeNames, t)) + " (dimension " +
+                       std::to_string(cell_dimension(t)) + "), but the coordinates have " +
+                       std::to_string(dim()) + " rows, expected the cell dimension");
+    offsets_[c + 1] = offsets_[c] + nodes_per_cell(t);
+    max_nodes_per_cell_ = std::max(max_nodes_per_cell_, nodes_per_cell(t));
+  }
+  if (offsets_.back() != static_cast<Index>(connectivity_.size()))
+    throw InputError("mesh: the connectivity has " + std::to_string(connectivity_.size()) +
+                     " node numbers, expected " + std::to_string(offsets_.back()) +
+                     " for the cell types given");
   for (const Index n : connectivity_)
     if (n < 0 || n >= num_nodes())
       throw InputError("mesh: cell refers to node " + std::to_string(n) + ", expected 0.." +
                        std::to_string(num_nodes() - 1));
 }
 
+std::vector<CellType> Mesh::cell_types() const {
+  std::vector<bool> seen(kCellTypeNames.size(), false);
+  for (const CellType t : types_) seen[static_cast<std::size_t>(t)] = true;
+  std::vector<CellType> out;
+  for (std::size_t k = 0; k < seen.size(); ++k)
+    if (seen[k]) out.push_back(static_cast<CellType>(k));
+  return out;
+}
+
 std::vector<Index> Mesh::facet_nodes(const Facet& f) const {
-  const auto local = facet_local_nodes(type_, f.local);
+  const auto local = facet_local_nodes(cell_type(f.cell), f.local);
   const auto nodes = cell(f.cell);
   std::vector<Index> out;
   out.reserve(local.size());
@@ -30,7 +66,7 @@ std::vector<Index> Mesh::facet_nodes(const Facet& f) const {
 
 void Mesh::set_boundary_part(std::string name, std::vector<Facet> facets) {
   for (const Facet& f : facets)
-    if (f.cell < 0 || f.cell >= num_cells() || f.local < 0 || f.local >= facets_per_cell(type_))
+    if (f.cell < 0 || f.cell >= num_cells() || f.local < 0 || f.local >= facets_per_cell(cell_type(f.cell)))
       throw InputError("mesh: boundary part '" + name + "' names facet (" + std::to_string(f.cell) +
                        ", " + std::to_string(f.local) + "), which does not exist");
   BoundaryPart part{name, std::move(facets)};

@@ -1,0 +1,211 @@
+#include "signorini/fem/reference_element.hpp"
+
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "signorini/core/error.hpp"
+#include "signorini/fem/quadrature.hpp"
+
+namespace signorini {
+
+namespace {
+
+// Quadrilateral nodes: corners, mid-edge nodes (edges 0-1, 1-2, 2-3, 3-0), centre.
+constexpr std::array<double, 9> kQuadXi{-1.0, 1.0, 1.0, -1.0, 0.0, 1.0, 0.0, -1.0, 0.0};
+constexpr std::array<double, 9> kQuadEta{-1.0, -1.0, 1.0, 1.0, -1.0, 0.0, 1.0, 0.0, 0.0};
+// Triangle nodes: corners, then the mid-edge nodes of edges 0-1, 1-2, 2-0.
+constexpr std::array<double, 6> kTriXi{0.0, 1.0, 0.0, 0.5, 0.5, 0.0};
+constexpr std::array<double, 6> kTriEta{0.0, 0.0, 1.0, 0.0, 0.5, 0.5};
+// Line nodes: the two ends, then the middle.
+constexpr std::array<double, 3> kLineXi{-1.0, 1.0, 0.0};
+
+// The 1D quadratic Lagrange polynomials on {-1, 0, 1}: l(s) for the node at p, and l'(s).
+double lagrange2(double p, double s) {
+  if (p < -0.5) return 0.5 * s * (s - 1.0);
+  if (p > 0.5) return 0.5 * s * (s + 1.0);
+  return 1.0 - s * s;
+}
+double lagrange2_derivative(double p, double s) {
+  if (p < -0.5) return s - 0.5;
+  if (p > 0.5) return s + 0.5;
+  return -2.0 * s;
+}
+
+}  // namespace
+
+bool has_finite_element(CellType t) {
+  return cell_dimension(t) <= 2;
+}
+
+void require_finite_element(CellType t) {
+  if (!has_finite_element(t))
+    throw InputError("finite elements for cell type '" +
+                     std::string(enum_to_string(kCellTypeNames, t)) +
+                     "' are not implemented yet (2D: tri3, tri6, quad4, quad8, quad9)");
+}
+
+void shape_functions(CellType t, const Eigen::Vector3d& x, ShapeValues& N) {
+  const double xi = x(0), eta = x(1);
+  N.resize(nodes_per_cell(t));
+  switch (t) {
+    case CellType::Line2:
+      N << 0.5 * (1.0 - xi), 0.5 * (1.0 + xi);
+      return;
+    case CellType::Line3:
+      for (int a = 0; a < 3; ++a) N(a) = lagrange2(kLineXi[a], xi);
+      return;
+    case CellType::Tri3:
+      N << 1.0 - xi - eta, xi, eta;
+      return;
+    case CellType::Tri6: {
+      const double l0 = 1.0 - xi - eta, l1 = xi, l2 = eta;
+      N << l0 * (2.0 * l0 - 1.0), l1 * (2.0 * l1 - 1.0), l2 * (2.0 * l2 - 1.0), 4.0 * l0 * l1,
+          4.0 * l1 * l2, 4.0 * l2 * l0;
+      return;
+    }
+    case CellType::Quad4:
+      for (int a = 0; a < 4; ++a) N(a) = 0.25 * (1.0 + kQuadXi[a] * xi) * (1.0 + kQuadEta[a] * eta);
+      return;
+    case CellType::Quad8:
+      for (int a = 0; a < 4; ++a) {
+        const double p = kQuadXi[a] * xi, q = kQuadEta[a] * eta;
+        N(a) = 0.25 * (1.0 + p) * (1.0 + q) * (p + q - 1.0);
+      }
+      for (int a = 4; a < 8; ++a)
+        N(a) = kQuadXi[a] == 0.0 ? 0.5 * (1.0 - xi * xi) * (1.0 + kQuadEta[a] * eta)
+                                 : 0.5 * (1.0 + kQuadXi[a] * xi) * (1.0 - eta * eta);
+      return;
+    case CellType::Quad9:
+      for (int a = 0; a < 9; ++a) N(a) = lagrange2(kQuadXi[a], xi) * lagrange2(kQuadEta[a], eta);
+      return;
+    case CellType::Tet4:
+    case CellType::Hex8:
+      break;
+  }
+  require_finite_element(t);
+}
+
+void shape_gradients(CellType t, const Eigen::Vector3d& x, ShapeGradients& dN) {
+  const double xi = x(0), eta = x(1);
+  dN.resize(cell_dimension(t), nodes_per_cell(t));
+  switch (t) {
+    case CellType::Line2:
+      dN << -0.5, 0.5;
+      return;
+    case CellType::Line3:
+      for (int a = 0; a < 3; ++a) dN(0, a) = lagrange2_derivative(kLineXi[a], xi);
+      return;
+    case CellType::Tri3:
+      dN << -1.0, 1.0, 0.0, -1.0, 0.0, 1.0;
+      return;
+    case CellType::Tri6: {
+      const double l0 = 1.0 - xi - eta, l1 = xi, l2 = eta;
+      // d/dxi and d/deta with dl0 = (-1, -1), dl1 = (1, 0), dl2 = (0, 1).
+      dN << -(4.0 * l0 - 1.0), 4.0 * l1 - 1.0, 0.0, 4.0 * (l0 - l1), 4.0 * l2, -4.0 * l2,
+          -(4.0 * l0 - 1.0), 0.0, 4.0 * l2 - 1.0, -4.0 * l1, 4.0 * l1, 4.0 * (l0 - l2);
+      return;
+    }
+    case CellType::Quad4:
+      for (int a = 0; a < 4; ++a) {
+        dN(0, a) = 0.25 * kQuadXi[a] * (1.0 + kQuadEta[a] * eta);
+        dN(1, a) = 0.25 * kQuadEta[a] * (1.0 + kQuadXi[a] * xi);
+      }
+      return;
+    case CellType::Quad8:
+      for (int a = 0; a < 4; ++a) {
+        const double xa = kQuadXi[a], ya = kQuadEta[a];
+        const double p = xa * xi, q = ya * eta;
+        dN(0, a) = 0.25 * xa * (1.0 + q) * (2.0 * p + q);
+        dN(1, a) = 0.25 * ya * (1.0 + p) * (p + 2.0 * q);
+      }
+      for (int a = 4; a < 8; ++a) {
+        const double xa = kQuadXi[a], ya = kQuadEta[a];
+        if (xa == 0.0) {
+          dN(0, a) = -xi * (1.0 + ya * eta);
+          dN(1, a) = 0.5 * ya * (1.0 - xi * xi);
+        } else {
+          dN(0, a) = 0.5 * xa * (1.0 - eta * eta);
+          dN(1, a) = -eta * (1.0 + xa * xi);
+        }
+      }
+      return;
+    case CellType::Quad9:
+      for (int a = 0; a < 9; ++a) {
+        dN(0, a) = lagrange2_derivative(kQuadXi[a], xi) * lagrange2(kQuadEta[a], eta);
+        dN(1, a) = lagrange2(kQuadXi[a], xi) * lagrange2_derivative(kQuadEta[a], eta);
+      }
+      return;
+    case CellType::Tet4:
+    case CellType::Hex8:
+      break;
+  }
+  require_finite_element(t);
+}
+
+Eigen::Vector3d reference_node(CellType t, int a) {
+  if (a < 0 || a >= nodes_per_cell(t)) throw std::out_of_range("reference_node: no such node");
+  const auto k = static_cast<std::size_t>(a);
+  switch (t) {
+    case CellType::Line2:
+    case CellType::Line3:
+      return {kLineXi[k], 0.0, 0.0};
+    case CellType::Tri3:
+    case CellType::Tri6:
+      return {kTriXi[k], kTriEta[k], 0.0};
+    case CellType::Quad4:
+    case CellType::Quad8:
+    case CellType::Quad9:
+      return {kQuadXi[k], kQuadEta[k], 0.0};
+    case CellType::Tet4:
+    case CellType::Hex8:
+      break;
+  }
+  require_finite_element(t);
+  return Eigen::Vector3d::Zero();
+}
+
+std::vector<QuadraturePoint> cell_quadrature(CellType t, int quad4_points, int line_points) {
+  std::vector<QuadraturePoint> rule;
+  const auto tensor = [&rule](int n) {
+    const auto g = gauss_legendre(n);
+    for (const auto& qx : g)
+      for (const auto& qy : g) rule.push_back({{qx.x, qy.x, 0.0}, qx.w * qy.w});
+  };
+  switch (t) {
+    case CellType::Line2:
+    case CellType::Line3:
+      for (const auto& q : gauss_legendre(line_points)) rule.push_back({{q.x, 0.0, 0.0}, q.w});
+      return rule;
+    case CellType::Tri3:  // degree 2: the three edge-midpoint-interior points
+      for (const auto& [a, b] : {std::pair{1.0 / 6.0, 1.0 / 6.0}, std::pair{2.0 / 3.0, 1.0 / 6.0},
+                                 std::pair{1.0 / 6.0, 2.0 / 3.0}})
+        rule.push_back({{a, b, 0.0}, 1.0 / 6.0});
+      return rule;
+    case CellType::Tri6: {  // degree 4, 6 points (Dunavant 1985); weights sum to 1/2
+      constexpr double a1 = 0.445948490915965, w1 = 0.223381589678011;
+      constexpr double a2 = 0.091576213509771, w2 = 0.109951743655322;
+      for (const auto& [a, w] : {std::pair{a1, w1}, std::pair{a2, w2}}) {
+        const double b = 1.0 - 2.0 * a;
+        rule.push_back({{a, a, 0.0}, 0.5 * w});
+        rule.push_back({{b, a, 0.0}, 0.5 * w});
+        rule.push_back({{a, b, 0.0}, 0.5 * w});
+      }
+      return rule;
+    }
+    case CellType::Quad4:
+      tensor(quad4_points);
+      return rule;
+    case CellType::Quad8:
+    case CellType::Quad9:
+      tensor(3);
+      return rule;
+    case CellType::Tet4:
+    case CellType::Hex8:
+      break;
+  }
+  require_finite_element(t);
+  return rule;
+}
+
+}  // namespace signorini

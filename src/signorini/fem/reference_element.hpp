@@ -1,0 +1,55 @@
+#pragma once
+// The finite elements on their reference cells: shape functions, their derivatives, the
+// quadrature rule of each cell type and the reference coordinates of the nodes. Every element is
+// isoparametric (the geometry is mapped by the same shape functions), so that quadratic cells
+// follow curved boundaries. Reference cells: lines [-1, 1]; triangles (0,0), (1,0), (0,1);
+// quadrilaterals [-1, 1]^2. Node orders as in mesh/cell_type.hpp.
+//
+// Lagrange P1 (Tri3) and P2 (Tri6) triangles; bilinear Q1 (Quad4), serendipity (Quad8) and
+// biquadratic Q2 (Quad9) quadrilaterals; Line2 and Line3 for boundary integrals. 3D cells arrive
+// with their own issue.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "signorini/mesh/cell_type.hpp"
+
+namespace signorini {
+
+/// The most nodes of a cell that has a finite element here (Quad9).
+inline constexpr int kMaxElementNodes = 9;
+
+/// N_a at one reference point, a = 0 .. nodes - 1.
+using ShapeValues = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxElementNodes, 1>;
+/// dN_a / dxi_i: row i = reference coordinate, column a = node.
+using ShapeGradients =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, kMaxElementNodes>;
+
+/// A quadrature point of a reference cell, with its weight (the weights of a rule add up to
+/// the reference cell's measure: 2 for lines, 1/2 for triangles, 4 for quadrilaterals).
+struct QuadraturePoint {
+  Eigen::Vector3d xi = Eigen::Vector3d::Zero();
+  double w = 0.0;
+};
+
+/// Whether shape functions exist for cells of this type.
+bool has_finite_element(CellType t);
+/// Throws InputError naming the type and the ones available unless has_finite_element(t).
+void require_finite_element(CellType t);
+
+/// N_a(xi).
+void shape_functions(CellType t, const Eigen::Vector3d& xi, ShapeValues& N);
+/// dN_a/dxi (cell_dimension(t) rows).
+void shape_gradients(CellType t, const Eigen::Vector3d& xi, ShapeGradients& dN);
+/// Reference coordinates of local node a.
+Eigen::Vector3d reference_node(CellType t, int a);
+
+/// The cell rule used for stiffness and body forces. Gauss rules of `quad4_points` per direction
+/// on Q1 quadrilaterals (2: the paper's 2x2 rule), 3x3 on quadratic quadrilaterals (exact for the
+/// stiffness of Q2 parallelograms), the 3-point degree-2 rule on P1 triangles and the 6-point
+/// degree-4 rule (Dunavant) on P2 triangles (exact for straight P2 stiffness, degree 2, with
+/// margin for curved cells and loads); Gauss rules of `line_points` on lines.
+std::vector<QuadraturePoint> cell_quadrature(CellType t, int quad4_points = 2,
+                                             int line_points = 2);
+
+}  // namespace signorini
