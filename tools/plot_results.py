@@ -669,13 +669,20 @@ def cells_and_outline(vtu):
     import numpy as np
 
     conn, offsets, types = vtu["connectivity"], vtu["offsets"], vtu["types"]
-    if len(types) and np.all(types == 9) and conn.size == 4 * len(types):
-        cells = conn.reshape(-1, 4)
-    elif len(types) and np.all(types == 5) and conn.size == 3 * len(types):
-        cells = conn.reshape(-1, 3)
+    # VTK cell type -> (points per cell, the points around its boundary in order): quadratic
+    # cells are drawn as polygons through their corner and mid-edge nodes, so that curved edges
+    # stay curved (a biquadratic quadrilateral's centre node is not drawn).
+    polygon = {5: (3, [0, 1, 2]), 9: (4, [0, 1, 2, 3]), 22: (6, [0, 3, 1, 4, 2, 5]),
+               23: (8, [0, 4, 1, 5, 2, 6, 3, 7]), 28: (9, [0, 4, 1, 5, 2, 6, 3, 7])}
+    kinds = set(int(t) for t in np.unique(types)) if len(types) else set()
+    if len(kinds) == 1 and next(iter(kinds)) in polygon and \
+            conn.size == polygon[next(iter(kinds))][0] * len(types):
+        count, order = polygon[next(iter(kinds))]
+        cells = conn.reshape(-1, count)[:, order]
     else:
         begins = np.concatenate([[0], offsets[:-1]])
-        cells = [conn[b:e] for b, e, kind in zip(begins, offsets, types) if kind in (5, 9)]
+        cells = [conn[b:e][polygon[int(kind)][1]] for b, e, kind in zip(begins, offsets, types)
+                 if int(kind) in polygon]
         if not cells:
             raise UsageError("solution.vtu has no triangles or quadrilaterals to draw")
     if isinstance(cells, list):

@@ -127,10 +127,10 @@ TEST(BadInput, NearlyIncompressibleMaterialIsAWarning) {
   const ToolRun r = check(dir, {"material.nu=0.495"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "signorini: warning: " + kFile +
-                       ": material.nu = 0.495 >= 0.45: nearly incompressible, and bilinear (Q1) "
-                       "elements lock: displacements come out too small and stresses near the "
-                       "contact oscillate; quadratic elements (planned) will avoid this, until "
-                       "then check against a finer mesh\n");
+                       ": material.nu = 0.495 >= 0.45: nearly incompressible, and linear elements "
+                       "(quad4) lock: displacements come out too small and stresses near the "
+                       "contact oscillate; use quadratic ones (mesh.cell = \"quad9\" or "
+                       "\"tri6\") or check against a finer mesh\n");
   // A solve warns as well, even with --quiet, and still solves.
   const ToolRun s = run_tool(dir, "solve " + quoted(kFile) + " -q --set material.nu=0.495 -o " +
                                       quoted((dir / "out").string()));

@@ -506,10 +506,10 @@ TEST(ProblemFileWarnings, NearlyIncompressibleMaterial) {
         parse_problem_string(with("nu = 0.277", std::string("nu = ") + nu), "t.toml");
     ASSERT_EQ(p.warnings.size(), 1U);
     EXPECT_EQ(p.warnings[0], std::string("t.toml: material.nu = ") + nu +
-                                 " >= 0.45: nearly incompressible, and bilinear (Q1) elements "
+                                 " >= 0.45: nearly incompressible, and linear elements (quad4) "
                                  "lock: displacements come out too small and stresses near the "
-                                 "contact oscillate; quadratic elements (planned) will avoid "
-                                 "this, until then check against a finer mesh");
+                                 "contact oscillate; use quadratic ones (mesh.cell = \"quad9\" "
+                                 "or \"tri6\") or check against a finer mesh");
     EXPECT_EQ(p.spec.elasticity.material.nu, std::stod(nu));  // a warning, not an error
   }
 }

@@ -8,6 +8,15 @@
 
 namespace signorini {
 
+/// The cell types a rectangle can be made of (RectangleMeshOptions::cell).
+inline constexpr EnumNames<CellType, 5> kRectangleCellNames{{
+    {CellType::Quad4, "quad4"},
+    {CellType::Quad8, "quad8"},
+    {CellType::Quad9, "quad9"},
+    {CellType::Tri3, "tri3"},
+    {CellType::Tri6, "tri6"},
+}};
+
 struct RectangleMeshOptions {
   double x0 = 0.0;      ///< lower-left corner, x (m)
   double y0 = 0.0;      ///< lower-left corner, y (m)

@@ -77,15 +77,16 @@ void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec,
   const IsotropicMaterial& m = spec.elasticity.material;
   r.validated(m);
   check_options(r, t, material_options(), spec);
-  // Valid, but bilinear elements lock as nu approaches 1/2: the displacements and the stresses
+  // Valid, but linear elements lock as nu approaches 1/2: the displacements and the stresses
   // near the contact come out wrong by a factor that grows without bound (at nu = 0.49 the
   // stress under a contact peak overshoots the contact pressure by some 70 %), which the solver
-  // cannot detect.
-  if (m.nu >= 0.45)
+  // cannot detect. Quadratic elements lock far less (the mesh is read before the material).
+  if (m.nu >= 0.45 && cell_order(spec.mesh.cell) == 1)
     warnings.push_back(r.file() + ": material.nu = " + as_text(m.nu) +
-                       " >= 0.45: nearly incompressible, and bilinear (Q1) elements lock: "
-                       "displacements come out too small and stresses near the contact "
-                       "oscillate; quadratic elements (planned) will avoid this, until then "
+                       " >= 0.45: nearly incompressible, and linear elements (" +
+                       std::string(enum_to_string(kCellTypeNames, spec.mesh.cell)) +
+                       ") lock: displacements come out too small and stresses near the contact "
+                       "oscillate; use quadratic ones (mesh.cell = \"quad9\" or \"tri6\") or "
                        "check against a finer mesh");
 }
 
@@ -298,8 +299,9 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
 // A mesh that cannot fit is refused now rather than after minutes of assembly, or by the
 // out-of-memory killer.
 void check_memory(const Reader& r, const ProblemSpec& spec) {
-  const double nodes =
-      (static_cast<double>(spec.mesh.nx) + 1.0) * (static_cast<double>(spec.mesh.ny) + 1.0);
+  const double p = cell_order(spec.mesh.cell);  // quadratic cells: the lattice of half steps
+  const double nodes = (p * static_cast<double>(spec.mesh.nx) + 1.0) *
+                       (p * static_cast<double>(spec.mesh.ny) + 1.0);
   const double need = estimated_memory_bytes(nodes, spec.solver.linear.type);
   const double have = physical_memory_bytes();
   if (have > 0.0 && need > have)

@@ -16,7 +16,12 @@ namespace signorini {
 MultigridHierarchy make_model_hierarchy(const ProblemSpec& spec, const Mesh& mesh,
                                         const DofMap& dofs, const SparseMatrix& A) {
   const MultigridCoarsening asked = spec.solver.linear.coarsening;
-  if (asked == MultigridCoarsening::Aggregation)
+  if (spec.mesh.cell != CellType::Quad4 && asked == MultigridCoarsening::Geometric)
+    throw InputError(fmt::format(
+        "solver.linear.coarsening = \"geometric\" halves rectangles of quad4 cells, not {}; "
+        "use \"auto\" or \"aggregation\"",
+        enum_to_string(kCellTypeNames, spec.mesh.cell)));
+  if (asked == MultigridCoarsening::Aggregation || spec.mesh.cell != CellType::Quad4)
     return smoothed_aggregation_hierarchy(A, rigid_body_modes(mesh, dofs), free_dof_nodes(dofs));
 
   MultigridHierarchy h;
