@@ -125,8 +125,9 @@ const OptionTable<P>& fem_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("fem");
     t.integer("gauss_points", gauss_points, closed_interval(1.0, 5.0),
-              "Gauss points per direction in each cell (2: the paper's 2 x 2 rule, exact for the "
-              "Q1 stiffness of a parallelogram)");
+              "Gauss points per direction in each quad4 cell (2: the paper's 2 x 2 rule, exact for "
+              "the Q1 stiffness of a parallelogram); the other cells have their own rules: 3 x 3 "
+              "on quad8 and quad9, 3 points on tri3, 6 on tri6");
     t.integer("boundary_gauss_points", &P::boundary_gauss_points, closed_interval(1.0, 5.0),
               "Gauss points per boundary edge for the traction loads (integrated consistently, "
               "not lumped to nodes)");
