@@ -8,6 +8,7 @@
 // (find_package(signorini) and the target signorini::signorini).
 
 #include "signorini/config.hpp"
+#include "signorini/contact/contact_law.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/problem_file.hpp"

@@ -74,8 +74,8 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
                               k, st.residual);
       return o;
     }
-    // (ii) l^{k+1} = (l^k + rho ((N u)_j - g_j))_+
-    o.l = (l + rho * (c.N * x - c.gaps)).cwiseMax(0.0);
+    // (ii) l^{k+1} = P(l^k + rho ((N u)_j - g_j)), P(z) = z_+ for the paper's law
+    o.l = contact_law(options).project(l + rho * (c.N * x - c.gaps));
     for (Index j = 0; j < c.size(); ++j)
       if (!c.movable[static_cast<std::size_t>(j)]) o.l(j) = 0.0;
     rec.dual_change = relative_change(o.l, l);

@@ -259,7 +259,8 @@ ContactResult ContactSolver::solve() {
   s.kkt_tolerance = options.kkt_tolerance;
   s.kkt = kkt_residuals(problem, result.u, result.l);
   s.energy = 0.5 * result.u.dot(problem.A * result.u) - problem.b.dot(result.u);
-  s.lagrangian = ModifiedLagrangian::value(problem, *options.r, result.u, result.l);
+  s.lagrangian =
+      ModifiedLagrangian::value(problem, *options.r, result.u, result.l, contact_law(options));
   const ContactSet& c = problem.contact;
   s.contact_force = c.weights.dot(result.l);
   s.contact_force_vector = -(c.normals * c.weights.cwiseProduct(result.l));

@@ -94,6 +94,11 @@ void validate(const ContactSolverOptions& o) {
         "iterative; set solver.linear.type = \"cg\" (and solver.linear.preconditioner = "
         "\"multigrid\" for speed)",
         enum_to_string(kLinearSolverTypeNames, o.linear.type)));
+  if (o.method == ContactMethod::SemismoothNewton && &contact_law(o) != &unilateral_contact_law())
+    throw InputError(fmt::format(
+        "solver.method = \"semismooth_newton\" solves the unilateral contact law only, not "
+        "\"{}\"; use \"uzawa_gnm\"",
+        contact_law(o).name()));
   if (backend_path && o.method != ContactMethod::UzawaGnm)
     throw InputError(fmt::format("solver.method = \"{}\": the {} runs only \"uzawa_gnm\"",
                                  enum_to_string(kContactMethodNames, o.method),

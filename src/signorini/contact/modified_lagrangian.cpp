@@ -22,8 +22,9 @@ Index find_entry(const SparseMatrix& A, Index row, Index col) {
 }
 }  // namespace
 
-ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r)
-    : p_(problem), r_(r), l_(Vector::Zero(problem.contact.size())) {}
+ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r,
+                                       const ContactLaw& law)
+    : p_(problem), r_(r), law_(law), l_(Vector::Zero(problem.contact.size())) {}
 
 // Made at the first hessian(): only the host's sparse Newton systems need it, not the backend
 // path or the condensed problems' dense systems.
@@ -63,14 +64,15 @@ Vector ModifiedLagrangian::shifted_multipliers(const Vector& Nx) const {
 }
 
 ActiveSet ModifiedLagrangian::active_set(const Vector& Nx) const {
-  const Vector z = shifted_multipliers(Nx);
-  ActiveSet a(static_cast<std::size_t>(z.size()));
-  for (Index j = 0; j < z.size(); ++j) a[static_cast<std::size_t>(j)] = z(j) > 0.0;
-  return a;
+  return law_.active_set(shifted_multipliers(Nx));
+}
+
+Vector ModifiedLagrangian::updated_multipliers(const Vector& Nx) const {
+  return law_.project(shifted_multipliers(Nx));
 }
 
 Vector ModifiedLagrangian::contact_forces(const Vector& Nx) const {
-  return p_.contact.weights.cwiseProduct(shifted_multipliers(Nx).cwiseMax(0.0));
+  return p_.contact.weights.cwiseProduct(updated_multipliers(Nx));
 }
 
 Vector ModifiedLagrangian::gradient(const Vector& residual, const Vector& Nx) const {
@@ -118,28 +120,21 @@ double ModifiedLagrangian::phi_change(const Direction& dir, double t) const {
   for (Index j = 0; j < dir.z.size(); ++j) {
     const double z0 = dir.z(j);
     if (!std::isfinite(z0)) continue;  // non-movable node: no term
-    const double dz = t * r_ * dir.Nd(j);
-    const double z1 = z0 + dz;
-    double diff;  // (z1)_+^2 - (z0)_+^2
-    if (z0 > 0.0 && z1 > 0.0)
-      diff = dz * (z0 + z1);  // difference of squares, no cancellation
-    else
-      diff = std::max(z1, 0.0) * std::max(z1, 0.0) - std::max(z0, 0.0) * std::max(z0, 0.0);
+    const double diff = law_.penalty_change(z0, t * r_ * dir.Nd(j));  // P(z1)^2 - P(z0)^2
     penalty += p_.contact.weights(j) * diff;
   }
   return change + penalty / (2.0 * r_);
 }
 
 double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector& u,
-                                 const Vector& l) {
+                                 const Vector& l, const ContactLaw& law) {
   const Vector Nu = p.contact.N * u;
   double penalty = 0.0;
   for (Index j = 0; j < l.size(); ++j) {
     if (!p.contact.movable[static_cast<std::size_t>(j)]) continue;
-    const double shift = r * (Nu(j) - p.contact.gaps(j));
-    const double z = l(j) + shift;
-    // (z_+)^2 - l^2, as shift (z + l) where z > 0 so that it does not cancel near the solution.
-    const double diff = z > 0.0 ? shift * (z + l(j)) : -l(j) * l(j);
+    // P(l + shift)^2 - P(l)^2 with P(l) = l (l >= 0): (z_+)^2 - l^2, without cancellation near
+    // the solution.
+    const double diff = law.penalty_change(l(j), r * (Nu(j) - p.contact.gaps(j)));
     penalty += p.contact.weights(j) * diff;
   }
   return 0.5 * u.dot(p.A * u) - p.b.dot(u) + penalty / (2.0 * r);

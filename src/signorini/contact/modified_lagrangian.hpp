@@ -6,18 +6,20 @@
 
 #include <vector>
 
+#include "signorini/contact/contact_law.hpp"
 #include "signorini/contact/contact_problem.hpp"
 
 namespace signorini {
-
-/// Which contact nodes are active: z_j = l_j + r ((N x)_j - g_j) > 0 (method.md section 4).
-using ActiveSet = std::vector<bool>;
 
 Index count_active(const ActiveSet& active);
 
 class ModifiedLagrangian {
  public:
-  ModifiedLagrangian(const ContactProblem& problem, double r);
+  /// `law` gives P, its derivative and the penalty change per node (contact_law.hpp); it must
+  /// outlive this object.
+  ModifiedLagrangian(const ContactProblem& problem, double r,
+                     const ContactLaw& law = unilateral_contact_law());
+  [[nodiscard]] const ContactLaw& law() const { return law_; }
 
   /// Sets the multipliers l (fixed during one GNM minimisation). Non-movable nodes keep l_j = 0.
   void set_multipliers(const Vector& l);
@@ -27,11 +29,13 @@ class ModifiedLagrangian {
   /// z = l + r (N x - g); non-movable nodes get -infinity (never active).
   [[nodiscard]] Vector shifted_multipliers(const Vector& Nx) const;
   [[nodiscard]] ActiveSet active_set(const Vector& Nx) const;
+  /// P(z): the multipliers of Uzawa's step (ii) at x (non-movable nodes 0).
+  [[nodiscard]] Vector updated_multipliers(const Vector& Nx) const;
 
   /// G(x) = A x - b + N^T (h z_+): the gradient of Phi, from the residual A x - b (which GNM
   /// keeps up to date with one product A d per step instead of forming A x again).
   [[nodiscard]] Vector gradient(const Vector& residual, const Vector& Nx) const;
-  /// h z_+ (n_c values): the contact part of G, G = (A x - b) + N^T (h z_+).
+  /// h P(z) (n_c values): the contact part of G, G = (A x - b) + N^T (h P(z)).
   [[nodiscard]] Vector contact_forces(const Vector& Nx) const;
   /// Writes H = A + r N^T diag(h on the active set) N into `H`, which must have A's pattern
   /// (the node blocks of contact nodes are in it), so one symbolic analysis serves every H.
@@ -58,11 +62,13 @@ class ModifiedLagrangian {
 
   /// M(u, l) = J(u) + 1/(2r) sum_j h_j (((l_j + r ((N u)_j - g_j))_+)^2 - l_j^2), equation (10).
   [[nodiscard]] static double value(const ContactProblem& problem, double r, const Vector& u,
-                                    const Vector& l);
+                                    const Vector& l,
+                                    const ContactLaw& law = unilateral_contact_law());
 
  private:
   const ContactProblem& p_;
   double r_;
+  const ContactLaw& law_;
   Vector l_;
   // For each contact node j: positions in A's value array of its node block and nu_a nu_b there.
   [[nodiscard]] const std::vector<std::vector<std::pair<Index, double>>>& block_entries() const;

@@ -17,7 +17,7 @@ namespace signorini {
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
                               const MethodStart& start) {
   ContactResult out;
-  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
+  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
   const auto system = make_newton_system(problem, phi, options.linear);
   HostNewtonSpace space(problem, *system, start.displacement(problem.A.rows()));
   run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.size()), out);
@@ -40,7 +40,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   }
   BackendNewtonSpace space(problem, options, multigrid, *backend, timings,
                            start.displacement(problem.A.rows()));
-  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
+  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
   run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.size()), out);
   {
     ScopedTimer t(timings, "device download");

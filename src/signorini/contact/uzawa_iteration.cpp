@@ -30,8 +30,9 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
       o.message = g.message;
       return o;
     }
-    // Step (ii): l^{k+1} = (l^k + r ((N x)_j - g_j))_+, non-movable nodes stay at 0.
-    o.l = phi.shifted_multipliers(space.contact_values()).cwiseMax(0.0);
+    // Step (ii): l^{k+1} = P(l^k + r ((N x)_j - g_j)), P(z) = z_+ for the paper's law;
+    // non-movable nodes stay at 0.
+    o.l = phi.updated_multipliers(space.contact_values());
     rec.dual_change = relative_change(o.l, l);
     rec.active_set_size = (o.l.array() > 0.0).count();
     if (rec.dual_change < options.uzawa_tolerance) {

@@ -1,0 +1,52 @@
+#pragma once
+// The contact law: the per-node nonlinearity of the modified Lagrangian, kept apart from the loops
+// that use it. For a node j with shifted multiplier z_j = l_j + r ((N x)_j - g_j) (method.md
+// section 2) a law gives
+//   - the projection P(z), which is the multiplier update of Uzawa's step (ii) (13), the contact
+//     force h P(z) in the gradient G of (16), and the classical Uzawa update;
+//   - the generalised derivative of P (whether the node is active), which makes the Newton
+//     matrix H = A + r N^T diag(h on the active set) N of (17);
+//   - the change P(z0 + dz)^2 - P(z0)^2 of the penalty term of Phi (16) and M (10), without
+//     cancellation, for the Armijo rule and the reported M.
+// Frictionless unilateral contact (the paper's) has P(z) = max(z, 0). Friction laws (Tresca,
+// Coulomb) project a normal-and-tangential z onto their admissible set instead: they are new
+// ContactLaw classes with more components per node, not new loops.
+
+#include <string_view>
+#include <vector>
+
+#include "signorini/core/types.hpp"
+
+namespace signorini {
+
+/// Which contact nodes are active: the generalised derivative of P is 1 there (method.md
+/// section 4).
+using ActiveSet = std::vector<bool>;
+
+class ContactLaw {
+ public:
+  virtual ~ContactLaw() = default;
+  [[nodiscard]] virtual std::string_view name() const = 0;
+  /// P(z_j) for every node; a non-finite z_j (a node that cannot move, method.md section 4) gives
+  /// 0.
+  [[nodiscard]] virtual Vector project(const Vector& z) const = 0;
+  /// Where the generalised derivative of P is 1.
+  [[nodiscard]] virtual ActiveSet active_set(const Vector& z) const = 0;
+  /// P(z0 + dz)^2 - P(z0)^2 for one node, evaluated without cancellation where both are active
+  /// (as dz (z0 + z1)).
+  [[nodiscard]] virtual double penalty_change(double z0, double dz) const = 0;
+};
+
+/// P(z) = max(z, 0): frictionless unilateral (Signorini) contact.
+class UnilateralContactLaw final : public ContactLaw {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "unilateral"; }
+  [[nodiscard]] Vector project(const Vector& z) const override;
+  [[nodiscard]] ActiveSet active_set(const Vector& z) const override;
+  [[nodiscard]] double penalty_change(double z0, double dz) const override;
+};
+
+/// The law of the paper's problem, shared (it has no state).
+const ContactLaw& unilateral_contact_law();
+
+}  // namespace signorini
