@@ -27,16 +27,9 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
   }
   ScopedTimer t(timings_, "condensation setup");
   const auto nm = static_cast<Index>(normal_dofs_.size());
-  // S as a sparse matrix with every entry stored, so that the generic solvers apply to it.
-  const Eigen::MatrixXd& S = schur_->matrix();
-  reduced_.A.resize(nm, nm);
-  reduced_.A.resizeNonZeros(nm * nm);  // compressed, filled directly: column-major like S
-  for (Index col = 0; col <= nm; ++col)
-    reduced_.A.outerIndexPtr()[col] = static_cast<int>(col * nm);
-  for (Index col = 0; col < nm; ++col)
-    for (Index row = 0; row < nm; ++row)
-      reduced_.A.innerIndexPtr()[col * nm + row] = static_cast<int>(row);
-  std::copy(S.data(), S.data() + nm * nm, reduced_.A.valuePtr());
+  // S itself, a dense matrix with every entry stored (dense_storage.hpp), so that the generic
+  // methods apply to it and the dense Newton systems read it without a copy.
+  reduced_.A = schur_->release_matrix();
   reduced_.b = schur_->condensed_load(b_rotated);
 
   ContactSet& rc = reduced_.contact;

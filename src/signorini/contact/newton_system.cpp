@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "signorini/linalg/dense_cholesky_solver.hpp"
+#include "signorini/linalg/dense_storage.hpp"
 
 namespace signorini {
 
@@ -36,8 +37,13 @@ class SparseNewtonSystem final : public NewtonSystem {
 
 class DenseNewtonSystem final : public NewtonSystem {
  public:
+  // A condensed problem's matrix (every entry stored) is read where it is; any other is copied
+  // to a dense array once.
   DenseNewtonSystem(const ContactProblem& problem, double r)
-      : p_(problem), r_(r), A_(Eigen::MatrixXd(problem.A)), Nt_(problem.contact.N.transpose()) {}
+      : p_(problem),
+        r_(r),
+        A_(dense_data(problem.A, owned_), problem.A.rows(), problem.A.cols()),
+        Nt_(problem.contact.N.transpose()) {}
 
   void set_active(const ActiveSet& active) override {
     if (has_factor_ && active == current_) return;
@@ -64,13 +70,15 @@ class DenseNewtonSystem final : public NewtonSystem {
       }
     }
     if (!ok) {
-      Eigen::MatrixXd H = A_;
+      // H = A + sum_{j in P} v_j v_j^T, written into the solver's array and factorised there.
+      Eigen::MatrixXd& H = solver_.workspace(A_.rows());
+      H.triangularView<Eigen::Lower>() = A_;
       for (std::size_t j = 0; j < active.size(); ++j)
         if (active[j]) {
           const Vector v = node_vector(static_cast<Index>(j));
           H.selfadjointView<Eigen::Lower>().rankUpdate(v);
         }
-      solver_.factorize_dense(H);  // LLT reads the lower triangle
+      solver_.factorize_in_place();  // LLT reads the lower triangle
       ++factorizations_;
       updates_since_factorization_ = 0;
     }
@@ -89,9 +97,16 @@ class DenseNewtonSystem final : public NewtonSystem {
     return v;
   }
 
+  static const double* dense_data(const SparseMatrix& A, Eigen::MatrixXd& owned) {
+    if (is_dense_stored(A)) return A.valuePtr();
+    owned = Eigen::MatrixXd(A);
+    return owned.data();
+  }
+
   const ContactProblem& p_;
   double r_;
-  Eigen::MatrixXd A_;
+  Eigen::MatrixXd owned_;  // only for a matrix that is not dense-stored
+  Eigen::Map<const Eigen::MatrixXd> A_;
   SparseMatrix Nt_;
   DenseCholeskySolver solver_;
   ActiveSet current_;

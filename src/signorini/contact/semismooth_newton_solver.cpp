@@ -20,6 +20,7 @@
 #include <algorithm>
 
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/linalg/dense_storage.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/normal_rotation.hpp"
 #include "signorini/contact/outer_iteration.hpp"
@@ -107,7 +108,10 @@ class DelassusSolver final : public ActiveSetSolver {
   explicit DelassusSolver(const ContactProblem& p) : p_(p) {
     ScopedTimer t(timings_, "linear factorization");
     const ContactSet& c = p.contact;
-    const Eigen::LLT<Eigen::MatrixXd> llt{Eigen::MatrixXd(p.A)};
+    // W = S^-1 explicitly: the one method that needs the inverse (the Delassus operator).
+    const auto view = dense_view(p.A);
+    const Eigen::LLT<Eigen::MatrixXd> llt =
+        view ? Eigen::LLT<Eigen::MatrixXd>(*view) : Eigen::LLT<Eigen::MatrixXd>(Eigen::MatrixXd(p.A));
     if (llt.info() != Eigen::Success)
       throw NumericalError("dense Cholesky: matrix is not positive definite");
     W_ = llt.solve(Eigen::MatrixXd::Identity(p.A.rows(), p.A.cols()));

@@ -3,6 +3,7 @@
 #include <numeric>
 
 #include "signorini/linalg/detail/cholmod_matrix.hpp"
+#include "signorini/linalg/dense_storage.hpp"
 #include "signorini/linalg/fill_reducing_ordering.hpp"
 
 namespace signorini {
@@ -96,8 +97,10 @@ void SchurComplement::build(const SparseMatrix& A, SparseMatrix* owned) {
         }
       }
     }
-    S_.noalias() = Lcc.triangularView<Eigen::Lower>() * Lcc.transpose();
-    S_ = S_.selfadjointView<Eigen::Lower>();  // exactly symmetric
+    S_ = dense_stored_matrix(nc);
+    Eigen::Map<Eigen::MatrixXd> S(S_.valuePtr(), nc, nc);
+    S.noalias() = Lcc.triangularView<Eigen::Lower>() * Lcc.transpose();
+    S = S.selfadjointView<Eigen::Lower>();  // exactly symmetric
   }
 }
 

@@ -27,8 +27,11 @@ class SchurComplement {
   SchurComplement(const SchurComplement&) = delete;
   SchurComplement& operator=(const SchurComplement&) = delete;
 
-  /// S = A_CC - A_CI A_II^-1 A_IC, |C| x |C|, in the order of `last`.
-  [[nodiscard]] const Eigen::MatrixXd& matrix() const { return S_; }
+  /// S = A_CC - A_CI A_II^-1 A_IC, |C| x |C|, in the order of `last`: the one copy of S, a
+  /// dense matrix with every entry stored (linalg/dense_storage.hpp), formed once in place.
+  [[nodiscard]] const SparseMatrix& matrix() const { return S_; }
+  /// Hands S over (the condensed problem keeps it as its matrix); matrix() is empty afterwards.
+  [[nodiscard]] SparseMatrix release_matrix() { return std::move(S_); }
   /// The condensed load g = b_C - A_CI A_II^-1 b_I (one forward substitution, whose result is
   /// kept for solve_with_condensed_forces()).
   [[nodiscard]] Vector condensed_load(const Vector& b);
@@ -47,7 +50,7 @@ class SchurComplement {
   struct Impl;  // CHOLMOD's state; freed by its destructor, also when construction throws
   std::unique_ptr<Impl> impl_;
   Eigen::MatrixXd L_cc_;  // trailing block of the factor: S = L_cc L_cc^T
-  Eigen::MatrixXd S_;
+  SparseMatrix S_;
   std::vector<Index> last_;
   Vector forward_load_;  // z = L^-1 P b of the last condensed_load()
   mutable TimingTable timings_;
