@@ -66,6 +66,21 @@ class Mesh {
   /// Node numbers of a facet, in the orientation of facet_local_nodes().
   [[nodiscard]] std::vector<Index> facet_nodes(const Facet& f) const;
 
+  /// Names the cells' regions (Gmsh's physical surfaces, say): region_of_cell[c] indexes
+  /// `names`. Without a call every cell is in region 0, named "". Throws InputError on sizes or
+  /// indices that do not fit.
+  void set_cell_regions(std::vector<std::string> names, std::vector<int> region_of_cell);
+  [[nodiscard]] int cell_region(Index c) const {
+    return regions_.empty() ? 0 : regions_[static_cast<std::size_t>(c)];
+  }
+  [[nodiscard]] const std::vector<std::string>& region_names() const { return region_names_; }
+  /// The numbers the cells have in the file they were read from (Gmsh element tags), so that
+  /// messages name a cell as the user knows it; -1 where none was set.
+  void set_cell_source_tags(std::vector<Index> tags);
+  [[nodiscard]] Index cell_source_tag(Index c) const {
+    return source_tags_.empty() ? -1 : source_tags_[static_cast<std::size_t>(c)];
+  }
+
   /// Adds (or replaces) a named boundary part. Throws InputError if a facet does not exist.
   void set_boundary_part(std::string name, std::vector<Facet> facets);
   [[nodiscard]] bool has_boundary_part(std::string_view name) const;
@@ -84,6 +99,9 @@ class Mesh {
   std::vector<Index> offsets_;  // cell c: connectivity_[offsets_[c] .. offsets_[c + 1])
   int max_nodes_per_cell_ = 0;
   std::map<std::string, BoundaryPart, std::less<>> parts_;
+  std::vector<std::string> region_names_{""};
+  std::vector<int> regions_;        // per cell, or empty: all in region 0
+  std::vector<Index> source_tags_;  // per cell, or empty
 };
 
 }  // namespace signorini

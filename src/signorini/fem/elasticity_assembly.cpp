@@ -16,8 +16,10 @@ namespace {
 
 // "mesh cell 12 (quad4, nodes 3 4 9 8)": how errors name a cell.
 std::string cell_name(const Mesh& mesh, Index c) {
-  std::string s = "mesh cell " + std::to_string(c) + " (" +
-                  std::string(enum_to_string(kCellTypeNames, mesh.cell_type(c))) + ", nodes";
+  std::string s = "mesh cell " + std::to_string(c) + " (";
+  if (mesh.cell_source_tag(c) >= 0)
+    s += "element " + std::to_string(mesh.cell_source_tag(c)) + " of the mesh file, ";
+  s += std::string(enum_to_string(kCellTypeNames, mesh.cell_type(c))) + ", nodes";
   for (const Index n : mesh.cell(c)) s += " " + std::to_string(n);
   return s + ")";
 }

@@ -15,13 +15,12 @@ void require_2d(const Model& model, const char* file) {
     throw InputError(std::string(file) + ": only 2D problems can be written so far");
 }
 
-// (u_x, u_y, 0) per node, from the full node-major displacement.
-std::vector<double> displacement_xyz(const Vector& u_full, Index num_nodes) {
+// (u_x, u_y, u_z) per node (u_z = 0 in 2D), from the full node-major displacement.
+std::vector<double> displacement_xyz(const Vector& u_full, Index num_nodes, int dim) {
   std::vector<double> out(static_cast<std::size_t>(3 * num_nodes), 0.0);
-  for (Index n = 0; n < num_nodes; ++n) {
-    out[static_cast<std::size_t>(3 * n)] = u_full(2 * n);
-    out[static_cast<std::size_t>(3 * n + 1)] = u_full(2 * n + 1);
-  }
+  for (Index n = 0; n < num_nodes; ++n)
+    for (int k = 0; k < dim; ++k)
+      out[static_cast<std::size_t>(3 * n + k)] = u_full(dim * n + k);
   return out;
 }
 
@@ -41,7 +40,7 @@ std::string solution_vtu(const ContactResult& result, const Model& model, const 
   for (Index c = 0; c < mesh.num_cells(); ++c)
     vtu.add_cell(vtk_cell_type(mesh.cell_type(c)), mesh.cell(c));
 
-  vtu.add_point_data("displacement", 3, displacement_xyz(u, n), {"X", "Y", "Z"});
+  vtu.add_point_data("displacement", 3, displacement_xyz(u, n, mesh.dim()), {"X", "Y", "Z"});
 
   const NodalStress stress = nodal_stress(mesh, spec.elasticity, u);
   std::vector<double> tensor(static_cast<std::size_t>(6 * n), 0.0);  // YZ, XZ stay 0 in 2D

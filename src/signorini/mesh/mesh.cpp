@@ -64,6 +64,24 @@ std::vector<Index> Mesh::facet_nodes(const Facet& f) const {
   return out;
 }
 
+void Mesh::set_cell_regions(std::vector<std::string> names, std::vector<int> region_of_cell) {
+  if (static_cast<Index>(region_of_cell.size()) != num_cells())
+    throw InputError("mesh: " + std::to_string(region_of_cell.size()) + " cell regions for " +
+                     std::to_string(num_cells()) + " cells");
+  for (const int r : region_of_cell)
+    if (r < 0 || r >= static_cast<int>(names.size()))
+      throw InputError("mesh: cell region " + std::to_string(r) + " has no name");
+  region_names_ = std::move(names);
+  regions_ = std::move(region_of_cell);
+}
+
+void Mesh::set_cell_source_tags(std::vector<Index> tags) {
+  if (static_cast<Index>(tags.size()) != num_cells())
+    throw InputError("mesh: " + std::to_string(tags.size()) + " cell tags for " +
+                     std::to_string(num_cells()) + " cells");
+  source_tags_ = std::move(tags);
+}
+
 void Mesh::set_boundary_part(std::string name, std::vector<Facet> facets) {
   for (const Facet& f : facets)
     if (f.cell < 0 || f.cell >= num_cells() || f.local < 0 || f.local >= facets_per_cell(cell_type(f.cell)))

@@ -1,0 +1,33 @@
+#pragma once
+// Meshes from Gmsh's .msh files, formats 4.1 and 2.2, ASCII and binary, read by our own code (Gmsh
+// is GPL: the library is never linked; the `gmsh` program may make the files).
+//
+// What becomes what:
+//   - 2D elements (3- and 6-node triangles, 4-, 8- and 9-node quadrilaterals, mixed) are the
+//     cells, whether or not they are in a physical group; a cell in a physical surface gets that
+//     group's name as its region (the first group, if it is in several), others region "";
+//   - 2- and 3-node lines in a physical curve become a boundary part of that name, each line
+//     matched to the edge of the cell it bounds (and oriented with the cell: outward normal);
+//     lines in no physical group are ignored, as are points;
+//   - a physical group without a name in $PhysicalNames is named by its number ("3");
+//   - nodes are numbered 0, 1, ... in the order of their tags, leaving out nodes no cell uses;
+//   - cells that Gmsh made clockwise (a surface whose normal points to -z) are turned
+//     counterclockwise, the node order mirrored; a cell that is folded (det J of both signs) is
+//     left as it is and refused by the assembly, named by its element tag.
+// Errors (InputError) name the file and the line (ASCII) or byte offset (binary): an unsupported
+// element type, a node used but not defined, a line that is not an edge of any cell, a non-planar
+// 2D mesh, 3D elements, a truncated file or section.
+
+#include <filesystem>
+#include <string>
+
+#include "signorini/mesh/mesh.hpp"
+
+namespace signorini {
+
+/// Reads a .msh file. Throws InputError as above.
+Mesh read_gmsh_mesh(const std::filesystem::path& file);
+/// The same from the text of a file (`name` for messages).
+Mesh parse_gmsh_mesh(const std::string& content, const std::string& name);
+
+}  // namespace signorini

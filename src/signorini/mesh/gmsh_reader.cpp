@@ -1,0 +1,618 @@
+#include "signorini/mesh/gmsh_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <unordered_map>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+namespace {
+
+// Gmsh element types: nodes per element (0: unknown to us), for types 1..31.
+constexpr std::array<int, 32> kGmshNodes{0, 2, 3, 4, 4,  8,  6,  5,  3,  6,  9,  10, 27, 18, 14, 1,
+                                         8, 20, 15, 13, 9, 10, 12, 15, 15, 21, 4, 5, 6, 20, 35, 56};
+
+// Nodes of the largest cell we read (Quad9): the length of the cells' sort keys.
+constexpr std::size_t kMaxSortKey = 9;
+
+int gmsh_nodes(int type) {
+  return type >= 1 && type < static_cast<int>(kGmshNodes.size())
+             ? kGmshNodes[static_cast<std::size_t>(type)]
+             : 0;
+}
+
+// The cell or facet type of a Gmsh element type we read; nullopt for others.
+std::optional<CellType> cell_type_of(int gmsh_type) {
+  switch (gmsh_type) {
+    case 1:
+      return CellType::Line2;
+    case 8:
+      return CellType::Line3;
+    case 2:
+      return CellType::Tri3;
+    case 9:
+      return CellType::Tri6;
+    case 3:
+      return CellType::Quad4;
+    case 16:
+      return CellType::Quad8;
+    case 10:
+      return CellType::Quad9;
+    default:
+      return std::nullopt;
+  }
+}
+
+bool is_3d_type(int t) {
+  return (t >= 4 && t <= 7) || (t >= 11 && t <= 14) || (t >= 17 && t <= 19) || t >= 29;
+}
+
+// One element as read: its Gmsh type and tag, the physical groups it is in, its node tags.
+struct RawElements {
+  std::vector<int> types;
+  std::vector<Index> tags;
+  std::vector<std::vector<int>> physicals;
+  std::vector<Index> offsets{0};
+  std::vector<Index> nodes;
+  std::vector<std::size_t> positions;  // where in the file (for messages)
+};
+
+class Reader {
+ public:
+  Reader(const std::string& s, std::string name) : s_(s), name_(std::move(name)) {}
+
+  [[noreturn]] void fail(const std::string& what) const { fail_at(pos_, what); }
+  [[noreturn]] void fail_at(std::size_t pos, const std::string& what) const {
+    if (binary_ && pos > binary_start_)
+      throw InputError(name_ + ": byte " + std::to_string(pos) + ": " + what);
+    const auto line = 1 + std::count(s_.begin(), s_.begin() + static_cast<std::ptrdiff_t>(
+                                                               std::min(pos, s_.size())),
+                                     '\n');
+    throw InputError(name_ + ":" + std::to_string(line) + ": " + what);
+  }
+
+  [[nodiscard]] std::size_t pos() const { return pos_; }
+  [[nodiscard]] bool at_end() {
+    skip_space();
+    return pos_ >= s_.size();
+  }
+  void set_binary(bool b) {
+    binary_ = b;
+    binary_start_ = pos_;
+  }
+  [[nodiscard]] bool binary() const { return binary_; }
+
+  // Up to and including the end of the current line: where binary data starts (skip_space could
+  // eat bytes of the data that happen to look like white space).
+  void skip_newline() {
+    while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+    if (pos_ < s_.size()) ++pos_;
+  }
+  void skip_space() {
+    while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+  }
+  // The next whitespace-separated word.
+  std::string word(const char* what) {
+    skip_space();
+    if (pos_ >= s_.size()) fail(std::string("file ends where ") + what + " was expected (truncated?)");
+    const std::size_t b = pos_;
+    while (pos_ < s_.size() && !std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+    return s_.substr(b, pos_ - b);
+  }
+  long long integer(const char* what) {
+    skip_space();
+    if (pos_ >= s_.size()) fail(std::string("file ends where ") + what + " was expected (truncated?)");
+    const char* b = s_.c_str() + pos_;
+    char* e = nullptr;
+    const long long v = std::strtoll(b, &e, 10);
+    if (e == b || (*e != '\0' && !std::isspace(static_cast<unsigned char>(*e))))
+      fail(std::string("expected ") + what + " (an integer), found '" + peek_word() + "'");
+    pos_ += static_cast<std::size_t>(e - b);
+    return v;
+  }
+  double real(const char* what) {
+    skip_space();
+    if (pos_ >= s_.size()) fail(std::string("file ends where ") + what + " was expected (truncated?)");
+    const char* b = s_.c_str() + pos_;
+    char* e = nullptr;
+    const double v = std::strtod(b, &e);
+    if (e == b) fail(std::string("expected ") + what + " (a number), found '" + peek_word() + "'");
+    pos_ += static_cast<std::size_t>(e - b);
+    return v;
+  }
+  // The rest of the line (for the quoted names of $PhysicalNames).
+  std::string rest_of_line() {
+    const std::size_t e = s_.find('\n', pos_);
+    const std::size_t end = e == std::string::npos ? s_.size() : e;
+    std::string out = s_.substr(pos_, end - pos_);
+    pos_ = end;
+    return out;
+  }
+  template <class T>
+  T get(const char* what) {
+    if (pos_ + sizeof(T) > s_.size())
+      fail(std::string("file ends inside ") + what + " (truncated?)");
+    T v;
+    std::memcpy(&v, s_.data() + pos_, sizeof(T));
+    pos_ += sizeof(T);
+    return v;
+  }
+  // An integer of either representation.
+  long long count(const char* what, bool size_t_field) {
+    if (!binary_) return integer(what);
+    if (size_t_field) return static_cast<long long>(get<std::uint64_t>(what));
+    return get<std::int32_t>(what);
+  }
+  double number(const char* what) { return binary_ ? get<double>(what) : real(what); }
+
+  // After binary data: the newline before "$End...".
+  void expect(const std::string& marker) {
+    const std::string w = word(marker.c_str());
+    if (w != marker) fail("expected " + marker + ", found '" + w.substr(0, 40) + "'");
+  }
+  // Skips an unknown section up to its end marker.
+  void skip_section(const std::string& name) {
+    const std::string end = "$End" + name.substr(1);
+    const std::size_t e = s_.find(end, pos_);
+    if (e == std::string::npos) fail("section " + name + " has no " + end + " (truncated?)");
+    pos_ = e + end.size();
+  }
+
+ private:
+  std::string peek_word() const {
+    std::size_t e = pos_;
+    while (e < s_.size() && !std::isspace(static_cast<unsigned char>(s_[e])) && e - pos_ < 40) ++e;
+    return s_.substr(pos_, e - pos_);
+  }
+
+  const std::string& s_;
+  std::string name_;
+  std::size_t pos_ = 0;
+  bool binary_ = false;
+  std::size_t binary_start_ = 0;
+};
+
+struct Parsed {
+  int major = 0;
+  std::map<std::pair<int, int>, std::string> physical_names;  // (dim, tag) -> name
+  std::map<std::pair<int, int>, std::vector<int>> entity_physicals;  // (dim, entity) -> tags
+  std::vector<Index> node_tags;
+  std::vector<double> xyz;  // 3 per node
+  RawElements cells, lines;
+};
+
+void read_physical_names(Reader& r, Parsed& p) {
+  const long long n = r.integer("the number of physical names");
+  for (long long k = 0; k < n; ++k) {
+    const auto dim = static_cast<int>(r.integer("a physical dimension"));
+    const auto tag = static_cast<int>(r.integer("a physical tag"));
+    std::string rest = r.rest_of_line();
+    const std::size_t a = rest.find('"'), b = rest.rfind('"');
+    if (a == std::string::npos || b <= a) r.fail("expected a quoted physical name");
+    p.physical_names[{dim, tag}] = rest.substr(a + 1, b - a - 1);
+  }
+  r.expect("$EndPhysicalNames");
+}
+
+void read_entities(Reader& r, Parsed& p) {
+  long long counts[4];
+  for (long long& c : counts) c = r.count("the number of entities", true);
+  for (int dim = 0; dim < 4; ++dim)
+    for (long long k = 0; k < counts[dim]; ++k) {
+      const auto tag = static_cast<int>(r.count("an entity tag", false));
+      for (int i = 0; i < (dim == 0 ? 3 : 6); ++i) (void)r.number("an entity coordinate");
+      const long long nphys = r.count("the number of physical tags", true);
+      std::vector<int>& phys = p.entity_physicals[{dim, tag}];
+      for (long long i = 0; i < nphys; ++i)
+        phys.push_back(static_cast<int>(r.count("a physical tag", false)));
+      if (dim > 0) {
+        const long long nb = r.count("the number of bounding entities", true);
+        for (long long i = 0; i < nb; ++i) (void)r.count("a bounding entity", false);
+      }
+    }
+  r.expect("$EndEntities");
+}
+
+void read_nodes_41(Reader& r, Parsed& p) {
+  const long long blocks = r.count("the number of node blocks", true);
+  const long long total = r.count("the number of nodes", true);
+  (void)r.count("the smallest node tag", true);
+  (void)r.count("the largest node tag", true);
+  p.node_tags.reserve(static_cast<std::size_t>(total));
+  p.xyz.reserve(static_cast<std::size_t>(3 * total));
+  for (long long b = 0; b < blocks; ++b) {
+    const auto dim = static_cast<int>(r.count("an entity dimension", false));
+    (void)r.count("an entity tag", false);
+    const auto parametric = r.count("the parametric flag", false);
+    const long long n = r.count("the number of nodes in a block", true);
+    const std::size_t first = p.node_tags.size();
+    for (long long k = 0; k < n; ++k)
+      p.node_tags.push_back(static_cast<Index>(r.count("a node tag", true)));
+    const int extra = parametric != 0 ? dim : 0;
+    for (long long k = 0; k < n; ++k) {
+      for (int i = 0; i < 3; ++i) p.xyz.push_back(r.number("a node coordinate"));
+      for (int i = 0; i < extra; ++i) (void)r.number("a parametric coordinate");
+    }
+    (void)first;
+  }
+  if (static_cast<long long>(p.node_tags.size()) != total)
+    r.fail("$Nodes announces " + std::to_string(total) + " nodes, its blocks hold " +
+           std::to_string(p.node_tags.size()));
+  r.expect("$EndNodes");
+}
+
+void read_nodes_22(Reader& r, Parsed& p) {
+  const long long n = r.integer("the number of nodes");
+  if (r.binary()) r.skip_newline();  // the binary data starts on the next line
+  for (long long k = 0; k < n; ++k) {
+    p.node_tags.push_back(static_cast<Index>(r.count("a node tag", false)));
+    for (int i = 0; i < 3; ++i) p.xyz.push_back(r.number("a node coordinate"));
+  }
+  r.expect("$EndNodes");
+}
+
+void add_element(Reader& r, Parsed& p, int type, Index tag, std::vector<int> physicals,
+                 const std::vector<Index>& nodes, std::size_t where) {
+  const std::optional<CellType> ct = cell_type_of(type);
+  if (!ct) {
+    if (type == 15) return;  // a point element: nothing to do
+    if (is_3d_type(type))
+      r.fail_at(where, "element " + std::to_string(tag) + " is a 3D element (Gmsh type " +
+                           std::to_string(type) + "): 3D meshes are not supported yet");
+    r.fail_at(where, "element " + std::to_string(tag) + " has Gmsh type " + std::to_string(type) +
+                         ", which is not supported (supported: lines of 2 and 3 nodes, "
+                         "triangles of 3 and 6, quadrilaterals of 4, 8 and 9)");
+  }
+  RawElements& e = cell_dimension(*ct) == 2 ? p.cells : p.lines;
+  if (cell_dimension(*ct) == 1 && physicals.empty()) return;  // a line in no group: ignored
+  e.types.push_back(type);
+  e.tags.push_back(tag);
+  e.physicals.push_back(std::move(physicals));
+  e.nodes.insert(e.nodes.end(), nodes.begin(), nodes.end());
+  e.offsets.push_back(static_cast<Index>(e.nodes.size()));
+  e.positions.push_back(where);
+}
+
+void read_elements_41(Reader& r, Parsed& p) {
+  const long long blocks = r.count("the number of element blocks", true);
+  (void)r.count("the number of elements", true);
+  (void)r.count("the smallest element tag", true);
+  (void)r.count("the largest element tag", true);
+  std::vector<Index> nodes;
+  for (long long b = 0; b < blocks; ++b) {
+    const auto dim = static_cast<int>(r.count("an entity dimension", false));
+    const auto entity = static_cast<int>(r.count("an entity tag", false));
+    const auto type = static_cast<int>(r.count("an element type", false));
+    const long long n = r.count("the number of elements in a block", true);
+    const int k = gmsh_nodes(type);
+    if (k == 0) r.fail("element type " + std::to_string(type) + " is not a Gmsh type known here");
+    const auto it = p.entity_physicals.find({dim, entity});
+    const std::vector<int> physicals = it == p.entity_physicals.end() ? std::vector<int>{}
+                                                                       : it->second;
+    nodes.resize(static_cast<std::size_t>(k));
+    for (long long e = 0; e < n; ++e) {
+      const std::size_t where = r.pos();
+      const auto tag = static_cast<Index>(r.count("an element tag", true));
+      for (int i = 0; i < k; ++i)
+        nodes[static_cast<std::size_t>(i)] = static_cast<Index>(r.count("a node tag", true));
+      add_element(r, p, type, tag, physicals, nodes, where);
+    }
+  }
+  r.expect("$EndElements");
+}
+
+void read_elements_22(Reader& r, Parsed& p) {
+  const long long n = r.integer("the number of elements");
+  std::vector<Index> nodes;
+  if (!r.binary()) {
+    for (long long e = 0; e < n; ++e) {
+      const std::size_t where = r.pos();
+      const auto tag = static_cast<Index>(r.integer("an element tag"));
+      const auto type = static_cast<int>(r.integer("an element type"));
+      const long long ntags = r.integer("the number of element tags");
+      std::vector<int> tags;
+      for (long long i = 0; i < ntags; ++i) tags.push_back(static_cast<int>(r.integer("a tag")));
+      const int k = gmsh_nodes(type);
+      if (k == 0)
+        r.fail_at(where, "element " + std::to_string(tag) + " has Gmsh type " +
+                             std::to_string(type) + ", which is not a known Gmsh type");
+      nodes.resize(static_cast<std::size_t>(k));
+      for (int i = 0; i < k; ++i)
+        nodes[static_cast<std::size_t>(i)] = static_cast<Index>(r.integer("a node tag"));
+      // The first tag is the physical group (0: none), the second the elementary entity.
+      std::vector<int> phys;
+      if (!tags.empty() && tags[0] != 0) phys.push_back(tags[0]);
+      add_element(r, p, type, tag, phys, nodes, where);
+    }
+  } else {
+    r.skip_newline();
+    long long done = 0;
+    while (done < n) {
+      const auto type = r.get<std::int32_t>("an element block header");
+      const auto count = r.get<std::int32_t>("an element block header");
+      const auto ntags = r.get<std::int32_t>("an element block header");
+      const int k = gmsh_nodes(type);
+      if (k == 0 || count <= 0 || ntags < 0)
+        r.fail("element block of Gmsh type " + std::to_string(type) + " cannot be read");
+      nodes.resize(static_cast<std::size_t>(k));
+      for (int e = 0; e < count; ++e) {
+        const std::size_t where = r.pos();
+        const auto tag = static_cast<Index>(r.get<std::int32_t>("an element"));
+        std::vector<int> tags(static_cast<std::size_t>(ntags));
+        for (int& t : tags) t = r.get<std::int32_t>("an element");
+        for (int i = 0; i < k; ++i)
+          nodes[static_cast<std::size_t>(i)] = r.get<std::int32_t>("an element");
+        std::vector<int> phys;
+        if (!tags.empty() && tags[0] != 0) phys.push_back(tags[0]);
+        add_element(r, p, type, tag, phys, nodes, where);
+      }
+      done += count;
+    }
+  }
+  r.expect("$EndElements");
+}
+
+Parsed parse(const std::string& content, const std::string& name) {
+  Reader r(content, name);
+  Parsed p;
+  bool have_format = false, have_nodes = false, have_elements = false;
+  while (!r.at_end()) {
+    const std::string section = r.word("a section");
+    if (section.empty() || section[0] != '$')
+      r.fail("expected a section such as $Nodes, found '" + section.substr(0, 40) + "'");
+    if (section == "$MeshFormat") {
+      const std::string version = r.word("the format version");
+      const long long file_type = r.integer("the file type");
+      const long long data_size = r.integer("the data size");
+      if (version == "4.1")
+        p.major = 4;
+      else if (version.rfind("2.", 0) == 0)
+        p.major = 2;
+      else
+        r.fail("format " + version + " is not supported: save the mesh as 4.1 or 2.2 (Gmsh: "
+               "-format msh41 or msh22)");
+      if (data_size != 8) r.fail("data size " + std::to_string(data_size) + ", expected 8");
+      if (file_type == 1) {
+        r.skip_newline();
+        r.set_binary(true);
+        if (r.get<std::int32_t>("the byte-order check") != 1)
+          r.fail("a binary file of the other byte order: save it on this machine or as ASCII");
+      }
+      r.expect("$EndMeshFormat");
+      have_format = true;
+      continue;
+    }
+    if (!have_format) r.fail("the file does not start with $MeshFormat: not a Gmsh mesh file");
+    // In a binary file each section's numbers follow its header line.
+    const auto binary_body = [&] {
+      if (r.binary()) r.skip_newline();
+    };
+    if (section == "$PhysicalNames") {
+      read_physical_names(r, p);
+    } else if (section == "$Entities" && p.major == 4) {
+      binary_body();
+      read_entities(r, p);
+    } else if (section == "$Nodes") {
+      if (p.major == 4) {
+        binary_body();
+        read_nodes_41(r, p);
+      } else {
+        read_nodes_22(r, p);
+      }
+      have_nodes = true;
+    } else if (section == "$Elements") {
+      if (p.major == 4) {
+        binary_body();
+        read_elements_41(r, p);
+      } else {
+        read_elements_22(r, p);
+      }
+      have_elements = true;
+    } else {
+      r.skip_section(section);
+    }
+  }
+  if (!have_format) r.fail("empty file: not a Gmsh mesh file");
+  if (!have_nodes) r.fail("the file has no $Nodes section");
+  if (!have_elements) r.fail("the file has no $Elements section");
+  return p;
+}
+
+std::string physical_name(const Parsed& p, int dim, int tag) {
+  const auto it = p.physical_names.find({dim, tag});
+  return it != p.physical_names.end() ? it->second : std::to_string(tag);
+}
+
+// Mirrors a clockwise cell: corners reversed (keeping node 0), mid-edge nodes with them.
+void mirror(CellType t, Index* v) {
+  switch (t) {
+    case CellType::Tri3:
+      std::swap(v[1], v[2]);
+      return;
+    case CellType::Tri6:
+      std::swap(v[1], v[2]);
+      std::swap(v[3], v[5]);
+      return;
+    case CellType::Quad4:
+      std::swap(v[1], v[3]);
+      return;
+    case CellType::Quad8:
+    case CellType::Quad9:
+      std::swap(v[1], v[3]);
+      std::swap(v[4], v[7]);
+      std::swap(v[5], v[6]);
+      return;
+    default:
+      return;
+  }
+}
+
+}  // namespace
+
+Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
+  const Parsed p = parse(content, name);
+  if (p.cells.types.empty())
+    throw InputError(name + ": no 2D elements (triangles or quadrilaterals): is it meshed in 2D "
+                            "(gmsh -2)?");
+  // Node tags to positions in $Nodes.
+  Index max_tag = 0;
+  for (const Index t : p.node_tags) max_tag = std::max(max_tag, t);
+  std::vector<Index> slot(static_cast<std::size_t>(max_tag + 1), -1);
+  for (std::size_t k = 0; k < p.node_tags.size(); ++k) {
+    const Index t = p.node_tags[k];
+    if (t < 0) throw InputError(name + ": negative node tag " + std::to_string(t));
+    slot[static_cast<std::size_t>(t)] = static_cast<Index>(k);
+  }
+  const auto node_slot = [&](const RawElements& e, std::size_t i, Index tag) {
+    if (tag < 0 || tag > max_tag || slot[static_cast<std::size_t>(tag)] < 0)
+      throw InputError(name + ": element " + std::to_string(e.tags[i]) + " uses node " +
+                       std::to_string(tag) + ", which $Nodes does not define");
+    return slot[static_cast<std::size_t>(tag)];
+  };
+  // Number the nodes that cells use, in the order of their tags.
+  std::vector<char> used(p.node_tags.size(), 0);
+  for (std::size_t i = 0; i < p.cells.types.size(); ++i)
+    for (Index k = p.cells.offsets[i]; k < p.cells.offsets[i + 1]; ++k)
+      used[static_cast<std::size_t>(node_slot(p.cells, i, p.cells.nodes[static_cast<std::size_t>(k)]))] =
+          1;
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < used.size(); ++k)
+    if (used[k] != 0) order.push_back(k);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return p.node_tags[a] < p.node_tags[b]; });
+  std::vector<Index> number(p.node_tags.size(), -1);
+  Eigen::MatrixXd xy(2, static_cast<Index>(order.size()));
+  double zmin = INFINITY, zmax = -INFINITY, size = 0.0;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t s = order[k];
+    number[s] = static_cast<Index>(k);
+    xy(0, static_cast<Index>(k)) = p.xyz[3 * s];
+    xy(1, static_cast<Index>(k)) = p.xyz[3 * s + 1];
+    zmin = std::min(zmin, p.xyz[3 * s + 2]);
+    zmax = std::max(zmax, p.xyz[3 * s + 2]);
+  }
+  if (!xy.allFinite()) throw InputError(name + ": a node coordinate is not finite");
+  size = (xy.rowwise().maxCoeff() - xy.rowwise().minCoeff()).maxCoeff();
+  if (zmax - zmin > 1e-9 * std::max(size, 1e-300))
+    throw InputError(name + ": the 2D elements do not lie in one plane z = constant (z from " +
+                     std::to_string(zmin) + " to " + std::to_string(zmax) + ")");
+
+  // Cells, counterclockwise.
+  std::vector<CellType> types;
+  std::vector<Index> cells;
+  std::vector<Index> tags;
+  std::vector<int> region_tag;
+  types.reserve(p.cells.types.size());
+  // Cells in an order that does not depend on the format: Gmsh numbers the elements differently
+  // in 2.2 and 4.1, but not the nodes. Sorted by their node tags (sorted, compared as words), the
+  // same mesh in any format assembles in the same order: the same sums, the same bits.
+  const std::size_t nc = p.cells.types.size();
+  std::vector<std::array<Index, kMaxSortKey>> sort_key(nc);
+  for (std::size_t i = 0; i < nc; ++i) {
+    auto& k = sort_key[i];
+    k.fill(-1);
+    const auto b = static_cast<std::size_t>(p.cells.offsets[i]);
+    const auto e = static_cast<std::size_t>(p.cells.offsets[i + 1]);
+    std::copy(p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(b),
+              p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(e), k.begin());
+    std::sort(k.begin(), k.begin() + static_cast<std::ptrdiff_t>(e - b));
+  }
+  std::vector<std::size_t> canonical(nc);
+  for (std::size_t i = 0; i < nc; ++i) canonical[i] = i;
+  std::stable_sort(canonical.begin(), canonical.end(),
+                   [&](std::size_t a, std::size_t b) { return sort_key[a] < sort_key[b]; });
+  for (const std::size_t i : canonical) {
+    const CellType t = *cell_type_of(p.cells.types[i]);
+    const std::size_t first = cells.size();
+    for (Index k = p.cells.offsets[i]; k < p.cells.offsets[i + 1]; ++k)
+      cells.push_back(number[static_cast<std::size_t>(
+          node_slot(p.cells, i, p.cells.nodes[static_cast<std::size_t>(k)]))]);
+    Index* v = cells.data() + first;
+    const int corners = (t == CellType::Tri3 || t == CellType::Tri6) ? 3 : 4;
+    double area2 = 0.0;  // shoelace over the corners
+    for (int a = 0; a < corners; ++a) {
+      const Index m = v[a], q = v[(a + 1) % corners];
+      area2 += xy(0, m) * xy(1, q) - xy(0, q) * xy(1, m);
+    }
+    if (area2 < 0.0) mirror(t, v);
+    types.push_back(t);
+    tags.push_back(p.cells.tags[i]);
+    region_tag.push_back(p.cells.physicals[i].empty() ? -1 : p.cells.physicals[i].front());
+  }
+  Mesh mesh(std::move(types), std::move(xy), std::move(cells));
+  mesh.set_cell_source_tags(std::move(tags));
+
+  // Regions: "" for cells in no physical surface, then the groups in the order of their tags.
+  std::map<int, int> region_index;
+  std::vector<std::string> region_names{""};
+  for (const int t : region_tag)
+    if (t >= 0 && !region_index.contains(t)) region_index[t] = 0;
+  for (auto& [t, index] : region_index) {
+    index = static_cast<int>(region_names.size());
+    region_names.push_back(physical_name(p, 2, t));
+  }
+  std::vector<int> regions;
+  regions.reserve(region_tag.size());
+  for (const int t : region_tag) regions.push_back(t < 0 ? 0 : region_index.at(t));
+  mesh.set_cell_regions(std::move(region_names), std::move(regions));
+
+  // Boundary parts: each line matched to the cell edge with the same end nodes.
+  std::unordered_map<std::uint64_t, Facet> edges;
+  const auto key = [](Index a, Index b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+           static_cast<std::uint64_t>(std::max(a, b));
+  };
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    for (int f = 0; f < facets_per_cell(mesh.cell_type(c)); ++f) {
+      const auto fn = mesh.facet_nodes({c, f});
+      edges.emplace(key(fn[0], fn[1]), Facet{c, f});
+    }
+  std::map<int, std::vector<Facet>> parts;
+  for (std::size_t i = 0; i < p.lines.types.size(); ++i) {
+    std::vector<Index> v;
+    for (Index k = p.lines.offsets[i]; k < p.lines.offsets[i + 1]; ++k) {
+      const Index s = node_slot(p.lines, i, p.lines.nodes[static_cast<std::size_t>(k)]);
+      v.push_back(number[static_cast<std::size_t>(s)]);
+    }
+    const auto it = (v[0] < 0 || v[1] < 0) ? edges.end() : edges.find(key(v[0], v[1]));
+    bool match = it != edges.end();
+    if (match && v.size() == 3) {
+      const auto fn = mesh.facet_nodes(it->second);
+      match = fn.size() == 3 && fn[2] == v[2];
+    }
+    if (!match)
+      throw InputError(name + ": line element " + std::to_string(p.lines.tags[i]) +
+                       " (physical group '" + physical_name(p, 1, p.lines.physicals[i].front()) +
+                       "') is not an edge of any 2D element");
+    for (const int t : p.lines.physicals[i]) parts[t].push_back(it->second);
+  }
+  for (auto& [t, facets] : parts) {
+    // In cell order, whatever the order of the lines in the file (the same sums in any format).
+    std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) {
+      return a.cell != b.cell ? a.cell < b.cell : a.local < b.local;
+    });
+    mesh.set_boundary_part(physical_name(p, 1, t), std::move(facets));
+  }
+  return mesh;
+}
+
+Mesh read_gmsh_mesh(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot open the mesh file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(file.string() + ": cannot read the mesh file");
+  return parse_gmsh_mesh(text.str(), file.string());
+}
+
+}  // namespace signorini
