@@ -275,6 +275,9 @@ TEST(ProblemFile, EffectiveSettingsRoundTripEveryOption) {
   for (const OptionTableInfo* table : problem_schema())
     for (const OptionInfo& o : table->options) {
       const std::string key = table->full_key(o.key);
+      // The kind of mesh stays a rectangle, and the keys of a Gmsh mesh out (the file would
+      // have to exist): tests/app/gmsh_mesh_test.cpp reads those.
+      if (key == "mesh.type" || o.condition == "type = \"gmsh\"") continue;
       const std::optional<OptionValue> v = testing::other_value(o, key);
       if (!v) continue;
       overrides.push_back(key + "=" + toml_value_text(*v));

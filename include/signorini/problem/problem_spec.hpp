@@ -44,12 +44,25 @@ struct ContactSpec {
   std::string description = "0";
 };
 
+/// Where the mesh comes from.
+enum class MeshType { Rectangle, Gmsh };
+
+inline constexpr EnumNames<MeshType, 2> kMeshTypeNames{{
+    {MeshType::Rectangle, "rectangle"},
+    {MeshType::Gmsh, "gmsh"},
+}};
+
 struct ProblemSpec {
   std::string name = "problem";
   /// The units the numbers are in, for labels only (e.g. "m-MPa"; empty: not said). The solver
   /// needs none: any consistent set works (method.md section 7).
   std::string units;
-  RectangleMeshOptions mesh;  ///< the structured rectangle (the only mesh source so far)
+  /// [mesh] type: the structured rectangle of `mesh`, or a Gmsh file (`mesh_file`).
+  MeshType mesh_type = MeshType::Rectangle;
+  RectangleMeshOptions mesh;  ///< the rectangle (mesh_type = Rectangle)
+  /// The .msh file (or a .geo file, meshed by the gmsh program) for mesh_type = Gmsh; the
+  /// problem-file reader makes a relative path relative to the problem file's folder.
+  std::string mesh_file;
   ElasticityOptions elasticity;
   int boundary_gauss_points = 2;  ///< Gauss points per boundary facet for tractions
   std::vector<ClampSpec> clamps;

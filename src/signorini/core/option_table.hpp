@@ -98,6 +98,8 @@ struct OptionInfo {
   std::vector<std::string> synonyms;
   /// The value of a default-constructed struct (empty for Custom options).
   std::optional<OptionValue> default_value;
+  /// When the option applies, in words ("type = \"rectangle\""); empty: always.
+  std::string condition;
 };
 
 /// "a positive number", "an integer in [1, 50]", "\"cpu\" or \"cuda\"": what a message says was
@@ -157,6 +159,18 @@ class OptionTable : public OptionTableInfo {
   [[nodiscard]] const Getter& getter(std::size_t i) const { return getters_[i]; }
   /// How to set option i in a struct; empty for Custom options.
   [[nodiscard]] const Setter& setter(std::size_t i) const { return setters_[i]; }
+  /// Whether option i means anything for `s` (mesh.nx only for a rectangle mesh): options that
+  /// do not apply are neither written to the effective settings nor accepted in a file.
+  [[nodiscard]] bool applies(std::size_t i, const S& s) const {
+    return !conditions_[i] || conditions_[i](s);
+  }
+  /// The condition of the last option, and the words that say it in messages ("type =
+  /// \"rectangle\"").
+  OptionTable& applies_when(std::function<bool(const S&)> condition, std::string words) {
+    conditions_.back() = std::move(condition);
+    last().condition = std::move(words);
+    return *this;
+  }
 
   template <class Field>
   OptionTable& number(std::string key, Field field, OptionRange range, std::string doc) {
@@ -300,6 +314,7 @@ class OptionTable : public OptionTableInfo {
     options.push_back(std::move(o));
     getters_.push_back(std::move(get));
     setters_.push_back(std::move(set));
+    conditions_.emplace_back();
     return *this;
   }
 
@@ -307,6 +322,7 @@ class OptionTable : public OptionTableInfo {
 
   std::vector<Getter> getters_;
   std::vector<Setter> setters_;
+  std::vector<std::function<bool(const S&)>> conditions_;  // empty: always applies
 };
 
 /// Throws InputError naming the first option of `table` whose value in `s` is out of its range,

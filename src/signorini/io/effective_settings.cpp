@@ -16,7 +16,7 @@ namespace {
 template <class S>
 void emit_options(TomlEmitter& out, const OptionTable<S>& table, const S& s) {
   for (std::size_t i = 0; i < table.options.size(); ++i)
-    if (table.getter(i)) out.value(table.options[i].key, table.getter(i)(s));
+    if (table.getter(i) && table.applies(i, s)) out.value(table.options[i].key, table.getter(i)(s));
 }
 
 }  // namespace

@@ -60,10 +60,26 @@ void read_top_level(const Reader& r, const toml::table& root, ProblemSpec& spec)
 
 void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   const toml::table* t = r.table(root, "", "mesh");
-  if (t == nullptr) r.missing("mesh", "a [mesh] section with length, height, nx and ny");
+  if (t == nullptr)
+    r.missing("mesh", "a [mesh] section: type = \"rectangle\" with length, height, nx and ny, "
+                      "or type = \"gmsh\" with file");
   r.check_keys(*t, "mesh");
   read_options(r, *t, mesh_options(), spec);
   check_options(r, t, mesh_options(), spec);
+  // Which keys a type needs (those it has no use for were refused by check_options).
+  if (spec.mesh_type == MeshType::Rectangle) {
+    for (const char* key : {"length", "height", "nx", "ny"})
+      if (!t->contains(key))
+        r.missing(std::string("mesh.") + key, type_words(*mesh_options().find(key)));
+    return;
+  }
+  if (spec.mesh_file.empty()) r.missing("mesh.file", "the path of a .msh or .geo file");
+  // Relative to the problem file's folder, so that a problem and its mesh move together.
+  const std::filesystem::path file(spec.mesh_file);
+  if (file.is_relative()) {
+    const std::filesystem::path folder = std::filesystem::path(r.file()).parent_path();
+    spec.mesh_file = (folder / file).lexically_normal().string();
+  }
 }
 
 void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec,
@@ -299,6 +315,7 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
 // A mesh that cannot fit is refused now rather than after minutes of assembly, or by the
 // out-of-memory killer.
 void check_memory(const Reader& r, const ProblemSpec& spec) {
+  if (spec.mesh_type != MeshType::Rectangle) return;  // a file's size is known when it is read
   const double p = cell_order(spec.mesh.cell);  // quadratic cells: the lattice of half steps
   const double nodes = (p * static_cast<double>(spec.mesh.nx) + 1.0) *
                        (p * static_cast<double>(spec.mesh.ny) + 1.0);

@@ -73,25 +73,51 @@ const OptionTable<P>& top_level_options() {
   return table;
 }
 
+const auto rectangle_mesh = [](const P& s) { return s.mesh_type == MeshType::Rectangle; };
+const auto gmsh_mesh = [](const P& s) { return s.mesh_type == MeshType::Gmsh; };
+constexpr const char* kRectangleWords = "type = \"rectangle\"";
+
 const OptionTable<P>& mesh_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("mesh");
-    t.fixed("type", "rectangle", "the only mesh type so far");
+    t.choice("type", &P::mesh_type, kMeshTypeNames,
+             "`rectangle`: the structured mesh of the keys below; `gmsh`: the mesh of `file`");
+    t.text("file", &P::mesh_file,
+           "type = \"gmsh\": the mesh file, a path relative to the problem file; a Gmsh .msh "
+           "file (formats 4.1 and 2.2, ASCII or binary), or a .geo file that the `gmsh` program "
+           "meshes (2D, with the element order the .geo asks for). Physical curves become "
+           "boundary parts and physical surfaces regions, by name (docs/problem-format.md, Meshes "
+           "from Gmsh)")
+        .default_text("required with type = \"gmsh\"")
+        .applies_when(gmsh_mesh, "type = \"gmsh\"");
     const auto get_origin = [](const P& s) { return std::array<double, 2>{s.mesh.x0, s.mesh.y0}; };
     const auto set_origin = [](P& s, const std::array<double, 2>& xy) {
       s.mesh.x0 = xy[0];
       s.mesh.y0 = xy[1];
     };
-    t.pair("origin", get_origin, set_origin, "lower-left corner (x0, y0)").unit("L");
-    t.number("length", mesh_length, positive(), "extent in x").unit("L").required();
-    t.number("height", mesh_height, positive(), "extent in y").unit("L").required();
-    t.integer("nx", mesh_nx, at_least(1), "cells along x").required();
-    t.integer("ny", mesh_ny, at_least(1), "cells along y").required();
+    t.pair("origin", get_origin, set_origin, "rectangle: lower-left corner (x0, y0)")
+        .unit("L")
+        .applies_when(rectangle_mesh, kRectangleWords);
+    t.number("length", mesh_length, positive(), "rectangle: extent in x")
+        .unit("L")
+        .default_text("required with type = \"rectangle\"")
+        .applies_when(rectangle_mesh, kRectangleWords);
+    t.number("height", mesh_height, positive(), "rectangle: extent in y")
+        .unit("L")
+        .default_text("required with type = \"rectangle\"")
+        .applies_when(rectangle_mesh, kRectangleWords);
+    t.integer("nx", mesh_nx, at_least(1), "rectangle: cells along x")
+        .default_text("required with type = \"rectangle\"")
+        .applies_when(rectangle_mesh, kRectangleWords);
+    t.integer("ny", mesh_ny, at_least(1), "rectangle: cells along y")
+        .default_text("required with type = \"rectangle\"")
+        .applies_when(rectangle_mesh, kRectangleWords);
     t.choice("cell", mesh_cell, kRectangleCellNames,
-             "the finite element: bilinear (`quad4`, the paper's), serendipity (`quad8`) or "
+             "rectangle: the finite element: bilinear (`quad4`, the paper's), serendipity (`quad8`) or "
              "biquadratic (`quad9`) quadrilaterals, or each square split into two linear (`tri3`) "
              "or quadratic (`tri6`) triangles. Quadratic elements are far more accurate per "
-             "unknown and lock much less for nu near 0.5; the geometric multigrid needs `quad4`");
+             "unknown and lock much less for nu near 0.5; the geometric multigrid needs `quad4`")
+        .applies_when(rectangle_mesh, kRectangleWords);
     return t;
   }();
   return table;

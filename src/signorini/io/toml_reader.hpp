@@ -128,6 +128,14 @@ void check_options(const Reader& r, const toml::table* t, const OptionTable<S>& 
   for (std::size_t i = 0; i < table.options.size(); ++i) {
     if (!table.getter(i)) continue;
     const OptionInfo& o = table.options[i];
+    if (!table.applies(i, s)) {
+      // Given where it means nothing: say when it applies ("mesh.nx applies with type =
+      // \"rectangle\" only").
+      if (t != nullptr && t->contains(o.key))
+        r.fail_at(t->get(o.key)->source(),
+                  table.full_key(o.key) + " applies with " + o.condition + " only; remove it");
+      continue;
+    }
     const OptionValue v = table.getter(i)(s);
     if (!in_range(o, v))
       r.out_of_range(table.full_key(o.key), toml_value_text(v), expected_words(o),

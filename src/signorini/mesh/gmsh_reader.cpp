@@ -5,12 +5,18 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cerrno>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "signorini/core/error.hpp"
 
@@ -613,6 +619,50 @@ Mesh read_gmsh_mesh(const std::filesystem::path& file) {
   text << in.rdbuf();
   if (in.bad()) throw InputError(file.string() + ": cannot read the mesh file");
   return parse_gmsh_mesh(text.str(), file.string());
+}
+
+Mesh read_mesh_file(const std::filesystem::path& file) {
+  if (file.extension() != ".geo") return read_gmsh_mesh(file);
+  if (!std::filesystem::exists(file))
+    throw InputError(file.string() + ": cannot open the mesh file");
+  // gmsh -2 <geo> -format msh41 -o <tmp>: the program, never the library (GPL).
+  static int counter = 0;
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() /
+      ("signorini-" + std::to_string(::getpid()) + "-" + std::to_string(++counter) + ".msh");
+  const std::string geo = file.string(), msh = out.string();
+  std::vector<std::string> args{"gmsh", "-2", geo, "-format", "msh41", "-o", msh, "-v", "1"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, "gmsh", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0)
+    throw InputError(geo + ": meshing a .geo file needs the gmsh program, which is not installed "
+                           "(Debian: apt-get install gmsh); or give the .msh file it makes");
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(out);
+  if (!ok) {
+    std::filesystem::remove(out);
+    throw InputError(geo + ": gmsh could not mesh it (exit status " +
+                     std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                     "); run gmsh -2 on it to see why");
+  }
+  try {
+    Mesh mesh = read_gmsh_mesh(out);
+    std::filesystem::remove(out);
+    return mesh;
+  } catch (...) {
+    std::filesystem::remove(out);
+    throw;
+  }
 }
 
 }  // namespace signorini

@@ -6,6 +6,7 @@
 #include "signorini/fem/contact_boundary.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
 #include "signorini/fem/load_assembly.hpp"
+#include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
 
@@ -84,7 +85,8 @@ Model build_model(const ProblemSpec& spec) {
           i, spec.tractions[i].boundary));
   TimingTable timings;
   ScopedTimer mesh_timer(timings, "mesh");
-  Mesh mesh = make_rectangle_mesh(spec.mesh);
+  Mesh mesh = spec.mesh_type == MeshType::Gmsh ? read_mesh_file(spec.mesh_file)
+                                               : make_rectangle_mesh(spec.mesh);
   DofMap dofs = make_dof_map(mesh, spec.clamps);
   mesh_timer.stop();
   if (dofs.num_free() == 0) throw InputError("every dof is clamped: nothing to solve");

@@ -16,12 +16,16 @@ namespace signorini {
 MultigridHierarchy make_model_hierarchy(const ProblemSpec& spec, const Mesh& mesh,
                                         const DofMap& dofs, const SparseMatrix& A) {
   const MultigridCoarsening asked = spec.solver.linear.coarsening;
-  if (spec.mesh.cell != CellType::Quad4 && asked == MultigridCoarsening::Geometric)
+  const bool q1_rectangle =
+      spec.mesh_type == MeshType::Rectangle && spec.mesh.cell == CellType::Quad4;
+  if (!q1_rectangle && asked == MultigridCoarsening::Geometric)
     throw InputError(fmt::format(
         "solver.linear.coarsening = \"geometric\" halves rectangles of quad4 cells, not {}; "
         "use \"auto\" or \"aggregation\"",
-        enum_to_string(kCellTypeNames, spec.mesh.cell)));
-  if (asked == MultigridCoarsening::Aggregation || spec.mesh.cell != CellType::Quad4)
+        spec.mesh_type == MeshType::Gmsh
+            ? std::string("a mesh from a file")
+            : std::string(enum_to_string(kCellTypeNames, spec.mesh.cell))));
+  if (asked == MultigridCoarsening::Aggregation || !q1_rectangle)
     return smoothed_aggregation_hierarchy(A, rigid_body_modes(mesh, dofs), free_dof_nodes(dofs));
 
   MultigridHierarchy h;

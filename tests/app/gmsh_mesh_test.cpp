@@ -1,0 +1,97 @@
+// [mesh] type = "gmsh" from the command line: the paper's 60 x 20 mesh made by Gmsh
+// (examples/paper_gmsh.toml) reproduces the Table 1 row of the built-in rectangle, and a mesh
+// file that is missing, of the wrong kind or asked for with rectangle keys is one clear line with
+// exit status 2.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app/tool_run.hpp"
+#include "io/expect_contains.hpp"
+
+namespace signorini {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::quoted;
+using testing::run_tool;
+using testing::ToolRun;
+
+nlohmann::json summary_of(const fs::path& folder) {
+  std::ifstream in(folder / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+TEST(GmshMesh, PaperMeshFromGmshReproducesTheRectangle) {
+  const testing::TemporaryFolder dir;
+  const ToolRun g = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_gmsh.toml") +
+                                      " -q -o " + quoted((dir / "g").string()));
+  ASSERT_EQ(g.status, 0) << g.err;
+  const ToolRun r = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml") +
+                                      " -q --set mesh.nx=60 --set mesh.ny=20 -o " +
+                                      quoted((dir / "r").string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json jg = summary_of(dir / "g"), jr = summary_of(dir / "r");
+  EXPECT_EQ(jg["n_dofs"], jr["n_dofs"]);
+  EXPECT_EQ(jg["n_contact_nodes"], jr["n_contact_nodes"]);
+  EXPECT_EQ(jg["uzawa_iterations"], jr["uzawa_iterations"]);
+  EXPECT_EQ(jg["gnm_iterations"], jr["gnm_iterations"]);
+  EXPECT_EQ(jg["n_active"], jr["n_active"]);
+  // The same discrete problem but for the rounding of Gmsh's coordinates.
+  const double m = jr["M"].get<double>();
+  EXPECT_NEAR(jg["M"].get<double>(), m, 1e-11 * std::abs(m));
+  EXPECT_NEAR(m, -6.700472e-05, 1e-11);  // Table 1, 60 x 20
+}
+
+TEST(GmshMesh, BadMeshFilesAreOneLine) {
+  const testing::TemporaryFolder dir;
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string rest =
+      "[material]\nE = 1.0\nnu = 0.3\n[[clamp]]\nboundary = \"left\"\n"
+      "[contact]\nboundary = \"bottom\"\n";
+  const auto check = [&](const std::string& file) {
+    return run_tool(dir, "check " + quoted(file));
+  };
+  // The file does not exist (the path is relative to the problem file).
+  ToolRun r = check(write("a.toml", "[mesh]\ntype = \"gmsh\"\nfile = \"none.msh\"\n" + rest));
+  EXPECT_EQ(r.status, 2);
+  // The problem file first, then the mesh file and what is wrong with it.
+  EXPECT_EQ(r.err, "signorini: error: " + (dir / "a.toml").string() + ": " +
+                       (dir / "none.msh").string() + ": cannot open the mesh file\n");
+  // Not a mesh file.
+  write("text.msh", "hello\n");
+  r = check(write("b.toml", "[mesh]\ntype = \"gmsh\"\nfile = \"text.msh\"\n" + rest));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "signorini: error: " + (dir / "b.toml").string() + ": " +
+                       (dir / "text.msh").string() +
+                       ":1: expected a section such as $Nodes, found 'hello'\n");
+  // Rectangle keys with a Gmsh mesh, and a Gmsh mesh without its file.
+  r = check(write("c.toml", "[mesh]\ntype = \"gmsh\"\nfile = \"x.msh\"\nnx = 4\n" + rest));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_CONTAINS(r.err, "c.toml:4: mesh.nx applies with type = \"rectangle\" only; remove it\n");
+  r = check(write("d.toml", "[mesh]\ntype = \"gmsh\"\n" + rest));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_CONTAINS(r.err, "missing required key 'mesh.file'");
+  r = check(write("e.toml", "[mesh]\nlength = 1.0\nheight = 1.0\nnx = 2\nfile = \"x.msh\"\n" +
+                                rest));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_CONTAINS(r.err, "e.toml:5: mesh.file applies with type = \"gmsh\" only; remove it\n");
+  r = check(write("e2.toml", "[mesh]\nlength = 1.0\nheight = 1.0\nnx = 2\n" + rest));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_CONTAINS(r.err, "missing required key 'mesh.ny'");
+  // A boundary the mesh does not have: the names it has.
+  const std::string mixed = std::string(SIGNORINI_TEST_DATA_DIR) + "/mesh/data/mixed_msh41.msh";
+  r = check(write("f.toml", "[mesh]\ntype = \"gmsh\"\nfile = \"" + mixed + "\"\n" +
+                                "[material]\nE = 1.0\nnu = 0.3\n[[clamp]]\nboundary = \"left\"\n"
+                                "[contact]\nboundary = \"base\"\n"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_CONTAINS(r.err, "has no boundary part 'base' (it has: bottom, left, right, top)");
+}
+
+}  // namespace
+}  // namespace signorini
