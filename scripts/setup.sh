@@ -12,6 +12,9 @@ packages=(
   # `signorini plot` and `solve --plot` draw with matplotlib; the tests read the .vtu files with
   # meshio as a second, independent reader (both for /usr/bin/python3).
   python3-matplotlib python3-meshio
+  # The gmsh program (never linked: GPL) meshes a .geo given as [mesh] file, and a test checks
+  # that it does; the .msh files of the examples and tests are committed, made by it.
+  gmsh
 )
 
 missing=()

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -91,6 +92,38 @@ TEST(GmshMesh, BadMeshFilesAreOneLine) {
                                 "[contact]\nboundary = \"base\"\n"));
   EXPECT_EQ(r.status, 2);
   EXPECT_CONTAINS(r.err, "has no boundary part 'base' (it has: bottom, left, right, top)");
+}
+
+// A .geo file as [mesh] file: the gmsh program meshes it (where it is installed; scripts/setup.sh
+// installs it) and the result is the mesh of the committed .msh.
+TEST(GmshMesh, GeoFileIsMeshedByTheGmshProgram) {
+  if (std::system("command -v gmsh > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "the gmsh program is not installed (apt-get install gmsh)";
+  const testing::TemporaryFolder dir;
+  std::ofstream(dir / "geo.toml") << "[mesh]\ntype = \"gmsh\"\nfile = \"" SIGNORINI_EXAMPLES_DIR
+                                     "/gmsh/paper.geo\"\n[material]\nE = 21.19e4\nnu = 0.277\n"
+                                     "[[clamp]]\nboundary = \"left\"\n[[traction]]\n"
+                                     "boundary = \"right\"\np = [\"0\", \"1\"]\n[[traction]]\n"
+                                     "boundary = \"top\"\np = [\"0\", \"-2/3*(3 - x)\"]\n"
+                                     "[contact]\nboundary = \"bottom\"\n[solver]\nr = 1e8\n";
+  const ToolRun g = run_tool(dir, "solve " + quoted((dir / "geo.toml").string()) + " -q -o " +
+                                      quoted((dir / "g").string()));
+  ASSERT_EQ(g.status, 0) << g.err;
+  const ToolRun m = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_gmsh.toml") +
+                                      " -q -o " + quoted((dir / "m").string()));
+  ASSERT_EQ(m.status, 0) << m.err;
+  const nlohmann::json jg = summary_of(dir / "g"), jm = summary_of(dir / "m");
+  EXPECT_EQ(jg["n_dofs"], jm["n_dofs"]);
+  EXPECT_EQ(jg["uzawa_iterations"], jm["uzawa_iterations"]);
+  EXPECT_NEAR(jg["M"].get<double>(), jm["M"].get<double>(), 1e-12 * std::abs(jm["M"].get<double>()));
+  // A .geo that gmsh cannot mesh: one line, with the file.
+  std::ofstream(dir / "broken.geo") << "Point(1) = {0, 0, 0;\n";
+  std::ofstream(dir / "broken.toml") << "[mesh]\ntype = \"gmsh\"\nfile = \"broken.geo\"\n"
+                                        "[material]\nE = 1.0\nnu = 0.3\n[[clamp]]\n"
+                                        "boundary = \"left\"\n[contact]\nboundary = \"bottom\"\n";
+  const ToolRun b = run_tool(dir, "check " + quoted((dir / "broken.toml").string()));
+  EXPECT_EQ(b.status, 2);
+  EXPECT_CONTAINS(b.err, "broken.geo: gmsh could not mesh it");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "io/expect_contains.hpp"
@@ -227,6 +228,68 @@ json.dump(out, open(sys.argv[1] + "/meshio.json", "w"))
     EXPECT_EQ(pd["contact_boundary"][node][0].get<int>(), 1);
     EXPECT_EQ(con["point_data"]["contact_pressure"][k][0].get<double>(), s.result.l(jj));
     EXPECT_EQ(con["point_data"]["gap"][k][0].get<double>(), c.gaps(jj));
+  }
+}
+
+// Every cell type, and a mixed Gmsh mesh with regions: meshio reads solution.vtu and contact.vtu
+// with VTK's cell types (triangle6, quad8, quad9 ...), the connectivity of our cells, and the
+// region of each cell.
+TEST(SolutionVtu, MeshioReadsEveryCellTypeAndTheRegions) {
+  if (!python_has_meshio()) GTEST_SKIP() << "/usr/bin/python3 has no meshio (python3-meshio)";
+  struct Case {
+    std::string label, meshio_type;
+    CellType cell;
+    bool gmsh;
+  };
+  for (const Case& k : {Case{"tri3", "triangle", CellType::Tri3, false},
+                        Case{"tri6", "triangle6", CellType::Tri6, false},
+                        Case{"quad8", "quad8", CellType::Quad8, false},
+                        Case{"quad9", "quad9", CellType::Quad9, false},
+                        Case{"gmsh", "quad9", CellType::Quad9, true}}) {
+    ProblemSpec spec = paper_benchmark(12, 4);
+    spec.mesh.cell = k.cell;
+    if (k.gmsh) {
+      spec.mesh_type = MeshType::Gmsh;
+      spec.mesh_file = std::string(SIGNORINI_TEST_DATA_DIR) + "/mesh/data/mixed_msh41.msh";
+      spec.tractions[1].boundary = "top";
+      spec.tractions[0].boundary = "right";
+    }
+    const Model model = build_model(spec);
+    const ContactResult result = solve_contact(model.problem, spec.solver);
+    ASSERT_TRUE(result.summary.converged()) << k.label << ": " << result.summary.message;
+    const testing::TemporaryFolder dir;
+    write_results(dir.path(), result, model, spec);
+    std::ofstream(dir / "read.py") << R"py(
+import json, sys, meshio
+out = {}
+for name in ("solution", "contact"):
+    m = meshio.read(sys.argv[1] + "/" + name + ".vtu")
+    cells = {}  # meshio starts a block wherever the type changes: join the blocks per type
+    for b in m.cells:
+        cells.setdefault(b.type, []).extend(b.data.tolist())
+    out[name] = {"cells": cells,
+                 "cell_data": {k: [a.tolist() for a in v] for k, v in m.cell_data.items()}}
+json.dump(out, open(sys.argv[1] + "/meshio.json", "w"))
+)py";
+    const std::string command =
+        "/usr/bin/python3 '" + (dir / "read.py").string() + "' '" + dir.path().string() + "'";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream in(dir / "meshio.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    const Mesh& mesh = model.mesh;
+    // meshio groups cells by type, in the order of the file: count and compare per type.
+    std::map<std::string, std::size_t> next;
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      const std::string type = mesh.cell_type(c) == CellType::Tri6 ? "triangle6" : k.meshio_type;
+      const nlohmann::json& cells = j["solution"]["cells"][type];
+      const std::size_t row = next[type]++;
+      ASSERT_LT(row, cells.size()) << k.label;
+      for (std::size_t a = 0; a < mesh.cell(c).size(); ++a)
+        EXPECT_EQ(cells[row][a].get<Index>(), mesh.cell(c)[a]) << k.label << " cell " << c;
+    }
+    EXPECT_TRUE(j["solution"]["cell_data"].contains("region")) << k.label;
+    const std::string edge = cell_order(k.cell) == 2 ? "line3" : "line";
+    EXPECT_EQ(j["contact"]["cells"][edge].size(), model.problem.contact.facets.size()) << k.label;
   }
 }
 

@@ -27,6 +27,7 @@ struct VtuContents {
   long points = 0;
   long cells = 0;
   std::map<std::string, VtuArray> point_data;
+  std::map<std::string, VtuArray> cell_data;
   VtuArray coordinates, connectivity, offsets, types;
 };
 
@@ -103,6 +104,8 @@ inline VtuContents read_vtu_text(const std::string& text) {
       a.values = decode<std::int64_t>(bytes);
     else if (a.type == "UInt8")
       a.values = decode<std::uint8_t>(bytes);
+    else if (a.type == "Int32")
+      a.values = decode<std::int32_t>(bytes);
     else
       throw fail("unexpected type " + a.type);
 
@@ -112,6 +115,9 @@ inline VtuContents read_vtu_text(const std::string& text) {
       v.point_data[a.name] = a;
     } else if (at > points_begin && at < cells_begin) {
       v.coordinates = a;
+    } else if (a.name == "region") {  // the one cell-data array
+      if (static_cast<long>(a.values.size()) != v.cells) throw fail("region has the wrong size");
+      v.cell_data[a.name] = a;
     } else if (a.name == "connectivity") {
       v.connectivity = a;
     } else if (a.name == "offsets") {

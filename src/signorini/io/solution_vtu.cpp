@@ -37,8 +37,14 @@ std::string solution_vtu(const ContactResult& result, const Model& model, const 
   const Vector u = model.dofs.expand(result.u);  // clamped dofs are 0
 
   VtuFile vtu(mesh.coordinates());
-  for (Index c = 0; c < mesh.num_cells(); ++c)
+  std::vector<std::int32_t> region(static_cast<std::size_t>(mesh.num_cells()));
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
     vtu.add_cell(vtk_cell_type(mesh.cell_type(c)), mesh.cell(c));
+    region[static_cast<std::size_t>(c)] = mesh.cell_region(c);
+  }
+  // The region of each cell: its index in the mesh's region names (0: "", cells in no named
+  // region; Gmsh's physical surfaces from 1 on, in the order of their tags).
+  vtu.add_cell_data("region", region);
 
   vtu.add_point_data("displacement", 3, displacement_xyz(u, n, mesh.dim()), {"X", "Y", "Z"});
 

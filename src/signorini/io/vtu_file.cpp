@@ -128,6 +128,12 @@ void VtuFile::add_point_data(const std::string& name, const std::vector<std::uin
   point_data_.push_back({name, "UInt8", 1, {}, bytes_of(values.data(), values.size())});
 }
 
+void VtuFile::add_cell_data(const std::string& name, const std::vector<std::int32_t>& values) {
+  if (values.size() != types_.size())
+    throw std::invalid_argument("VtuFile: cell data '" + name + "' has the wrong size");
+  cell_data_.push_back({name, "Int32", 1, {}, bytes_of(values.data(), values.size())});
+}
+
 std::string VtuFile::text() const {
   std::string xml;
   std::string appended;
@@ -162,6 +168,12 @@ std::string VtuFile::text() const {
   for (const Array& a : point_data_)
     data_array("        ", a.name, a.type, a.components, a.component_names, a.bytes);
   xml += "      </PointData>\n";
+  if (!cell_data_.empty()) {
+    xml += "      <CellData>\n";
+    for (const Array& a : cell_data_)
+      data_array("        ", a.name, a.type, a.components, a.component_names, a.bytes);
+    xml += "      </CellData>\n";
+  }
   xml += "      <Points>\n";
   data_array("        ", "Points", "Float64", 3, {}, point_bytes_);
   xml += "      </Points>\n";

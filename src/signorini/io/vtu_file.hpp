@@ -49,6 +49,9 @@ class VtuFile {
   /// A point-data array of one byte per point (flags).
   void add_point_data(const std::string& name, const std::vector<std::uint8_t>& values);
 
+  /// A cell-data array of one Int32 per cell (the cells added so far).
+  void add_cell_data(const std::string& name, const std::vector<std::int32_t>& values);
+
   [[nodiscard]] Index num_points() const { return num_points_; }
   [[nodiscard]] Index num_cells() const { return static_cast<Index>(types_.size()); }
 
@@ -70,6 +73,7 @@ class VtuFile {
   std::vector<std::int64_t> offsets_;
   std::vector<std::uint8_t> types_;
   std::vector<Array> point_data_;
+  std::vector<Array> cell_data_;
 };
 
 }  // namespace signorini
