@@ -5,6 +5,7 @@
 
 #include "signorini/contact/contact_set.hpp"
 #include "signorini/fem/dof_map.hpp"
+#include "signorini/fem/rigid_obstacle.hpp"
 #include "signorini/fem/vector_field.hpp"
 #include "signorini/mesh/mesh.hpp"
 
@@ -14,5 +15,9 @@ namespace signorini {
 /// movable node (it lies on the clamped boundary entirely), or a gap value is not finite.
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                             const ScalarField& gap);
+/// The same against a rigid obstacle: g_j is the gap from node j along its normal nu_j
+/// (obstacle_gap); where nu_j never meets the obstacle, 10 times the mesh's extent.
+ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
+                            const RigidObstacle& obstacle);
 
 }  // namespace signorini

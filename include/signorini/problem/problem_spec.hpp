@@ -9,6 +9,7 @@
 
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/rigid_obstacle.hpp"
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/vector_field.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
@@ -40,8 +41,11 @@ struct PointLoadSpec {
 /// Possible contact with the rigid foundation on a boundary part (Gamma_K), initial gap g(x).
 struct ContactSpec {
   std::string boundary;
+  /// The initial gap g(x) along the normal, for obstacle.shape = Gap (the paper's).
   ScalarField gap = [](const Point&) { return 0.0; };
   std::string description = "0";
+  /// The rigid partner: a gap formula (`gap` above), a half-plane or a disc.
+  RigidObstacle obstacle;
 };
 
 /// Where the mesh comes from.

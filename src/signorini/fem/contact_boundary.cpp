@@ -48,6 +48,14 @@ std::vector<Index> walk_edges(const Mesh& mesh, const BoundaryPart& part) {
 
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                             const ScalarField& gap) {
+  RigidObstacle obstacle;
+  obstacle.gap = gap;
+  return make_contact_set(mesh, part, dofs, obstacle);
+}
+
+ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
+                            const RigidObstacle& obstacle) {
+  validate(obstacle);
   if (mesh.dim() != 2)
     throw InputError(
         "contact: only 2D meshes are supported so far (3D contact is not implemented)");
@@ -98,6 +106,11 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
       }
     }
   }
+  // The gap of a node whose normal never meets the obstacle: far beyond anything the body can
+  // reach.
+  const double far =
+      10.0 * (mesh.coordinates().rowwise().maxCoeff() - mesh.coordinates().rowwise().minCoeff())
+                 .maxCoeff();
   cs.gaps.resize(n);
   cs.movable.assign(static_cast<std::size_t>(n), false);
   std::vector<Eigen::Triplet<double, int>> triplets;
@@ -110,7 +123,7 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
     cs.normals.col(j) /= len;
     const Index node = cs.nodes[static_cast<std::size_t>(j)];
     const Point x = mesh.point(node);
-    cs.gaps(j) = gap(x);
+    cs.gaps(j) = obstacle_gap(obstacle, x, cs.normals.col(j), far);
     if (!std::isfinite(cs.gaps(j)))
       throw InputError("contact.gap is not finite at x = (" + std::to_string(x(0)) + ", " +
                        std::to_string(x(1)) + "): expected finite values on the contact boundary");

@@ -61,7 +61,23 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   }
   out.table("contact");
   out.value("boundary", spec.contact.boundary);
-  out.value("gap", texts.gap);
+  const RigidObstacle& o = spec.contact.obstacle;
+  switch (o.shape) {
+    case ObstacleShape::Gap:
+      out.value("gap", texts.gap);
+      break;
+    case ObstacleShape::Plane:
+      out.value("obstacle", std::string("plane"));
+      out.value("point", std::vector<double>{o.point(0), o.point(1)});
+      out.value("normal", std::vector<double>{o.normal(0), o.normal(1)});
+      break;
+    case ObstacleShape::Disc:
+      out.value("obstacle", std::string("disc"));
+      out.value("centre", std::vector<double>{o.centre(0), o.centre(1)});
+      out.value("radius", o.radius);
+      out.value("inside", o.body_inside);
+      break;
+  }
   out.table("solver");
   emit_options(out, contact_solver_option_table(), spec.solver);
   out.table("solver.linear");

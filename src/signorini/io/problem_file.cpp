@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -287,6 +288,51 @@ void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
   r.check_keys(*t, "contact");
   spec.contact.boundary = required(r, r.string(*t, "contact", "boundary"), "contact.boundary",
                                    "name of a boundary part");
+  RigidObstacle& o = spec.contact.obstacle;
+  const std::string shape = r.string(*t, "contact", "obstacle").value_or("gap");
+  const auto parsed = enum_from_string(kObstacleShapeNames, shape);
+  if (!parsed)
+    r.fail_at(t->get("obstacle")->source(),
+              "contact.obstacle = \"" + shape + "\": expected " +
+                  enum_choices(kObstacleShapeNames));
+  o.shape = *parsed;
+  // The keys of each shape; those of another shape are refused.
+  const std::map<ObstacleShape, std::vector<std::string>> keys{
+      {ObstacleShape::Gap, {"gap"}},
+      {ObstacleShape::Plane, {"point", "normal"}},
+      {ObstacleShape::Disc, {"centre", "radius", "inside"}}};
+  for (const auto& [other, names] : keys)
+    for (const std::string& key : names)
+      if (other != o.shape && t->contains(key))
+        r.fail_at(t->get(key)->source(),
+                  "contact." + key + " applies with obstacle = \"" +
+                      std::string(enum_to_string(kObstacleShapeNames, other)) + "\" only; this "
+                      "obstacle is \"" + shape + "\"");
+  const auto pair = [&](const char* key, const char* what) {
+    const toml::node* n = t->get(key);
+    if (n == nullptr) r.missing(std::string("contact.") + key, what);
+    const std::vector<double> xy = r.numbers(*n, std::string("contact.") + key, 2, "x and y");
+    return Eigen::Vector2d(xy[0], xy[1]);
+  };
+  if (o.shape == ObstacleShape::Plane) {
+    o.point = pair("point", "[x, y]: a point of the plane");
+    o.normal = pair("normal", "[nx, ny]: the plane's normal, towards the body");
+    if (!(o.normal.norm() > 0.0))
+      r.fail_at(t->get("normal")->source(),
+                "contact.normal = [0, 0]: expected a non-zero vector pointing from the obstacle "
+                "towards the body");
+    return;
+  }
+  if (o.shape == ObstacleShape::Disc) {
+    o.centre = pair("centre", "[x, y]: the disc's centre");
+    const std::optional<double> radius = r.number(*t, "contact", "radius");
+    if (!radius) r.missing("contact.radius", "a positive number");
+    if (!(*radius > 0.0))
+      r.out_of_range("contact.radius", as_text(*radius), "a positive number", t->get("radius"));
+    o.radius = *radius;
+    o.body_inside = r.boolean(*t, "contact", "inside").value_or(false);
+    return;
+  }
   texts.gap = r.expression(*t, "contact", "gap").value_or("0");
   spec.contact.gap =
       finite_scalar_field(with_file(r, [&] { return make_scalar_field(texts.gap, "contact.gap"); }),

@@ -234,6 +234,28 @@ const OptionTable<P>& contact_options() {
         .unit("L")
         .default_text("`\"0\"`")
         .synonyms({"clearance", "initial_gap", "g"});
+    t.custom("obstacle", "`\"gap\"`, `\"plane\"` or `\"disc\"`",
+             "the rigid partner: the foundation of `gap` (the paper's), a half-plane (`point`, "
+             "`normal`) or a disc (`centre`, `radius`, `inside`). For a plane or a disc the gap of "
+             "each contact node is measured exactly, along the body's outward normal there; a "
+             "node whose normal never meets the obstacle gets 10 times the mesh's size")
+        .default_text("`\"gap\"`");
+    t.custom("point", "array of 2 numbers", "plane: a point of the plane's surface")
+        .unit("L")
+        .default_text("required with obstacle = \"plane\"");
+    t.custom("normal", "array of 2 numbers",
+             "plane: its normal, pointing out of the obstacle towards the body (any length)")
+        .default_text("required with obstacle = \"plane\"");
+    t.custom("centre", "array of 2 numbers", "disc: its centre")
+        .unit("L")
+        .default_text("required with obstacle = \"disc\"");
+    t.custom("radius", "number > 0", "disc: its radius")
+        .unit("L")
+        .default_text("required with obstacle = \"disc\"");
+    t.custom("inside", "boolean",
+             "disc: true when the body lies inside the disc (a shaft in a bore), false when "
+             "outside (a roller or a punch pressing on it)")
+        .default_text("`false`");
     return t;
   }();
   return table;

@@ -126,7 +126,11 @@ Model build_model(const ProblemSpec& spec) {
   {
     ScopedTimer t(timings, "contact set");
     problem.contact =
-        make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, spec.contact.gap);
+        make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, [&] {
+          RigidObstacle o = spec.contact.obstacle;
+          if (o.shape == ObstacleShape::Gap) o.gap = spec.contact.gap;
+          return o;
+        }());
   }
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = spec.solver.linear;

@@ -1,0 +1,48 @@
+#pragma once
+// The rigid partner of a contact boundary, and the gap g_j from each contact node to it measured
+// along the body's outward unit normal nu_j (method.md section 3): a gap formula g(x) as the
+// paper has it, a half-plane, or a disc (a roller or punch outside the body, or a bore the body
+// sits in). For planes and discs the gap is exact: the distance from x_j along nu_j to the
+// obstacle's surface, negative where the node starts inside the obstacle.
+
+#include <Eigen/Core>
+
+#include "signorini/core/enum_names.hpp"
+#include "signorini/fem/vector_field.hpp"
+
+namespace signorini {
+
+enum class ObstacleShape { Gap, Plane, Disc };
+
+inline constexpr EnumNames<ObstacleShape, 3> kObstacleShapeNames{{
+    {ObstacleShape::Gap, "gap"},
+    {ObstacleShape::Plane, "plane"},
+    {ObstacleShape::Disc, "disc"},
+}};
+
+struct RigidObstacle {
+  ObstacleShape shape = ObstacleShape::Gap;
+  /// Gap: g(x), read as the gap along the normal at x.
+  ScalarField gap = [](const Point&) { return 0.0; };
+  /// Plane: a point of its surface, and its unit normal pointing out of the obstacle (towards
+  /// the body): the obstacle is the half-plane (x - point) . normal <= 0.
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  Eigen::Vector2d normal = Eigen::Vector2d(0.0, 1.0);
+  /// Disc: centre and radius; the body outside the disc (a roller, a punch) or, with
+  /// body_inside, inside it (a bore, a groove).
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 1.0;
+  bool body_inside = false;
+};
+
+/// Throws InputError unless the obstacle is well defined (a non-zero, finite plane normal, a
+/// positive radius, finite coordinates).
+void validate(const RigidObstacle& obstacle);
+
+/// The gap from x along the unit vector nu to the obstacle: the t >= 0 of the first point
+/// x + t nu on its surface, or t < 0 where x is inside it already. Where the ray x + t nu never
+/// meets the obstacle (a node whose normal faces away from it), `far`.
+double obstacle_gap(const RigidObstacle& obstacle, const Point& x, const Eigen::Vector2d& nu,
+                    double far);
+
+}  // namespace signorini

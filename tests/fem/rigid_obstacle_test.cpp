@@ -1,0 +1,90 @@
+// Gaps to rigid obstacles, measured along the body's normal: exact distances for planes and discs
+// (body outside or inside), negative inside the obstacle, `far` where the normal misses it; and
+// the problem file's obstacle keys.
+
+#include "signorini/fem/rigid_obstacle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "signorini/core/error.hpp"
+#include "signorini/io/problem_file.hpp"
+
+namespace signorini {
+namespace {
+
+TEST(RigidObstacle, PlaneGapAlongTheNormal) {
+  RigidObstacle o;
+  o.shape = ObstacleShape::Plane;
+  o.point = {0.0, -1.0};
+  o.normal = {0.0, 2.0};  // any length: the obstacle is y <= -1
+  const Eigen::Vector2d down(0.0, -1.0);
+  EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.3, 0.5, 0.0), down, 99.0), 1.5);
+  // Along a normal at 60 degrees from the vertical the way is twice as long.
+  const Eigen::Vector2d slanted(std::sqrt(3.0) / 2.0, -0.5);
+  EXPECT_NEAR(obstacle_gap(o, Point(0.0, 0.0, 0.0), slanted, 99.0), 2.0, 1e-15);
+  EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.0, -1.25, 0.0), down, 99.0), -0.25);  // inside
+  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector2d(1.0, 0.0), 99.0), 99.0);
+  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector2d(0.0, 1.0), 99.0), 99.0);
+}
+
+TEST(RigidObstacle, DiscGapOutsideAndInside) {
+  RigidObstacle o;
+  o.shape = ObstacleShape::Disc;
+  o.centre = {0.0, -2.0};
+  o.radius = 1.0;
+  const Eigen::Vector2d down(0.0, -1.0);
+  EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), down, 99.0), 1.0);
+  // Off the axis: x = 0.6 meets the circle at y = -2 + 0.8.
+  EXPECT_NEAR(obstacle_gap(o, Point(0.6, 0.0, 0.0), down, 99.0), 1.2, 1e-15);
+  EXPECT_EQ(obstacle_gap(o, Point(1.5, 0.0, 0.0), down, 99.0), 99.0);   // passes beside it
+  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), -down, 99.0), 99.0);  // looks away from it
+  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -1.1, 0.0), down, 99.0), -0.1, 1e-15);  // inside it
+  // A body inside the disc (a shaft in a bore of radius 1): the way out along the normal.
+  o.body_inside = true;
+  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -2.5, 0.0), down, 99.0), 0.5, 1e-15);
+  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -2.0, 0.0), Eigen::Vector2d(1.0, 0.0), 99.0), 1.0, 1e-15);
+  o.radius = 0.0;
+  EXPECT_THROW(validate(o), InputError);
+}
+
+std::string error_of(const std::string& contact) {
+  const std::string base =
+      "[mesh]\nlength = 3.0\nheight = 1.0\nnx = 6\nny = 2\n[material]\nE = 1.0\nnu = 0.3\n"
+      "[[clamp]]\nboundary = \"left\"\n";
+  try {
+    (void)parse_problem_string(base + contact, "t.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(RigidObstacle, ProblemFileKeys) {
+  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"disc\"\ncentre = [1, -1]\n"
+                     "radius = 1\n"),
+            "no error");
+  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"plane\"\npoint = [0, 0]\n"
+                     "normal = [0, 1]\n"),
+            "no error");
+  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"sphere\"\n"),
+            "t.toml:13: contact.obstacle = \"sphere\": expected \"gap\", \"plane\" or \"disc\"");
+  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"plane\"\npoint = [0, 0]\n"
+                     "normal = [0, 1]\nradius = 2\n"),
+            "t.toml:16: contact.radius applies with obstacle = \"disc\" only; this obstacle is "
+            "\"plane\"");
+  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"disc\"\ncentre = [0, 0]\n"
+                     "radius = -1\n"),
+            "t.toml:15: key 'contact.radius' = -1.0: expected a positive number");
+  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"plane\"\npoint = [0, 0]\n"
+                     "normal = [0, 0]\n"),
+            "t.toml:15: contact.normal = [0, 0]: expected a non-zero vector pointing from the "
+            "obstacle towards the body");
+  EXPECT_NE(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"plane\"\npoint = [0, 0]\n")
+                .find("missing required key 'contact.normal'"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace signorini
