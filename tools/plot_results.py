@@ -201,7 +201,10 @@ def read_contact_csv(outdir):
         with open(path, newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
         header = [h.strip() for h in rows[0]] if rows else []
-        body = np.array([[float(v) for v in r] for r in rows[1:] if r], dtype=float)
+        # Every column is a number but the boundary's name (a text column of newer files).
+        text = [k for k, h in enumerate(header) if h == "boundary"]
+        body = np.array([[0.0 if k in text else float(v) for k, v in enumerate(r)]
+                         for r in rows[1:] if r], dtype=float)
         if body.size == 0:
             body = body.reshape(0, len(header))
         if body.ndim != 2 or body.shape[1] != len(header):

@@ -114,7 +114,7 @@ TEST(SignoriniApp, SolvesTheSmallPaperExample) {
 
   const std::string csv = read(out / "contact.csv");
   EXPECT_EQ(count_lines(csv), 62U);  // header + 61 contact nodes
-  EXPECT_EQ(csv.rfind("x,y,u_n,u_t,pressure,gap,n_x,n_y\n", 0), 0U);
+  EXPECT_EQ(csv.rfind("x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary\n", 0), 0U);
   // The ParaView files (their contents: tests/io/solution_vtu_test.cpp).
   for (const char* vtu : {"solution.vtu", "contact.vtu"})
     EXPECT_EQ(

@@ -41,10 +41,14 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
-std::vector<double> fields_of(const std::string& line) {
+// The numeric fields of a contact.csv row (all but the last, the boundary's name).
+std::vector<double> fields_of(const std::string& line, std::string* name = nullptr) {
   std::vector<double> out;
   std::istringstream in(line);
-  for (std::string f; std::getline(in, f, ',');) out.push_back(std::stod(f));
+  std::vector<std::string> fields;
+  for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+  for (std::size_t k = 0; k + 1 < fields.size(); ++k) out.push_back(std::stod(fields[k]));
+  if (name != nullptr && !fields.empty()) *name = fields.back();
   return out;
 }
 
@@ -132,12 +136,16 @@ TEST(ContactCsv, OneRowPerContactNodeWithConventions) {
   const Solved& s = solved();
   const std::vector<std::string> lines = lines_of(contact_csv(s.result, s.model));
   ASSERT_EQ(lines.size(), 14U);
-  EXPECT_EQ(lines[0], "x,y,u_n,u_t,pressure,gap,n_x,n_y");
+  EXPECT_EQ(lines[0], "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary");
   const Vector u = s.model.dofs.expand(s.result.u);
   const ContactSet& c = s.model.problem.contact;
   for (Index j = 0; j < c.size(); ++j) {
-    const std::vector<double> f = fields_of(lines[static_cast<std::size_t>(j + 1)]);
-    ASSERT_EQ(f.size(), 8U);
+    std::string name;
+    const std::vector<double> f = fields_of(lines[static_cast<std::size_t>(j + 1)], &name);
+    ASSERT_EQ(f.size(), 9U);
+    EXPECT_EQ(name, "bottom");
+    // Arc length from the first node: on the straight bottom edge, x itself.
+    EXPECT_NEAR(f[8], f[0] - s.model.mesh.node(c.nodes[0])(0), 1e-15);
     const Index node = c.nodes[static_cast<std::size_t>(j)];
     EXPECT_EQ(f[0], s.model.mesh.node(node)(0));  // 17 digits: exact round trip
     EXPECT_EQ(f[1], 0.0);
@@ -163,7 +171,7 @@ TEST(ResultWriter, WritesEveryFileIntoANewFolder) {
   std::ifstream csv(out / "contact.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "x,y,u_n,u_t,pressure,gap,n_x,n_y");
+  EXPECT_EQ(header, "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary");
   for (const char* vtu : {"solution.vtu", "contact.vtu"}) EXPECT_TRUE(fs::exists(out / vtu)) << vtu;
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;

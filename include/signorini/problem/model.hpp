@@ -46,6 +46,8 @@ struct Model {
   Vector loads;
   std::vector<ClampedPart> clamped_parts;
   std::vector<PlacedPointLoad> point_loads;
+  /// The name of the contact boundary part (contact.csv's `boundary` column).
+  std::string contact_boundary;
 };
 
 /// Throws InputError on anything unusable: unknown boundary names, rigid motions that the clamps

@@ -142,7 +142,8 @@ Model build_model(const ProblemSpec& spec) {
   std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps);
   return Model{std::move(mesh),      std::move(dofs),    std::move(problem),
                std::move(multigrid), std::move(timings), spec.elasticity,
-               std::move(loads),     std::move(clamps),  std::move(placed)};
+               std::move(loads),     std::move(clamps),  std::move(placed),
+               spec.contact.boundary};
 }
 
 }  // namespace signorini
