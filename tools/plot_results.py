@@ -392,7 +392,10 @@ def title_of(summary):
     problem = summary.get("problem", {})
     mesh = problem.get("mesh", {})
     name = problem.get("name", "problem")
-    text = f"{name}: {mesh.get('nx', '?')} × {mesh.get('ny', '?')} mesh"
+    if "nx" in mesh:
+        text = f"{name}: {mesh.get('nx', '?')} × {mesh.get('ny', '?')} mesh"
+    else:  # a mesh from a file
+        text = f"{name}: {os.path.basename(str(mesh.get('file', '?')))}"
     if "n_dofs" in summary:
         text += f" ({summary['n_dofs']} unknowns)"
     text += f", {summary.get('method', '?')}"

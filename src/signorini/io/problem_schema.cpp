@@ -53,7 +53,8 @@ template <class S>
 void append_values(std::vector<std::pair<std::string, OptionValue>>& out,
                    const OptionTable<S>& table, const S& s) {
   for (std::size_t i = 0; i < table.options.size(); ++i)
-    if (table.getter(i)) out.emplace_back(table.full_key(table.options[i].key), table.getter(i)(s));
+    if (table.getter(i) && table.applies(i, s))
+      out.emplace_back(table.full_key(table.options[i].key), table.getter(i)(s));
 }
 
 }  // namespace

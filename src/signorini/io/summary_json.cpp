@@ -73,7 +73,8 @@ template <class S>
 nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
   nlohmann::json out = nlohmann::json::object();
   for (std::size_t i = 0; i < table.options.size(); ++i)
-    if (table.getter(i)) out[table.options[i].key] = option_json(table.getter(i)(s));
+    if (table.getter(i) && table.applies(i, s))
+      out[table.options[i].key] = option_json(table.getter(i)(s));
   return out;
 }
 
@@ -185,7 +186,24 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   }
   problem["traction"] = tractions;
   if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
-  problem["contact"] = {{"boundary", spec.contact.boundary}, {"gap", spec.contact.description}};
+  problem["contact"] = {{"boundary", spec.contact.boundary}};
+  const RigidObstacle& o = spec.contact.obstacle;
+  switch (o.shape) {
+    case ObstacleShape::Gap:
+      problem["contact"]["gap"] = spec.contact.description;
+      break;
+    case ObstacleShape::Plane:
+      problem["contact"]["obstacle"] = "plane";
+      problem["contact"]["point"] = {o.point(0), o.point(1)};
+      problem["contact"]["normal"] = {o.normal(0), o.normal(1)};
+      break;
+    case ObstacleShape::Disc:
+      problem["contact"]["obstacle"] = "disc";
+      problem["contact"]["centre"] = {o.centre(0), o.centre(1)};
+      problem["contact"]["radius"] = o.radius;
+      problem["contact"]["inside"] = o.body_inside;
+      break;
+  }
   problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
   problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);
   j["problem"] = problem;
