@@ -843,17 +843,36 @@ def figure_deformed(summary, vtu, contact, scale, units, measure):
                                      label="undeformed body"), autolim=False)
     ax.add_collection(LineCollection([deformed[c] for c in outline], colors="k",
                                      linewidths=0.6), autolim=False)
-    if not has_gap:
-        label = "rigid foundation"
-    elif np.any(inside):
-        label = "rigid foundation at its true place x + g·ν (not magnified)"
+    # A rigid plane or disc (contact.obstacle) is drawn as it is, across the drawing; a gap
+    # formula as the points x + g nu of the contact nodes.
+    obstacle = summary.get("problem", {}).get("contact", {})
+    shape = obstacle.get("obstacle", "gap")
+    if shape == "plane":
+        p, n = np.array(obstacle["point"], float), np.array(obstacle["normal"], float)
+        t = np.array([n[1], -n[0]]) / np.hypot(*n)
+        reach = 2.0 * float(np.hypot(*(hi - lo)))
+        line = np.array([p - reach * t, p + reach * t])
+        ax.plot(line[:, 0], line[:, 1], color="tab:brown", lw=3, alpha=0.8, solid_capstyle="butt",
+                label="rigid plane (not moved)", zorder=0)
+    elif shape == "disc":
+        c, r = np.array(obstacle["centre"], float), float(obstacle["radius"])
+        a = np.linspace(0.0, 2.0 * np.pi, 721)
+        ax.plot(c[0] + r * np.cos(a), c[1] + r * np.sin(a), color="tab:brown", lw=3, alpha=0.8,
+                label="rigid disc (not moved)", zorder=0)
     else:
-        label = ("rigid foundation: outside the drawing (gap " +
-                 with_unit(f"{np.nanmin(gap):.3g} to {np.nanmax(gap):.3g}", units.length) + ")")
-    ax.plot(foundation[:, 0], foundation[:, 1], color="tab:brown", lw=3, alpha=0.8,
-            solid_capstyle="butt", label=label, zorder=0)
+        if not has_gap:
+            label = "rigid foundation"
+        elif np.any(inside):
+            label = "rigid foundation at its true place x + g·ν (not magnified)"
+        else:
+            label = ("rigid foundation: outside the drawing (gap " +
+                     with_unit(f"{np.nanmin(gap):.3g} to {np.nanmax(gap):.3g}", units.length) +
+                     ")")
+        ax.plot(foundation[:, 0], foundation[:, 1], color="tab:brown", lw=3, alpha=0.8,
+                solid_capstyle="butt", label=label, zorder=0)
     # Only where the two lines can be told apart.
-    if has_gap and s != 1.0 and np.nanmax(np.abs((s - 1.0) * gap)) > 0.005 * size:
+    if shape == "gap" and has_gap and s != 1.0 and \
+            np.nanmax(np.abs((s - 1.0) * gap)) > 0.005 * size:
         ax.plot(magnified[:, 0], magnified[:, 1], color="tab:brown", lw=1.2, ls=(0, (5, 2)),
                 label=f"foundation with the gap magnified {s:g} times: where the magnified "
                       "body touches it", zorder=2.5)

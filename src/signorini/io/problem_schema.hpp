@@ -30,7 +30,8 @@ namespace signorini {
 /// [solver.linear] included. A table's subtables are the tables whose path extends its own.
 [[nodiscard]] const std::vector<const OptionTableInfo*>& problem_schema();
 
-/// The value of every option that a table reaches in `spec` ("solver.linear.type", "cg"), in
+/// The value of every option that a table reaches in `spec` and that applies there (not mesh.nx
+/// for a Gmsh mesh) ("solver.linear.type", "cg"), in
 /// the order of problem_schema(): what two specs are compared by.
 [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> option_values(
     const ProblemSpec& spec);
