@@ -32,21 +32,29 @@ struct HertzErrors {
   std::vector<double> pressure;
 };
 
+// `example` with its mesh file `mesh`; E, and the factor from the reported contact force to P
+// (2 for a quarter model, whose contact zone is half of Hertz's).
+struct HertzSetup {
+  std::string example = "hertz";
+  double E = 1000.0;
+  double force_factor = 1.0;
+};
+
 HertzErrors solve(const testing::TemporaryFolder& dir, const std::string& mesh,
-                  const std::string& extra = "") {
+                  const std::string& extra = "", const HertzSetup& setup = {}) {
   const fs::path out = dir / (mesh + (extra.empty() ? "" : "_other"));
   const ToolRun r =
-      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/hertz.toml") + " -q --set " +
-                        quoted("mesh.file=\"gmsh/" + mesh + ".msh\"") + " " + extra + " -o " +
-                        quoted(out.string()));
+      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/" + setup.example + ".toml") +
+                        " -q --set " + quoted("mesh.file=\"gmsh/" + mesh + ".msh\"") + " " +
+                        extra + " -o " + quoted(out.string()));
   EXPECT_EQ(r.status, 0) << r.err;
   std::ifstream js(out / "summary.json");
   const nlohmann::json j = nlohmann::json::parse(js);
   EXPECT_TRUE(j["converged"].get<bool>());
   EXPECT_LT(j["kkt"]["equilibrium"].get<double>(), 1e-8);
   HertzErrors e;
-  e.P = j["contact_force"].get<double>();
-  const double E = 1000.0, nu = 0.3, R = 1.0, pi = std::numbers::pi;
+  e.P = setup.force_factor * j["contact_force"].get<double>();
+  const double E = setup.E, nu = 0.3, R = 1.0, pi = std::numbers::pi;
   const double e_star = E / (1.0 - nu * nu);
   e.a = std::sqrt(4.0 * e.P * R / (pi * e_star));
   const double p0 = 2.0 * e.P / (pi * e.a);
@@ -73,7 +81,7 @@ HertzErrors solve(const testing::TemporaryFolder& dir, const std::string& mesh,
     }
   }
   e.peak = std::abs(peak / p0 - 1.0);
-  e.half_width = 0.5 * (hi - lo);
+  e.half_width = setup.force_factor == 1.0 ? 0.5 * (hi - lo) : hi;  // a quarter: from x = 0
   return e;
 }
 
@@ -106,6 +114,21 @@ TEST(Hertz, QuadraticTrianglesToo) {
   EXPECT_LT(p2.peak, 0.005);
   EXPECT_LT(p2.profile, 0.05);
   EXPECT_NEAR(p2.half_width, p2.a, 0.004);
+}
+
+// A disc between two rigid planes, a quarter of it by symmetry, on Q2 quadrilaterals
+// (examples/disc_between_planes.toml): Hertz again, and semismooth Newton agrees.
+TEST(Hertz, DiscBetweenTwoPlanesOnQ2Quadrilaterals) {
+  const testing::TemporaryFolder dir;
+  const HertzSetup disc{"disc_between_planes", 200.0, 2.0};
+  const HertzErrors q2 = solve(dir, "disc_quarter", "", disc);
+  // Measured: P = 0.992, a = 0.0758, peak within 0.25 %.
+  EXPECT_LT(q2.peak, 0.01);
+  EXPECT_NEAR(q2.half_width, q2.a, 0.01);  // within one cell (0.01) of a
+  const HertzErrors ssn = solve(dir, "disc_quarter", "--set solver.method=\"semismooth_newton\"", disc);
+  ASSERT_EQ(ssn.pressure.size(), q2.pressure.size());
+  for (std::size_t j = 0; j < ssn.pressure.size(); ++j)
+    EXPECT_NEAR(ssn.pressure[j], q2.pressure[j], 1e-8 * 10.0) << j;
 }
 
 }  // namespace
