@@ -30,9 +30,9 @@ TEST(GmshMesh, PaperMeshFromGmshReproducesTheRectangle) {
   const ToolRun g = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_gmsh.toml") +
                                       " -q -o " + quoted((dir / "g").string()));
   ASSERT_EQ(g.status, 0) << g.err;
-  const ToolRun r = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml") +
-                                      " -q --set mesh.nx=60 --set mesh.ny=20 -o " +
-                                      quoted((dir / "r").string()));
+  const ToolRun r =
+      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml") +
+                        " -q --set mesh.nx=60 --set mesh.ny=20 -o " + quoted((dir / "r").string()));
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json jg = summary_of(dir / "g"), jr = summary_of(dir / "r");
   EXPECT_EQ(jg["n_dofs"], jr["n_dofs"]);
@@ -78,8 +78,8 @@ TEST(GmshMesh, BadMeshFilesAreOneLine) {
   r = check(write("d.toml", "[mesh]\ntype = \"gmsh\"\n" + rest));
   EXPECT_EQ(r.status, 2);
   EXPECT_CONTAINS(r.err, "missing required key 'mesh.file'");
-  r = check(write("e.toml", "[mesh]\nlength = 1.0\nheight = 1.0\nnx = 2\nfile = \"x.msh\"\n" +
-                                rest));
+  r = check(
+      write("e.toml", "[mesh]\nlength = 1.0\nheight = 1.0\nnx = 2\nfile = \"x.msh\"\n" + rest));
   EXPECT_EQ(r.status, 2);
   EXPECT_CONTAINS(r.err, "e.toml:5: mesh.file applies with type = \"gmsh\" only; remove it\n");
   r = check(write("e2.toml", "[mesh]\nlength = 1.0\nheight = 1.0\nnx = 2\n" + rest));
@@ -115,7 +115,8 @@ TEST(GmshMesh, GeoFileIsMeshedByTheGmshProgram) {
   const nlohmann::json jg = summary_of(dir / "g"), jm = summary_of(dir / "m");
   EXPECT_EQ(jg["n_dofs"], jm["n_dofs"]);
   EXPECT_EQ(jg["uzawa_iterations"], jm["uzawa_iterations"]);
-  EXPECT_NEAR(jg["M"].get<double>(), jm["M"].get<double>(), 1e-12 * std::abs(jm["M"].get<double>()));
+  EXPECT_NEAR(jg["M"].get<double>(), jm["M"].get<double>(),
+              1e-12 * std::abs(jm["M"].get<double>()));
   // A .geo that gmsh cannot mesh: one line, with the file.
   std::ofstream(dir / "broken.geo") << "Point(1) = {0, 0, 0;\n";
   std::ofstream(dir / "broken.toml") << "[mesh]\ntype = \"gmsh\"\nfile = \"broken.geo\"\n"

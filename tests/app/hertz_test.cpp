@@ -24,11 +24,11 @@ using testing::run_tool;
 using testing::ToolRun;
 
 struct HertzErrors {
-  double P = 0.0;          // contact force per unit length
-  double a = 0.0;          // Hertz half-width for P
-  double peak = 0.0;       // |max pressure / p0 - 1|
-  double profile = 0.0;    // max |p_j - p0 sqrt(1 - x_j^2 / a^2)| / p0 over the contact nodes
-  double half_width = 0.0; // half the extent of the nodes in contact
+  double P = 0.0;           // contact force per unit length
+  double a = 0.0;           // Hertz half-width for P
+  double peak = 0.0;        // |max pressure / p0 - 1|
+  double profile = 0.0;     // max |p_j - p0 sqrt(1 - x_j^2 / a^2)| / p0 over the contact nodes
+  double half_width = 0.0;  // half the extent of the nodes in contact
   std::vector<double> pressure;
 };
 
@@ -45,8 +45,8 @@ HertzErrors solve(const testing::TemporaryFolder& dir, const std::string& mesh,
   const fs::path out = dir / (mesh + (extra.empty() ? "" : "_other"));
   const ToolRun r =
       run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/" + setup.example + ".toml") +
-                        " -q --set " + quoted("mesh.file=\"gmsh/" + mesh + ".msh\"") + " " +
-                        extra + " -o " + quoted(out.string()));
+                        " -q --set " + quoted("mesh.file=\"gmsh/" + mesh + ".msh\"") + " " + extra +
+                        " -o " + quoted(out.string()));
   EXPECT_EQ(r.status, 0) << r.err;
   std::ifstream js(out / "summary.json");
   const nlohmann::json j = nlohmann::json::parse(js);
@@ -125,7 +125,8 @@ TEST(Hertz, DiscBetweenTwoPlanesOnQ2Quadrilaterals) {
   // Measured: P = 0.992, a = 0.0758, peak within 0.25 %.
   EXPECT_LT(q2.peak, 0.01);
   EXPECT_NEAR(q2.half_width, q2.a, 0.01);  // within one cell (0.01) of a
-  const HertzErrors ssn = solve(dir, "disc_quarter", "--set solver.method=\"semismooth_newton\"", disc);
+  const HertzErrors ssn =
+      solve(dir, "disc_quarter", "--set solver.method=\"semismooth_newton\"", disc);
   ASSERT_EQ(ssn.pressure.size(), q2.pressure.size());
   for (std::size_t j = 0; j < ssn.pressure.size(); ++j)
     EXPECT_NEAR(ssn.pressure[j], q2.pressure[j], 1e-8 * 10.0) << j;

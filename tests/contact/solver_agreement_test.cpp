@@ -87,7 +87,6 @@ TEST(SolverAgreement, ConjugateGradientsGiveTheDirectSolution) {
   EXPECT_GT(cg_iterations, 0);  // the records count CG iterations
 }
 
-
 // The paper's problem on every 2D cell type (30x10 squares; quadratic cells put a contact node on
 // every mid-edge node of the bottom): the three methods agree, the KKT residuals vanish, and the
 // energies of the five discretisations lie close together, the quadratic ones lowest (they are

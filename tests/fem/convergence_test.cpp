@@ -10,8 +10,8 @@
 #include <numbers>
 
 #include "signorini/fem/elasticity_assembly.hpp"
-#include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/isoparametric_element.hpp"
+#include "signorini/fem/load_assembly.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
@@ -115,7 +115,8 @@ INSTANTIATE_TEST_SUITE_P(CellTypes, Convergence,
                                            RateCase{CellType::Quad9, 2, {4, 8, 16}},
                                            RateCase{CellType::Tri6, 2, {4, 8, 16}}),
                          [](const auto& param_info) {
-                           return std::string(enum_to_string(kCellTypeNames, param_info.param.type));
+                           return std::string(
+                               enum_to_string(kCellTypeNames, param_info.param.type));
                          });
 
 }  // namespace

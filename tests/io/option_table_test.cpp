@@ -195,7 +195,9 @@ TEST(Options, MarkdownTable) {
   const std::string mesh = option_table_markdown(mesh_options());
   EXPECT_CONTAINS(mesh, "| key | type | unit | default | meaning |");
   EXPECT_CONTAINS(mesh, "| `origin` | array of 2 numbers | L | `[0.0, 0.0]` | ");
-  EXPECT_CONTAINS(mesh, "| `nx` | integer >= 1 | | required with type = \"rectangle\" | rectangle: cells along x |");
+  EXPECT_CONTAINS(
+      mesh,
+      "| `nx` | integer >= 1 | | required with type = \"rectangle\" | rectangle: cells along x |");
   EXPECT_EQ(section_title(clamp_options()), "[[clamp]]");
   EXPECT_EQ(section_title(top_level_options()), "top level");
   EXPECT_THROW((void)with_generated_option_tables("no markers"), InputError);

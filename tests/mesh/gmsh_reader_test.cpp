@@ -53,8 +53,7 @@ TEST(GmshReader, FourFormatsGiveTheSameMesh) {
     EXPECT_EQ(m.cell_region(c), m.cell_type(c) == CellType::Quad9 ? 1 : 2);
     EXPECT_GT(m.cell_source_tag(c), 0);
   }
-  EXPECT_EQ(m.boundary_part_names(),
-            (std::vector<std::string>{"bottom", "left", "right", "top"}));
+  EXPECT_EQ(m.boundary_part_names(), (std::vector<std::string>{"bottom", "left", "right", "top"}));
   for (const Index n : m.boundary_part_nodes("bottom")) EXPECT_NEAR(m.node(n)(1), 0.0, 1e-14);
   for (const Index n : m.boundary_part_nodes("right")) EXPECT_NEAR(m.node(n)(0), 2.0, 1e-14);
   // Quadratic edges: 2 k + 1 nodes on a side of k edges (the left side has 4).
@@ -132,8 +131,9 @@ TEST(GmshReader, BadFilesAreNamedWithTheLine) {
   const std::string head = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
   const std::string nodes = "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n";
   EXPECT_EQ(error_of(""), "bad.msh:1: empty file: not a Gmsh mesh file");
-  EXPECT_EQ(error_of("$Nodes\n"), "bad.msh:1: the file does not start with $MeshFormat: not a "
-                                  "Gmsh mesh file");
+  EXPECT_EQ(error_of("$Nodes\n"),
+            "bad.msh:1: the file does not start with $MeshFormat: not a "
+            "Gmsh mesh file");
   EXPECT_EQ(error_of("$MeshFormat\n4.0 0 8\n$EndMeshFormat\n"),
             "bad.msh:2: format 4.0 is not supported: save the mesh as 4.1 or 2.2 (Gmsh: "
             "-format msh41 or msh22)");
@@ -149,10 +149,9 @@ TEST(GmshReader, BadFilesAreNamedWithTheLine) {
             "bad.msh: element 5 uses node 9, which $Nodes does not define");
   EXPECT_EQ(error_of(head + nodes + "$Elements\n2\n5 2 2 0 1 1 2 3\n6 1 2 4 1 2 9\n$EndElements\n"),
             "bad.msh: element 6 uses node 9, which $Nodes does not define");
-  EXPECT_EQ(
-      error_of(head + "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n$EndNodes\n" +
-               "$Elements\n2\n5 2 2 0 1 1 2 3\n6 1 2 4 1 2 4\n$EndElements\n"),
-      "bad.msh: line element 6 (physical group '4') is not an edge of any 2D element");
+  EXPECT_EQ(error_of(head + "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n$EndNodes\n" +
+                     "$Elements\n2\n5 2 2 0 1 1 2 3\n6 1 2 4 1 2 4\n$EndElements\n"),
+            "bad.msh: line element 6 (physical group '4') is not an edge of any 2D element");
   EXPECT_EQ(error_of(head + nodes + "$Elements\n1\n5 1 2 4 1 1 2\n$EndElements\n"),
             "bad.msh: no 2D elements (triangles or quadrilaterals): is it meshed in 2D (gmsh -2)?");
   EXPECT_EQ(error_of(head + "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 1\n$EndNodes\n" +

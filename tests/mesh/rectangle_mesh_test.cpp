@@ -58,11 +58,11 @@ TEST(RectangleMesh, EveryCellTypeHasTheRightCountsAndBoundaries) {
     Index cells, nodes, bottom_nodes;
   };
   const Index nx = 4, ny = 3;
-  for (const Case k : {Case{CellType::Tri3, 2 * nx * ny, (nx + 1) * (ny + 1), nx + 1},
-                       Case{CellType::Tri6, 2 * nx * ny, (2 * nx + 1) * (2 * ny + 1), 2 * nx + 1},
-                       Case{CellType::Quad8, nx * ny, (2 * nx + 1) * (2 * ny + 1) - nx * ny,
-                            2 * nx + 1},
-                       Case{CellType::Quad9, nx * ny, (2 * nx + 1) * (2 * ny + 1), 2 * nx + 1}}) {
+  for (const Case k :
+       {Case{CellType::Tri3, 2 * nx * ny, (nx + 1) * (ny + 1), nx + 1},
+        Case{CellType::Tri6, 2 * nx * ny, (2 * nx + 1) * (2 * ny + 1), 2 * nx + 1},
+        Case{CellType::Quad8, nx * ny, (2 * nx + 1) * (2 * ny + 1) - nx * ny, 2 * nx + 1},
+        Case{CellType::Quad9, nx * ny, (2 * nx + 1) * (2 * ny + 1), 2 * nx + 1}}) {
     RectangleMeshOptions o{1.0, 2.0, 2.0, 1.5, nx, ny};
     o.cell = k.type;
     const Mesh m = make_rectangle_mesh(o);

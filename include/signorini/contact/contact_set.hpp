@@ -16,8 +16,8 @@ struct ContactSet {
   /// h_j = int N_j ds over the contact facets: half the lengths of the straight two-node facets
   /// that touch node j; on quadratic facets the integrals of the quadratic shape functions.
   Vector weights;
-  Vector gaps;               ///< g_j = g(x_j), the initial gap to the foundation
-  SparseMatrix N;            ///< size() x num_free
+  Vector gaps;     ///< g_j = g(x_j), the initial gap to the foundation
+  SparseMatrix N;  ///< size() x num_free
   /// false where node j has no free unknown in its normal direction (clamped): its multiplier is
   /// kept at 0 (method.md section 4, last paragraph).
   std::vector<bool> movable;

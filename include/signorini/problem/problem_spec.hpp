@@ -9,8 +9,8 @@
 
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
-#include "signorini/fem/rigid_obstacle.hpp"
 #include "signorini/fem/load_assembly.hpp"
+#include "signorini/fem/rigid_obstacle.hpp"
 #include "signorini/fem/vector_field.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 

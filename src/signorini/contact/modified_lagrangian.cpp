@@ -119,7 +119,7 @@ double ModifiedLagrangian::phi_change(const Direction& dir, double t) const {
   double penalty = 0.0;
   for (Index j = 0; j < dir.z.size(); ++j) {
     const double z0 = dir.z(j);
-    if (!std::isfinite(z0)) continue;  // non-movable node: no term
+    if (!std::isfinite(z0)) continue;                                 // non-movable node: no term
     const double diff = law_.penalty_change(z0, t * r_ * dir.Nd(j));  // P(z1)^2 - P(z0)^2
     penalty += p_.contact.weights(j) * diff;
   }

@@ -20,11 +20,11 @@
 #include <algorithm>
 
 #include "signorini/contact/contact_methods.hpp"
-#include "signorini/linalg/dense_storage.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/normal_rotation.hpp"
 #include "signorini/contact/outer_iteration.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/linalg/dense_storage.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 
 namespace signorini {
@@ -110,8 +110,9 @@ class DelassusSolver final : public ActiveSetSolver {
     const ContactSet& c = p.contact;
     // W = S^-1 explicitly: the one method that needs the inverse (the Delassus operator).
     const auto view = dense_view(p.A);
-    const Eigen::LLT<Eigen::MatrixXd> llt =
-        view ? Eigen::LLT<Eigen::MatrixXd>(*view) : Eigen::LLT<Eigen::MatrixXd>(Eigen::MatrixXd(p.A));
+    const Eigen::LLT<Eigen::MatrixXd> llt = view
+                                                ? Eigen::LLT<Eigen::MatrixXd>(*view)
+                                                : Eigen::LLT<Eigen::MatrixXd>(Eigen::MatrixXd(p.A));
     if (llt.info() != Eigen::Success)
       throw NumericalError("dense Cholesky: matrix is not positive definite");
     W_ = llt.solve(Eigen::MatrixXd::Identity(p.A.rows(), p.A.cols()));

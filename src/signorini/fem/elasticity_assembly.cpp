@@ -60,8 +60,7 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
       same = change <= 1e-13 * size;
     }
     if (!same) {
-      if (rule.empty() || type != previous_type)
-        rule = cell_quadrature(type, options.gauss_points);
+      if (rule.empty() || type != previous_type) rule = cell_quadrature(type, options.gauss_points);
       try {
         K = element_stiffness(type, X, D, rule);
       } catch (const InputError& e) {
@@ -101,10 +100,9 @@ Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const
     ue.resize(2 * n);
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) ue(2 * a + k) = u(nodes[static_cast<std::size_t>(a)] * 2 + k);
-    const ElementVector fe =
-        element_stiffness(type, cell_coordinates(mesh, c), D,
-                          cell_quadrature(type, options.gauss_points)) *
-        ue;
+    const ElementVector fe = element_stiffness(type, cell_coordinates(mesh, c), D,
+                                               cell_quadrature(type, options.gauss_points)) *
+                             ue;
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) f(nodes[static_cast<std::size_t>(a)] * 2 + k) += fe(2 * a + k);
   }

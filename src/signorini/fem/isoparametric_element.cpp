@@ -11,8 +11,7 @@ namespace signorini {
 CellCoordinates cell_coordinates(const Mesh& mesh, Index c) {
   const auto nodes = mesh.cell(c);
   CellCoordinates X(2, static_cast<Index>(nodes.size()));
-  for (std::size_t a = 0; a < nodes.size(); ++a)
-    X.col(static_cast<Index>(a)) = mesh.node(nodes[a]);
+  for (std::size_t a = 0; a < nodes.size(); ++a) X.col(static_cast<Index>(a)) = mesh.node(nodes[a]);
   return X;
 }
 

@@ -40,8 +40,8 @@ StrainMatrix strain_matrix(CellType t, const CellCoordinates& X, const Eigen::Ve
 /// quadrature point has det J > 0.
 void check_cell_geometry(CellType t, const CellCoordinates& X);
 
-/// K_e over `rule` (after check_cell_geometry) (cell_quadrature(t, ...)). Throws InputError if det J <= 0 at a quadrature
-/// point, with the value found there.
+/// K_e over `rule` (after check_cell_geometry) (cell_quadrature(t, ...)). Throws InputError if det
+/// J <= 0 at a quadrature point, with the value found there.
 ElementMatrix element_stiffness(CellType t, const CellCoordinates& X, const Eigen::Matrix3d& D,
                                 const std::vector<QuadraturePoint>& rule);
 

@@ -78,8 +78,9 @@ void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const Vecto
       if (type == CellType::Line3) {
         const Point mid = mesh.point(fn[2]);
         if ((mid - 0.5 * (xa + xb)).norm() > 1e-10 * (xb - xa).norm())
-          throw InputError(what + ": a box on a boundary part with curved quadratic edges is not "
-                                  "supported; make the loaded part a boundary part of its own");
+          throw InputError(what +
+                           ": a box on a boundary part with curved quadratic edges is not "
+                           "supported; make the loaded part a boundary part of its own");
       }
       const auto [c0, c1] = box.clip(xa, xb);
       if (!(c1 > c0)) continue;  // misses the box, or touches it at one point only

@@ -49,7 +49,6 @@ Eigen::Vector3d reference_node(CellType t, int a);
 /// stiffness of Q2 parallelograms), the 3-point degree-2 rule on P1 triangles and the 6-point
 /// degree-4 rule (Dunavant) on P2 triangles (exact for straight P2 stiffness, degree 2, with
 /// margin for curved cells and loads); Gauss rules of `line_points` on lines.
-std::vector<QuadraturePoint> cell_quadrature(CellType t, int quad4_points = 2,
-                                             int line_points = 2);
+std::vector<QuadraturePoint> cell_quadrature(CellType t, int quad4_points = 2, int line_points = 2);
 
 }  // namespace signorini

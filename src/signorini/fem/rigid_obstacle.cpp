@@ -15,8 +15,9 @@ void validate(const RigidObstacle& o) {
       if (!o.point.allFinite())
         throw InputError("contact.point: expected finite coordinates [x, y]");
       if (!o.normal.allFinite() || !(o.normal.norm() > 0.0))
-        throw InputError("contact.normal: expected a non-zero vector [nx, ny] pointing from the "
-                         "obstacle towards the body");
+        throw InputError(
+            "contact.normal: expected a non-zero vector [nx, ny] pointing from the "
+            "obstacle towards the body");
       return;
     case ObstacleShape::Disc:
       if (!o.centre.allFinite())
@@ -51,9 +52,9 @@ double obstacle_gap(const RigidObstacle& o, const Point& x3, const Eigen::Vector
         if (disc < 0.0) return far;
         return -b + std::sqrt(disc);
       }
-      if (disc < 0.0) return far;           // the ray passes the disc
+      if (disc < 0.0) return far;             // the ray passes the disc
       const double t = -b - std::sqrt(disc);  // the first point of the circle on the ray
-      if (t < 0.0 && q > 0.0) return far;   // the disc lies behind the node
+      if (t < 0.0 && q > 0.0) return far;     // the disc lies behind the node
       return t;
     }
   }

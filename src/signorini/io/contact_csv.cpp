@@ -25,15 +25,17 @@ std::string contact_csv(const ContactResult& result, const Model& model) {
   double s = 0.0;
   for (Index j = 0; j < c.size(); ++j) {
     const Index node = c.nodes[static_cast<std::size_t>(j)];
-    if (j > 0) s += (model.mesh.node(node) - model.mesh.node(c.nodes[static_cast<std::size_t>(j - 1)])).norm();
+    if (j > 0)
+      s += (model.mesh.node(node) - model.mesh.node(c.nodes[static_cast<std::size_t>(j - 1)]))
+               .norm();
     const double ux = u(2 * node);
     const double uy = u(2 * node + 1);
     const double nx = c.normals(0, j);
     const double ny = c.normals(1, j);
     const auto x = model.mesh.node(node);
-    out += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n",
-                       x(0), x(1), ux * nx + uy * ny, -ux * ny + uy * nx, result.l(j), c.gaps(j),
-                       nx + 0.0, ny + 0.0, s, name);
+    out += fmt::format(
+        "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", x(0), x(1),
+        ux * nx + uy * ny, -ux * ny + uy * nx, result.l(j), c.gaps(j), nx + 0.0, ny + 0.0, s, name);
   }
   return out;
 }

@@ -62,8 +62,9 @@ void read_top_level(const Reader& r, const toml::table& root, ProblemSpec& spec)
 void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   const toml::table* t = r.table(root, "", "mesh");
   if (t == nullptr)
-    r.missing("mesh", "a [mesh] section: type = \"rectangle\" with length, height, nx and ny, "
-                      "or type = \"gmsh\" with file");
+    r.missing("mesh",
+              "a [mesh] section: type = \"rectangle\" with length, height, nx and ny, "
+              "or type = \"gmsh\" with file");
   r.check_keys(*t, "mesh");
   read_options(r, *t, mesh_options(), spec);
   check_options(r, t, mesh_options(), spec);
@@ -292,9 +293,8 @@ void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
   const std::string shape = r.string(*t, "contact", "obstacle").value_or("gap");
   const auto parsed = enum_from_string(kObstacleShapeNames, shape);
   if (!parsed)
-    r.fail_at(t->get("obstacle")->source(),
-              "contact.obstacle = \"" + shape + "\": expected " +
-                  enum_choices(kObstacleShapeNames));
+    r.fail_at(t->get("obstacle")->source(), "contact.obstacle = \"" + shape + "\": expected " +
+                                                enum_choices(kObstacleShapeNames));
   o.shape = *parsed;
   // The keys of each shape; those of another shape are refused.
   const std::map<ObstacleShape, std::vector<std::string>> keys{
@@ -306,8 +306,10 @@ void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
       if (other != o.shape && t->contains(key))
         r.fail_at(t->get(key)->source(),
                   "contact." + key + " applies with obstacle = \"" +
-                      std::string(enum_to_string(kObstacleShapeNames, other)) + "\" only; this "
-                      "obstacle is \"" + shape + "\"");
+                      std::string(enum_to_string(kObstacleShapeNames, other)) +
+                      "\" only; this "
+                      "obstacle is \"" +
+                      shape + "\"");
   const auto pair = [&](const char* key, const char* what) {
     const toml::node* n = t->get(key);
     if (n == nullptr) r.missing(std::string("contact.") + key, what);
@@ -362,9 +364,9 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
 // out-of-memory killer.
 void check_memory(const Reader& r, const ProblemSpec& spec) {
   if (spec.mesh_type != MeshType::Rectangle) return;  // a file's size is known when it is read
-  const double p = cell_order(spec.mesh.cell);  // quadratic cells: the lattice of half steps
-  const double nodes = (p * static_cast<double>(spec.mesh.nx) + 1.0) *
-                       (p * static_cast<double>(spec.mesh.ny) + 1.0);
+  const double p = cell_order(spec.mesh.cell);        // quadratic cells: the lattice of half steps
+  const double nodes =
+      (p * static_cast<double>(spec.mesh.nx) + 1.0) * (p * static_cast<double>(spec.mesh.ny) + 1.0);
   const double need = estimated_memory_bytes(nodes, spec.solver.linear.type);
   const double have = physical_memory_bytes();
   if (have > 0.0 && need > have)

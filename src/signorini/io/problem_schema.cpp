@@ -113,11 +113,12 @@ const OptionTable<P>& mesh_options() {
     t.integer("ny", mesh_ny, at_least(1), "rectangle: cells along y")
         .default_text("required with type = \"rectangle\"")
         .applies_when(rectangle_mesh, kRectangleWords);
-    t.choice("cell", mesh_cell, kRectangleCellNames,
-             "rectangle: the finite element: bilinear (`quad4`, the paper's), serendipity (`quad8`) or "
-             "biquadratic (`quad9`) quadrilaterals, or each square split into two linear (`tri3`) "
-             "or quadratic (`tri6`) triangles. Quadratic elements are far more accurate per "
-             "unknown and lock much less for nu near 0.5; the geometric multigrid needs `quad4`")
+    t.choice(
+         "cell", mesh_cell, kRectangleCellNames,
+         "rectangle: the finite element: bilinear (`quad4`, the paper's), serendipity (`quad8`) or "
+         "biquadratic (`quad9`) quadrilaterals, or each square split into two linear (`tri3`) "
+         "or quadratic (`tri6`) triangles. Quadratic elements are far more accurate per "
+         "unknown and lock much less for nu near 0.5; the geometric multigrid needs `quad4`")
         .applies_when(rectangle_mesh, kRectangleWords);
     return t;
   }();

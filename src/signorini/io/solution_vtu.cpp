@@ -19,8 +19,7 @@ void require_2d(const Model& model, const char* file) {
 std::vector<double> displacement_xyz(const Vector& u_full, Index num_nodes, int dim) {
   std::vector<double> out(static_cast<std::size_t>(3 * num_nodes), 0.0);
   for (Index n = 0; n < num_nodes; ++n)
-    for (int k = 0; k < dim; ++k)
-      out[static_cast<std::size_t>(3 * n + k)] = u_full(dim * n + k);
+    for (int k = 0; k < dim; ++k) out[static_cast<std::size_t>(3 * n + k)] = u_full(dim * n + k);
   return out;
 }
 

@@ -14,7 +14,6 @@ void DenseCholeskySolver::factorize_dense(const Eigen::MatrixXd& H) {
   factorize_in_place();
 }
 
-
 Eigen::MatrixXd& DenseCholeskySolver::workspace(Index n) {
   factorized_ = false;
   if (storage_.rows() != n) storage_.resize(n, n);

@@ -29,7 +29,7 @@ class DenseCholeskySolver final : public LinearSolver {
   [[nodiscard]] std::string_view name() const override { return "dense"; }
 
  private:
-  Eigen::MatrixXd storage_;                         // H, then its factor
+  Eigen::MatrixXd storage_;  // H, then its factor
   // Made by each factorisation over storage_ (Eigen's in-place decomposition).
   std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>> llt_;
   bool factorized_ = false;

@@ -9,8 +9,7 @@ SparseMatrix dense_stored_matrix(Index n) {
   A.resizeNonZeros(n * n);  // compressed, filled directly
   for (Index col = 0; col <= n; ++col) A.outerIndexPtr()[col] = static_cast<int>(col * n);
   for (Index col = 0; col < n; ++col)
-    for (Index row = 0; row < n; ++row)
-      A.innerIndexPtr()[col * n + row] = static_cast<int>(row);
+    for (Index row = 0; row < n; ++row) A.innerIndexPtr()[col * n + row] = static_cast<int>(row);
   std::fill(A.valuePtr(), A.valuePtr() + n * n, 0.0);
   return A;
 }

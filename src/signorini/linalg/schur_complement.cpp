@@ -2,8 +2,8 @@
 
 #include <numeric>
 
-#include "signorini/linalg/detail/cholmod_matrix.hpp"
 #include "signorini/linalg/dense_storage.hpp"
+#include "signorini/linalg/detail/cholmod_matrix.hpp"
 #include "signorini/linalg/fill_reducing_ordering.hpp"
 
 namespace signorini {

@@ -1,22 +1,22 @@
 #include "signorini/mesh/gmsh_reader.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cerrno>
 #include <cstring>
-#include <fcntl.h>
 #include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
-
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "signorini/core/error.hpp"
 
@@ -25,8 +25,9 @@ namespace signorini {
 namespace {
 
 // Gmsh element types: nodes per element (0: unknown to us), for types 1..31.
-constexpr std::array<int, 32> kGmshNodes{0, 2, 3, 4, 4,  8,  6,  5,  3,  6,  9,  10, 27, 18, 14, 1,
-                                         8, 20, 15, 13, 9, 10, 12, 15, 15, 21, 4, 5, 6, 20, 35, 56};
+constexpr std::array<int, 32> kGmshNodes{0,  2,  3,  4,  4, 8, 6,  5,  3,  6, 9,
+                                         10, 27, 18, 14, 1, 8, 20, 15, 13, 9, 10,
+                                         12, 15, 15, 21, 4, 5, 6,  20, 35, 56};
 
 // Nodes of the largest cell we read (Quad9): the length of the cells' sort keys.
 constexpr std::size_t kMaxSortKey = 9;
@@ -81,9 +82,9 @@ class Reader {
   [[noreturn]] void fail_at(std::size_t pos, const std::string& what) const {
     if (binary_ && pos > binary_start_)
       throw InputError(name_ + ": byte " + std::to_string(pos) + ": " + what);
-    const auto line = 1 + std::count(s_.begin(), s_.begin() + static_cast<std::ptrdiff_t>(
-                                                               std::min(pos, s_.size())),
-                                     '\n');
+    const auto line =
+        1 + std::count(s_.begin(),
+                       s_.begin() + static_cast<std::ptrdiff_t>(std::min(pos, s_.size())), '\n');
     throw InputError(name_ + ":" + std::to_string(line) + ": " + what);
   }
 
@@ -110,14 +111,16 @@ class Reader {
   // The next whitespace-separated word.
   std::string word(const char* what) {
     skip_space();
-    if (pos_ >= s_.size()) fail(std::string("file ends where ") + what + " was expected (truncated?)");
+    if (pos_ >= s_.size())
+      fail(std::string("file ends where ") + what + " was expected (truncated?)");
     const std::size_t b = pos_;
     while (pos_ < s_.size() && !std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
     return s_.substr(b, pos_ - b);
   }
   long long integer(const char* what) {
     skip_space();
-    if (pos_ >= s_.size()) fail(std::string("file ends where ") + what + " was expected (truncated?)");
+    if (pos_ >= s_.size())
+      fail(std::string("file ends where ") + what + " was expected (truncated?)");
     const char* b = s_.c_str() + pos_;
     char* e = nullptr;
     const long long v = std::strtoll(b, &e, 10);
@@ -128,7 +131,8 @@ class Reader {
   }
   double real(const char* what) {
     skip_space();
-    if (pos_ >= s_.size()) fail(std::string("file ends where ") + what + " was expected (truncated?)");
+    if (pos_ >= s_.size())
+      fail(std::string("file ends where ") + what + " was expected (truncated?)");
     const char* b = s_.c_str() + pos_;
     char* e = nullptr;
     const double v = std::strtod(b, &e);
@@ -190,7 +194,7 @@ class Reader {
 
 struct Parsed {
   int major = 0;
-  std::map<std::pair<int, int>, std::string> physical_names;  // (dim, tag) -> name
+  std::map<std::pair<int, int>, std::string> physical_names;         // (dim, tag) -> name
   std::map<std::pair<int, int>, std::vector<int>> entity_physicals;  // (dim, entity) -> tags
   std::vector<Index> node_tags;
   std::vector<double> xyz;  // 3 per node
@@ -303,8 +307,8 @@ void read_elements_41(Reader& r, Parsed& p) {
     const int k = gmsh_nodes(type);
     if (k == 0) r.fail("element type " + std::to_string(type) + " is not a Gmsh type known here");
     const auto it = p.entity_physicals.find({dim, entity});
-    const std::vector<int> physicals = it == p.entity_physicals.end() ? std::vector<int>{}
-                                                                       : it->second;
+    const std::vector<int> physicals =
+        it == p.entity_physicals.end() ? std::vector<int>{} : it->second;
     nodes.resize(static_cast<std::size_t>(k));
     for (long long e = 0; e < n; ++e) {
       const std::size_t where = r.pos();
@@ -385,7 +389,8 @@ Parsed parse(const std::string& content, const std::string& name) {
       else if (version.rfind("2.", 0) == 0)
         p.major = 2;
       else
-        r.fail("format " + version + " is not supported: save the mesh as 4.1 or 2.2 (Gmsh: "
+        r.fail("format " + version +
+               " is not supported: save the mesh as 4.1 or 2.2 (Gmsh: "
                "-format msh41 or msh22)");
       if (data_size != 8) r.fail("data size " + std::to_string(data_size) + ", expected 8");
       if (file_type == 1) {
@@ -468,8 +473,9 @@ void mirror(CellType t, Index* v) {
 Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   const Parsed p = parse(content, name);
   if (p.cells.types.empty())
-    throw InputError(name + ": no 2D elements (triangles or quadrilaterals): is it meshed in 2D "
-                            "(gmsh -2)?");
+    throw InputError(name +
+                     ": no 2D elements (triangles or quadrilaterals): is it meshed in 2D "
+                     "(gmsh -2)?");
   // Node tags to positions in $Nodes.
   Index max_tag = 0;
   for (const Index t : p.node_tags) max_tag = std::max(max_tag, t);
@@ -489,8 +495,8 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   std::vector<char> used(p.node_tags.size(), 0);
   for (std::size_t i = 0; i < p.cells.types.size(); ++i)
     for (Index k = p.cells.offsets[i]; k < p.cells.offsets[i + 1]; ++k)
-      used[static_cast<std::size_t>(node_slot(p.cells, i, p.cells.nodes[static_cast<std::size_t>(k)]))] =
-          1;
+      used[static_cast<std::size_t>(
+          node_slot(p.cells, i, p.cells.nodes[static_cast<std::size_t>(k)]))] = 1;
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < used.size(); ++k)
     if (used[k] != 0) order.push_back(k);
@@ -643,8 +649,9 @@ Mesh read_mesh_file(const std::filesystem::path& file) {
   const int spawned = posix_spawnp(&pid, "gmsh", &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0)
-    throw InputError(geo + ": meshing a .geo file needs the gmsh program, which is not installed "
-                           "(Debian: apt-get install gmsh); or give the .msh file it makes");
+    throw InputError(geo +
+                     ": meshing a .geo file needs the gmsh program, which is not installed "
+                     "(Debian: apt-get install gmsh); or give the .msh file it makes");
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }

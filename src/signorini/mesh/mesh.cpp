@@ -84,7 +84,8 @@ void Mesh::set_cell_source_tags(std::vector<Index> tags) {
 
 void Mesh::set_boundary_part(std::string name, std::vector<Facet> facets) {
   for (const Facet& f : facets)
-    if (f.cell < 0 || f.cell >= num_cells() || f.local < 0 || f.local >= facets_per_cell(cell_type(f.cell)))
+    if (f.cell < 0 || f.cell >= num_cells() || f.local < 0 ||
+        f.local >= facets_per_cell(cell_type(f.cell)))
       throw InputError("mesh: boundary part '" + name + "' names facet (" + std::to_string(f.cell) +
                        ", " + std::to_string(f.local) + "), which does not exist");
   BoundaryPart part{name, std::move(facets)};

@@ -125,12 +125,11 @@ Model build_model(const ProblemSpec& spec) {
   }
   {
     ScopedTimer t(timings, "contact set");
-    problem.contact =
-        make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, [&] {
-          RigidObstacle o = spec.contact.obstacle;
-          if (o.shape == ObstacleShape::Gap) o.gap = spec.contact.gap;
-          return o;
-        }());
+    problem.contact = make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, [&] {
+      RigidObstacle o = spec.contact.obstacle;
+      if (o.shape == ObstacleShape::Gap) o.gap = spec.contact.gap;
+      return o;
+    }());
   }
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = spec.solver.linear;
@@ -140,10 +139,9 @@ Model build_model(const ProblemSpec& spec) {
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps);
-  return Model{std::move(mesh),      std::move(dofs),    std::move(problem),
-               std::move(multigrid), std::move(timings), spec.elasticity,
-               std::move(loads),     std::move(clamps),  std::move(placed),
-               spec.contact.boundary};
+  return Model{std::move(mesh),    std::move(dofs),      std::move(problem), std::move(multigrid),
+               std::move(timings), spec.elasticity,      std::move(loads),   std::move(clamps),
+               std::move(placed),  spec.contact.boundary};
 }
 
 }  // namespace signorini
