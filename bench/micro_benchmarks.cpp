@@ -4,6 +4,10 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/contact/condensed_problem.hpp"
 #include "signorini/contact/contact_solver.hpp"
@@ -11,6 +15,7 @@
 #include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/iterative/smoothed_aggregation.hpp"
+#include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/rectangle_hierarchy.hpp"
 
@@ -104,6 +109,74 @@ void SmoothedAggregationSetup(benchmark::State& state) {
   state.counters["dofs"] = static_cast<double>(model.problem.A.rows());
 }
 BENCHMARK(SmoothedAggregationSetup)->Arg(480)->Arg(960)->Unit(benchmark::kMillisecond);
+
+// Reading a Gmsh file of format 4.1, binary: an n x n grid of Q1 quadrilaterals ((n + 1)^2
+// nodes; n = 1000 gives a million), written here in the layout Gmsh writes (one entity block of
+// nodes, one of elements, the four sides as physical curves left out), then read with
+// read_gmsh_mesh. The counter MB/s is the file's size over the time of one read (issue target:
+// 100 MB/s or more for a million nodes).
+std::string gmsh_grid_file(Index n) {
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("signorini_bench_grid_" + std::to_string(n) + ".msh"))
+                               .string();
+  if (std::filesystem::exists(path)) return path;
+  std::ofstream out(path, std::ios::binary);
+  const auto put = [&out](const auto& v) {
+    out.write(reinterpret_cast<const char*>(&v), sizeof v);
+  };
+  const auto nodes = static_cast<std::uint64_t>((n + 1) * (n + 1));
+  const auto cells = static_cast<std::uint64_t>(n * n);
+  out << "$MeshFormat\n4.1 1 8\n";
+  put(std::int32_t{1});
+  out << "\n$EndMeshFormat\n$Entities\n";
+  for (const std::uint64_t c : {0, 0, 1, 0}) put(c);
+  put(std::int32_t{1});
+  for (const double v : {0.0, 0.0, 0.0, 1.0, 1.0, 0.0}) put(v);
+  put(std::uint64_t{0});  // no physical group
+  put(std::uint64_t{0});  // no bounding curves
+  out << "\n$EndEntities\n$Nodes\n";
+  for (const std::uint64_t v : {std::uint64_t{1}, nodes, std::uint64_t{1}, nodes}) put(v);
+  put(std::int32_t{2});
+  put(std::int32_t{1});
+  put(std::int32_t{0});
+  put(nodes);
+  for (std::uint64_t k = 1; k <= nodes; ++k) put(k);
+  for (Index j = 0; j <= n; ++j)
+    for (Index i = 0; i <= n; ++i) {
+      put(static_cast<double>(i) / static_cast<double>(n));
+      put(static_cast<double>(j) / static_cast<double>(n));
+      put(0.0);
+    }
+  out << "\n$EndNodes\n$Elements\n";
+  for (const std::uint64_t v : {std::uint64_t{1}, cells, std::uint64_t{1}, cells}) put(v);
+  put(std::int32_t{2});
+  put(std::int32_t{1});
+  put(std::int32_t{3});
+  put(cells);
+  std::uint64_t tag = 1;
+  for (Index j = 0; j < n; ++j)
+    for (Index i = 0; i < n; ++i) {
+      const auto n0 = static_cast<std::uint64_t>(j * (n + 1) + i + 1);
+      put(tag++);
+      for (const std::uint64_t v : {n0, n0 + 1, n0 + 2 + static_cast<std::uint64_t>(n),
+                                    n0 + 1 + static_cast<std::uint64_t>(n)})
+        put(v);
+    }
+  out << "\n$EndElements\n";
+  return path;
+}
+
+void GmshRead(benchmark::State& state) {
+  const std::string path = gmsh_grid_file(state.range(0));
+  const double megabytes = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
+  Index nodes = 0;
+  for (auto _ : state) nodes = read_gmsh_mesh(path).num_nodes();
+  state.counters["nodes"] = static_cast<double>(nodes);
+  state.counters["MB"] = megabytes;
+  state.counters["MB/s"] = benchmark::Counter(megabytes * static_cast<double>(state.iterations()),
+                                              benchmark::Counter::kIsRate);
+}
+BENCHMARK(GmshRead)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
