@@ -68,7 +68,7 @@ bool is_3d_type(int t) {
 struct RawElements {
   std::vector<int> types;
   std::vector<Index> tags;
-  std::vector<std::vector<int>> physicals;
+  std::vector<int> group;  // index into Parsed::groups: the element's physical tags
   std::vector<Index> offsets{0};
   std::vector<Index> nodes;
   std::vector<std::size_t> positions;  // where in the file (for messages)
@@ -196,6 +196,14 @@ struct Parsed {
   int major = 0;
   std::map<std::pair<int, int>, std::string> physical_names;         // (dim, tag) -> name
   std::map<std::pair<int, int>, std::vector<int>> entity_physicals;  // (dim, entity) -> tags
+  // The distinct lists of physical tags, so that an element stores one index: group 0 is none.
+  std::vector<std::vector<int>> groups{{}};
+  std::map<std::vector<int>, int> group_index{{{}, 0}};
+  int group_of(const std::vector<int>& tags) {
+    const auto [it, added] = group_index.try_emplace(tags, static_cast<int>(groups.size()));
+    if (added) groups.push_back(tags);
+    return it->second;
+  }
   std::vector<Index> node_tags;
   std::vector<double> xyz;  // 3 per node
   RawElements cells, lines;
@@ -271,8 +279,8 @@ void read_nodes_22(Reader& r, Parsed& p) {
   r.expect("$EndNodes");
 }
 
-void add_element(Reader& r, Parsed& p, int type, Index tag, std::vector<int> physicals,
-                 const std::vector<Index>& nodes, std::size_t where) {
+void add_element(Reader& r, Parsed& p, int type, Index tag, int group, const Index* nodes, int k,
+                 std::size_t where) {
   const std::optional<CellType> ct = cell_type_of(type);
   if (!ct) {
     if (type == 15) return;  // a point element: nothing to do
@@ -284,11 +292,11 @@ void add_element(Reader& r, Parsed& p, int type, Index tag, std::vector<int> phy
                          "triangles of 3 and 6, quadrilaterals of 4, 8 and 9)");
   }
   RawElements& e = cell_dimension(*ct) == 2 ? p.cells : p.lines;
-  if (cell_dimension(*ct) == 1 && physicals.empty()) return;  // a line in no group: ignored
+  if (cell_dimension(*ct) == 1 && group == 0) return;  // a line in no group: ignored
   e.types.push_back(type);
   e.tags.push_back(tag);
-  e.physicals.push_back(std::move(physicals));
-  e.nodes.insert(e.nodes.end(), nodes.begin(), nodes.end());
+  e.group.push_back(group);
+  e.nodes.insert(e.nodes.end(), nodes, nodes + k);
   e.offsets.push_back(static_cast<Index>(e.nodes.size()));
   e.positions.push_back(where);
 }
@@ -307,15 +315,18 @@ void read_elements_41(Reader& r, Parsed& p) {
     const int k = gmsh_nodes(type);
     if (k == 0) r.fail("element type " + std::to_string(type) + " is not a Gmsh type known here");
     const auto it = p.entity_physicals.find({dim, entity});
-    const std::vector<int> physicals =
-        it == p.entity_physicals.end() ? std::vector<int>{} : it->second;
+    const int group = it == p.entity_physicals.end() ? 0 : p.group_of(it->second);
+    if (dim == 2) {  // room for the block at once, not by doubling
+      p.cells.nodes.reserve(p.cells.nodes.size() + static_cast<std::size_t>(n * k));
+      for (auto* v : {&p.cells.tags, &p.cells.offsets}) v->reserve(v->size() + n);
+    }
     nodes.resize(static_cast<std::size_t>(k));
     for (long long e = 0; e < n; ++e) {
       const std::size_t where = r.pos();
       const auto tag = static_cast<Index>(r.count("an element tag", true));
       for (int i = 0; i < k; ++i)
         nodes[static_cast<std::size_t>(i)] = static_cast<Index>(r.count("a node tag", true));
-      add_element(r, p, type, tag, physicals, nodes, where);
+      add_element(r, p, type, tag, group, nodes.data(), k, where);
     }
   }
   r.expect("$EndElements");
@@ -340,9 +351,8 @@ void read_elements_22(Reader& r, Parsed& p) {
       for (int i = 0; i < k; ++i)
         nodes[static_cast<std::size_t>(i)] = static_cast<Index>(r.integer("a node tag"));
       // The first tag is the physical group (0: none), the second the elementary entity.
-      std::vector<int> phys;
-      if (!tags.empty() && tags[0] != 0) phys.push_back(tags[0]);
-      add_element(r, p, type, tag, phys, nodes, where);
+      const int group = !tags.empty() && tags[0] != 0 ? p.group_of({tags[0]}) : 0;
+      add_element(r, p, type, tag, group, nodes.data(), k, where);
     }
   } else {
     r.skip_newline();
@@ -362,9 +372,8 @@ void read_elements_22(Reader& r, Parsed& p) {
         for (int& t : tags) t = r.get<std::int32_t>("an element");
         for (int i = 0; i < k; ++i)
           nodes[static_cast<std::size_t>(i)] = r.get<std::int32_t>("an element");
-        std::vector<int> phys;
-        if (!tags.empty() && tags[0] != 0) phys.push_back(tags[0]);
-        add_element(r, p, type, tag, phys, nodes, where);
+        const int group = !tags.empty() && tags[0] != 0 ? p.group_of({tags[0]}) : 0;
+        add_element(r, p, type, tag, group, nodes.data(), k, where);
       }
       done += count;
     }
@@ -529,20 +538,40 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   // in 2.2 and 4.1, but not the nodes. Sorted by their node tags (sorted, compared as words), the
   // same mesh in any format assembles in the same order: the same sums, the same bits.
   const std::size_t nc = p.cells.types.size();
-  std::vector<std::array<Index, kMaxSortKey>> sort_key(nc);
-  for (std::size_t i = 0; i < nc; ++i) {
-    auto& k = sort_key[i];
+  // The sorted node tags of cell i, the order's key.
+  const auto sorted_tags = [&](std::size_t i) {
+    std::array<Index, kMaxSortKey> k;
     k.fill(-1);
     const auto b = static_cast<std::size_t>(p.cells.offsets[i]);
     const auto e = static_cast<std::size_t>(p.cells.offsets[i + 1]);
     std::copy(p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(b),
               p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(e), k.begin());
     std::sort(k.begin(), k.begin() + static_cast<std::ptrdiff_t>(e - b));
+    return k;
+  };
+  // First by the smallest node tag (a sort of 8-byte words), then runs of equal smallest tags
+  // (a few cells each) by the whole key.
+  std::vector<std::pair<Index, std::size_t>> by_first(nc);
+  for (std::size_t i = 0; i < nc; ++i) {
+    const auto b = p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(p.cells.offsets[i]);
+    const auto e = p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(p.cells.offsets[i + 1]);
+    by_first[i] = {*std::min_element(b, e), i};
   }
+  std::sort(by_first.begin(), by_first.end());
   std::vector<std::size_t> canonical(nc);
-  for (std::size_t i = 0; i < nc; ++i) canonical[i] = i;
-  std::stable_sort(canonical.begin(), canonical.end(),
-                   [&](std::size_t a, std::size_t b) { return sort_key[a] < sort_key[b]; });
+  for (std::size_t run = 0; run < nc;) {
+    std::size_t end = run + 1;
+    while (end < nc && by_first[end].first == by_first[run].first) ++end;
+    if (end - run > 1)
+      std::sort(by_first.begin() + static_cast<std::ptrdiff_t>(run),
+                by_first.begin() + static_cast<std::ptrdiff_t>(end),
+                [&](const auto& a, const auto& b) {
+                  const auto ka = sorted_tags(a.second), kb = sorted_tags(b.second);
+                  return ka != kb ? ka < kb : a.second < b.second;
+                });
+    for (std::size_t k = run; k < end; ++k) canonical[k] = by_first[k].second;
+    run = end;
+  }
   for (const std::size_t i : canonical) {
     const CellType t = *cell_type_of(p.cells.types[i]);
     const std::size_t first = cells.size();
@@ -559,7 +588,8 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
     if (area2 < 0.0) mirror(t, v);
     types.push_back(t);
     tags.push_back(p.cells.tags[i]);
-    region_tag.push_back(p.cells.physicals[i].empty() ? -1 : p.cells.physicals[i].front());
+    const std::vector<int>& groups = p.groups[static_cast<std::size_t>(p.cells.group[i])];
+    region_tag.push_back(groups.empty() ? -1 : groups.front());
   }
   Mesh mesh(std::move(types), std::move(xy), std::move(cells));
   mesh.set_cell_source_tags(std::move(tags));
@@ -578,35 +608,47 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   for (const int t : region_tag) regions.push_back(t < 0 ? 0 : region_index.at(t));
   mesh.set_cell_regions(std::move(region_names), std::move(regions));
 
-  // Boundary parts: each line matched to the cell edge with the same end nodes.
-  std::unordered_map<std::uint64_t, Facet> edges;
+  // Boundary parts: each line matched to the cell edge with the same end nodes. The lines'
+  // keys go into a table first (a boundary's worth), then every cell edge is looked up in it.
   const auto key = [](Index a, Index b) {
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
            static_cast<std::uint64_t>(std::max(a, b));
   };
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (int f = 0; f < facets_per_cell(mesh.cell_type(c)); ++f) {
-      const auto fn = mesh.facet_nodes({c, f});
-      edges.emplace(key(fn[0], fn[1]), Facet{c, f});
-    }
-  std::map<int, std::vector<Facet>> parts;
+  std::vector<std::vector<Index>> line_nodes(p.lines.types.size());
+  std::unordered_map<std::uint64_t, Facet> edges;
   for (std::size_t i = 0; i < p.lines.types.size(); ++i) {
-    std::vector<Index> v;
     for (Index k = p.lines.offsets[i]; k < p.lines.offsets[i + 1]; ++k) {
       const Index s = node_slot(p.lines, i, p.lines.nodes[static_cast<std::size_t>(k)]);
-      v.push_back(number[static_cast<std::size_t>(s)]);
+      line_nodes[i].push_back(number[static_cast<std::size_t>(s)]);
     }
+    const auto& v = line_nodes[i];
+    if (v[0] >= 0 && v[1] >= 0) edges.emplace(key(v[0], v[1]), Facet{-1, 0});
+  }
+  if (!edges.empty())
+    for (Index c = 0; c < mesh.num_cells(); ++c)
+      for (int f = 0; f < facets_per_cell(mesh.cell_type(c)); ++f) {
+        const auto local = facet_local_nodes(mesh.cell_type(c), f);
+        const auto cell = mesh.cell(c);
+        const auto it = edges.find(key(cell[static_cast<std::size_t>(local[0])],
+                                       cell[static_cast<std::size_t>(local[1])]));
+        if (it != edges.end() && it->second.cell < 0) it->second = Facet{c, f};
+      }
+  std::map<int, std::vector<Facet>> parts;
+  for (std::size_t i = 0; i < p.lines.types.size(); ++i) {
+    const std::vector<Index>& v = line_nodes[i];
     const auto it = (v[0] < 0 || v[1] < 0) ? edges.end() : edges.find(key(v[0], v[1]));
-    bool match = it != edges.end();
+    bool match = it != edges.end() && it->second.cell >= 0;
     if (match && v.size() == 3) {
       const auto fn = mesh.facet_nodes(it->second);
       match = fn.size() == 3 && fn[2] == v[2];
     }
     if (!match)
       throw InputError(name + ": line element " + std::to_string(p.lines.tags[i]) +
-                       " (physical group '" + physical_name(p, 1, p.lines.physicals[i].front()) +
+                       " (physical group '" +
+                       physical_name(p, 1, p.groups[static_cast<std::size_t>(p.lines.group[i])].front()) +
                        "') is not an edge of any 2D element");
-    for (const int t : p.lines.physicals[i]) parts[t].push_back(it->second);
+    for (const int t : p.groups[static_cast<std::size_t>(p.lines.group[i])])
+      parts[t].push_back(it->second);
   }
   for (auto& [t, facets] : parts) {
     // In cell order, whatever the order of the lines in the file (the same sums in any format).
@@ -621,10 +663,15 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
 Mesh read_gmsh_mesh(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string() + ": cannot open the mesh file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(file.string() + ": cannot read the mesh file");
-  return parse_gmsh_mesh(text.str(), file.string());
+  // In one read into a string of the file's size (no stream buffer grown and copied).
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) throw InputError(file.string() + ": cannot read the mesh file");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  if (in.gcount() != static_cast<std::streamsize>(size))
+    throw InputError(file.string() + ": cannot read the mesh file");
+  return parse_gmsh_mesh(text, file.string());
 }
 
 Mesh read_mesh_file(const std::filesystem::path& file) {
