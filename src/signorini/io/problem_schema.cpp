@@ -167,7 +167,10 @@ const OptionTable<P>& fem_options() {
 const OptionTable<P>& clamp_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("clamp", true);
-    t.custom("boundary", "string", "a boundary part: `left`, `right`, `bottom`, `top`").required();
+    t.custom("boundary", "string",
+             "a boundary part: `left`, `right`, `bottom`, `top` of a rectangle, or a physical "
+             "curve of a Gmsh mesh")
+        .required();
     t.custom("components", "array of `\"x\"`, `\"y\"`",
              "the displacement components held at 0 (`[\"x\"]`: a roller that slides along y)")
         .default_text("`[\"x\", \"y\"]`");
