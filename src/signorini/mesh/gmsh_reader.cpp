@@ -89,6 +89,15 @@ class Reader {
   }
 
   [[nodiscard]] std::size_t pos() const { return pos_; }
+  /// Throws unless `count` items of at least `bytes_each` bytes fit in what is left of the file,
+  /// before anything is allocated for them (a corrupted count must not ask for petabytes).
+  void check_count(long long count, std::size_t bytes_each, const char* what) const {
+    if (count < 0 ||
+        static_cast<unsigned long long>(count) >
+            (s_.size() - std::min(pos_, s_.size())) / std::max<std::size_t>(1, bytes_each))
+      fail("the file announces " + std::to_string(count) + " " + what +
+           ", more than the rest of the file can hold (truncated or corrupted?)");
+  }
   [[nodiscard]] bool at_end() {
     skip_space();
     return pos_ >= s_.size();
@@ -246,6 +255,7 @@ void read_nodes_41(Reader& r, Parsed& p) {
   const long long total = r.count("the number of nodes", true);
   (void)r.count("the smallest node tag", true);
   (void)r.count("the largest node tag", true);
+  r.check_count(total, r.binary() ? 32 : 8, "nodes");
   p.node_tags.reserve(static_cast<std::size_t>(total));
   p.xyz.reserve(static_cast<std::size_t>(3 * total));
   for (long long b = 0; b < blocks; ++b) {
@@ -316,6 +326,8 @@ void read_elements_41(Reader& r, Parsed& p) {
     if (k == 0) r.fail("element type " + std::to_string(type) + " is not a Gmsh type known here");
     const auto it = p.entity_physicals.find({dim, entity});
     const int group = it == p.entity_physicals.end() ? 0 : p.group_of(it->second);
+    r.check_count(n, static_cast<std::size_t>(r.binary() ? 8 * (k + 1) : 2 * (k + 1)),
+                  "elements in a block");
     if (dim == 2) {  // room for the block at once, not by doubling
       p.cells.nodes.reserve(p.cells.nodes.size() + static_cast<std::size_t>(n * k));
       for (auto* v : {&p.cells.tags, &p.cells.offsets}) v->reserve(v->size() + n);
@@ -364,6 +376,7 @@ void read_elements_22(Reader& r, Parsed& p) {
       const int k = gmsh_nodes(type);
       if (k == 0 || count <= 0 || ntags < 0)
         r.fail("element block of Gmsh type " + std::to_string(type) + " cannot be read");
+      r.check_count(count, 4 * static_cast<std::size_t>(1 + ntags + k), "elements in a block");
       nodes.resize(static_cast<std::size_t>(k));
       for (int e = 0; e < count; ++e) {
         const std::size_t where = r.pos();
@@ -485,20 +498,35 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
     throw InputError(name +
                      ": no 2D elements (triangles or quadrilaterals): is it meshed in 2D "
                      "(gmsh -2)?");
-  // Node tags to positions in $Nodes.
+  // Node tags to positions in $Nodes: an array where the tags are compact (as Gmsh writes
+  // them), a hash table where they are not.
   Index max_tag = 0;
-  for (const Index t : p.node_tags) max_tag = std::max(max_tag, t);
-  std::vector<Index> slot(static_cast<std::size_t>(max_tag + 1), -1);
-  for (std::size_t k = 0; k < p.node_tags.size(); ++k) {
-    const Index t = p.node_tags[k];
+  for (const Index t : p.node_tags) {
     if (t < 0) throw InputError(name + ": negative node tag " + std::to_string(t));
-    slot[static_cast<std::size_t>(t)] = static_cast<Index>(k);
+    max_tag = std::max(max_tag, t);
+  }
+  const bool compact = max_tag <= 4 * static_cast<Index>(p.node_tags.size()) + 1024;
+  std::vector<Index> slot;
+  std::unordered_map<Index, Index> sparse_slot;
+  if (compact) {
+    slot.assign(static_cast<std::size_t>(max_tag + 1), -1);
+    for (std::size_t k = 0; k < p.node_tags.size(); ++k)
+      slot[static_cast<std::size_t>(p.node_tags[k])] = static_cast<Index>(k);
+  } else {
+    for (std::size_t k = 0; k < p.node_tags.size(); ++k)
+      sparse_slot[p.node_tags[k]] = static_cast<Index>(k);
   }
   const auto node_slot = [&](const RawElements& e, std::size_t i, Index tag) {
-    if (tag < 0 || tag > max_tag || slot[static_cast<std::size_t>(tag)] < 0)
+    Index k = -1;
+    if (compact) {
+      if (tag >= 0 && tag <= max_tag) k = slot[static_cast<std::size_t>(tag)];
+    } else if (const auto it = sparse_slot.find(tag); it != sparse_slot.end()) {
+      k = it->second;
+    }
+    if (k < 0)
       throw InputError(name + ": element " + std::to_string(e.tags[i]) + " uses node " +
                        std::to_string(tag) + ", which $Nodes does not define");
-    return slot[static_cast<std::size_t>(tag)];
+    return k;
   };
   // Number the nodes that cells use, in the order of their tags.
   std::vector<char> used(p.node_tags.size(), 0);
@@ -643,10 +671,10 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
       match = fn.size() == 3 && fn[2] == v[2];
     }
     if (!match)
-      throw InputError(name + ": line element " + std::to_string(p.lines.tags[i]) +
-                       " (physical group '" +
-                       physical_name(p, 1, p.groups[static_cast<std::size_t>(p.lines.group[i])].front()) +
-                       "') is not an edge of any 2D element");
+      throw InputError(
+          name + ": line element " + std::to_string(p.lines.tags[i]) + " (physical group '" +
+          physical_name(p, 1, p.groups[static_cast<std::size_t>(p.lines.group[i])].front()) +
+          "') is not an edge of any 2D element");
     for (const int t : p.groups[static_cast<std::size_t>(p.lines.group[i])])
       parts[t].push_back(it->second);
   }
