@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "model_loading.hpp"
 #include "signorini/backend/make_backend.hpp"
+#include "signorini/mesh/mesh_description.hpp"
 
 namespace signorini::app {
 
@@ -18,6 +19,7 @@ int run_check(const CheckArguments& args) {
     const auto backend = make_backend(DeviceKind::Cuda);  // throws InputError, with the reason
     fmt::print("device: {}\n", backend->description());
   }
+  fmt::print("mesh: {}\n", mesh_description(model.mesh));
   fmt::print("ok: {} dofs, {} contact nodes\n", model.dofs.num_dofs(),
              model.problem.contact.size());
   return kSuccess;
