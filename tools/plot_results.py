@@ -393,7 +393,10 @@ def title_of(summary):
     mesh = problem.get("mesh", {})
     name = problem.get("name", "problem")
     if "nx" in mesh:
+        cell = mesh.get("cell", "quad4")
         text = f"{name}: {mesh.get('nx', '?')} × {mesh.get('ny', '?')} mesh"
+        if cell != "quad4":
+            text += f" of {cell} cells"
     else:  # a mesh from a file
         text = f"{name}: {os.path.basename(str(mesh.get('file', '?')))}"
     if "n_dofs" in summary:
