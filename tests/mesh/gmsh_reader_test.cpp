@@ -164,7 +164,7 @@ TEST(GmshReader, BadFilesAreNamedWithTheLine) {
   const std::string bin = text_of(data("mixed_msh41_bin.msh"));
   const std::string cut = error_of(bin.substr(0, bin.size() / 2));
   EXPECT_EQ(cut.rfind("bad.msh: byte ", 0), 0u) << cut;
-  EXPECT_NE(cut.find("(truncated?)"), std::string::npos) << cut;
+  EXPECT_NE(cut.find("truncated"), std::string::npos) << cut;
   EXPECT_THROW((void)read_gmsh_mesh(data("no_such_file.msh")), InputError);
 }
 
