@@ -127,5 +127,40 @@ TEST(GmshMesh, GeoFileIsMeshedByTheGmshProgram) {
   EXPECT_CONTAINS(b.err, "broken.geo: gmsh could not mesh it");
 }
 
+// [[region]] from a problem file: by name, refused for a name the mesh does not have.
+TEST(GmshMesh, RegionMaterials) {
+  const testing::TemporaryFolder dir;
+  const std::string mixed = std::string(SIGNORINI_TEST_DATA_DIR) + "/mesh/data/mixed_msh41.msh";
+  const std::string head =
+      "[mesh]\ntype = \"gmsh\"\nfile = \"" + mixed + "\"\n[material]\nE = 1000.0\nnu = 0.3\n";
+  const std::string rest = "[[clamp]]\nboundary = \"left\"\n[contact]\nboundary = \"bottom\"\n";
+  std::ofstream(dir / "ok.toml") << head +
+                                        "[[region]]\nname = \"quads\"\nE = 2000.0\n"
+                                        "nu = 0.25\n" +
+                                        rest;
+  const ToolRun ok = run_tool(dir, "solve " + quoted((dir / "ok.toml").string()) + " -q -o " +
+                                       quoted((dir / "ok").string()));
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  const nlohmann::json j = summary_of(dir / "ok");
+  EXPECT_EQ(j["problem"]["region"][0]["name"], "quads");
+  EXPECT_EQ(j["problem"]["region"][0]["E"], 2000.0);
+  std::ofstream(dir / "bad.toml") << head +
+                                         "[[region]]\nname = \"steel\"\nE = 2000.0\n"
+                                         "nu = 0.25\n" +
+                                         rest;
+  const ToolRun bad = run_tool(dir, "check " + quoted((dir / "bad.toml").string()));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_CONTAINS(bad.err,
+                  "region.name = 'steel': the mesh has no such region (it has: quads, "
+                  "triangles)");
+  std::ofstream(dir / "nu.toml") << head +
+                                        "[[region]]\nname = \"quads\"\nE = 2000.0\n"
+                                        "nu = 0.5\n" +
+                                        rest;
+  const ToolRun nu = run_tool(dir, "check " + quoted((dir / "nu.toml").string()));
+  EXPECT_EQ(nu.status, 2);
+  EXPECT_CONTAINS(nu.err, "region[0]: ");
+}
+
 }  // namespace
 }  // namespace signorini

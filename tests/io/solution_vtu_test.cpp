@@ -49,7 +49,7 @@ void expect_all_finite(const testing::VtuContents& v) {
 TEST(SolutionVtu, MeshAndFieldsEqualTheSolution) {
   const Solved& s = solved();
   ASSERT_TRUE(s.result.summary.converged()) << s.result.summary.message;
-  const testing::VtuContents v = testing::read_vtu_text(solution_vtu(s.result, s.model, s.spec));
+  const testing::VtuContents v = testing::read_vtu_text(solution_vtu(s.result, s.model));
   const Mesh& mesh = s.model.mesh;
   ASSERT_EQ(v.points, mesh.num_nodes());
   ASSERT_EQ(v.cells, mesh.num_cells());

@@ -14,6 +14,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/load_assembly.hpp"
+#include "signorini/fem/nodal_stress.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 #include "signorini/problem/model.hpp"
 
@@ -197,6 +198,44 @@ TEST(GmshReader, TruncatedAndCorruptedFilesAreInputErrors) {
       }
     }
   }
+}
+
+// Materials per region: the left half of the mixed mesh (region "quads") twice as stiff as the
+// right ("triangles"), nu = 0 in both (so that the lateral strains, 0, agree across the
+// interface). Under a uniform traction sigma each half strains uniformly by its own modulus, so
+// u_x is piecewise linear with a kink at x = 1, which both meshes represent exactly.
+TEST(GmshReader, MaterialsPerRegionGiveEachItsStrain) {
+  const Mesh m = read_gmsh_mesh(data("mixed_msh41.msh"));
+  ElasticityOptions opt;
+  opt.material = {1000.0, 0.0};  // the triangles (region 2) keep it
+  opt.region_materials.resize(2);
+  opt.region_materials[1] = IsotropicMaterial{2000.0, 0.0};  // "quads"
+  EXPECT_EQ(material_of_region(opt, 1).E, 2000.0);
+  EXPECT_EQ(material_of_region(opt, 2).E, 1000.0);
+  const DofMap dofs =
+      make_dof_map(m, {{"left", {true, false, false}}, {"bottom", {false, true, false}}});
+  const SparseMatrix A = assemble_stiffness(m, dofs, opt);
+  Vector b = Vector::Zero(dofs.num_free());
+  const double sigma = 2.5;
+  add_traction_load(
+      m, dofs, m.boundary_part("right"),
+      [&](const Point&) { return Eigen::Vector3d(sigma, 0.0, 0.0); }, 2, b);
+  auto solver = make_linear_solver({});
+  solver->analyze(A);
+  solver->factorize(A);
+  Vector u(dofs.num_free());
+  solver->solve(b, u);
+  const Vector full = dofs.expand(u);
+  const double factor = sigma;  // e_xx = sigma / E with nu = 0
+  for (Index n = 0; n < m.num_nodes(); ++n) {
+    const double x = m.node(n)(0);
+    const double expected =
+        x <= 1.0 ? factor / 2000.0 * x : factor / 2000.0 + factor / 1000.0 * (x - 1.0);
+    EXPECT_NEAR(full(2 * n), expected, 1e-12) << "node " << n << " at x = " << x;
+  }
+  // The stresses are uniform across the interface: sigma_xx = sigma in both materials.
+  const NodalStress s = nodal_stress(m, opt, full);
+  for (Index n = 0; n < m.num_nodes(); ++n) EXPECT_NEAR(s.sigma(0, n), sigma, 1e-9);
 }
 
 }  // namespace

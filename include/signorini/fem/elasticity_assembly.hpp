@@ -3,7 +3,9 @@
 // in the numbering of the free dofs (Dirichlet conditions by elimination).
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "signorini/fem/dof_map.hpp"
 #include "signorini/fem/material.hpp"
@@ -13,13 +15,19 @@
 namespace signorini {
 
 struct ElasticityOptions {
-  IsotropicMaterial material;
+  IsotropicMaterial material;  ///< of every cell whose region has none of its own below
+  /// Materials per mesh region (Mesh::cell_region): entry r, where set, is region r's. Empty:
+  /// `material` everywhere.
+  std::vector<std::optional<IsotropicMaterial>> region_materials;
   PlaneModel plane_model = PlaneModel::PlaneStrain;
   /// Gauss points per direction in Q1 quadrilaterals (the paper's 2x2 rule); the other cell
   /// types have their own rules (3x3 on quadratic quadrilaterals, 3 and 6 points on P1 and P2
   /// triangles).
   int gauss_points = 2;
 };
+
+/// The material of the cells of region r.
+const IsotropicMaterial& material_of_region(const ElasticityOptions& options, int region);
 
 /// Throws InputError unless the mesh is 2D and every cell type has a finite element (tri3, tri6,
 /// quad4, quad8, quad9).

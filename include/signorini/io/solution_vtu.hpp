@@ -22,7 +22,7 @@ namespace signorini {
 ///   contact_boundary  1 on the nodes of the contact boundary
 /// The last four are 0 off the contact boundary (never NaN), which contact_boundary tells apart.
 /// 2D only (throws InputError otherwise).
-std::string solution_vtu(const ContactResult& result, const Model& model, const ProblemSpec& spec);
+std::string solution_vtu(const ContactResult& result, const Model& model);
 
 /// contact.vtu: the contact nodes in the order of contact.csv, its facets as line cells, and the
 /// point data displacement, normal (nu_j, 3 components), normal_displacement (u . nu),

@@ -48,6 +48,12 @@ struct ContactSpec {
   RigidObstacle obstacle;
 };
 
+/// A region of the mesh (a Gmsh physical surface, by name) with a material of its own.
+struct RegionMaterialSpec {
+  std::string region;
+  IsotropicMaterial material;
+};
+
 /// Where the mesh comes from.
 enum class MeshType { Rectangle, Gmsh };
 
@@ -67,7 +73,8 @@ struct ProblemSpec {
   /// The .msh file (or a .geo file, meshed by the gmsh program) for mesh_type = Gmsh; the
   /// problem-file reader makes a relative path relative to the problem file's folder.
   std::string mesh_file;
-  ElasticityOptions elasticity;
+  ElasticityOptions elasticity;  ///< `material` is that of every cell not in region_materials
+  std::vector<RegionMaterialSpec> region_materials;
   int boundary_gauss_points = 2;  ///< Gauss points per boundary facet for tractions
   std::vector<ClampSpec> clamps;
   std::vector<TractionSpec> tractions;

@@ -26,6 +26,27 @@ std::string cell_name(const Mesh& mesh, Index c) {
 
 }  // namespace
 
+const IsotropicMaterial& material_of_region(const ElasticityOptions& options, int region) {
+  const auto r = static_cast<std::size_t>(region);
+  if (r < options.region_materials.size() && options.region_materials[r])
+    return *options.region_materials[r];
+  return options.material;
+}
+
+namespace {
+
+// D of each region of the mesh (index = region).
+std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
+                                                        const ElasticityOptions& options) {
+  std::vector<Eigen::Matrix3d> D;
+  for (std::size_t r = 0; r < mesh.region_names().size(); ++r)
+    D.push_back(plane_elasticity_matrix(material_of_region(options, static_cast<int>(r)),
+                                        options.plane_model));
+  return D;
+}
+
+}  // namespace
+
 void require_supported_cells(const Mesh& mesh) {
   if (mesh.dim() != 2)
     throw InputError("finite elements for " + std::to_string(mesh.dim()) +
@@ -36,13 +57,14 @@ void require_supported_cells(const Mesh& mesh) {
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
                                 const ElasticityOptions& options) {
   require_supported_cells(mesh);
-  const Eigen::Matrix3d D = plane_elasticity_matrix(options.material, options.plane_model);
+  const std::vector<Eigen::Matrix3d> D = region_elasticity_matrices(mesh, options);
   const SparsityPattern pattern(mesh, dofs);
   SparseMatrix A = pattern.zero_matrix();
   double* values = A.valuePtr();
   // Cells of the type of the previous one that are its translates (all of them on a structured
   // mesh) share its element matrix: compare the node coordinates relative to the first node.
   CellType previous_type = mesh.num_cells() > 0 ? mesh.cell_type(0) : CellType::Quad4;
+  int previous_region = mesh.num_cells() > 0 ? mesh.cell_region(0) : 0;
   CellCoordinates previous = CellCoordinates::Zero(2, 0);
   std::vector<QuadraturePoint> rule;
   ElementMatrix K;
@@ -50,7 +72,8 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
     const CellType type = mesh.cell_type(c);
     const CellCoordinates X = cell_coordinates(mesh, c);
     const CellCoordinates relative = X.colwise() - X.col(0);
-    bool same = c > 0 && type == previous_type;
+    const int region = mesh.cell_region(c);
+    bool same = c > 0 && type == previous_type && region == previous_region;
     if (same) {
       double size = 0.0, change = 0.0;
       for (Index a = 0; a < relative.cols(); ++a) {
@@ -62,12 +85,13 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
     if (!same) {
       if (rule.empty() || type != previous_type) rule = cell_quadrature(type, options.gauss_points);
       try {
-        K = element_stiffness(type, X, D, rule);
+        K = element_stiffness(type, X, D[static_cast<std::size_t>(region)], rule);
       } catch (const InputError& e) {
         throw InputError(cell_name(mesh, c) + ": " + e.what());
       }
       previous = relative;
       previous_type = type;
+      previous_region = region;
     }
     const auto nodes = mesh.cell(c);
     const auto n = static_cast<int>(nodes.size());
@@ -89,7 +113,7 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
 Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,
                        const std::function<bool(Index)>& needed) {
   require_supported_cells(mesh);
-  const Eigen::Matrix3d D = plane_elasticity_matrix(options.material, options.plane_model);
+  const std::vector<Eigen::Matrix3d> D = region_elasticity_matrices(mesh, options);
   Vector f = Vector::Zero(u.size());
   ElementVector ue;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
@@ -100,7 +124,8 @@ Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const
     ue.resize(2 * n);
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) ue(2 * a + k) = u(nodes[static_cast<std::size_t>(a)] * 2 + k);
-    const ElementVector fe = element_stiffness(type, cell_coordinates(mesh, c), D,
+    const ElementVector fe = element_stiffness(type, cell_coordinates(mesh, c),
+                                               D[static_cast<std::size_t>(mesh.cell_region(c))],
                                                cell_quadrature(type, options.gauss_points)) *
                              ue;
     for (Index a = 0; a < n; ++a)

@@ -14,8 +14,6 @@ double von_mises_stress(double sxx, double syy, double szz, double sxy) {
 
 NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, const Vector& u_full) {
   require_supported_cells(mesh);
-  const Eigen::Matrix3d D = plane_elasticity_matrix(options.material, options.plane_model);
-  const double nu = options.material.nu;
   const bool plane_strain = options.plane_model == PlaneModel::PlaneStrain;
   NodalStress out;
   out.sigma = Eigen::MatrixXd::Zero(4, mesh.num_nodes());
@@ -26,6 +24,9 @@ NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, con
     const auto nodes = mesh.cell(c);
     const auto n = static_cast<int>(nodes.size());
     const CellCoordinates X = cell_coordinates(mesh, c);
+    const IsotropicMaterial& m = material_of_region(options, mesh.cell_region(c));
+    const Eigen::Matrix3d D = plane_elasticity_matrix(m, options.plane_model);
+    const double nu = m.nu;
     ue.resize(2 * n);
     for (int a = 0; a < n; ++a) {
       const Index v = nodes[static_cast<std::size_t>(a)];

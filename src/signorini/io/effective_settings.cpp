@@ -29,6 +29,12 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   emit_options(out, mesh_options(), spec);
   out.table("material");
   emit_options(out, material_options(), spec);
+  for (const RegionMaterialSpec& m : spec.region_materials) {
+    out.array_table("region");
+    out.value("name", m.region);
+    out.value("E", m.material.E);
+    out.value("nu", m.material.nu);
+  }
   out.table("fem");
   emit_options(out, fem_options(), spec);
   for (const ClampSpec& c : spec.clamps) {

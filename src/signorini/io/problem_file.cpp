@@ -116,6 +116,33 @@ void read_fem(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   check_options(r, t, fem_options(), spec);
 }
 
+// [[region]] name, E, nu: a material for the cells of one region of the mesh.
+void read_regions(const Reader& r, const toml::table& root, ProblemSpec& spec,
+                  std::vector<std::string>& warnings) {
+  const auto entries = r.array_of_tables(root, "region");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const toml::table& t = *entries[i];
+    const std::string path = element("region", i);
+    r.check_keys(t, path);
+    RegionMaterialSpec m;
+    m.region = required(r, r.string(t, path, "name"), join(path, "name"), "name of a region");
+    m.material.E = required(r, r.number(t, path, "E"), join(path, "E"), "a positive number");
+    m.material.nu = required(r, r.number(t, path, "nu"), join(path, "nu"), "a number in (-1, 0.5)");
+    try {
+      validate(m.material);
+    } catch (const InputError& e) {
+      r.fail(path + ": " + e.what());
+    }
+    for (const RegionMaterialSpec& other : spec.region_materials)
+      if (other.region == m.region)
+        r.fail(path + ": region '" + m.region + "' has a material already");
+    if (m.material.nu >= 0.45 && cell_order(spec.mesh.cell) == 1)
+      warnings.push_back(r.file() + ": " + path + ".nu = " + as_text(m.material.nu) +
+                         " >= 0.45: nearly incompressible; linear elements lock (see material.nu)");
+    spec.region_materials.push_back(std::move(m));
+  }
+}
+
 void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   const auto entries = r.array_of_tables(root, "clamp");
   if (entries.empty())
@@ -409,6 +436,7 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   read_top_level(r, root, spec);
   read_mesh(r, root, spec);
   read_material(r, root, spec, out.warnings);
+  read_regions(r, root, spec, out.warnings);
   read_fem(r, root, spec);
   read_clamps(r, root, spec);
   read_tractions(r, root, spec, texts, out.warnings);

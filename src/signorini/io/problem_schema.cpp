@@ -164,6 +164,20 @@ const OptionTable<P>& fem_options() {
   return table;
 }
 
+const OptionTable<P>& region_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("region", true);
+    t.custom("name", "string",
+             "a region of the mesh: a physical surface of a Gmsh mesh (`signorini check` lists "
+             "them)")
+        .required();
+    t.custom("E", "number > 0", "Young's modulus of the region's cells").unit("S").required();
+    t.custom("nu", "number in (-1, 0.5)", "Poisson's ratio of the region's cells").required();
+    return t;
+  }();
+  return table;
+}
+
 const OptionTable<P>& clamp_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("clamp", true);
@@ -271,6 +285,7 @@ const std::vector<const OptionTableInfo*>& problem_schema() {
                                                              &mesh_options(),
                                                              &material_options(),
                                                              &fem_options(),
+                                                             &region_options(),
                                                              &clamp_options(),
                                                              &traction_options(),
                                                              &point_load_options(),

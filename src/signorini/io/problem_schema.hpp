@@ -20,6 +20,7 @@ namespace signorini {
 [[nodiscard]] const OptionTable<ProblemSpec>& fem_options();
 // Sections of formulas and lists, read by their own readers (io/problem_file.cpp): their keys and
 // docs are declared here all the same, so that the unknown-key check and the docs know them.
+[[nodiscard]] const OptionTable<ProblemSpec>& region_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& clamp_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& traction_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& point_load_options();

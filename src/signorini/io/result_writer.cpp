@@ -32,7 +32,7 @@ void write_results(const std::filesystem::path& outdir, const ContactResult& res
   files.emplace_back(outdir / "summary.json",
                      summary_to_json(result, model, spec, resultants).dump(2) + "\n");
   files.emplace_back(outdir / "contact.csv", contact_csv(result, model));
-  files.emplace_back(outdir / "solution.vtu", solution_vtu(result, model, spec));
+  files.emplace_back(outdir / "solution.vtu", solution_vtu(result, model));
   files.emplace_back(outdir / "contact.vtu", contact_vtu(result, model));
   write_files_atomically(files);
 }

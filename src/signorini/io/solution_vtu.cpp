@@ -29,7 +29,7 @@ std::uint8_t flag(bool b) {
 
 }  // namespace
 
-std::string solution_vtu(const ContactResult& result, const Model& model, const ProblemSpec& spec) {
+std::string solution_vtu(const ContactResult& result, const Model& model) {
   require_2d(model, "solution.vtu");
   const Mesh& mesh = model.mesh;
   const Index n = mesh.num_nodes();
@@ -47,7 +47,7 @@ std::string solution_vtu(const ContactResult& result, const Model& model, const 
 
   vtu.add_point_data("displacement", 3, displacement_xyz(u, n, mesh.dim()), {"X", "Y", "Z"});
 
-  const NodalStress stress = nodal_stress(mesh, spec.elasticity, u);
+  const NodalStress stress = nodal_stress(mesh, model.elasticity, u);
   std::vector<double> tensor(static_cast<std::size_t>(6 * n), 0.0);  // YZ, XZ stay 0 in 2D
   for (Index k = 0; k < n; ++k) {
     double* t = &tensor[static_cast<std::size_t>(6 * k)];

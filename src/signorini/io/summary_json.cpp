@@ -168,6 +168,11 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   problem["units"] = spec.units.empty() ? json(nullptr) : json(spec.units);
   problem["mesh"] = options_json(mesh_options(), spec);
   problem["material"] = options_json(material_options(), spec);
+  if (!spec.region_materials.empty()) {
+    problem["region"] = json::array();
+    for (const RegionMaterialSpec& m : spec.region_materials)
+      problem["region"].push_back({{"name", m.region}, {"E", m.material.E}, {"nu", m.material.nu}});
+  }
   problem["fem"] = options_json(fem_options(), spec);
   json clamps = json::array();
   for (const ClampSpec& c : spec.clamps) {

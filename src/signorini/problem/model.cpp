@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "signorini/core/error.hpp"
 #include "signorini/fem/contact_boundary.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
@@ -87,6 +89,22 @@ Model build_model(const ProblemSpec& spec) {
   ScopedTimer mesh_timer(timings, "mesh");
   Mesh mesh = spec.mesh_type == MeshType::Gmsh ? read_mesh_file(spec.mesh_file)
                                                : make_rectangle_mesh(spec.mesh);
+  // Materials per region, by the regions' names.
+  ElasticityOptions elasticity = spec.elasticity;
+  for (const RegionMaterialSpec& m : spec.region_materials) {
+    const auto& names = mesh.region_names();
+    const auto it = std::find(names.begin(), names.end(), m.region);
+    if (m.region.empty() || it == names.end()) {
+      std::string known;
+      for (const std::string& n : names)
+        if (!n.empty()) known += (known.empty() ? "" : ", ") + n;
+      throw InputError("region.name = '" + m.region + "': the mesh has no such region (it has: " +
+                       (known.empty() ? std::string("none") : known) + ")");
+    }
+    const auto r = static_cast<std::size_t>(it - names.begin());
+    if (elasticity.region_materials.size() <= r) elasticity.region_materials.resize(r + 1);
+    elasticity.region_materials[r] = m.material;
+  }
   DofMap dofs = make_dof_map(mesh, spec.clamps);
   mesh_timer.stop();
   if (dofs.num_free() == 0) throw InputError("every dof is clamped: nothing to solve");
@@ -95,7 +113,7 @@ Model build_model(const ProblemSpec& spec) {
   ContactProblem problem;
   {
     ScopedTimer t(timings, "assembly");
-    problem.A = assemble_stiffness(mesh, dofs, spec.elasticity);
+    problem.A = assemble_stiffness(mesh, dofs, elasticity);
   }
   Vector loads = Vector::Zero(dofs.num_dofs());
   std::vector<PlacedPointLoad> placed;
@@ -140,7 +158,7 @@ Model build_model(const ProblemSpec& spec) {
   }
   std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps);
   return Model{std::move(mesh),    std::move(dofs),      std::move(problem), std::move(multigrid),
-               std::move(timings), spec.elasticity,      std::move(loads),   std::move(clamps),
+               std::move(timings), elasticity,           std::move(loads),   std::move(clamps),
                std::move(placed),  spec.contact.boundary};
 }
 
