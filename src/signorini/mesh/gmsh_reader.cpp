@@ -15,7 +15,6 @@
 #include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <unordered_map>
 
 #include "signorini/core/error.hpp"
@@ -263,7 +262,6 @@ void read_nodes_41(Reader& r, Parsed& p) {
     (void)r.count("an entity tag", false);
     const auto parametric = r.count("the parametric flag", false);
     const long long n = r.count("the number of nodes in a block", true);
-    const std::size_t first = p.node_tags.size();
     for (long long k = 0; k < n; ++k)
       p.node_tags.push_back(static_cast<Index>(r.count("a node tag", true)));
     const int extra = parametric != 0 ? dim : 0;
@@ -271,7 +269,6 @@ void read_nodes_41(Reader& r, Parsed& p) {
       for (int i = 0; i < 3; ++i) p.xyz.push_back(r.number("a node coordinate"));
       for (int i = 0; i < extra; ++i) (void)r.number("a parametric coordinate");
     }
-    (void)first;
   }
   if (static_cast<long long>(p.node_tags.size()) != total)
     r.fail("$Nodes announces " + std::to_string(total) + " nodes, its blocks hold " +
