@@ -28,6 +28,9 @@ struct ElasticityOptions {
 
 /// The material of the cells of region r.
 const IsotropicMaterial& material_of_region(const ElasticityOptions& options, int region);
+/// The plane elasticity matrix D of each region of the mesh (index: Mesh::cell_region).
+std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
+                                                        const ElasticityOptions& options);
 
 /// Throws InputError unless the mesh is 2D and every cell type has a finite element (tri3, tri6,
 /// quad4, quad8, quad9).

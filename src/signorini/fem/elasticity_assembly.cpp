@@ -33,9 +33,6 @@ const IsotropicMaterial& material_of_region(const ElasticityOptions& options, in
   return options.material;
 }
 
-namespace {
-
-// D of each region of the mesh (index = region).
 std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
                                                         const ElasticityOptions& options) {
   std::vector<Eigen::Matrix3d> D;
@@ -44,8 +41,6 @@ std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
                                         options.plane_model));
   return D;
 }
-
-}  // namespace
 
 void require_supported_cells(const Mesh& mesh) {
   if (mesh.dim() != 2)
@@ -66,7 +61,7 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
   CellType previous_type = mesh.num_cells() > 0 ? mesh.cell_type(0) : CellType::Quad4;
   int previous_region = mesh.num_cells() > 0 ? mesh.cell_region(0) : 0;
   CellCoordinates previous = CellCoordinates::Zero(2, 0);
-  std::vector<QuadraturePoint> rule;
+  CellRules rules(options.gauss_points);
   ElementMatrix K;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const CellType type = mesh.cell_type(c);
@@ -83,9 +78,8 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
       same = change <= 1e-13 * size;
     }
     if (!same) {
-      if (rule.empty() || type != previous_type) rule = cell_quadrature(type, options.gauss_points);
       try {
-        K = element_stiffness(type, X, D[static_cast<std::size_t>(region)], rule);
+        K = element_stiffness(type, X, D[static_cast<std::size_t>(region)], rules(type));
       } catch (const InputError& e) {
         throw InputError(cell_name(mesh, c) + ": " + e.what());
       }
@@ -114,6 +108,7 @@ Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const
                        const std::function<bool(Index)>& needed) {
   require_supported_cells(mesh);
   const std::vector<Eigen::Matrix3d> D = region_elasticity_matrices(mesh, options);
+  CellRules rules(options.gauss_points);
   Vector f = Vector::Zero(u.size());
   ElementVector ue;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
@@ -126,7 +121,7 @@ Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const
       for (int k = 0; k < 2; ++k) ue(2 * a + k) = u(nodes[static_cast<std::size_t>(a)] * 2 + k);
     const ElementVector fe = element_stiffness(type, cell_coordinates(mesh, c),
                                                D[static_cast<std::size_t>(mesh.cell_region(c))],
-                                               cell_quadrature(type, options.gauss_points)) *
+                                               rules(type)) *
                              ue;
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) f(nodes[static_cast<std::size_t>(a)] * 2 + k) += fe(2 * a + k);

@@ -110,12 +110,13 @@ void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const Vecto
 void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,
                      const std::string& what) {
   require_supported_cells(mesh);
+  CellRules rules(gauss_points);
   ShapeValues N;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const CellType type = mesh.cell_type(c);
     const CellCoordinates X = cell_coordinates(mesh, c);
     const auto nodes = mesh.cell(c);
-    for (const QuadraturePoint& q : cell_quadrature(type, gauss_points)) {
+    for (const QuadraturePoint& q : rules(type)) {
       shape_functions(type, q.xi, N);
       const double det_j = cell_jacobian(type, X, q.xi).determinant();
       if (!(det_j > 0.0))

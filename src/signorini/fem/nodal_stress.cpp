@@ -14,6 +14,7 @@ double von_mises_stress(double sxx, double syy, double szz, double sxy) {
 
 NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, const Vector& u_full) {
   require_supported_cells(mesh);
+  const std::vector<Eigen::Matrix3d> region_D = region_elasticity_matrices(mesh, options);
   const bool plane_strain = options.plane_model == PlaneModel::PlaneStrain;
   NodalStress out;
   out.sigma = Eigen::MatrixXd::Zero(4, mesh.num_nodes());
@@ -24,9 +25,8 @@ NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, con
     const auto nodes = mesh.cell(c);
     const auto n = static_cast<int>(nodes.size());
     const CellCoordinates X = cell_coordinates(mesh, c);
-    const IsotropicMaterial& m = material_of_region(options, mesh.cell_region(c));
-    const Eigen::Matrix3d D = plane_elasticity_matrix(m, options.plane_model);
-    const double nu = m.nu;
+    const Eigen::Matrix3d& D = region_D[static_cast<std::size_t>(mesh.cell_region(c))];
+    const double nu = material_of_region(options, mesh.cell_region(c)).nu;
     ue.resize(2 * n);
     for (int a = 0; a < n; ++a) {
       const Index v = nodes[static_cast<std::size_t>(a)];

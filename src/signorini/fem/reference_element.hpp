@@ -10,6 +10,7 @@
 // with their own issue.
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "signorini/mesh/cell_type.hpp"
@@ -50,5 +51,21 @@ Eigen::Vector3d reference_node(CellType t, int a);
 /// degree-4 rule (Dunavant) on P2 triangles (exact for straight P2 stiffness, degree 2, with
 /// margin for curved cells and loads); Gauss rules of `line_points` on lines.
 std::vector<QuadraturePoint> cell_quadrature(CellType t, int quad4_points = 2, int line_points = 2);
+
+/// cell_quadrature() of each cell type, made once per type on first use: what the loops over the
+/// cells of a mesh ask for cell by cell.
+class CellRules {
+ public:
+  explicit CellRules(int quad4_points) : quad4_points_(quad4_points) {}
+  const std::vector<QuadraturePoint>& operator()(CellType t) {
+    std::vector<QuadraturePoint>& rule = rules_[static_cast<std::size_t>(t)];
+    if (rule.empty()) rule = cell_quadrature(t, quad4_points_);
+    return rule;
+  }
+
+ private:
+  int quad4_points_;
+  std::array<std::vector<QuadraturePoint>, kCellTypeNames.size()> rules_;
+};
 
 }  // namespace signorini
