@@ -164,6 +164,14 @@ class OptionTable : public OptionTableInfo {
   [[nodiscard]] bool applies(std::size_t i, const S& s) const {
     return !conditions_[i] || conditions_[i](s);
   }
+  /// (key, value) of every option that lives in the struct and applies to `s`, in table order:
+  /// what the effective settings, summary.json and spec comparisons are made of.
+  [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> values(const S& s) const {
+    std::vector<std::pair<std::string, OptionValue>> out;
+    for (std::size_t i = 0; i < options.size(); ++i)
+      if (getters_[i] && applies(i, s)) out.emplace_back(options[i].key, getters_[i](s));
+    return out;
+  }
   /// The condition of the last option, and the words that say it in messages ("type =
   /// \"rectangle\"").
   OptionTable& applies_when(std::function<bool(const S&)> condition, std::string words) {

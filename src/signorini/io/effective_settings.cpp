@@ -15,8 +15,7 @@ namespace {
 // caller's).
 template <class S>
 void emit_options(TomlEmitter& out, const OptionTable<S>& table, const S& s) {
-  for (std::size_t i = 0; i < table.options.size(); ++i)
-    if (table.getter(i) && table.applies(i, s)) out.value(table.options[i].key, table.getter(i)(s));
+  for (const auto& [key, value] : table.values(s)) out.value(key, value);
 }
 
 }  // namespace
@@ -31,9 +30,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   emit_options(out, material_options(), spec);
   for (const RegionMaterialSpec& m : spec.region_materials) {
     out.array_table("region");
-    out.value("name", m.region);
-    out.value("E", m.material.E);
-    out.value("nu", m.material.nu);
+    for (const auto& [key, value] : region_values(m)) out.value(key, value);
   }
   out.table("fem");
   emit_options(out, fem_options(), spec);
@@ -66,24 +63,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     out.value("f", texts.body_force);
   }
   out.table("contact");
-  out.value("boundary", spec.contact.boundary);
-  const RigidObstacle& o = spec.contact.obstacle;
-  switch (o.shape) {
-    case ObstacleShape::Gap:
-      out.value("gap", texts.gap);
-      break;
-    case ObstacleShape::Plane:
-      out.value("obstacle", std::string("plane"));
-      out.value("point", std::vector<double>{o.point(0), o.point(1)});
-      out.value("normal", std::vector<double>{o.normal(0), o.normal(1)});
-      break;
-    case ObstacleShape::Disc:
-      out.value("obstacle", std::string("disc"));
-      out.value("centre", std::vector<double>{o.centre(0), o.centre(1)});
-      out.value("radius", o.radius);
-      out.value("inside", o.body_inside);
-      break;
-  }
+  for (const auto& [key, value] : contact_values(spec.contact, texts.gap)) out.value(key, value);
   out.table("solver");
   emit_options(out, contact_solver_option_table(), spec.solver);
   out.table("solver.linear");

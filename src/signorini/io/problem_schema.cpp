@@ -52,9 +52,7 @@ std::string unit_system_list() {
 template <class S>
 void append_values(std::vector<std::pair<std::string, OptionValue>>& out,
                    const OptionTable<S>& table, const S& s) {
-  for (std::size_t i = 0; i < table.options.size(); ++i)
-    if (table.getter(i) && table.applies(i, s))
-      out.emplace_back(table.full_key(table.options[i].key), table.getter(i)(s));
+  for (const auto& [key, value] : table.values(s)) out.emplace_back(table.full_key(key), value);
 }
 
 }  // namespace
@@ -294,6 +292,34 @@ const std::vector<const OptionTableInfo*>& problem_schema() {
                                                              &contact_solver_option_table(),
                                                              &linear_solver_option_table()};
   return tables;
+}
+
+std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpec& contact,
+                                                                const std::string& gap_text) {
+  std::vector<std::pair<std::string, OptionValue>> out{{"boundary", contact.boundary}};
+  const RigidObstacle& o = contact.obstacle;
+  const auto xy = [](const Eigen::Vector2d& v) { return std::array<double, 2>{v(0), v(1)}; };
+  switch (o.shape) {
+    case ObstacleShape::Gap:
+      out.emplace_back("gap", gap_text);
+      break;
+    case ObstacleShape::Plane:
+      out.insert(out.end(), {{"obstacle", std::string("plane")},
+                             {"point", xy(o.point)},
+                             {"normal", xy(o.normal)}});
+      break;
+    case ObstacleShape::Disc:
+      out.insert(out.end(), {{"obstacle", std::string("disc")},
+                             {"centre", xy(o.centre)},
+                             {"radius", o.radius},
+                             {"inside", o.body_inside}});
+      break;
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, OptionValue>> region_values(const RegionMaterialSpec& region) {
+  return {{"name", region.region}, {"E", region.material.E}, {"nu", region.material.nu}};
 }
 
 std::vector<std::pair<std::string, OptionValue>> option_values(const ProblemSpec& spec) {

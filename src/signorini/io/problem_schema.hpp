@@ -31,6 +31,15 @@ namespace signorini {
 /// [solver.linear] included. A table's subtables are the tables whose path extends its own.
 [[nodiscard]] const std::vector<const OptionTableInfo*>& problem_schema();
 
+/// The keys and values of [contact] as a file gives them: the boundary, then `gap` (the text
+/// `gap_text`) or the obstacle's shape and geometry. The effective settings and summary.json
+/// write these.
+[[nodiscard]] std::vector<std::pair<std::string, OptionValue>> contact_values(
+    const ContactSpec& contact, const std::string& gap_text);
+/// The keys and values of one [[region]]: name, E, nu.
+[[nodiscard]] std::vector<std::pair<std::string, OptionValue>> region_values(
+    const RegionMaterialSpec& region);
+
 /// The value of every option that a table reaches in `spec` and that applies there (not mesh.nx
 /// for a Gmsh mesh) ("solver.linear.type", "cg"), in
 /// the order of problem_schema(): what two specs are compared by.

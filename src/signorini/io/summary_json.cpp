@@ -72,9 +72,7 @@ nlohmann::json option_json(const OptionValue& value) {
 template <class S>
 nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
   nlohmann::json out = nlohmann::json::object();
-  for (std::size_t i = 0; i < table.options.size(); ++i)
-    if (table.getter(i) && table.applies(i, s))
-      out[table.options[i].key] = option_json(table.getter(i)(s));
+  for (const auto& [key, value] : table.values(s)) out[key] = option_json(value);
   return out;
 }
 
@@ -170,8 +168,11 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   problem["material"] = options_json(material_options(), spec);
   if (!spec.region_materials.empty()) {
     problem["region"] = json::array();
-    for (const RegionMaterialSpec& m : spec.region_materials)
-      problem["region"].push_back({{"name", m.region}, {"E", m.material.E}, {"nu", m.material.nu}});
+    for (const RegionMaterialSpec& m : spec.region_materials) {
+      json entry = json::object();
+      for (const auto& [key, value] : region_values(m)) entry[key] = option_json(value);
+      problem["region"].push_back(entry);
+    }
   }
   problem["fem"] = options_json(fem_options(), spec);
   json clamps = json::array();
@@ -191,24 +192,9 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   }
   problem["traction"] = tractions;
   if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
-  problem["contact"] = {{"boundary", spec.contact.boundary}};
-  const RigidObstacle& o = spec.contact.obstacle;
-  switch (o.shape) {
-    case ObstacleShape::Gap:
-      problem["contact"]["gap"] = spec.contact.description;
-      break;
-    case ObstacleShape::Plane:
-      problem["contact"]["obstacle"] = "plane";
-      problem["contact"]["point"] = {o.point(0), o.point(1)};
-      problem["contact"]["normal"] = {o.normal(0), o.normal(1)};
-      break;
-    case ObstacleShape::Disc:
-      problem["contact"]["obstacle"] = "disc";
-      problem["contact"]["centre"] = {o.centre(0), o.centre(1)};
-      problem["contact"]["radius"] = o.radius;
-      problem["contact"]["inside"] = o.body_inside;
-      break;
-  }
+  problem["contact"] = json::object();
+  for (const auto& [key, value] : contact_values(spec.contact, spec.contact.description))
+    problem["contact"][key] = option_json(value);
   problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
   problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);
   j["problem"] = problem;
