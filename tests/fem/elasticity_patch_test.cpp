@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fem/uniaxial_tension.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/load_assembly.hpp"
@@ -55,20 +56,8 @@ TEST_P(PatchTest, UniformUniaxialStressIsExact) {
   opt.material = {1000.0, 0.3};
   opt.plane_model = model;
   // Rollers: u_x = 0 on the left, u_y = 0 on the bottom; traction (sigma, 0) on the right.
-  const DofMap dofs =
-      make_dof_map(mesh, {{"left", {true, false, false}}, {"bottom", {false, true, false}}});
   const double sigma = 2.5;
-  const SparseMatrix A = assemble_stiffness(mesh, dofs, opt);
-  Vector b = Vector::Zero(dofs.num_free());
-  add_traction_load(
-      mesh, dofs, mesh.boundary_part("right"),
-      [&](const Point&) { return Eigen::Vector3d(sigma, 0.0, 0.0); }, 2, b);
-  auto solver = make_linear_solver({});
-  solver->analyze(A);
-  solver->factorize(A);
-  Vector u(dofs.num_free());
-  solver->solve(b, u);
-  const Vector full = dofs.expand(u);
+  const Vector full = testing::solve_uniaxial_tension(mesh, opt, sigma);
 
   const double E = opt.material.E, nu = opt.material.nu;
   const bool strain = model == PlaneModel::PlaneStrain;
@@ -157,20 +146,8 @@ TEST(PatchTestMixed, TrianglesAndQuadrilateralsOfBothOrdersTogether) {
 
     ElasticityOptions opt;
     opt.material = {1000.0, 0.3};
-    const DofMap dofs =
-        make_dof_map(mesh, {{"left", {true, false, false}}, {"bottom", {false, true, false}}});
     const double sigma = 2.5;
-    const SparseMatrix A = assemble_stiffness(mesh, dofs, opt);
-    Vector b = Vector::Zero(dofs.num_free());
-    add_traction_load(
-        mesh, dofs, mesh.boundary_part("right"),
-        [&](const Point&) { return Eigen::Vector3d(sigma, 0.0, 0.0); }, 2, b);
-    auto solver = make_linear_solver({});
-    solver->analyze(A);
-    solver->factorize(A);
-    Vector u(dofs.num_free());
-    solver->solve(b, u);
-    const Vector full = dofs.expand(u);
+    const Vector full = testing::solve_uniaxial_tension(mesh, opt, sigma);
     const double E = opt.material.E, nu = opt.material.nu;
     const double exx = (1.0 - nu * nu) / E * sigma, eyy = -nu * (1.0 + nu) / E * sigma;
     for (Index n = 0; n < mesh.num_nodes(); ++n) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fem/uniaxial_tension.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/load_assembly.hpp"
@@ -86,20 +87,8 @@ TEST(GmshReader, CellsAreCounterclockwiseAndPassThePatchTest) {
   // linear, and quadratic cells on a Gmsh mesh reproduce it.
   ElasticityOptions opt;
   opt.material = {1000.0, 0.3};
-  const DofMap dofs =
-      make_dof_map(m, {{"left", {true, false, false}}, {"bottom", {false, true, false}}});
-  const SparseMatrix A = assemble_stiffness(m, dofs, opt);  // throws on a clockwise cell
-  Vector b = Vector::Zero(dofs.num_free());
   const double sigma = 2.5;
-  add_traction_load(
-      m, dofs, m.boundary_part("right"),
-      [&](const Point&) { return Eigen::Vector3d(sigma, 0.0, 0.0); }, 2, b);
-  auto solver = make_linear_solver({});
-  solver->analyze(A);
-  solver->factorize(A);
-  Vector u(dofs.num_free());
-  solver->solve(b, u);
-  const Vector full = dofs.expand(u);
+  const Vector full = testing::solve_uniaxial_tension(m, opt, sigma);  // throws on a clockwise cell
   const double E = opt.material.E, nu = opt.material.nu;
   for (Index n = 0; n < m.num_nodes(); ++n) {
     EXPECT_NEAR(full(2 * n), (1.0 - nu * nu) / E * sigma * m.node(n)(0), 1e-12);
@@ -212,20 +201,8 @@ TEST(GmshReader, MaterialsPerRegionGiveEachItsStrain) {
   opt.region_materials[1] = IsotropicMaterial{2000.0, 0.0};  // "quads"
   EXPECT_EQ(material_of_region(opt, 1).E, 2000.0);
   EXPECT_EQ(material_of_region(opt, 2).E, 1000.0);
-  const DofMap dofs =
-      make_dof_map(m, {{"left", {true, false, false}}, {"bottom", {false, true, false}}});
-  const SparseMatrix A = assemble_stiffness(m, dofs, opt);
-  Vector b = Vector::Zero(dofs.num_free());
   const double sigma = 2.5;
-  add_traction_load(
-      m, dofs, m.boundary_part("right"),
-      [&](const Point&) { return Eigen::Vector3d(sigma, 0.0, 0.0); }, 2, b);
-  auto solver = make_linear_solver({});
-  solver->analyze(A);
-  solver->factorize(A);
-  Vector u(dofs.num_free());
-  solver->solve(b, u);
-  const Vector full = dofs.expand(u);
+  const Vector full = testing::solve_uniaxial_tension(m, opt, sigma);
   const double factor = sigma;  // e_xx = sigma / E with nu = 0
   for (Index n = 0; n < m.num_nodes(); ++n) {
     const double x = m.node(n)(0);

@@ -119,10 +119,10 @@ Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const
     ue.resize(2 * n);
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) ue(2 * a + k) = u(nodes[static_cast<std::size_t>(a)] * 2 + k);
-    const ElementVector fe = element_stiffness(type, cell_coordinates(mesh, c),
-                                               D[static_cast<std::size_t>(mesh.cell_region(c))],
-                                               rules(type)) *
-                             ue;
+    const ElementVector fe =
+        element_stiffness(type, cell_coordinates(mesh, c),
+                          D[static_cast<std::size_t>(mesh.cell_region(c))], rules(type)) *
+        ue;
     for (Index a = 0; a < n; ++a)
       for (int k = 0; k < 2; ++k) f(nodes[static_cast<std::size_t>(a)] * 2 + k) += fe(2 * a + k);
   }

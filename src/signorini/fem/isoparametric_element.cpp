@@ -8,6 +8,22 @@
 
 namespace signorini {
 
+namespace {
+
+// B from the shape function gradients dN/dx (rows d/dx, d/dy): (e_xx, e_yy, 2 e_xy) = B u_e,
+// element dofs node by node. B must be zero on entry.
+template <class Gradients, class Strain>
+void fill_strain_matrix(const Gradients& dNdx, Strain& B) {
+  for (Index a = 0; a < dNdx.cols(); ++a) {
+    B(0, 2 * a) = dNdx(0, a);
+    B(1, 2 * a + 1) = dNdx(1, a);
+    B(2, 2 * a) = dNdx(1, a);
+    B(2, 2 * a + 1) = dNdx(0, a);
+  }
+}
+
+}  // namespace
+
 CellCoordinates cell_coordinates(const Mesh& mesh, Index c) {
   const auto nodes = mesh.cell(c);
   CellCoordinates X(2, static_cast<Index>(nodes.size()));
@@ -31,12 +47,7 @@ StrainMatrix strain_matrix(CellType t, const CellCoordinates& X, const Eigen::Ve
   StrainMatrix B = StrainMatrix::Zero(3, 2 * n);
   if (!(det_j > 0.0)) return B;
   const ShapeGradients dNdx = J.inverse() * dN;  // rows: d/dx, d/dy
-  for (Index a = 0; a < n; ++a) {
-    B(0, 2 * a) = dNdx(0, a);
-    B(1, 2 * a + 1) = dNdx(1, a);
-    B(2, 2 * a) = dNdx(1, a);
-    B(2, 2 * a + 1) = dNdx(0, a);
-  }
+  fill_strain_matrix(dNdx, B);
   return B;
 }
 
@@ -77,12 +88,7 @@ ElementMatrix fixed_size_stiffness(CellType t, const CellCoordinates& Xd, const 
                        " (det J = " + std::to_string(det_j) + " at a quadrature point)");
     const Matrix2N dNdx = J.inverse() * dN;  // rows: d/dx, d/dy
     Strain B = Strain::Zero();
-    for (int a = 0; a < NN; ++a) {
-      B(0, 2 * a) = dNdx(0, a);
-      B(1, 2 * a + 1) = dNdx(1, a);
-      B(2, 2 * a) = dNdx(1, a);
-      B(2, 2 * a + 1) = dNdx(0, a);
-    }
+    fill_strain_matrix(dNdx, B);
     K.noalias() += B.transpose() * D * B * (det_j * q.w);
   }
   return K;

@@ -304,9 +304,9 @@ std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpe
       out.emplace_back("gap", gap_text);
       break;
     case ObstacleShape::Plane:
-      out.insert(out.end(), {{"obstacle", std::string("plane")},
-                             {"point", xy(o.point)},
-                             {"normal", xy(o.normal)}});
+      out.insert(
+          out.end(),
+          {{"obstacle", std::string("plane")}, {"point", xy(o.point)}, {"normal", xy(o.normal)}});
       break;
     case ObstacleShape::Disc:
       out.insert(out.end(), {{"obstacle", std::string("disc")},

@@ -15,14 +15,15 @@ std::string mesh_description(const Mesh& mesh) {
   }
   std::string types;
   for (const auto& [t, n] : per_type)
-    types += fmt::format("{}{}: {}", types.empty() ? "" : ", ", enum_to_string(kCellTypeNames, t), n);
+    types +=
+        fmt::format("{}{}: {}", types.empty() ? "" : ", ", enum_to_string(kCellTypeNames, t), n);
   std::string out =
       fmt::format("{} nodes, {} cells ({})", mesh.num_nodes(), mesh.num_cells(), types);
   std::string regions;
   for (std::size_t r = 0; r < per_region.size(); ++r)
     if (!mesh.region_names()[r].empty() && per_region[r] > 0)
-      regions += fmt::format("{}{} ({} cells)", regions.empty() ? "" : ", ",
-                             mesh.region_names()[r], per_region[r]);
+      regions += fmt::format("{}{} ({} cells)", regions.empty() ? "" : ", ", mesh.region_names()[r],
+                             per_region[r]);
   if (!regions.empty()) out += "; regions: " + regions;
   std::string parts;
   for (const std::string& name : mesh.boundary_part_names())
