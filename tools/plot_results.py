@@ -33,6 +33,8 @@ import sys
 import textwrap
 from collections import namedtuple
 
+# Line styles of the contact boundaries when there are several.
+STYLES = ["-", (0, (5, 2)), (0, (1, 1.5)), (0, (5, 2, 1, 2))]
 FIGURES = ["contact_displacement", "contact_pressure", "deformed_von_mises", "convergence"]
 FORMATS = ["png", "svg"]
 DPI = 150
@@ -210,6 +212,9 @@ def read_contact_csv(outdir):
         if body.ndim != 2 or body.shape[1] != len(header):
             raise ValueError("rows of different lengths")
         columns = {k: body[:, header.index(k)] for k in ("x", "y", "u_n", "u_t", "pressure", "gap")}
+        # The contact boundary of each row (one name in files of one boundary or older ones).
+        names = ([r[text[0]] for r in rows[1:] if r] if text else [""] * len(body))
+        columns["boundary"] = names
         if "n_x" in header and "n_y" in header:
             columns["n_x"] = body[:, header.index("n_x")]
             columns["n_y"] = body[:, header.index("n_y")]
@@ -345,12 +350,33 @@ def padded(lo, hi, fraction=0.05):
     return lo - fraction * span, hi + fraction * span
 
 
-def boundary_coordinate(contact, units):
-    """The abscissa of the contact-boundary plots: x or y if the boundary is straight along it,
-    else the arc length from the first contact node."""
+def boundary_parts(contact):
+    """[(name, rows)]: the rows of each contact boundary, in the order of contact.csv."""
     import numpy as np
 
+    names = contact.get("boundary") or [""] * len(contact["x"])
+    parts, start = [], 0
+    for i in range(1, len(names) + 1):
+        if i == len(names) or names[i] != names[start]:
+            parts.append((names[start], np.arange(start, i)))
+            start = i
+    return parts
+
+
+def boundary_coordinate(contact, units):
+    """The abscissa of the contact-boundary plots: x or y if the boundary is straight along it,
+    else the arc length from the first contact node. With several contact boundaries, the arc
+    length along each, from its first node."""
+    import numpy as np
+
+    parts = boundary_parts(contact)
     x, y = contact["x"], contact["y"]
+    if len(parts) > 1:
+        t = np.zeros(len(x))
+        for _, rows in parts:
+            xs, ys = x[rows], y[rows]
+            t[rows] = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(xs), np.diff(ys)))])
+        return t, axis_label("arc length along each contact boundary", units.length)
     if np.ptp(y) <= 1e-9 * max(np.ptp(x), 1e-300):
         return x, axis_label("x", units.length)
     if np.ptp(x) <= 1e-9 * max(np.ptp(y), 1e-300):
@@ -590,19 +616,25 @@ def figure_displacement(summary, contact, units, measure):
     ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
     shade_contact(ax, contact["intervals"])
     ax.axhline(0.0, color="0.6", lw=0.8)
-    ax.plot(t, u_n / scale, color="tab:blue", lw=1.6,
-            label="normal uₙ = u·ν (ν: outward normal)" if has_gap else
-            "normal uₙ = u·ν (ν outward: uₙ < 0 lifts off)")
-    ax.plot(t, u_t / scale, color="tab:green", lw=1.6, label="tangential uₜ = u·τ")
-    if has_gap:
-        ax.plot(t, gap / scale, color="k", lw=1.0, ls="--",
-                label="gap g (the bound: uₙ ≤ g)" +
-                      (", partly off the axis" if gap_clipped else ""))
+    for i, (name, rows) in enumerate(contact["parts"]):
+        on = f" on '{name}'" if len(contact["parts"]) > 1 else ""
+        style = STYLES[i % len(STYLES)]
+        ax.plot(t[rows], u_n[rows] / scale, color="tab:blue", lw=1.6, ls=style,
+                label=("normal uₙ = u·ν (ν: outward normal)" if has_gap else
+                       "normal uₙ = u·ν (ν outward: uₙ < 0 lifts off)") + on)
+        ax.plot(t[rows], u_t[rows] / scale, color="tab:green", lw=1.6, ls=style,
+                label="tangential uₜ = u·τ" + on)
+        if has_gap:
+            ax.plot(t[rows], gap[rows] / scale, color="k", lw=1.0,
+                    ls="--" if len(contact["parts"]) == 1 else style,
+                    label="gap g (the bound: uₙ ≤ g)" +
+                          (", partly off the axis" if gap_clipped else "") + on)
     ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
     ax.set_ylim(y0, y1)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(axis_label("displacement", units.length, k))
-    title = wrapped(title_of(summary) + "\nDisplacement along the contact boundary", 8)
+    title = wrapped(title_of(summary) + "\nDisplacement along the contact boundar" +
+                    ("ies" if len(contact["parts"]) > 1 else "y"), 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=LEGEND_SIZE, loc="best")
@@ -621,7 +653,10 @@ def figure_pressure(summary, contact, units, measure):
     ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
     intervals = contact["intervals"]
     shade_contact(ax, intervals)
-    ax.plot(t, p / scale, color="tab:red", lw=1.6, label="contact pressure l = −σₙ")
+    for i, (name, rows) in enumerate(contact["parts"]):
+        ax.plot(t[rows], p[rows] / scale, color="tab:red", lw=1.6, ls=STYLES[i % len(STYLES)],
+                label="contact pressure l = −σₙ" +
+                      (f" on '{name}'" if len(contact["parts"]) > 1 else ""))
     touching = p > 0
     if np.any(touching):
         ax.plot(t[touching], p[touching] / scale, "o", color="tab:red", ms=2.5,
@@ -637,7 +672,8 @@ def figure_pressure(summary, contact, units, measure):
     where = ", ".join(with_unit(f"{lo:.3g} to {hi:.3g}", units.length) for lo, hi in intervals[:4])
     if len(intervals) > 4:
         where += ", ..."
-    subtitle = "Contact pressure along the contact boundary"
+    subtitle = "Contact pressure along the contact boundar" + \
+        ("ies" if len(contact["parts"]) > 1 else "y")
     subtitle += f" (touching: {where})" if intervals else " (no contact)"
     title = wrapped(title_of(summary) + "\n" + subtitle, 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
@@ -848,33 +884,41 @@ def figure_deformed(summary, vtu, contact, scale, units, measure):
                                      linewidths=0.6), autolim=False)
     # A rigid plane or disc (contact.obstacle) is drawn as it is, across the drawing; a gap
     # formula as the points x + g nu of the contact nodes.
-    obstacle = summary.get("problem", {}).get("contact", {})
-    shape = obstacle.get("obstacle", "gap")
-    if shape == "plane":
-        p, n = np.array(obstacle["point"], float), np.array(obstacle["normal"], float)
-        t = np.array([n[1], -n[0]]) / np.hypot(*n)
-        reach = 2.0 * float(np.hypot(*(hi - lo)))
-        line = np.array([p - reach * t, p + reach * t])
-        ax.plot(line[:, 0], line[:, 1], color="tab:brown", lw=3, alpha=0.8, solid_capstyle="butt",
-                label="rigid plane (not moved)", zorder=0)
-    elif shape == "disc":
-        c, r = np.array(obstacle["centre"], float), float(obstacle["radius"])
-        a = np.linspace(0.0, 2.0 * np.pi, 721)
-        ax.plot(c[0] + r * np.cos(a), c[1] + r * np.sin(a), color="tab:brown", lw=3, alpha=0.8,
-                label="rigid disc (not moved)", zorder=0)
-    else:
-        if not has_gap:
-            label = "rigid foundation"
-        elif np.any(inside):
-            label = "rigid foundation at its true place x + g·ν (not magnified)"
+    obstacles = summary.get("problem", {}).get("contact", {})
+    obstacles = obstacles if isinstance(obstacles, list) else [obstacles]
+    shapes = [o.get("obstacle", "gap") for o in obstacles]
+    for i, obstacle in enumerate(obstacles):
+        shape = shapes[i]
+        first = i == shapes.index(shape)  # one legend entry per kind
+        if shape == "plane":
+            p, n = np.array(obstacle["point"], float), np.array(obstacle["normal"], float)
+            t = np.array([n[1], -n[0]]) / np.hypot(*n)
+            reach = 2.0 * float(np.hypot(*(hi - lo)))
+            line = np.array([p - reach * t, p + reach * t])
+            ax.plot(line[:, 0], line[:, 1], color="tab:brown", lw=3, alpha=0.8,
+                    solid_capstyle="butt", label="rigid plane (not moved)" if first else None,
+                    zorder=0)
+        elif shape == "disc":
+            c, r = np.array(obstacle["centre"], float), float(obstacle["radius"])
+            a = np.linspace(0.0, 2.0 * np.pi, 721)
+            ax.plot(c[0] + r * np.cos(a), c[1] + r * np.sin(a), color="tab:brown", lw=3,
+                    alpha=0.8, label="rigid disc (not moved)" if first else None, zorder=0)
         else:
-            label = ("rigid foundation: outside the drawing (gap " +
-                     with_unit(f"{np.nanmin(gap):.3g} to {np.nanmax(gap):.3g}", units.length) +
-                     ")")
-        ax.plot(foundation[:, 0], foundation[:, 1], color="tab:brown", lw=3, alpha=0.8,
-                solid_capstyle="butt", label=label, zorder=0)
+            if not has_gap:
+                label = "rigid foundation"
+            elif np.any(inside):
+                label = "rigid foundation at its true place x + g·ν (not magnified)"
+            else:
+                label = ("rigid foundation: outside the drawing (gap " +
+                         with_unit(f"{np.nanmin(gap):.3g} to {np.nanmax(gap):.3g}", units.length) +
+                         ")")
+            parts = contact["parts"]
+            rows = parts[i][1] if len(parts) == len(obstacles) else slice(None)
+            ax.plot(foundation[rows, 0], foundation[rows, 1], color="tab:brown", lw=3, alpha=0.8,
+                    solid_capstyle="butt", label=label if first else None, zorder=0)
+    shape = "gap" if "gap" in shapes else shapes[0]
     # Only where the two lines can be told apart.
-    if shape == "gap" and has_gap and s != 1.0 and \
+    if shape == "gap" and len(obstacles) == 1 and has_gap and s != 1.0 and \
             np.nanmax(np.abs((s - 1.0) * gap)) > 0.005 * size:
         ax.plot(magnified[:, 0], magnified[:, 1], color="tab:brown", lw=1.2, ls=(0, (5, 2)),
                 label=f"foundation with the gap magnified {s:g} times: where the magnified "
@@ -1049,7 +1093,10 @@ def draw(outdir, next_figure, scale, written, warnings=True):
     contact = read_contact_csv(outdir)
     # Shared by the figures along the contact boundary.
     contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
-    contact["intervals"] = contact_intervals(contact["t"], contact["pressure"] > 0)
+    contact["parts"] = boundary_parts(contact)
+    contact["intervals"] = [iv for _, rows in contact["parts"]
+                            for iv in contact_intervals(contact["t"][rows],
+                                                        contact["pressure"][rows] > 0)]
     measure = Measure()
     makers = {
         "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),

@@ -215,7 +215,7 @@ TEST(BadInput, NoClampedBoundary) {
   EXPECT_EQ(bad_input_line(run_tool(dir, "check " + quoted(file.string()))),
             kError + file.string() +
                 ": missing required key 'clamp' (a [[clamp]] section with the boundary where u = "
-                "0; at least one)\n");
+                "0, or a [[displacement]] section; at least one)\n");
   EXPECT_EQ(
       bad_input_line(check(dir, {"clamp.0.components=[]"})),
       kError + kFile + ": key 'clamp[0].components' must list at least one of \"x\", \"y\"\n");
@@ -334,7 +334,7 @@ TEST(BadInput, TractionOnTheContactBoundary) {
   const testing::TemporaryFolder dir;
   EXPECT_EQ(bad_input_line(check(dir, {"traction.0.boundary=bottom"})),
             kError + kFile +
-                ": traction[0].boundary = 'bottom' is the contact boundary (contact.boundary): a "
+                ": traction[0].boundary = 'bottom' is a contact boundary (contact.boundary): a "
                 "boundary part is either loaded or in contact with the foundation; load another "
                 "part\n");
 }

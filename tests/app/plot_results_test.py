@@ -145,6 +145,14 @@ class HelpersTest(unittest.TestCase):
         t, label = plot.boundary_coordinate(bent, plot.units_of("mm-N"))
         np.testing.assert_allclose(t, [0.0, 3.0, 7.0])
         self.assertEqual(label, "arc length along the contact boundary (mm)")
+        # Two contact boundaries: the arc length along each, from 0 on each.
+        two = {"x": np.array([0.0, 1.0, 2.0, 2.0, 2.0]), "y": np.array([0.0, 0.0, 0.0, 0.0, 1.5]),
+               "boundary": ["bottom", "bottom", "bottom", "right", "right"]}
+        self.assertEqual([(n, list(r)) for n, r in plot.boundary_parts(two)],
+                         [("bottom", [0, 1, 2]), ("right", [3, 4])])
+        t, label = plot.boundary_coordinate(two, plot.NO_UNITS)
+        np.testing.assert_allclose(t, [0.0, 1.0, 2.0, 0.0, 1.5])
+        self.assertEqual(label, "arc length along each contact boundary")
 
 
 class ReadingTest(unittest.TestCase):

@@ -19,7 +19,7 @@ ContactResult run(const ProblemSpec& spec, ContactMethod method) {
 TEST(GapAndLoads, PositiveGapReducesContactAndMethodsAgree) {
   ProblemSpec spec = paper_benchmark(60, 20);
   const ContactResult touching = run(spec, ContactMethod::SemismoothNewton);
-  spec.contact.gap = [](const Point& x) { return 2e-6 * (1.0 + x(0)); };
+  spec.contacts[0].gap = [](const Point& x) { return 2e-6 * (1.0 + x(0)); };
   const ContactResult ssn = run(spec, ContactMethod::SemismoothNewton);
   const ContactResult gnm = run(spec, ContactMethod::UzawaGnm);
   ASSERT_TRUE(ssn.summary.converged()) << ssn.summary.message;
@@ -37,7 +37,7 @@ TEST(GapAndLoads, PositiveGapReducesContactAndMethodsAgree) {
 TEST(GapAndLoads, NegativeGapIsAnInterferenceThatPushesTheBodyOut) {
   ProblemSpec spec = paper_benchmark(60, 20);
   spec.tractions.clear();
-  spec.contact.gap = [](const Point&) { return -1e-6; };
+  spec.contacts[0].gap = [](const Point&) { return -1e-6; };
   const Model model = build_model(spec);
   const ContactResult ssn = run(spec, ContactMethod::SemismoothNewton);
   const ContactResult gnm = run(spec, ContactMethod::UzawaGnm);

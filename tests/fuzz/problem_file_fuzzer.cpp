@@ -33,7 +33,7 @@ void evaluate_fields(const signorini::ProblemSpec& spec) {
       try {
         for (const auto& t : spec.tractions) (void)t.p(p);
         if (spec.body_force) (void)spec.body_force(p);
-        (void)spec.contact.gap(p);
+        (void)spec.contacts[0].gap(p);
       } catch (const signorini::InputError& e) {
         // A value that is not finite somewhere: reported, with a one-line message.
         if (std::strchr(e.what(), '\n') != nullptr) broken("multi-line field error", e.what());

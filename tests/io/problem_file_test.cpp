@@ -118,8 +118,8 @@ TEST(ProblemFile, PaperExampleIsThePapersBenchmark) {
     }
   }
   EXPECT_FALSE(static_cast<bool>(s.body_force));
-  EXPECT_EQ(s.contact.boundary, "bottom");
-  EXPECT_EQ(s.contact.gap(Point(1.0, 0.0, 0.0)), 0.0);
+  EXPECT_EQ(s.contacts[0].boundary, "bottom");
+  EXPECT_EQ(s.contacts[0].gap(Point(1.0, 0.0, 0.0)), 0.0);
   EXPECT_EQ(s.solver.method, ContactMethod::UzawaGnm);
   EXPECT_EQ(s.solver.r, 1e8);
   EXPECT_EQ(s.solver.uzawa_tolerance, 1e-8);
@@ -164,7 +164,7 @@ boundary = "bottom"
   EXPECT_EQ(s.boundary_gauss_points, 2);
   EXPECT_TRUE(s.clamps[0].components[0] && s.clamps[0].components[1]);
   EXPECT_TRUE(s.tractions.empty());
-  EXPECT_EQ(s.contact.gap(Point(1.0, 0.0, 0.0)), 0.0);
+  EXPECT_EQ(s.contacts[0].gap(Point(1.0, 0.0, 0.0)), 0.0);
   const ContactSolverOptions defaults;
   EXPECT_EQ(s.solver.method, defaults.method);
   EXPECT_FALSE(s.solver.r.has_value());  // automatic (method.md section 7)
@@ -325,8 +325,8 @@ TEST(ProblemFile, EffectiveSettingsRoundTripEveryOption) {
   EXPECT_EQ(a.point_loads[0].force, s.point_loads[0].force);
   EXPECT_EQ(a.point_loads[0].boundary, s.point_loads[0].boundary);
   EXPECT_EQ(a.body_force_description, s.body_force_description);
-  EXPECT_EQ(a.contact.boundary, s.contact.boundary);
-  EXPECT_EQ(a.contact.description, s.contact.description);
+  EXPECT_EQ(a.contacts[0].boundary, s.contacts[0].boundary);
+  EXPECT_EQ(a.contacts[0].description, s.contacts[0].description);
 }
 
 // Errors, one class at a time --------------------------------------------------------------
@@ -548,7 +548,7 @@ TEST(ProblemFileOverrides, ReplaceValues) {
   EXPECT_EQ(p.spec.solver.r, 1e6);
   EXPECT_EQ(p.spec.elasticity.material.E, 1000.0);
   EXPECT_EQ(p.spec.name, "renamed");
-  EXPECT_DOUBLE_EQ(p.spec.contact.gap(Point(2.0, 0.0, 0.0)), 0.02);
+  EXPECT_DOUBLE_EQ(p.spec.contacts[0].gap(Point(2.0, 0.0, 0.0)), 0.02);
   EXPECT_CONTAINS(p.effective_toml, "nx = 480\n");
   EXPECT_CONTAINS(p.effective_toml, "method = \"semismooth_newton\"\n");
 }

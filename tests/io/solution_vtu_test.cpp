@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 struct Solved {
   ProblemSpec spec = [] {
     ProblemSpec s = paper_benchmark(12, 4);
-    s.contact.gap = [](const Point& x) { return 1e-6 * (x(0) - 0.5) * (x(0) - 0.5); };
+    s.contacts[0].gap = [](const Point& x) { return 1e-6 * (x(0) - 0.5) * (x(0) - 0.5); };
     return s;
   }();
   Model model = build_model(spec);

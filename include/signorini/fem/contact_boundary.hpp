@@ -3,6 +3,9 @@
 // boundary part in order, their normals, trapezoid weights and gaps, and N (method.md section 3).
 // The discretisation side of contact; the solvers in contact/ see only the ContactSet.
 
+#include <string>
+#include <vector>
+
 #include "signorini/contact/contact_set.hpp"
 #include "signorini/fem/dof_map.hpp"
 #include "signorini/fem/rigid_obstacle.hpp"
@@ -10,6 +13,18 @@
 #include "signorini/mesh/mesh.hpp"
 
 namespace signorini {
+
+/// The nodes of a 2D boundary part in order along it (walking its facets), their outward unit
+/// normals (along int N_j nu ds) and weights h_j = int N_j ds, and the facets as positions in
+/// `nodes`. Throws InputError (naming `what`, e.g. "contact.boundary") for a part without facets
+/// or a node without a normal.
+struct BoundaryNodes {
+  std::vector<Index> nodes;
+  Eigen::MatrixXd normals;  ///< dim x nodes
+  Vector weights;
+  std::vector<std::vector<Index>> facets;
+};
+BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const std::string& what);
 
 /// Builds the contact set of a boundary part. Throws InputError if the part is empty, has no
 /// movable node (it lies on the clamped boundary entirely), or a gap value is not finite.
@@ -20,4 +35,8 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                             const RigidObstacle& obstacle);
 
+/// Appends the rows of `more` (a contact set over the same free dofs) to `into`: several
+/// contact boundaries as one contact set, their nodes in order (a node in two parts gets a row in
+/// each).
+void append_contact_set(ContactSet& into, const ContactSet& more);
 }  // namespace signorini

@@ -14,8 +14,11 @@ class DofMap {
  public:
   DofMap(Index num_nodes, int dim);
 
-  /// Marks a component of a node as clamped. Call before finalize().
+  /// Marks a component of a node as clamped (u = 0). Call before finalize().
   void clamp(Index node, int component);
+  /// Marks a component as prescribed, u = value (a clamp with nonzero data). Call before
+  /// finalize().
+  void prescribe(Index node, int component, double value);
   /// Numbers the free dofs. Further clamp() calls are errors.
   void finalize();
 
@@ -31,7 +34,16 @@ class DofMap {
     return free_index(node, component) < 0;
   }
 
-  /// Full vector (num_dofs) from a free vector, with zeros at clamped dofs.
+  /// The prescribed value of a clamped dof (0 for a plain clamp, and for free dofs).
+  [[nodiscard]] double value(Index node, int component) const {
+    return values_.size() == 0 ? 0.0 : values_(node * dim_ + component);
+  }
+  /// True if some clamped dof has a nonzero prescribed value.
+  [[nodiscard]] bool has_prescribed_values() const { return values_.size() != 0; }
+  /// The prescribed values on the full dofs (zero at free and plainly clamped dofs): u_D.
+  [[nodiscard]] Vector prescribed_values() const;
+  /// Full displacement (num_dofs) from a free vector: the free values, and the prescribed values
+  /// (u_D, zero for plain clamps) at the clamped dofs.
   [[nodiscard]] Vector expand(const Vector& free_values) const;
   /// Free vector from a full vector.
   [[nodiscard]] Vector restrict_to_free(const Vector& full_values) const;
@@ -42,6 +54,7 @@ class DofMap {
   Index num_free_ = 0;
   bool finalized_ = false;
   std::vector<Index> free_;  // per full dof: free number, or -1 (clamped)
+  Vector values_;            // per full dof: the prescribed value; empty while all are 0
 };
 
 }  // namespace signorini

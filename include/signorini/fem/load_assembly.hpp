@@ -41,6 +41,11 @@ void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const Vecto
                          int gauss_points, Vector& f, const std::string& what = "traction",
                          const CoordinateBox& box = {});
 
+/// Adds the load of a pressure p(x) normal to a boundary part, int -p n . v dGamma with n the
+/// outward unit normal at each Gauss point (along the curve on quadratic edges), to the full
+/// vector f. p > 0 pushes into the body. Throws InputError if p is not finite somewhere.
+void add_pressure_forces(const Mesh& mesh, const BoundaryPart& part, const ScalarField& p,
+                         int gauss_points, Vector& f, const std::string& what = "pressure");
 /// Adds int_Omega f . v dOmega to the full vector (each cell type's rule, cell_quadrature(); Q1
 /// cells with `gauss_points` per direction).
 void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,

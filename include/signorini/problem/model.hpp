@@ -15,8 +15,9 @@
 
 namespace signorini {
 
-/// The dofs that one [[clamp]] entry holds (full, node-major numbers), each counted for the first
-/// entry that clamps it, so that the reactions of the entries add up to the total.
+/// The dofs that one [[clamp]] or [[displacement]] entry holds (full, node-major numbers), each
+/// counted for the first entry that clamps it, so that the reactions of the entries add up to the
+/// total.
 struct ClampedPart {
   std::string boundary;
   std::vector<Index> dofs;
@@ -46,8 +47,13 @@ struct Model {
   Vector loads;
   std::vector<ClampedPart> clamped_parts;
   std::vector<PlacedPointLoad> point_loads;
-  /// The name of the contact boundary part (contact.csv's `boundary` column).
-  std::string contact_boundary;
+  /// The names of the contact boundary parts (contact.csv's `boundary` column), in the order of
+  /// the contact set's rows: part i has rows contact_starts[i] to contact_starts[i + 1] - 1.
+  std::vector<std::string> contact_boundaries;
+  std::vector<Index> contact_starts;
+
+  /// The name of the contact boundary of contact-set row j.
+  [[nodiscard]] const std::string& contact_boundary_of(Index j) const;
 };
 
 /// Throws InputError on anything unusable: unknown boundary names, rigid motions that the clamps
@@ -55,8 +61,11 @@ struct Model {
 /// traction on the contact boundary.
 Model build_model(const ProblemSpec& spec);
 
-/// Builds the dof numbering for a mesh and clamps (exposed for tests and other drivers).
-DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps);
+/// Builds the dof numbering for a mesh, clamps and prescribed displacements (exposed for tests
+/// and other drivers). Clamps win over displacements at a dof both hold; among the displacements
+/// the first entry wins.
+DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
+                    const std::vector<DisplacementSpec>& displacements = {});
 
 /// Throws InputError naming the rigid motions that the clamps leave free (fem/free_rigid_motions).
 void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs);

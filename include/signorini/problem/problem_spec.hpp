@@ -22,6 +22,31 @@ struct ClampSpec {
   std::array<bool, 3> components{true, true, true};
 };
 
+/// u_k = value_k(x) on a boundary part for the components given (a prescribed displacement, a
+/// nonzero clamp), or u . n = normal(x) along the part's outward normal n (method.md section 1,
+/// Gamma_D with nonzero data). A [[clamp]] wins over a [[displacement]] at a dof both hold; among
+/// displacements the first entry wins.
+struct DisplacementSpec {
+  std::string boundary;
+  /// One field per component (x, y, z); empty: that component is free.
+  std::array<ScalarField, 3> values;
+  std::array<std::string, 3> texts;  ///< how each was given ("-0.01", "0.001*x"), for reports
+  /// The normal component alone (empty: not prescribed); it excludes `values`. Supported where
+  /// the part's normal is along a coordinate axis at every node (straight parts parallel to an
+  /// axis): the component along that axis is prescribed.
+  ScalarField normal;
+  std::string normal_text;
+};
+
+/// A pressure p(x) normal to a boundary part: the traction -p n, n the outward unit normal at
+/// each quadrature point (so along curved quadratic edges it follows the curve); p > 0 pushes
+/// into the body.
+struct PressureSpec {
+  std::string boundary;
+  ScalarField p;
+  std::string text;  ///< how p was given, for reports
+};
+
 /// sigma(u) n = p on a boundary part (Gamma_N), or on the part of it inside `region`.
 struct TractionSpec {
   std::string boundary;
@@ -77,11 +102,15 @@ struct ProblemSpec {
   std::vector<RegionMaterialSpec> region_materials;
   int boundary_gauss_points = 2;  ///< Gauss points per boundary facet for tractions
   std::vector<ClampSpec> clamps;
+  std::vector<DisplacementSpec> displacements;
   std::vector<TractionSpec> tractions;
+  std::vector<PressureSpec> pressures;
   std::vector<PointLoadSpec> point_loads;
   VectorField body_force;  ///< empty: no body force
   std::string body_force_description;
-  ContactSpec contact;
+  /// The contact boundaries, each with its obstacle (at least one); their nodes form one
+  /// contact set, in this order.
+  std::vector<ContactSpec> contacts;
   ContactSolverOptions solver;
 };
 

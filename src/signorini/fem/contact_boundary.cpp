@@ -1,6 +1,7 @@
 #include "signorini/fem/contact_boundary.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -53,26 +54,23 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
   return make_contact_set(mesh, part, dofs, obstacle);
 }
 
-ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
-                            const RigidObstacle& obstacle) {
-  validate(obstacle);
+BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const std::string& what) {
   if (mesh.dim() != 2)
-    throw InputError(
-        "contact: only 2D meshes are supported so far (3D contact is not implemented)");
+    throw InputError(what + ": only 2D meshes are supported so far (3D is not implemented)");
   if (part.facets.empty())
-    throw InputError("contact.boundary = '" + part.name + "': the boundary part has no facets");
-  ContactSet cs;
-  cs.nodes = walk_edges(mesh, part);
-  const Index n = cs.size();
+    throw InputError(what + " = '" + part.name + "': the boundary part has no facets");
+  BoundaryNodes out;
+  out.nodes = walk_edges(mesh, part);
+  const auto n = static_cast<Index>(out.nodes.size());
   std::map<Index, Index> position;
-  for (Index j = 0; j < n; ++j) position[cs.nodes[static_cast<std::size_t>(j)]] = j;
+  for (Index j = 0; j < n; ++j) position[out.nodes[static_cast<std::size_t>(j)]] = j;
 
   // Weights h_j = int N_j ds and normals along int N_j nu ds (method.md section 3): on straight
   // two-node edges the trapezoid weights |e|/2 and the length-weighted edge normals; on
   // quadratic edges by Gauss quadrature along the curve (weights |e|/6, 2|e|/3, |e|/6 on a
   // straight one: all positive, so every node carries a constraint of its own).
-  cs.normals = Eigen::MatrixXd::Zero(2, n);
-  cs.weights = Vector::Zero(n);
+  out.normals = Eigen::MatrixXd::Zero(2, n);
+  out.weights = Vector::Zero(n);
   ShapeValues N;
   ShapeGradients dN;
   const auto rule = gauss_legendre(3);
@@ -80,13 +78,13 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
     const auto fn = mesh.facet_nodes(f);
     std::vector<Index> facet;
     for (const Index v : fn) facet.push_back(position.at(v));
-    cs.facets.push_back(facet);
+    out.facets.push_back(facet);
     if (fn.size() == 2) {
       const Eigen::Vector2d t = mesh.node(fn[1]) - mesh.node(fn[0]);
       const Eigen::Vector2d outward(t(1), -t(0));  // |outward| = facet length
       for (const Index j : facet) {
-        cs.weights(j) += 0.5 * t.norm();
-        cs.normals.col(j) += outward;
+        out.weights(j) += 0.5 * t.norm();
+        out.normals.col(j) += outward;
       }
       continue;
     }
@@ -101,11 +99,32 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
       const Eigen::Vector2d outward(dx(1), -dx(0));  // |outward| ds = the arc length element
       for (std::size_t a = 0; a < fn.size(); ++a) {
         const Index j = facet[a];
-        cs.weights(j) += N(static_cast<Index>(a)) * dx.norm() * q.w;
-        cs.normals.col(j) += N(static_cast<Index>(a)) * outward * q.w;
+        out.weights(j) += N(static_cast<Index>(a)) * dx.norm() * q.w;
+        out.normals.col(j) += N(static_cast<Index>(a)) * outward * q.w;
       }
     }
   }
+  for (Index j = 0; j < n; ++j) {
+    const double len = out.normals.col(j).norm();
+    if (!(len > 0.0))
+      throw InputError(what + " = '" + part.name + "': node " +
+                       std::to_string(out.nodes[static_cast<std::size_t>(j)]) +
+                       " has no defined normal (facets cancel out)");
+    out.normals.col(j) /= len;
+  }
+  return out;
+}
+
+ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
+                            const RigidObstacle& obstacle) {
+  validate(obstacle);
+  BoundaryNodes b = boundary_nodes(mesh, part, "contact.boundary");
+  ContactSet cs;
+  cs.nodes = std::move(b.nodes);
+  cs.normals = std::move(b.normals);
+  cs.weights = std::move(b.weights);
+  cs.facets = std::move(b.facets);
+  const Index n = cs.size();
   // The gap of a node whose normal never meets the obstacle: far beyond anything the body can
   // reach.
   const double far =
@@ -115,12 +134,6 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
   cs.movable.assign(static_cast<std::size_t>(n), false);
   std::vector<Eigen::Triplet<double, int>> triplets;
   for (Index j = 0; j < n; ++j) {
-    const double len = cs.normals.col(j).norm();
-    if (!(len > 0.0))
-      throw InputError("contact.boundary = '" + part.name + "': node " +
-                       std::to_string(cs.nodes[static_cast<std::size_t>(j)]) +
-                       " has no defined normal (facets cancel out)");
-    cs.normals.col(j) /= len;
     const Index node = cs.nodes[static_cast<std::size_t>(j)];
     const Point x = mesh.point(node);
     cs.gaps(j) = obstacle_gap(obstacle, x, cs.normals.col(j), far);
@@ -130,7 +143,12 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
     double free_normal = 0.0;
     for (int k = 0; k < 2; ++k) {
       const Index d = dofs.free_index(node, k);
-      if (d < 0) continue;
+      // A prescribed component moves the node towards the obstacle by nu_k u_D,k: the constraint
+      // (N x)_j <= g_j holds on the free dofs with that part taken off the gap.
+      if (d < 0) {
+        cs.gaps(j) -= cs.normals(k, j) * dofs.value(node, k);
+        continue;
+      }
       triplets.emplace_back(static_cast<int>(j), static_cast<int>(d), cs.normals(k, j));
       free_normal += cs.normals(k, j) * cs.normals(k, j);
     }
@@ -144,6 +162,39 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
                      "': every contact node is clamped in its normal direction, so no contact can "
                      "occur (does it coincide with the clamped boundary?)");
   return cs;
+}
+
+void append_contact_set(ContactSet& into, const ContactSet& more) {
+  if (into.size() == 0 && into.N.cols() == 0) {
+    into = more;
+    return;
+  }
+  const Index n0 = into.size();
+  const Index n = n0 + more.size();
+  into.nodes.insert(into.nodes.end(), more.nodes.begin(), more.nodes.end());
+  Eigen::MatrixXd normals(into.normals.rows(), n);
+  normals << into.normals, more.normals;
+  into.normals = std::move(normals);
+  Vector weights(n), gaps(n);
+  weights << into.weights, more.weights;
+  gaps << into.gaps, more.gaps;
+  into.weights = std::move(weights);
+  into.gaps = std::move(gaps);
+  SparseMatrix N(n, into.N.cols());
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  for (const SparseMatrix* m : std::array<const SparseMatrix*, 2>{&into.N, &more.N})
+    for (int r = 0; r < m->outerSize(); ++r)
+      for (SparseMatrix::InnerIterator it(*m, r); it; ++it)
+        triplets.emplace_back(static_cast<int>(it.row() + (m == &more.N ? n0 : 0)),
+                              static_cast<int>(it.col()), it.value());
+  N.setFromTriplets(triplets.begin(), triplets.end());
+  N.makeCompressed();
+  into.N = std::move(N);
+  into.movable.insert(into.movable.end(), more.movable.begin(), more.movable.end());
+  for (std::vector<Index> f : more.facets) {
+    for (Index& j : f) j += n0;
+    into.facets.push_back(std::move(f));
+  }
 }
 
 }  // namespace signorini

@@ -12,6 +12,17 @@ void DofMap::clamp(Index node, int component) {
   free_[static_cast<std::size_t>(node * dim_ + component)] = -1;
 }
 
+void DofMap::prescribe(Index node, int component, double value) {
+  clamp(node, component);
+  if (value == 0.0 && values_.size() == 0) return;
+  if (values_.size() == 0) values_ = Vector::Zero(num_dofs());
+  values_(node * dim_ + component) = value;
+}
+
+Vector DofMap::prescribed_values() const {
+  return values_.size() == 0 ? Vector::Zero(num_dofs()) : values_;
+}
+
 void DofMap::finalize() {
   Index next = 0;
   for (auto& f : free_) f = (f < 0) ? -1 : next++;
@@ -20,7 +31,7 @@ void DofMap::finalize() {
 }
 
 Vector DofMap::expand(const Vector& free_values) const {
-  Vector full = Vector::Zero(num_dofs());
+  Vector full = prescribed_values();
   for (Index d = 0; d < num_dofs(); ++d) {
     const Index f = free_[static_cast<std::size_t>(d)];
     if (f >= 0) full(d) = free_values(f);

@@ -57,9 +57,13 @@ std::array<double, 2> CoordinateBox::clip(const Point& a, const Point& b) const 
   return {t0, t1};
 }
 
-void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const VectorField& p,
-                         int gauss_points, Vector& f, const std::string& what,
-                         const CoordinateBox& box) {
+namespace {
+
+// int_{part ∩ box} t . v dGamma into f, t = traction(x, outward unit normal at x).
+template <class Traction>
+void integrate_over_facets(const Mesh& mesh, const BoundaryPart& part, const Traction& traction,
+                           int gauss_points, Vector& f, const std::string& what,
+                           const CoordinateBox& box) {
   require_supported_cells(mesh);
   const int dim = mesh.dim();
   const bool whole = box.unbounded();
@@ -98,13 +102,39 @@ void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const Vecto
         x += N(a) * mesh.point(fn[static_cast<std::size_t>(a)]);
         dx += dN(0, a) * mesh.point(fn[static_cast<std::size_t>(a)]);
       }
-      const Eigen::Vector3d pv = checked(p, x, dim, what);
+      // The outward normal: facets run with the body on their left (mesh.hpp).
+      const Eigen::Vector3d normal = Eigen::Vector3d(dx(1), -dx(0), 0.0) / dx.norm();
+      const Eigen::Vector3d pv = traction(x, normal);
       const double weight = 0.5 * (s1 - s0) * dx.norm() * q.w;
       for (int a = 0; a < n; ++a)
         for (int k = 0; k < dim; ++k)
           f(fn[static_cast<std::size_t>(a)] * dim + k) += N(a) * pv(k) * weight;
     }
   }
+}
+
+}  // namespace
+
+void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const VectorField& p,
+                         int gauss_points, Vector& f, const std::string& what,
+                         const CoordinateBox& box) {
+  integrate_over_facets(
+      mesh, part, [&](const Point& x, const Eigen::Vector3d&) { return checked(p, x, 2, what); },
+      gauss_points, f, what, box);
+}
+
+void add_pressure_forces(const Mesh& mesh, const BoundaryPart& part, const ScalarField& p,
+                         int gauss_points, Vector& f, const std::string& what) {
+  integrate_over_facets(
+      mesh, part,
+      [&](const Point& x, const Eigen::Vector3d& normal) -> Eigen::Vector3d {
+        const double value = p(x);
+        if (!std::isfinite(value))
+          throw InputError(what + " is not finite at x = " + position_text(x, 2) +
+                           ": expected finite values everywhere it is used");
+        return -value * normal;  // a pressure pushes into the body: t = -p n
+      },
+      gauss_points, f, what, CoordinateBox{});
 }
 
 void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,

@@ -42,6 +42,10 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     if (c.components[1]) components.emplace_back("y");
     out.value("components", components);
   }
+  for (const DisplacementSpec& d : spec.displacements) {
+    out.array_table("displacement");
+    for (const auto& [key, value] : displacement_values(d)) out.value(key, value);
+  }
   for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
     out.array_table("traction");
     out.value("boundary", spec.tractions[i].boundary);
@@ -51,6 +55,11 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
       out.value("x_range", std::vector<double>{box.lower[0], box.upper[0]});
     if (std::isfinite(box.lower[1]))
       out.value("y_range", std::vector<double>{box.lower[1], box.upper[1]});
+  }
+  for (const PressureSpec& p : spec.pressures) {
+    out.array_table("pressure");
+    out.value("boundary", p.boundary);
+    out.value("p", p.text);
   }
   for (const PointLoadSpec& pl : spec.point_loads) {
     out.array_table("point_load");
@@ -62,8 +71,14 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     out.table("body_force");
     out.value("f", texts.body_force);
   }
-  out.table("contact");
-  for (const auto& [key, value] : contact_values(spec.contact, texts.gap)) out.value(key, value);
+  // One contact boundary as [contact], as the files mostly give it; several as [[contact]].
+  for (const ContactSpec& c : spec.contacts) {
+    if (spec.contacts.size() == 1)
+      out.table("contact");
+    else
+      out.array_table("contact");
+    for (const auto& [key, value] : contact_values(c, c.description)) out.value(key, value);
+  }
   out.table("solver");
   emit_options(out, contact_solver_option_table(), spec.solver);
   out.table("solver.linear");

@@ -15,7 +15,6 @@ namespace signorini {
 struct ExpressionTexts {
   std::vector<std::vector<std::string>> tractions;
   std::vector<std::string> body_force;
-  std::string gap = "0";
 };
 
 std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts);

@@ -145,8 +145,10 @@ void read_regions(const Reader& r, const toml::table& root, ProblemSpec& spec,
 
 void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   const auto entries = r.array_of_tables(root, "clamp");
-  if (entries.empty())
-    r.missing("clamp", "a [[clamp]] section with the boundary where u = 0; at least one");
+  if (entries.empty() && !root.contains("displacement"))
+    r.missing("clamp",
+              "a [[clamp]] section with the boundary where u = 0, or a [[displacement]] "
+              "section; at least one");
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const toml::table& t = *entries[i];
     const std::string path = element("clamp", i);
@@ -274,6 +276,59 @@ void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
   }
 }
 
+// [[displacement]] boundary, x and/or y (numbers or formulas), or normal.
+void read_displacements(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const auto entries = r.array_of_tables(root, "displacement");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const toml::table& t = *entries[i];
+    const std::string path = element("displacement", i);
+    r.check_keys(t, path);
+    DisplacementSpec d;
+    d.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
+                          "name of a boundary part");
+    const auto field = [&](std::string_view key, std::string& text) -> ScalarField {
+      const std::optional<std::string> e = r.expression(t, path, key);
+      if (!e) return {};
+      text = *e;
+      const std::string full = join(path, key);
+      return finite_scalar_field(with_file(r, [&] { return make_scalar_field(text, full); }), full,
+                                 text);
+    };
+    d.normal = field("normal", d.normal_text);
+    d.values[0] = field("x", d.texts[0]);
+    d.values[1] = field("y", d.texts[1]);
+    if (d.normal && (d.values[0] || d.values[1]))
+      r.fail_at(t.get("normal")->source(),
+                join(path, "normal") +
+                    " prescribes the normal component: give either normal or "
+                    "the components x and y, not both");
+    if (!d.normal && !d.values[0] && !d.values[1])
+      r.missing(join(path, "x"),
+                "the displacement to prescribe: x and/or y, or normal "
+                "(numbers or expressions of x, y)");
+    spec.displacements.push_back(std::move(d));
+  }
+}
+
+// [[pressure]] boundary, p: a pressure normal to the boundary.
+void read_pressures(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const auto entries = r.array_of_tables(root, "pressure");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const toml::table& t = *entries[i];
+    const std::string path = element("pressure", i);
+    r.check_keys(t, path);
+    PressureSpec p;
+    p.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
+                          "name of a boundary part");
+    const std::string key = join(path, "p");
+    p.text = required(r, r.expression(t, path, "p"), key,
+                      "a number or an expression of x, y: the pressure (force per area)");
+    p.p = finite_scalar_field(with_file(r, [&] { return make_scalar_field(p.text, key); }), key,
+                              p.text);
+    spec.pressures.push_back(std::move(p));
+  }
+}
+
 // [[point_load]] at = [x, y], force = [fx, fy], boundary (optional): a force at the nearest node.
 void read_point_loads(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   const auto entries = r.array_of_tables(root, "point_load");
@@ -309,18 +364,18 @@ void read_body_force(const Reader& r, const toml::table& root, ProblemSpec& spec
   texts.body_force = f;
 }
 
-void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
-                  ExpressionTexts& texts) {
-  const toml::table* t = r.table(root, "", "contact");
-  if (t == nullptr) r.missing("contact", "a [contact] section with the contact boundary");
-  r.check_keys(*t, "contact");
-  spec.contact.boundary = required(r, r.string(*t, "contact", "boundary"), "contact.boundary",
-                                   "name of a boundary part");
-  RigidObstacle& o = spec.contact.obstacle;
-  const std::string shape = r.string(*t, "contact", "obstacle").value_or("gap");
+// One contact boundary, from the table at `path` ("contact", or "contact[1]" of [[contact]]).
+ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std::string& path) {
+  r.check_keys(*t, path);
+  ContactSpec contact;
+  contact.boundary = required(r, r.string(*t, path, "boundary"), join(path, "boundary"),
+                              "name of a boundary part");
+  RigidObstacle& o = contact.obstacle;
+  const std::string shape = r.string(*t, path, "obstacle").value_or("gap");
   const auto parsed = enum_from_string(kObstacleShapeNames, shape);
   if (!parsed)
-    r.fail_at(t->get("obstacle")->source(), "contact.obstacle = \"" + shape + "\": expected " +
+    r.fail_at(t->get("obstacle")->source(), join(path, "obstacle") + " = \"" + shape +
+                                                "\": expected " +
                                                 enum_choices(kObstacleShapeNames));
   o.shape = *parsed;
   // The keys of each shape; those of another shape are refused.
@@ -332,15 +387,15 @@ void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
     for (const std::string& key : names)
       if (other != o.shape && t->contains(key))
         r.fail_at(t->get(key)->source(),
-                  "contact." + key + " applies with obstacle = \"" +
+                  join(path, key) + " applies with obstacle = \"" +
                       std::string(enum_to_string(kObstacleShapeNames, other)) +
                       "\" only; this "
                       "obstacle is \"" +
                       shape + "\"");
   const auto pair = [&](const char* key, const char* what) {
     const toml::node* n = t->get(key);
-    if (n == nullptr) r.missing(std::string("contact.") + key, what);
-    const std::vector<double> xy = r.numbers(*n, std::string("contact.") + key, 2, "x and y");
+    if (n == nullptr) r.missing(join(path, key), what);
+    const std::vector<double> xy = r.numbers(*n, join(path, key), 2, "x and y");
     return Eigen::Vector2d(xy[0], xy[1]);
   };
   if (o.shape == ObstacleShape::Plane) {
@@ -348,25 +403,53 @@ void read_contact(const Reader& r, const toml::table& root, ProblemSpec& spec,
     o.normal = pair("normal", "[nx, ny]: the plane's normal, towards the body");
     if (!(o.normal.norm() > 0.0))
       r.fail_at(t->get("normal")->source(),
-                "contact.normal = [0, 0]: expected a non-zero vector pointing from the obstacle "
-                "towards the body");
-    return;
+                join(path, "normal") +
+                    " = [0, 0]: expected a non-zero vector pointing from the obstacle "
+                    "towards the body");
+    return contact;
   }
   if (o.shape == ObstacleShape::Disc) {
     o.centre = pair("centre", "[x, y]: the disc's centre");
-    const std::optional<double> radius = r.number(*t, "contact", "radius");
-    if (!radius) r.missing("contact.radius", "a positive number");
+    const std::optional<double> radius = r.number(*t, path, "radius");
+    if (!radius) r.missing(join(path, "radius"), "a positive number");
     if (!(*radius > 0.0))
-      r.out_of_range("contact.radius", as_text(*radius), "a positive number", t->get("radius"));
+      r.out_of_range(join(path, "radius"), as_text(*radius), "a positive number", t->get("radius"));
     o.radius = *radius;
-    o.body_inside = r.boolean(*t, "contact", "inside").value_or(false);
+    o.body_inside = r.boolean(*t, path, "inside").value_or(false);
+    return contact;
+  }
+  const std::string gap = r.expression(*t, path, "gap").value_or("0");
+  const std::string key = join(path, "gap");
+  contact.gap =
+      finite_scalar_field(with_file(r, [&] { return make_scalar_field(gap, key); }), key, gap);
+  contact.description = gap;
+  return contact;
+}
+
+// [contact] (one contact boundary) or [[contact]] (several, each with its obstacle).
+void read_contacts(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const toml::node* n = root.get("contact");
+  if (n == nullptr)
+    r.missing("contact",
+              "a [contact] section with the contact boundary (or [[contact]] "
+              "sections, one per contact boundary)");
+  if (const toml::table* t = n->as_table()) {
+    spec.contacts.push_back(read_contact_entry(r, t, "contact"));
     return;
   }
-  texts.gap = r.expression(*t, "contact", "gap").value_or("0");
-  spec.contact.gap =
-      finite_scalar_field(with_file(r, [&] { return make_scalar_field(texts.gap, "contact.gap"); }),
-                          "contact.gap", texts.gap);
-  spec.contact.description = texts.gap;
+  const auto* a = n->as_array();
+  if (a == nullptr || a->empty())
+    r.wrong_type("contact", "a [contact] section or [[contact]] sections", *n);
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const auto* t = a->get(i)->as_table();
+    if (t == nullptr) r.wrong_type(element("contact", i), "a table", *a->get(i));
+    const std::string path = element("contact", i);
+    spec.contacts.push_back(read_contact_entry(r, t, path));
+    for (std::size_t k = 0; k + 1 < spec.contacts.size(); ++k)
+      if (spec.contacts[k].boundary == spec.contacts.back().boundary)
+        r.fail(join(path, "boundary") + " = '" + spec.contacts.back().boundary + "' is " +
+               element("contact", k) + ".boundary already: one obstacle per contact boundary");
+  }
 }
 
 void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
@@ -439,10 +522,12 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   read_regions(r, root, spec, out.warnings);
   read_fem(r, root, spec);
   read_clamps(r, root, spec);
+  read_displacements(r, root, spec);
   read_tractions(r, root, spec, texts, out.warnings);
+  read_pressures(r, root, spec);
   read_point_loads(r, root, spec);
   read_body_force(r, root, spec, texts);
-  read_contact(r, root, spec, texts);
+  read_contacts(r, root, spec);
   read_solver(r, root, spec);
   check_memory(r, spec);
   out.effective_toml = effective_toml(spec, texts);

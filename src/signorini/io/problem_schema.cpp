@@ -191,6 +191,40 @@ const OptionTable<P>& clamp_options() {
   return table;
 }
 
+const OptionTable<P>& displacement_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("displacement", true);
+    t.custom("boundary", "string",
+             "a boundary part whose displacement is given (a clamp with nonzero values)")
+        .required();
+    t.custom("x", "number or expression of x, y", "u_x on the part").unit("L").default_text("free");
+    t.custom("y", "number or expression of x, y", "u_y on the part").unit("L").default_text("free");
+    t.custom("normal", "number or expression of x, y",
+             "u . n along the part's outward normal n, instead of `x` and `y` (the tangential "
+             "component stays free). So far only on straight parts parallel to x or y, where "
+             "it is the component along that axis; inclined and curved parts are refused")
+        .unit("L")
+        .default_text("free");
+    return t;
+  }();
+  return table;
+}
+
+const OptionTable<P>& pressure_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("pressure", true);
+    t.custom("boundary", "string", "a boundary part (not a contact boundary)").required();
+    t.custom("p", "number or expression of x, y",
+             "the pressure, normal to the boundary: the traction -p n with n the outward unit "
+             "normal at each point (on curved quadratic edges it follows the curve); p > 0 "
+             "pushes into the body")
+        .unit("S")
+        .required();
+    return t;
+  }();
+  return table;
+}
+
 const OptionTable<P>& traction_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("traction", true);
@@ -285,7 +319,9 @@ const std::vector<const OptionTableInfo*>& problem_schema() {
                                                              &fem_options(),
                                                              &region_options(),
                                                              &clamp_options(),
+                                                             &displacement_options(),
                                                              &traction_options(),
+                                                             &pressure_options(),
                                                              &point_load_options(),
                                                              &body_force_options(),
                                                              &contact_options(),
@@ -315,6 +351,19 @@ std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpe
                              {"inside", o.body_inside}});
       break;
   }
+  return out;
+}
+
+std::vector<std::pair<std::string, OptionValue>> displacement_values(
+    const DisplacementSpec& displacement) {
+  std::vector<std::pair<std::string, OptionValue>> out{{"boundary", displacement.boundary}};
+  if (displacement.normal) {
+    out.emplace_back("normal", displacement.normal_text);
+    return out;
+  }
+  const char* names[] = {"x", "y", "z"};
+  for (std::size_t k = 0; k < 3; ++k)
+    if (displacement.values[k]) out.emplace_back(names[k], displacement.texts[k]);
   return out;
 }
 

@@ -22,7 +22,9 @@ namespace signorini {
 // docs are declared here all the same, so that the unknown-key check and the docs know them.
 [[nodiscard]] const OptionTable<ProblemSpec>& region_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& clamp_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& displacement_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& traction_options();
+[[nodiscard]] const OptionTable<ProblemSpec>& pressure_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& point_load_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& body_force_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& contact_options();
@@ -36,6 +38,10 @@ namespace signorini {
 /// write these.
 [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> contact_values(
     const ContactSpec& contact, const std::string& gap_text);
+/// The keys and values of one [[displacement]]: the boundary, then `normal` or the components
+/// given (x, y), as texts.
+[[nodiscard]] std::vector<std::pair<std::string, OptionValue>> displacement_values(
+    const DisplacementSpec& displacement);
 /// The keys and values of one [[region]]: name, E, nu.
 [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> region_values(
     const RegionMaterialSpec& region);

@@ -69,6 +69,12 @@ nlohmann::json option_json(const OptionValue& value) {
 }
 
 // {key: value} for every option of `table` that lives in the struct.
+nlohmann::json displacement_json(const DisplacementSpec& d) {
+  nlohmann::json entry = nlohmann::json::object();
+  for (const auto& [key, value] : displacement_values(d)) entry[key] = option_json(value);
+  return entry;
+}
+
 template <class S>
 nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
   nlohmann::json out = nlohmann::json::object();
@@ -183,6 +189,11 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     clamps.push_back({{"boundary", c.boundary}, {"components", components}});
   }
   problem["clamp"] = clamps;
+  if (!spec.displacements.empty()) {
+    problem["displacement"] = json::array();
+    for (const DisplacementSpec& d : spec.displacements)
+      problem["displacement"].push_back(displacement_json(d));
+  }
   json tractions = json::array();
   for (const TractionSpec& t : spec.tractions) {
     json tr = {{"boundary", t.boundary}, {"p", t.description}};
@@ -191,10 +202,21 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     tractions.push_back(tr);
   }
   problem["traction"] = tractions;
+  if (!spec.pressures.empty()) {
+    problem["pressure"] = json::array();
+    for (const PressureSpec& p : spec.pressures)
+      problem["pressure"].push_back({{"boundary", p.boundary}, {"p", p.text}});
+  }
   if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
-  problem["contact"] = json::object();
-  for (const auto& [key, value] : contact_values(spec.contact, spec.contact.description))
-    problem["contact"][key] = option_json(value);
+  // One contact boundary as the object of [contact], several as the array of [[contact]].
+  json contacts = json::array();
+  for (const ContactSpec& c : spec.contacts) {
+    json entry = json::object();
+    for (const auto& [key, value] : contact_values(c, c.description))
+      entry[key] = option_json(value);
+    contacts.push_back(entry);
+  }
+  problem["contact"] = contacts.size() == 1 ? contacts[0] : contacts;
   problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
   problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);
   j["problem"] = problem;

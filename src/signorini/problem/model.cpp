@@ -6,6 +6,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/contact_boundary.hpp"
+#include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
@@ -14,7 +15,54 @@
 
 namespace signorini {
 
-DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps) {
+namespace {
+
+// The component of displacement[i].normal on its part: the axis the normals of every node lie
+// along (with their sign), or an error naming the node where they do not.
+std::pair<int, double> normal_axis(const Mesh& mesh, const DisplacementSpec& d, std::size_t i) {
+  const std::string what = fmt::format("displacement[{}].boundary", i);
+  const BoundaryNodes b = boundary_nodes(mesh, mesh.boundary_part(d.boundary), what);
+  int axis = -1;
+  double sign = 0.0;
+  for (Index j = 0; j < static_cast<Index>(b.nodes.size()); ++j) {
+    const Eigen::Vector2d n = b.normals.col(j);
+    const int k = std::abs(n(0)) >= std::abs(n(1)) ? 0 : 1;
+    const double s = n(k) > 0.0 ? 1.0 : -1.0;
+    if (std::abs(std::abs(n(k)) - 1.0) > 1e-9 || (axis >= 0 && (k != axis || s != sign))) {
+      const Point x = mesh.point(b.nodes[static_cast<std::size_t>(j)]);
+      throw InputError(fmt::format(
+          "displacement[{}].normal on '{}': the outward normal at node {} ({:g}, {:g}) is "
+          "({:.6g}, {:.6g}), not one axis direction for the whole part; a normal displacement is "
+          "supported on straight parts parallel to x or y only (inclined and curved parts are "
+          "not implemented yet): give the components x and y instead",
+          i, d.boundary, b.nodes[static_cast<std::size_t>(j)], x(0), x(1), n(0) + 0.0, n(1) + 0.0));
+    }
+    axis = k;
+    sign = s;
+  }
+  return {axis, sign};
+}
+
+// Calls hold(node, component, value) for every dof that displacement entry `d` prescribes.
+template <class Hold>
+void for_each_prescribed(const Mesh& mesh, const DisplacementSpec& d, std::size_t i,
+                         const Hold& hold) {
+  const auto nodes = mesh.boundary_part_nodes(d.boundary);  // throws on unknown names
+  if (d.normal) {
+    const auto [axis, sign] = normal_axis(mesh, d, i);
+    for (const Index node : nodes) hold(node, axis, sign * d.normal(mesh.point(node)));
+    return;
+  }
+  for (const Index node : nodes)
+    for (int k = 0; k < mesh.dim(); ++k)
+      if (d.values[static_cast<std::size_t>(k)])
+        hold(node, k, d.values[static_cast<std::size_t>(k)](mesh.point(node)));
+}
+
+}  // namespace
+
+DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
+                    const std::vector<DisplacementSpec>& displacements) {
   DofMap dofs(mesh.num_nodes(), mesh.dim());
   for (const ClampSpec& c : clamps) {
     const auto nodes = mesh.boundary_part_nodes(c.boundary);  // throws on unknown names
@@ -22,6 +70,18 @@ DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps) {
       for (int k = 0; k < mesh.dim(); ++k)
         if (c.components[static_cast<std::size_t>(k)]) dofs.clamp(node, k);
   }
+  // After the clamps, which win; among the displacements the first entry wins.
+  std::vector<bool> held(static_cast<std::size_t>(dofs.num_dofs()), false);
+  for (Index node = 0; node < mesh.num_nodes(); ++node)
+    for (int k = 0; k < mesh.dim(); ++k)
+      held[static_cast<std::size_t>(node * mesh.dim() + k)] = dofs.is_clamped(node, k);
+  for (std::size_t i = 0; i < displacements.size(); ++i)
+    for_each_prescribed(mesh, displacements[i], i, [&](Index node, int k, double value) {
+      auto&& h = held[static_cast<std::size_t>(node * mesh.dim() + k)];
+      if (h) return;
+      h = true;
+      dofs.prescribe(node, k, value);
+    });
   dofs.finalize();
   return dofs;
 }
@@ -51,22 +111,49 @@ void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs) {
 
 namespace {
 
-std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const std::vector<ClampSpec>& clamps) {
+std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
+                                       const std::vector<DisplacementSpec>& displacements) {
   std::vector<ClampedPart> parts;
   std::vector<bool> taken(static_cast<std::size_t>(mesh.num_nodes() * mesh.dim()), false);
+  const auto take = [&](ClampedPart& part, Index node, int k) {
+    const Index dof = node * mesh.dim() + k;
+    if (taken[static_cast<std::size_t>(dof)]) return;
+    taken[static_cast<std::size_t>(dof)] = true;
+    part.dofs.push_back(dof);
+  };
   for (const ClampSpec& c : clamps) {
     ClampedPart part{c.boundary, {}};
     for (const Index node : mesh.boundary_part_nodes(c.boundary))
-      for (int k = 0; k < mesh.dim(); ++k) {
-        const Index dof = node * mesh.dim() + k;
-        if (!c.components[static_cast<std::size_t>(k)] || taken[static_cast<std::size_t>(dof)])
-          continue;
-        taken[static_cast<std::size_t>(dof)] = true;
-        part.dofs.push_back(dof);
-      }
+      for (int k = 0; k < mesh.dim(); ++k)
+        if (c.components[static_cast<std::size_t>(k)]) take(part, node, k);
+    parts.push_back(std::move(part));
+  }
+  for (std::size_t i = 0; i < displacements.size(); ++i) {
+    ClampedPart part{displacements[i].boundary, {}};
+    for_each_prescribed(mesh, displacements[i], i,
+                        [&](Index node, int k, double) { take(part, node, k); });
     parts.push_back(std::move(part));
   }
   return parts;
+}
+
+// Each part is either loaded (Gamma_N) or in possible contact (Gamma_K), not both (method.md
+// section 1): a load there would act where the foundation pushes, unaccounted.
+void require_loads_off_contact(const ProblemSpec& spec) {
+  for (const ContactSpec& c : spec.contacts) {
+    for (std::size_t i = 0; i < spec.tractions.size(); ++i)
+      if (spec.tractions[i].boundary == c.boundary)
+        throw InputError(fmt::format(
+            "traction[{}].boundary = '{}' is a contact boundary (contact.boundary): a boundary "
+            "part is either loaded or in contact with the foundation; load another part",
+            i, c.boundary));
+    for (std::size_t i = 0; i < spec.pressures.size(); ++i)
+      if (spec.pressures[i].boundary == c.boundary)
+        throw InputError(fmt::format(
+            "pressure[{}].boundary = '{}' is a contact boundary (contact.boundary): a boundary "
+            "part is either loaded or in contact with the foundation; load another part",
+            i, c.boundary));
+  }
 }
 
 }  // namespace
@@ -74,17 +161,12 @@ std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const std::vector<Clamp
 Model build_model(const ProblemSpec& spec) {
   validate(spec.elasticity.material);
   validate(spec.solver);
-  if (spec.clamps.empty())
+  if (spec.clamps.empty() && spec.displacements.empty())
     throw InputError(
-        "no clamped boundary: the stiffness would be singular (add a [[clamp]] section)");
-  // A part of the boundary is either loaded (Gamma_N) or in possible contact (Gamma_K), not both
-  // (method.md section 1): a load there would act where the foundation pushes, unaccounted.
-  for (std::size_t i = 0; i < spec.tractions.size(); ++i)
-    if (spec.tractions[i].boundary == spec.contact.boundary)
-      throw InputError(fmt::format(
-          "traction[{}].boundary = '{}' is the contact boundary (contact.boundary): a boundary "
-          "part is either loaded or in contact with the foundation; load another part",
-          i, spec.tractions[i].boundary));
+        "no clamped boundary: the stiffness would be singular (add a [[clamp]] or "
+        "[[displacement]] section)");
+  if (spec.contacts.empty()) throw InputError("no contact boundary (add a [contact] section)");
+  require_loads_off_contact(spec);
   TimingTable timings;
   ScopedTimer mesh_timer(timings, "mesh");
   Mesh mesh = spec.mesh_type == MeshType::Gmsh ? read_mesh_file(spec.mesh_file)
@@ -105,7 +187,7 @@ Model build_model(const ProblemSpec& spec) {
     if (elasticity.region_materials.size() <= r) elasticity.region_materials.resize(r + 1);
     elasticity.region_materials[r] = m.material;
   }
-  DofMap dofs = make_dof_map(mesh, spec.clamps);
+  DofMap dofs = make_dof_map(mesh, spec.clamps, spec.displacements);
   mesh_timer.stop();
   if (dofs.num_free() == 0) throw InputError("every dof is clamped: nothing to solve");
   require_no_free_rigid_motion(mesh, dofs);
@@ -122,6 +204,9 @@ Model build_model(const ProblemSpec& spec) {
     for (const TractionSpec& tr : spec.tractions)
       add_traction_forces(mesh, mesh.boundary_part(tr.boundary), tr.p, spec.boundary_gauss_points,
                           loads, "traction on '" + tr.boundary + "'", tr.region);
+    for (std::size_t i = 0; i < spec.pressures.size(); ++i)
+      add_pressure_forces(mesh, mesh.boundary_part(spec.pressures[i].boundary), spec.pressures[i].p,
+                          spec.boundary_gauss_points, loads, fmt::format("pressure[{}].p", i));
     if (spec.body_force)
       add_body_forces(mesh, spec.body_force, spec.elasticity.gauss_points, loads);
     for (std::size_t i = 0; i < spec.point_loads.size(); ++i) {
@@ -139,15 +224,34 @@ Model build_model(const ProblemSpec& spec) {
       for (int k = 0; k < mesh.dim(); ++k) loads(p.node * mesh.dim() + k) += pl.force(k);
       placed.push_back(p);
     }
-    problem.b = dofs.restrict_to_free(loads);
+    if (dofs.has_prescribed_values()) {
+      // Nonzero prescribed displacements u_D: the free dofs see the load f - K u_D (K u_D formed
+      // only in the cells that touch a prescribed value), and the full solution is u_D plus the
+      // free part (DofMap::expand).
+      const Vector u_d = dofs.prescribed_values();
+      const auto touches = [&](Index cell) {
+        for (const Index node : mesh.cell(cell))
+          for (int k = 0; k < mesh.dim(); ++k)
+            if (u_d(node * mesh.dim() + k) != 0.0) return true;
+        return false;
+      };
+      problem.b = dofs.restrict_to_free(loads - internal_forces(mesh, elasticity, u_d, touches));
+    } else {
+      problem.b = dofs.restrict_to_free(loads);
+    }
   }
+  std::vector<std::string> contact_boundaries;
+  std::vector<Index> contact_starts{0};
   {
     ScopedTimer t(timings, "contact set");
-    problem.contact = make_contact_set(mesh, mesh.boundary_part(spec.contact.boundary), dofs, [&] {
-      RigidObstacle o = spec.contact.obstacle;
-      if (o.shape == ObstacleShape::Gap) o.gap = spec.contact.gap;
-      return o;
-    }());
+    for (const ContactSpec& c : spec.contacts) {
+      RigidObstacle o = c.obstacle;
+      if (o.shape == ObstacleShape::Gap) o.gap = c.gap;
+      append_contact_set(problem.contact,
+                         make_contact_set(mesh, mesh.boundary_part(c.boundary), dofs, o));
+      contact_boundaries.push_back(c.boundary);
+      contact_starts.push_back(problem.contact.size());
+    }
   }
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = spec.solver.linear;
@@ -156,10 +260,18 @@ Model build_model(const ProblemSpec& spec) {
     ScopedTimer t(timings, "multigrid hierarchy");
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
-  std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps);
-  return Model{std::move(mesh),    std::move(dofs),      std::move(problem), std::move(multigrid),
-               std::move(timings), elasticity,           std::move(loads),   std::move(clamps),
-               std::move(placed),  spec.contact.boundary};
+  std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps, spec.displacements);
+  return Model{std::move(mesh),          std::move(dofs),
+               std::move(problem),       std::move(multigrid),
+               std::move(timings),       elasticity,
+               std::move(loads),         std::move(clamps),
+               std::move(placed),        std::move(contact_boundaries),
+               std::move(contact_starts)};
+}
+
+const std::string& Model::contact_boundary_of(Index j) const {
+  const auto it = std::upper_bound(contact_starts.begin(), contact_starts.end(), j);
+  return contact_boundaries.at(static_cast<std::size_t>(it - contact_starts.begin() - 1));
 }
 
 }  // namespace signorini

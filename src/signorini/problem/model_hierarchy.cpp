@@ -29,7 +29,8 @@ MultigridHierarchy make_model_hierarchy(const ProblemSpec& spec, const Mesh& mes
     return smoothed_aggregation_hierarchy(A, rigid_body_modes(mesh, dofs), free_dof_nodes(dofs));
 
   MultigridHierarchy h;
-  h.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, dofs);
+  h.prolongations =
+      make_rectangle_prolongations(spec.mesh, spec.clamps, dofs, 400, spec.displacements);
   if (!h.prolongations.empty()) h.kind = HierarchyKind::Geometric;
   const Index coarsest = h.prolongations.empty() ? dofs.num_free() : h.prolongations.back().cols();
   const Index dense_limit = MultigridOptions{}.max_dense_coarse;
@@ -53,7 +54,7 @@ MultigridHierarchy make_model_hierarchy(const ProblemSpec& spec, const Mesh& mes
   coarse.nx >>= halvings;
   coarse.ny >>= halvings;
   const Mesh coarse_mesh = make_rectangle_mesh(coarse);
-  const DofMap coarse_dofs = make_dof_map(coarse_mesh, spec.clamps);
+  const DofMap coarse_dofs = make_dof_map(coarse_mesh, spec.clamps, spec.displacements);
   const SparseMatrix* current = &A;
   for (const SparseMatrix& P : h.prolongations) {
     h.coarse_operators.push_back(galerkin_product(*current, P));

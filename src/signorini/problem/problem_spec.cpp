@@ -16,7 +16,8 @@ ProblemSpec paper_benchmark(Index nx, Index ny) {
        [](const Point& x) { return Eigen::Vector3d(0.0, -2.0 / 3.0 * (3.0 - x(0)), 0.0); },
        "(0, -2/3 (3 - x))",
        {}});
-  p.contact.boundary = "bottom";
+  p.contacts.resize(1);
+  p.contacts[0].boundary = "bottom";
   p.solver.r = 1e8;  // the paper's value (Section 5): Table 1's iteration counts need it
   return p;
 }

@@ -23,10 +23,9 @@ int coarse_neighbours(Index i, std::array<std::pair<Index, double>, 2>& out) {
 
 }  // namespace
 
-std::vector<SparseMatrix> make_rectangle_prolongations(const RectangleMeshOptions& mesh,
-                                                       const std::vector<ClampSpec>& clamps,
-                                                       const DofMap& fine_dofs,
-                                                       Index min_coarse_unknowns) {
+std::vector<SparseMatrix> make_rectangle_prolongations(
+    const RectangleMeshOptions& mesh, const std::vector<ClampSpec>& clamps, const DofMap& fine_dofs,
+    Index min_coarse_unknowns, const std::vector<DisplacementSpec>& displacements) {
   std::vector<SparseMatrix> out;
   RectangleMeshOptions fine = mesh;
   // The current level's numbering: the fine one in place (no copy of the largest map).
@@ -37,7 +36,7 @@ std::vector<SparseMatrix> make_rectangle_prolongations(const RectangleMeshOption
     RectangleMeshOptions coarse = fine;
     coarse.nx = fine.nx / 2;
     coarse.ny = fine.ny / 2;
-    DofMap cdofs = make_dof_map(make_rectangle_mesh(coarse), clamps);
+    DofMap cdofs = make_dof_map(make_rectangle_mesh(coarse), clamps, displacements);
     const int dim = fdofs.dim();
     std::vector<Eigen::Triplet<double, int>> entries;
     entries.reserve(static_cast<std::size_t>(fdofs.num_free()) * 9 / 4 + 16);
