@@ -3,6 +3,11 @@
 // node * dim + component; clamped dofs (u = 0 on Gamma_D, method.md section 1) are eliminated, and
 // the remaining "free" dofs are numbered consecutively in the same order, so that the reduced
 // stiffness is SPD whenever Gamma_D holds the body (paper, after (14)).
+//
+// A node may have local axes (a frame, 2D only): its components are then those along the frame's
+// columns, so that the normal component of a node on a curved boundary can be held alone
+// ([[displacement]] normal). Full vectors (expand, restrict_to_free, prescribed_values) are always
+// Cartesian; the free dofs, value() and is_clamped() are in the node's frame.
 
 #include <vector>
 
@@ -13,6 +18,19 @@ namespace signorini {
 class DofMap {
  public:
   DofMap(Index num_nodes, int dim);
+
+  /// Gives a node local axes: the columns of Q (orthonormal), its components from now on those
+  /// along them. Call before clamping the node's components, and before finalize().
+  void set_frame(Index node, const Eigen::Matrix2d& Q);
+  [[nodiscard]] bool has_frames() const { return !frame_of_.empty(); }
+  [[nodiscard]] bool has_frame(Index node) const {
+    return !frame_of_.empty() && frame_of_[static_cast<std::size_t>(node)] >= 0;
+  }
+  /// The node's local axes as columns (the identity without a frame).
+  [[nodiscard]] Eigen::Matrix2d frame(Index node) const;
+  /// The prescribed displacement of a node, Cartesian (its clamped components' values along
+  /// their axes; zero for a free node). 2D.
+  [[nodiscard]] Eigen::Vector2d prescribed_at(Index node) const;
 
   /// Marks a component of a node as clamped (u = 0). Call before finalize().
   void clamp(Index node, int component);
@@ -34,18 +52,21 @@ class DofMap {
     return free_index(node, component) < 0;
   }
 
-  /// The prescribed value of a clamped dof (0 for a plain clamp, and for free dofs).
+  /// The prescribed value of a clamped dof (0 for a plain clamp, and for free dofs), along the
+  /// node's axis `component`.
   [[nodiscard]] double value(Index node, int component) const {
     return values_.size() == 0 ? 0.0 : values_(node * dim_ + component);
   }
   /// True if some clamped dof has a nonzero prescribed value.
   [[nodiscard]] bool has_prescribed_values() const { return values_.size() != 0; }
-  /// The prescribed values on the full dofs (zero at free and plainly clamped dofs): u_D.
+  /// The prescribed displacement on the full dofs, Cartesian (zero at free and plainly clamped
+  /// dofs): u_D.
   [[nodiscard]] Vector prescribed_values() const;
   /// Full displacement (num_dofs) from a free vector: the free values, and the prescribed values
   /// (u_D, zero for plain clamps) at the clamped dofs.
   [[nodiscard]] Vector expand(const Vector& free_values) const;
-  /// Free vector from a full vector.
+  /// Free vector from a full (Cartesian) vector: at a node with a frame, its components along
+  /// the frame's axes.
   [[nodiscard]] Vector restrict_to_free(const Vector& full_values) const;
 
  private:
@@ -53,8 +74,14 @@ class DofMap {
   int dim_;
   Index num_free_ = 0;
   bool finalized_ = false;
-  std::vector<Index> free_;  // per full dof: free number, or -1 (clamped)
-  Vector values_;            // per full dof: the prescribed value; empty while all are 0
+  std::vector<Index> free_;    // per full dof: free number, or -1 (clamped)
+  Vector values_;              // per full dof: the prescribed value; empty while all are 0
+  std::vector<int> frame_of_;  // per node: index into frames_, or -1; empty: none
+  std::vector<Eigen::Matrix2d> frames_;  // local axes as columns
+  // Full vector in place: each framed node's components from local to Cartesian (Q v), or back
+  // (Q^T v).
+  void to_cartesian(Vector& full) const;
+  void to_local(Vector& full) const;
 };
 
 }  // namespace signorini

@@ -31,9 +31,10 @@ struct DisplacementSpec {
   /// One field per component (x, y, z); empty: that component is free.
   std::array<ScalarField, 3> values;
   std::array<std::string, 3> texts;  ///< how each was given ("-0.01", "0.001*x"), for reports
-  /// The normal component alone (empty: not prescribed); it excludes `values`. Supported where
-  /// the part's normal is along a coordinate axis at every node (straight parts parallel to an
-  /// axis): the component along that axis is prescribed.
+  /// The normal component alone (empty: not prescribed); it excludes `values`. Along the
+  /// nodal outward normal n: on a side parallel to an axis that component, elsewhere in local
+  /// axes (n, t) per node (DofMap::set_frame); a node with one component held already gets the
+  /// other from u . n, a corner of two normal entries both.
   ScalarField normal;
   std::string normal_text;
 };

@@ -140,17 +140,17 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
     if (!std::isfinite(cs.gaps(j)))
       throw InputError("contact.gap is not finite at x = (" + std::to_string(x(0)) + ", " +
                        std::to_string(x(1)) + "): expected finite values on the contact boundary");
+    // A prescribed displacement moves the node towards the obstacle by nu . u_D: the constraint
+    // (N x)_j <= g_j holds on the free dofs with that part taken off the gap. A node with local
+    // axes (DofMap::set_frame) has its row in them.
+    cs.gaps(j) -= cs.normals.col(j).dot(dofs.prescribed_at(node));
+    const Eigen::Vector2d normal = dofs.frame(node).transpose() * cs.normals.col(j);
     double free_normal = 0.0;
     for (int k = 0; k < 2; ++k) {
       const Index d = dofs.free_index(node, k);
-      // A prescribed component moves the node towards the obstacle by nu_k u_D,k: the constraint
-      // (N x)_j <= g_j holds on the free dofs with that part taken off the gap.
-      if (d < 0) {
-        cs.gaps(j) -= cs.normals(k, j) * dofs.value(node, k);
-        continue;
-      }
-      triplets.emplace_back(static_cast<int>(j), static_cast<int>(d), cs.normals(k, j));
-      free_normal += cs.normals(k, j) * cs.normals(k, j);
+      if (d < 0) continue;
+      triplets.emplace_back(static_cast<int>(j), static_cast<int>(d), normal(k));
+      free_normal += normal(k) * normal(k);
     }
     cs.movable[static_cast<std::size_t>(j)] = free_normal > 1e-24;
   }

@@ -7,6 +7,42 @@ namespace signorini {
 DofMap::DofMap(Index num_nodes, int dim)
     : num_nodes_(num_nodes), dim_(dim), free_(static_cast<std::size_t>(num_nodes * dim), 0) {}
 
+void DofMap::set_frame(Index node, const Eigen::Matrix2d& Q) {
+  if (finalized_) throw std::logic_error("DofMap::set_frame after finalize");
+  if (dim_ != 2) throw std::logic_error("DofMap::set_frame: 2D only");
+  if (frame_of_.empty()) frame_of_.assign(static_cast<std::size_t>(num_nodes_), -1);
+  int& f = frame_of_[static_cast<std::size_t>(node)];
+  if (f < 0) {
+    f = static_cast<int>(frames_.size());
+    frames_.push_back(Q);
+  } else {
+    frames_[static_cast<std::size_t>(f)] = Q;
+  }
+}
+
+Eigen::Matrix2d DofMap::frame(Index node) const {
+  return has_frame(node)
+             ? frames_[static_cast<std::size_t>(frame_of_[static_cast<std::size_t>(node)])]
+             : Eigen::Matrix2d::Identity();
+}
+
+Eigen::Vector2d DofMap::prescribed_at(Index node) const {
+  if (values_.size() == 0) return Eigen::Vector2d::Zero();
+  const Eigen::Vector2d local(values_(node * dim_), values_(node * dim_ + 1));
+  return has_frame(node) ? Eigen::Vector2d(frame(node) * local) : local;
+}
+
+void DofMap::to_cartesian(Vector& full) const {
+  for (Index node = 0; node < num_nodes_; ++node)
+    if (has_frame(node)) full.segment<2>(node * 2) = frame(node) * full.segment<2>(node * 2);
+}
+
+void DofMap::to_local(Vector& full) const {
+  for (Index node = 0; node < num_nodes_; ++node)
+    if (has_frame(node))
+      full.segment<2>(node * 2) = frame(node).transpose() * full.segment<2>(node * 2);
+}
+
 void DofMap::clamp(Index node, int component) {
   if (finalized_) throw std::logic_error("DofMap::clamp after finalize");
   free_[static_cast<std::size_t>(node * dim_ + component)] = -1;
@@ -20,7 +56,10 @@ void DofMap::prescribe(Index node, int component, double value) {
 }
 
 Vector DofMap::prescribed_values() const {
-  return values_.size() == 0 ? Vector::Zero(num_dofs()) : values_;
+  if (values_.size() == 0) return Vector::Zero(num_dofs());
+  Vector full = values_;
+  to_cartesian(full);
+  return full;
 }
 
 void DofMap::finalize() {
@@ -31,15 +70,26 @@ void DofMap::finalize() {
 }
 
 Vector DofMap::expand(const Vector& free_values) const {
-  Vector full = prescribed_values();
+  Vector full = values_.size() == 0 ? Vector::Zero(num_dofs()) : values_;
   for (Index d = 0; d < num_dofs(); ++d) {
     const Index f = free_[static_cast<std::size_t>(d)];
     if (f >= 0) full(d) = free_values(f);
   }
+  if (has_frames()) to_cartesian(full);
   return full;
 }
 
 Vector DofMap::restrict_to_free(const Vector& full_values) const {
+  if (has_frames()) {
+    Vector local = full_values;
+    to_local(local);
+    Vector out(num_free_);
+    for (Index d = 0; d < num_dofs(); ++d) {
+      const Index f = free_[static_cast<std::size_t>(d)];
+      if (f >= 0) out(f) = local(d);
+    }
+    return out;
+  }
   Vector out(num_free_);
   for (Index d = 0; d < num_dofs(); ++d) {
     const Index f = free_[static_cast<std::size_t>(d)];

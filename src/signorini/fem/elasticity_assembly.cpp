@@ -89,6 +89,23 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
     }
     const auto nodes = mesh.cell(c);
     const auto n = static_cast<int>(nodes.size());
+    // Nodes with local axes (DofMap::set_frame): R^T K R, R the block diagonal of their axes, on
+    // a copy (K may serve the next cell too).
+    const ElementMatrix* Kc = &K;
+    ElementMatrix rotated;
+    if (dofs.has_frames()) {
+      for (int a = 0; a < n; ++a) {
+        const Index node = nodes[static_cast<std::size_t>(a)];
+        if (!dofs.has_frame(node)) continue;
+        if (Kc == &K) {
+          rotated = K;
+          Kc = &rotated;
+        }
+        const Eigen::Matrix2d Q = dofs.frame(node);
+        rotated.middleRows(2 * a, 2) = (Q.transpose() * rotated.middleRows(2 * a, 2)).eval();
+        rotated.middleCols(2 * a, 2) = (rotated.middleCols(2 * a, 2) * Q).eval();
+      }
+    }
     std::array<Index, 4> block{};
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a) {
@@ -97,7 +114,7 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
         for (int ka = 0; ka < 2; ++ka)
           for (int kb = 0; kb < 2; ++kb) {
             const Index pos = block[static_cast<std::size_t>(ka * 2 + kb)];
-            if (pos >= 0) values[pos] += K(2 * a + ka, 2 * b + kb);  // clamped: eliminated
+            if (pos >= 0) values[pos] += (*Kc)(2 * a + ka, 2 * b + kb);  // clamped: eliminated
           }
       }
   }

@@ -127,8 +127,11 @@ std::vector<RigidMotion> free_rigid_motions(const Mesh& mesh, const DofMap& dofs
       const Eigen::Vector3d x = mesh.point(v);
       for (int k = 0; k < dim; ++k) {
         if (!dofs.is_clamped(v, k)) continue;
+        // The clamped direction: axis k, or the node's local axis k (DofMap::set_frame).
+        Eigen::Vector3d axis = Eigen::Vector3d::Unit(k);
+        if (dofs.has_frame(v)) axis.head<2>() = dofs.frame(v).col(k);
         Eigen::VectorXd row(modes);
-        for (int m = 0; m < modes; ++m) row(m) = mode_value(m, dim, x, c, L)(k);
+        for (int m = 0; m < modes; ++m) row(m) = axis.dot(mode_value(m, dim, x, c, L));
         G.noalias() += row * row.transpose();
       }
     }

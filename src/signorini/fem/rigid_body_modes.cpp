@@ -18,11 +18,15 @@ Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs) {
   Matrix B = Matrix::Zero(dofs.num_free(), 3);
   for (Index node = 0; node < dofs.num_nodes(); ++node) {
     const Eigen::Vector2d x = mesh.node(node).head(2) - centre;
+    // Translations along x and y, and the rotation about the z axis, u = (-y, x); at a node with
+    // local axes, their components along them.
+    Eigen::Matrix<double, 2, 3> modes;
+    modes << 1.0, 0.0, -x[1], 0.0, 1.0, x[0];
+    if (dofs.has_frame(node)) modes = (dofs.frame(node).transpose() * modes).eval();
     for (int k = 0; k < 2; ++k) {
       const Index f = dofs.free_index(node, k);
       if (f < 0) continue;
-      B(f, k) = 1.0;                    // translation along axis k
-      B(f, 2) = k == 0 ? -x[1] : x[0];  // rotation about the z axis: u = (-y, x)
+      B.row(f) = modes.row(k);
     }
   }
   return B;

@@ -37,8 +37,7 @@ std::string contact_csv(const ContactResult& result, const Model& model) {
       const double ny = c.normals(1, j);
       // The initial gap: the contact set's g_j has the prescribed components of the node taken
       // off (fem/contact_boundary.cpp); u_n here is the whole normal displacement.
-      const double gap =
-          c.gaps(j) + nx * model.dofs.value(node, 0) + ny * model.dofs.value(node, 1);
+      const double gap = c.gaps(j) + c.normals.col(j).dot(model.dofs.prescribed_at(node));
       const auto x = model.mesh.node(node);
       out += fmt::format(
           "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", x(0),

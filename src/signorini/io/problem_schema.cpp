@@ -200,9 +200,9 @@ const OptionTable<P>& displacement_options() {
     t.custom("x", "number or expression of x, y", "u_x on the part").unit("L").default_text("free");
     t.custom("y", "number or expression of x, y", "u_y on the part").unit("L").default_text("free");
     t.custom("normal", "number or expression of x, y",
-             "u . n along the part's outward normal n, instead of `x` and `y` (the tangential "
-             "component stays free). So far only on straight parts parallel to x or y, where "
-             "it is the component along that axis; inclined and curved parts are refused")
+             "u . n along the part's outward normal n at each node, instead of `x` and `y` (the "
+             "tangential component stays free): on a side parallel to x or y the component "
+             "along that axis, elsewhere (inclined and curved parts) in local axes per node")
         .unit("L")
         .default_text("free");
     return t;

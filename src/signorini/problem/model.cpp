@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/LU>
 #include <algorithm>
 
 #include "signorini/core/error.hpp"
@@ -17,42 +18,29 @@ namespace signorini {
 
 namespace {
 
-// The component of displacement[i].normal on its part: the axis the normals of every node lie
-// along (with their sign), or an error naming the node where they do not.
-std::pair<int, double> normal_axis(const Mesh& mesh, const DisplacementSpec& d, std::size_t i) {
-  const std::string what = fmt::format("displacement[{}].boundary", i);
-  const BoundaryNodes b = boundary_nodes(mesh, mesh.boundary_part(d.boundary), what);
-  int axis = -1;
-  double sign = 0.0;
-  for (Index j = 0; j < static_cast<Index>(b.nodes.size()); ++j) {
-    const Eigen::Vector2d n = b.normals.col(j);
-    const int k = std::abs(n(0)) >= std::abs(n(1)) ? 0 : 1;
-    const double s = n(k) > 0.0 ? 1.0 : -1.0;
-    if (std::abs(std::abs(n(k)) - 1.0) > 1e-9 || (axis >= 0 && (k != axis || s != sign))) {
-      const Point x = mesh.point(b.nodes[static_cast<std::size_t>(j)]);
-      throw InputError(fmt::format(
-          "displacement[{}].normal on '{}': the outward normal at node {} ({:g}, {:g}) is "
-          "({:.6g}, {:.6g}), not one axis direction for the whole part; a normal displacement is "
-          "supported on straight parts parallel to x or y only (inclined and curved parts are "
-          "not implemented yet): give the components x and y instead",
-          i, d.boundary, b.nodes[static_cast<std::size_t>(j)], x(0), x(1), n(0) + 0.0, n(1) + 0.0));
-    }
-    axis = k;
-    sign = s;
-  }
-  return {axis, sign};
-}
-
-// Calls hold(node, component, value) for every dof that displacement entry `d` prescribes.
-template <class Hold>
+// Calls hold(node, k, value) for each Cartesian component that displacement entry `d` (number
+// i) prescribes, and hold_normal(node, normal, value) for each node of a `normal` entry whose
+// outward normal is not along a coordinate axis (it needs local axes). Where the normal is along
+// axis k (a side parallel to it), u . n is that component, with the normal's sign.
+template <class Hold, class HoldNormal>
 void for_each_prescribed(const Mesh& mesh, const DisplacementSpec& d, std::size_t i,
-                         const Hold& hold) {
-  const auto nodes = mesh.boundary_part_nodes(d.boundary);  // throws on unknown names
+                         const Hold& hold, const HoldNormal& hold_normal) {
   if (d.normal) {
-    const auto [axis, sign] = normal_axis(mesh, d, i);
-    for (const Index node : nodes) hold(node, axis, sign * d.normal(mesh.point(node)));
+    const BoundaryNodes b = boundary_nodes(mesh, mesh.boundary_part(d.boundary),
+                                           fmt::format("displacement[{}].boundary", i));
+    for (std::size_t j = 0; j < b.nodes.size(); ++j) {
+      const Index node = b.nodes[j];
+      const Eigen::Vector2d n = b.normals.col(static_cast<Index>(j));
+      const double value = d.normal(mesh.point(node));
+      const int k = std::abs(n(0)) >= std::abs(n(1)) ? 0 : 1;
+      if (std::abs(std::abs(n(k)) - 1.0) <= 1e-12)
+        hold(node, k, n(k) > 0.0 ? value : -value);
+      else
+        hold_normal(node, n, value);
+    }
     return;
   }
+  const auto nodes = mesh.boundary_part_nodes(d.boundary);  // throws on unknown names
   for (const Index node : nodes)
     for (int k = 0; k < mesh.dim(); ++k)
       if (d.values[static_cast<std::size_t>(k)])
@@ -76,12 +64,48 @@ DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
     for (int k = 0; k < mesh.dim(); ++k)
       held[static_cast<std::size_t>(node * mesh.dim() + k)] = dofs.is_clamped(node, k);
   for (std::size_t i = 0; i < displacements.size(); ++i)
-    for_each_prescribed(mesh, displacements[i], i, [&](Index node, int k, double value) {
-      auto&& h = held[static_cast<std::size_t>(node * mesh.dim() + k)];
-      if (h) return;
-      h = true;
-      dofs.prescribe(node, k, value);
-    });
+    for_each_prescribed(
+        mesh, displacements[i], i,
+        [&](Index node, int k, double value) {
+          auto&& h = held[static_cast<std::size_t>(node * mesh.dim() + k)];
+          if (h || dofs.has_frame(node)) return;
+          h = true;
+          dofs.prescribe(node, k, value);
+        },
+        [&](Index node, const Eigen::Vector2d& n, double value) {
+          // u . n alone on an inclined or curved part: the node's axes become (n, t), its first
+          // component is held. A node with a component held already keeps its axes (below).
+          const auto dof = static_cast<std::size_t>(node * mesh.dim());
+          if (dofs.has_frame(node)) {
+            // A corner of two parts held along their normals: u . n1 = v1 and u . n = value fix
+            // u; its component along the node's second axis is held too. (Nearly) parallel
+            // normals: the first entry wins.
+            const Eigen::Matrix2d Q = dofs.frame(node);
+            const Eigen::Vector2d n1 = Q.col(0);
+            if (dofs.is_clamped(node, 1) || std::abs(n1(0) * n(1) - n1(1) * n(0)) < 1e-6) return;
+            Eigen::Matrix2d M;
+            M.row(0) = n1.transpose();
+            M.row(1) = n.transpose();
+            const Eigen::Vector2d u = M.inverse() * Eigen::Vector2d(dofs.value(node, 0), value);
+            dofs.prescribe(node, 1, Q.col(1).dot(u));
+            return;
+          }
+          if (held[dof] && held[dof + 1]) return;
+          if (held[dof] || held[dof + 1]) {
+            // One component held (a roller where the part meets a symmetry line): it keeps its
+            // value c, and u . n = value gives the other, (value - n_k c) / n_other.
+            const int k = held[dof] ? 0 : 1, other = 1 - k;
+            if (std::abs(n(other)) < 1e-6) return;  // the normal is along the held axis
+            held[dof + static_cast<std::size_t>(other)] = true;
+            dofs.prescribe(node, other, (value - n(k) * dofs.value(node, k)) / n(other));
+            return;
+          }
+          held[dof] = held[dof + 1] = true;
+          Eigen::Matrix2d Q;
+          Q << n(0), -n(1), n(1), n(0);  // columns: the normal, the tangent n turned a quarter
+          dofs.set_frame(node, Q);
+          dofs.prescribe(node, 0, value);
+        });
   dofs.finalize();
   return dofs;
 }
@@ -111,7 +135,8 @@ void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs) {
 
 namespace {
 
-std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
+std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const DofMap& dofs,
+                                       const std::vector<ClampSpec>& clamps,
                                        const std::vector<DisplacementSpec>& displacements) {
   std::vector<ClampedPart> parts;
   std::vector<bool> taken(static_cast<std::size_t>(mesh.num_nodes() * mesh.dim()), false);
@@ -130,8 +155,15 @@ std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const std::vector<Clamp
   }
   for (std::size_t i = 0; i < displacements.size(); ++i) {
     ClampedPart part{displacements[i].boundary, {}};
-    for_each_prescribed(mesh, displacements[i], i,
-                        [&](Index node, int k, double) { take(part, node, k); });
+    // The reaction of a node held along its normal is all of its force (the tangential part is
+    // zero at the solution).
+    for_each_prescribed(
+        mesh, displacements[i], i, [&](Index node, int k, double) { take(part, node, k); },
+        [&](Index node, const Eigen::Vector2d&, double) {
+          if (!dofs.has_frame(node)) return;  // held otherwise, by an earlier entry
+          take(part, node, 0);
+          take(part, node, 1);
+        });
     parts.push_back(std::move(part));
   }
   return parts;
@@ -260,7 +292,7 @@ Model build_model(const ProblemSpec& spec) {
     ScopedTimer t(timings, "multigrid hierarchy");
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
-  std::vector<ClampedPart> clamps = clamped_parts(mesh, spec.clamps, spec.displacements);
+  std::vector<ClampedPart> clamps = clamped_parts(mesh, dofs, spec.clamps, spec.displacements);
   return Model{std::move(mesh),          std::move(dofs),
                std::move(problem),       std::move(multigrid),
                std::move(timings),       elasticity,
