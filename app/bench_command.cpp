@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "gpu_comparison.hpp"
+#include "problem_bench.hpp"
 #include "signorini/backend/cuda_backend.hpp"
 #include "signorini/benchmark/paper_benchmark_suite.hpp"
 #include "signorini/core/error.hpp"
@@ -218,6 +219,14 @@ int whole_process(const BenchArguments& args, const std::vector<std::pair<Index,
 }  // namespace
 
 int run_bench(const BenchArguments& args) {
+  if (!args.problem_file.empty()) {
+    if (args.full || args.larger || args.huge || !args.meshes.empty() || args.whole_process ||
+        args.peers || args.cg || args.plain || args.device != "cpu")
+      throw InputError(
+          "--problem times one problem file: it takes --repeats and --json only (the paper's "
+          "meshes and configurations are options of the paper's benchmark)");
+    return run_problem_bench({args.problem_file, args.repeats, args.json_file});
+  }
   BenchmarkOptions options = args.full ? full_benchmark_options() : BenchmarkOptions{};
   options.repeats = args.repeats;
   if (!args.meshes.empty()) {

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <spawn.h>
+#include <stdlib.h>  // mkdtemp
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,6 +18,7 @@
 #include <string_view>
 
 #include "process_tuning.hpp"
+#include "signorini/core/error.hpp"
 
 extern char** environ;
 
@@ -116,6 +118,20 @@ std::string own_executable() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   return ec ? std::string("/proc/self/exe") : exe.string();
+}
+
+ScratchFolder::ScratchFolder() {
+  std::string pattern =
+      (std::filesystem::temp_directory_path() / "signorini-bench-XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr)
+    throw InputError(
+        fmt::format("cannot create a temporary folder '{}': {}", pattern, std::strerror(errno)));
+  path_ = pattern;
+}
+
+ScratchFolder::~ScratchFolder() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
 }
 
 }  // namespace signorini::app

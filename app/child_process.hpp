@@ -4,6 +4,7 @@
 // faults, peak resident memory). Used by `signorini bench --whole-process` (docs/performance.md,
 // "Whole process and the PETSc peer").
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,20 @@ ChildRun run_child(const std::vector<std::string>& argv,
 /// own start-up tuning added (process_tuning.hpp): the environment the user started the tool
 /// with, as far as it can be told, so that a child runs as it would from the shell.
 std::vector<std::string> user_environment();
+
+/// A folder under $TMPDIR (or /tmp) for a benchmark's files and the children's results, removed
+/// with everything in it at the end. Throws InputError when it cannot be made.
+class ScratchFolder {
+ public:
+  ScratchFolder();
+  ~ScratchFolder();
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
 
 /// The path of the running executable (/proc/self/exe resolved), or "/proc/self/exe".
 std::string own_executable();

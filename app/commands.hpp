@@ -55,6 +55,9 @@ struct BenchArguments {
   bool whole_process = false;
   bool peers = false;                     ///< with the whole process: also the PETSc peer
   std::vector<std::string> peer_configs;  ///< the peer's --config values; empty: its default
+  /// A problem file to time against one linear solve instead of the paper's benchmark
+  /// (problem_bench.hpp).
+  std::string problem_file;
 };
 
 /// `signorini bench`: the paper's benchmark on several meshes and solver configurations.

@@ -137,6 +137,12 @@ int main(int argc, char** argv) {
                       "As --whole-process, and the same problem by PETSc SNESVI "
                       "(bench/peers/petsc_snesvi.py; needs python3-petsc4py) in the same run");
   bench_cmd
+      ->add_option("--problem", bench.problem_file,
+                   "Instead of the paper's benchmark: this problem file's contact solve and whole "
+                   "process against one linear solve of the same discrete problem, in the same "
+                   "run (bench/hertz_million.sh: a Hertz problem of a million unknowns)")
+      ->type_name("FILE");
+  bench_cmd
       ->add_option("--peer-config", bench.peer_configs,
                    "With --peers: the peer's configuration (mumps, cholmod, petsc, gamg; "
                    "repeatable; default: the script's)")

@@ -1,7 +1,6 @@
 #include "whole_process_bench.hpp"
 
 #include <fmt/format.h>
-#include <stdlib.h>  // mkdtemp
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,29 +30,6 @@ namespace signorini::app {
 namespace fs = std::filesystem;
 
 namespace {
-
-// A folder under $TMPDIR (or /tmp) for the problem file and the children's results, removed
-// with everything in it at the end.
-class ScratchFolder {
- public:
-  ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "signorini-bench-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr)
-      throw InputError(
-          fmt::format("cannot create a temporary folder '{}': {}", pattern, std::strerror(errno)));
-    path_ = pattern;
-  }
-  ~ScratchFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  [[nodiscard]] const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 // The paper's problem as a problem file: the library's paper_benchmark() written out by the
 // effective-settings writer, with the traction formulas as text (the spec holds them as

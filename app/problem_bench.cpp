@@ -1,0 +1,118 @@
+#include "problem_bench.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "child_process.hpp"
+#include "commands.hpp"
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/core/peak_memory.hpp"
+#include "signorini/io/atomic_file.hpp"
+#include "signorini/io/problem_file.hpp"
+#include "signorini/linalg/linear_solver.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini::app {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+int run_problem_bench(const ProblemBenchOptions& options) {
+  const LoadedProblem loaded = read_problem_file(options.file);
+  for (const std::string& w : loaded.warnings) fmt::print(stderr, "signorini: warning: {}\n", w);
+  const ProblemSpec& spec = loaded.spec;
+  const ContactSolverOptions& solver = spec.solver;
+
+  // In this process: the model, the contact solve, and the yardstick, one linear solve of the
+  // same A and b with the same linear solver (analysis, factorisation, solve: what a solve of
+  // the problem without contact costs).
+  double best_build = 1e300, best_contact = 1e300, best_linear = 1e300;
+  Index dofs = 0, contact_nodes = 0;
+  int repeats = options.repeats;
+  bool converged = true;
+  std::string path;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Model model = build_model(spec);
+    best_build = std::min(best_build, seconds_since(t0));
+    dofs = model.dofs.num_dofs();
+    contact_nodes = model.problem.contact.size();
+    // Two rounds at least: the first pays the page faults of memory touched for the first time
+    // (a third of a cold million-unknown solve), which the second reuses; the contact solve and
+    // the linear solve are compared warm, the whole process below is cold.
+    if (r == 0) repeats = std::max(repeats, 2);
+    if (dofs > 2000000) repeats = 2;  // minutes otherwise
+    const ContactResult result = solve_contact(model.problem, solver, &model.multigrid);
+    best_contact = std::min(best_contact, result.summary.timings.seconds("contact solve"));
+    converged = converged && result.summary.converged();
+    path = enum_to_string(kSolvePathNames, result.summary.path);
+
+    const auto t1 = std::chrono::steady_clock::now();
+    const auto linear = make_linear_solver(solver.linear);
+    linear->analyze(model.problem.A);
+    linear->factorize(model.problem.A);
+    Vector x = Vector::Zero(model.problem.A.rows());
+    linear->solve(model.problem.b, x);
+    best_linear = std::min(best_linear, seconds_since(t1));
+  }
+
+  // From the shell: `signorini solve FILE -o SCRATCH -q`, as a child, best of the same number
+  // (one only for a problem over a million unknowns).
+  const int child_repeats = dofs > 1000000 ? 1 : repeats;
+  const ScratchFolder scratch;
+  ChildRun best_child;
+  best_child.wall_seconds = 1e300;
+  for (int r = 0; r < child_repeats; ++r) {
+    const ChildRun run = run_child(
+        {own_executable(), "solve", options.file, "-o", (scratch.path() / "out").string(), "-q"},
+        user_environment());
+    if (run.exit_status != 0 && run.exit_status != kNotConverged)
+      throw InputError(fmt::format("`signorini solve {}` failed (exit status {}): {}", options.file,
+                                   run.exit_status, run.errors));
+    converged = converged && run.exit_status == 0;
+    if (run.wall_seconds < best_child.wall_seconds) best_child = run;
+  }
+
+  fmt::print("{}: {} unknowns, {} contact nodes; {} ({}), best of {} (whole process: {})\n",
+             options.file, dofs, contact_nodes, enum_to_string(kContactMethodNames, solver.method),
+             path, repeats, child_repeats);
+  fmt::print("  {:<44} {:>9}  {:>8}\n", "", "seconds", "ratio");
+  fmt::print("  {:<44} {:>9.3f}  {:>8}\n", "one linear solve (analyse, factorise, solve)",
+             best_linear, "1");
+  fmt::print("  {:<44} {:>9.3f}  {:>8.2f}\n", "contact solve (in this process)", best_contact,
+             best_contact / best_linear);
+  fmt::print("  {:<44} {:>9.3f}\n", "model: mesh, assembly, loads, contact set", best_build);
+  fmt::print("  {:<44} {:>9.3f}  {:>8.2f}   (peak {:.2f} GB)\n",
+             "whole process (signorini solve, from outside)", best_child.wall_seconds,
+             best_child.wall_seconds / best_linear, best_child.peak_rss_bytes / 1e9);
+  if (!options.json_file.empty()) {
+    const nlohmann::json j = {{"file", options.file},
+                              {"n_dofs", dofs},
+                              {"n_contact_nodes", contact_nodes},
+                              {"method", enum_to_string(kContactMethodNames, solver.method)},
+                              {"path", path},
+                              {"repeats", repeats},
+                              {"converged", converged},
+                              {"seconds",
+                               {{"linear_solve", best_linear},
+                                {"contact_solve", best_contact},
+                                {"model", best_build},
+                                {"whole_process", best_child.wall_seconds}}},
+                              {"contact_over_linear", best_contact / best_linear},
+                              {"whole_process_over_linear", best_child.wall_seconds / best_linear},
+                              {"whole_process_peak_bytes", best_child.peak_rss_bytes}};
+    write_file_atomically(options.json_file, j.dump(2) + "\n");
+  }
+  return converged ? kSuccess : kNotConverged;
+}
+
+}  // namespace signorini::app
