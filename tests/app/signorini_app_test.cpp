@@ -87,6 +87,8 @@ TEST(SignoriniApp, MultigridConjugateGradientsGiveTheTable1Energy) {
   EXPECT_NEAR(j["M"].get<double>(), -6.700472e-05, 2e-7 * 6.700472e-05);  // as table1_test
   EXPECT_EQ(j["uzawa_iterations"].get<int>(), 6);
   EXPECT_EQ(j["gnm_iterations"][0].get<int>(), 7);
+  EXPECT_EQ(j["outer_iterations"], j["uzawa_iterations"]);  // the method-neutral names
+  EXPECT_EQ(j["inner_iterations"], j["gnm_iterations"]);
   EXPECT_EQ(j["multigrid_levels"].size(), 3U);
   EXPECT_EQ(j["problem"]["solver"]["linear"]["preconditioner"], "multigrid");
 }
@@ -255,7 +257,8 @@ TEST(SignoriniApp, Check) {
                    "/paper_small.toml: key 'mesh.nx' = 0: expected an integer >= 1\n");
   r = run_tool(dir, "check " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml"));
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_CONTAINS(r.out, "\nok: 154882 dofs, 481 contact nodes\n");  // the paper's n_p and n_d, 480 x 160
+  EXPECT_CONTAINS(r.out,
+                  "\nok: 154882 dofs, 481 contact nodes\n");  // the paper's n_p and n_d, 480 x 160
 }
 
 }  // namespace

@@ -57,6 +57,9 @@ struct LinearSolverOptions {
   MultigridCoarsening coarsening = MultigridCoarsening::Auto;
   /// Degree of the Chebyshev smoother of the multigrid preconditioner (products with H per sweep).
   int chebyshev_degree = 2;
+
+  /// The CG iteration limit for n unknowns: cg_max_iterations, or 10 n when that is 0.
+  [[nodiscard]] int cg_iteration_limit(Index n) const;
 };
 
 /// Throws InputError naming the bad field.

@@ -60,6 +60,20 @@ class HostDenseMatrix final : public DeviceDenseMatrix {
 // Signed loop bounds for OpenMP.
 using Loop = std::int64_t;
 
+// Runs f(i) for i in [0, n): on OpenMP threads from kParallelFrom entries up, plainly below, where
+// even an inactive parallel region costs a call per loop (a tenth of a CG iteration on 60x20).
+constexpr Loop kParallelFrom = 20000;
+
+template <class F>
+void for_each_index(Loop n, const F& f) {
+  if (n >= kParallelFrom) {
+#pragma omp parallel for schedule(static)
+    for (Loop i = 0; i < n; ++i) f(i);
+  } else {
+    for (Loop i = 0; i < n; ++i) f(i);
+  }
+}
+
 }  // namespace
 
 std::string HostBackend::description() const {
@@ -116,12 +130,24 @@ void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, Devic
   const double* xs = x.data();
   double* ys = y.data();
   const Loop rows = m.rows();
-#pragma omp parallel for schedule(static) if (rows > 20000)
-  for (Loop i = 0; i < rows; ++i) {
+  if (rows < kParallelFrom) {  // Eigen's own product, vectorised
+    Eigen::Map<const Vector> xm(xs, x.size());
+    Eigen::Map<Vector> ym(ys, y.size());
+    if (beta == 0.0)
+      ym.noalias() = alpha * (m * xm);
+    else
+      ym = alpha * (m * xm) + beta * ym;
+    return;
+  }
+  const auto row = [&](Loop i) {
     double s = 0.0;
     for (int k = outer[i]; k < outer[i + 1]; ++k) s += v[k] * xs[inner[k]];
-    ys[i] = beta == 0.0 ? alpha * s : alpha * s + beta * ys[i];
-  }
+    return alpha * s;
+  };
+  if (beta == 0.0)
+    for_each_index(rows, [&](Loop i) { ys[i] = row(i); });
+  else
+    for_each_index(rows, [&](Loop i) { ys[i] = row(i) + beta * ys[i]; });
 }
 
 void HostBackend::gemv(const DeviceDenseMatrix& A, const DeviceVector& x, DeviceVector& y) {
@@ -135,8 +161,10 @@ double HostBackend::dot(const DeviceVector& x, const DeviceVector& y) {
   const double* a = x.data();
   const double* b = y.data();
   const Loop n = x.size();
+  if (n < kParallelFrom)  // Eigen's dot: vectorised partial sums
+    return Eigen::Map<const Vector>(a, n).dot(Eigen::Map<const Vector>(b, n));
   double s = 0.0;
-#pragma omp parallel for reduction(+ : s) schedule(static) if (n > 20000)
+#pragma omp parallel for reduction(+ : s) schedule(static)
   for (Loop i = 0; i < n; ++i) s += a[i] * b[i];
   return s;
 }
@@ -151,8 +179,18 @@ void HostBackend::axpbyz(double a, const DeviceVector& x, double b, const Device
   const double* ys = y.data();
   double* zs = z.data();
   const Loop n = z.size();
-#pragma omp parallel for schedule(static) if (n > 20000)
-  for (Loop i = 0; i < n; ++i) zs[i] = a * xs[i] + (b == 0.0 ? 0.0 : b * ys[i]);
+  if (n < kParallelFrom) {  // Eigen's expressions, vectorised
+    Eigen::Map<Vector> zm(zs, n);
+    if (b == 0.0)
+      zm = a * Eigen::Map<const Vector>(xs, n);
+    else
+      zm = a * Eigen::Map<const Vector>(xs, n) + b * Eigen::Map<const Vector>(ys, n);
+    return;
+  }
+  if (b == 0.0)
+    for_each_index(n, [&](Loop i) { zs[i] = a * xs[i]; });
+  else
+    for_each_index(n, [&](Loop i) { zs[i] = a * xs[i] + b * ys[i]; });
 }
 
 void HostBackend::multiply(const DeviceVector& d, const DeviceVector& x, DeviceVector& z) {
@@ -160,16 +198,14 @@ void HostBackend::multiply(const DeviceVector& d, const DeviceVector& x, DeviceV
   const double* xs = x.data();
   double* zs = z.data();
   const Loop n = z.size();
-#pragma omp parallel for schedule(static) if (n > 20000)
-  for (Loop i = 0; i < n; ++i) zs[i] = ds[i] * xs[i];
+  for_each_index(n, [&](Loop i) { zs[i] = ds[i] * xs[i]; });
 }
 
 void HostBackend::reciprocal(const DeviceVector& x, DeviceVector& y) {
   const double* xs = x.data();
   double* ys = y.data();
   const Loop n = y.size();
-#pragma omp parallel for schedule(static) if (n > 20000)
-  for (Loop i = 0; i < n; ++i) ys[i] = 1.0 / xs[i];
+  for_each_index(n, [&](Loop i) { ys[i] = 1.0 / xs[i]; });
 }
 
 void HostBackend::copy(const DeviceVector& x, DeviceVector& y) {
@@ -188,11 +224,10 @@ void HostBackend::chebyshev_update(double a, double b, const DeviceVector& dinv,
   double* dd = d.data();
   double* xs = x.data();
   const Loop n = x.size();
-#pragma omp parallel for schedule(static) if (n > 20000)
-  for (Loop i = 0; i < n; ++i) {
+  for_each_index(n, [&](Loop i) {
     dd[i] = (a == 0.0 ? 0.0 : a * dd[i]) + b * ds[i] * rs[i];
     xs[i] += dd[i];
-  }
+  });
 }
 
 }  // namespace signorini

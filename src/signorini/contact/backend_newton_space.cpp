@@ -78,10 +78,7 @@ NewtonSolveStats BackendNewtonSpace::solve(const Vector& terms) {
   be_.copy(x_, x_new_);
   PcgOptions po;
   po.tolerance = o_.linear.cg_tolerance;
-  po.max_iterations =
-      o_.linear.cg_max_iterations > 0
-          ? o_.linear.cg_max_iterations
-          : static_cast<int>(std::min<Index>(10 * n_, std::numeric_limits<int>::max()));
+  po.max_iterations = o_.linear.cg_iteration_limit(n_);
   PcgResult lin;
   {
     ScopedTimer t(timings_, "linear solve");

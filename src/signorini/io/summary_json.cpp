@@ -104,6 +104,9 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   j["warm_started"] = summary.warm_started;
   j["M"] = summary.lagrangian;
   j["energy"] = summary.energy;
+  // The method's own words (outer and inner steps: Uzawa and GNM, semismooth Newton steps and
+  // the one linear solve of each, classical Uzawa steps), and the paper's names for the same.
+  j["outer_iterations"] = summary.outer_iterations;
   j["uzawa_iterations"] = summary.outer_iterations;
 
   json gnm = json::array(), armijo = json::array(), active = json::array(), dual = json::array(),
@@ -117,6 +120,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     factorizations.push_back(s.factorizations);
     updates.push_back(s.factor_updates);
   }
+  j["inner_iterations"] = gnm;
   j["gnm_iterations"] = gnm;
   j["armijo_reductions"] = armijo;
   j["active_set_sizes"] = active;

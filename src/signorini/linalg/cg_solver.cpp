@@ -6,21 +6,36 @@ namespace signorini {
 
 void CgSolver::factorize(const SparseMatrix& H) {
   ScopedTimer timer(timings_, "linear factorization");  // here: Jacobi preconditioner setup
-  matrix_ = H;
-  cg_.setTolerance(options_.cg_tolerance);
-  const Index limit = options_.cg_max_iterations > 0 ? options_.cg_max_iterations : 10 * H.rows();
-  cg_.setMaxIterations(limit);
-  cg_.compute(matrix_);
+  const Index n = H.rows();
+  // The members that refer to the operator go first.
+  pcg_.reset();
+  jacobi_.reset();
+  operator_ = std::make_unique<PenalizedOperator>(backend_, H, SparseMatrix(0, n));
+  jacobi_ = std::make_unique<JacobiPreconditioner>(*operator_);
+  pcg_ = std::make_unique<Pcg>(backend_, n);
+  if (b_.size() != n) {
+    b_ = DeviceVector(backend_, n);
+    x_ = DeviceVector(backend_, n);
+  }
 }
 
 LinearSolveStats CgSolver::solve(const Vector& rhs, Vector& x) {
   ScopedTimer timer(timings_, "linear solve");
-  if (x.size() != rhs.size()) x = Vector::Zero(rhs.size());
-  x = cg_.solveWithGuess(rhs, x);
+  if (!pcg_) throw NumericalError("CG: solve() before factorize()");
+  const Index n = operator_->size();
+  if (rhs.size() != n) throw NumericalError("CG: the right-hand side has the wrong size");
+  if (x.size() != n) x = Vector::Zero(n);
+  backend_.upload(rhs.data(), n, b_.data());
+  backend_.upload(x.data(), n, x_.data());
+  PcgOptions o;
+  o.tolerance = options_.cg_tolerance;
+  o.max_iterations = options_.cg_iteration_limit(n);
+  const PcgResult r = pcg_->solve(*operator_, *jacobi_, b_, x_, o);
+  backend_.download(x_.data(), n, x.data());
   LinearSolveStats stats;
-  stats.iterations = static_cast<int>(cg_.iterations());
-  stats.residual = cg_.error();
-  stats.converged = cg_.info() == Eigen::Success;
+  stats.iterations = r.iterations;
+  stats.residual = r.residual;
+  stats.converged = r.converged;
   return stats;
 }
 

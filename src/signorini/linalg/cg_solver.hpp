@@ -1,9 +1,15 @@
 #pragma once
-// Jacobi-preconditioned conjugate gradients (Eigen's ConjugateGradient): the linear solver the
-// paper used for its Newton steps, kept to redo its CPU-vs-GPU comparison.
+// Jacobi-preconditioned conjugate gradients on the host: the linear solver the paper used for
+// its Newton steps, kept to redo its CPU-vs-GPU comparison. The iteration is the one written for
+// every backend (iterative/pcg.hpp), here on the host backend with the Jacobi preconditioner, so
+// that `linear.type = "cg"` is one algorithm on the plain path and on the backend path.
 
-#include <Eigen/IterativeLinearSolvers>
+#include <memory>
 
+#include "signorini/backend/host_backend.hpp"
+#include "signorini/iterative/jacobi_preconditioner.hpp"
+#include "signorini/iterative/pcg.hpp"
+#include "signorini/iterative/penalized_operator.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 
 namespace signorini {
@@ -18,10 +24,13 @@ class CgSolver final : public LinearSolver {
 
  private:
   LinearSolverOptions options_;
-  SparseMatrix matrix_;  // Eigen's CG keeps a reference: own the matrix here.
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
-                           Eigen::DiagonalPreconditioner<double>>
-      cg_;
+  HostBackend backend_;
+  // H as an operator (no contact part: the Newton matrix comes assembled), its Jacobi
+  // preconditioner, the iteration's work vectors, and b and x on the backend.
+  std::unique_ptr<PenalizedOperator> operator_;
+  std::unique_ptr<JacobiPreconditioner> jacobi_;
+  std::unique_ptr<Pcg> pcg_;
+  DeviceVector b_, x_;
 };
 
 }  // namespace signorini

@@ -1,6 +1,8 @@
 #include "signorini/linalg/linear_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "signorini/core/error.hpp"
@@ -33,6 +35,11 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
       return std::make_unique<DenseCholeskySolver>();
   }
   throw InputError("unknown linear solver type");
+}
+
+int LinearSolverOptions::cg_iteration_limit(Index n) const {
+  if (cg_max_iterations > 0) return cg_max_iterations;
+  return static_cast<int>(std::min<Index>(10 * n, std::numeric_limits<int>::max()));
 }
 
 }  // namespace signorini
