@@ -328,6 +328,12 @@ TEST(PrescribedDisplacement, NormalOnACurvedPartGivesLamesSolution) {
       error = std::max(error, (u.segment<2>(2 * v) - u_r * x.head<2>() / r).norm());
     }
     errors.push_back(error / std::abs(d));
+    // The rollers and the outer circle hold the ring: their reactions balance, the nodes at
+    // the ends of the circle (a roller's component and u . n) included.
+    const Resultants res = compute_resultants(model, result.u, result.l);
+    ASSERT_EQ(res.reactions.size(), 3U);
+    EXPECT_LT(res.relative_balance, 1e-10);
+    EXPECT_GT(res.reactions[2].force.norm(), 0.0);
     // At every node of the outer circle u . nu_j is d, exactly (at its ends, where a roller holds
     // one component at 0, the other is what u . nu_j = d asks).
     const BoundaryNodes b = boundary_nodes(model.mesh, model.mesh.boundary_part("outer"), "outer");

@@ -160,9 +160,10 @@ std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const DofMap& dofs,
     for_each_prescribed(
         mesh, displacements[i], i, [&](Index node, int k, double) { take(part, node, k); },
         [&](Index node, const Eigen::Vector2d&, double) {
-          if (!dofs.has_frame(node)) return;  // held otherwise, by an earlier entry
-          take(part, node, 0);
-          take(part, node, 1);
+          // In local axes: both Cartesian components carry the normal reaction. Otherwise the
+          // component this entry held beside a roller (the roller took its own).
+          for (int k = 0; k < 2; ++k)
+            if (dofs.has_frame(node) || dofs.is_clamped(node, k)) take(part, node, k);
         });
     parts.push_back(std::move(part));
   }
