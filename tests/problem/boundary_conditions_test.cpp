@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -162,39 +163,50 @@ TEST(PrescribedDisplacement, ClampsWinAndBadEntriesAreRefused) {
       InputError);
 }
 
-// The stretched block of UniformStretchIsExact turned by 30 degrees and written as a Gmsh 2.2
-// file (nx x ny quadrilaterals, physical lines left, bottom, right, top): every side is inclined.
-std::string turned_block_msh(const testing::TemporaryFolder& dir, double angle, int nx, int ny) {
-  const double c = std::cos(angle), s = std::sin(angle);
+// A structured mesh of ni x nj quadrilaterals as a Gmsh 2.2 file `name` in `dir`: node (i, j) at
+// point(s, t), s = i / ni, t = j / nj; physical lines sides[0] (i = 0), sides[1] (j = 0),
+// sides[2] (i = ni), sides[3] (j = nj), and the surface "body".
+template <class Point2>
+std::string structured_msh(const testing::TemporaryFolder& dir, const std::string& name, int ni,
+                           int nj, const Point2& point, const std::array<const char*, 4>& sides) {
   std::ostringstream out;
-  out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n1 1 \"left\"\n"
-         "1 2 \"bottom\"\n1 3 \"right\"\n1 4 \"top\"\n2 5 \"block\"\n$EndPhysicalNames\n";
-  out << "$Nodes\n" << (nx + 1) * (ny + 1) << "\n";
-  const auto id = [&](int i, int j) { return 1 + i + j * (nx + 1); };
+  out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n";
+  for (int k = 0; k < 4; ++k) out << "1 " << k + 1 << " \"" << sides[k] << "\"\n";
+  out << "2 5 \"body\"\n$EndPhysicalNames\n$Nodes\n" << (ni + 1) * (nj + 1) << "\n";
+  const auto id = [&](int i, int j) { return 1 + i + j * (ni + 1); };
   out.precision(17);
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      const double x = 2.0 * i / nx, y = 1.0 * j / ny;
-      out << id(i, j) << " " << c * x - s * y << " " << s * x + c * y << " 0\n";
+  for (int j = 0; j <= nj; ++j)
+    for (int i = 0; i <= ni; ++i) {
+      const Eigen::Vector2d x = point(1.0 * i / ni, 1.0 * j / nj);
+      out << id(i, j) << " " << x(0) << " " << x(1) << " 0\n";
     }
-  out << "$EndNodes\n$Elements\n" << nx * ny + 2 * (nx + ny) << "\n";
+  out << "$EndNodes\n$Elements\n" << ni * nj + 2 * (ni + nj) << "\n";
   int e = 1;
-  for (int j = 0; j < ny; ++j) {
+  for (int j = 0; j < nj; ++j) {
     out << e++ << " 1 2 1 1 " << id(0, j) << " " << id(0, j + 1) << "\n";
-    out << e++ << " 1 2 3 3 " << id(nx, j) << " " << id(nx, j + 1) << "\n";
+    out << e++ << " 1 2 3 3 " << id(ni, j) << " " << id(ni, j + 1) << "\n";
   }
-  for (int i = 0; i < nx; ++i) {
+  for (int i = 0; i < ni; ++i) {
     out << e++ << " 1 2 2 2 " << id(i, 0) << " " << id(i + 1, 0) << "\n";
-    out << e++ << " 1 2 4 4 " << id(i, ny) << " " << id(i + 1, ny) << "\n";
+    out << e++ << " 1 2 4 4 " << id(i, nj) << " " << id(i + 1, nj) << "\n";
   }
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
+  for (int j = 0; j < nj; ++j)
+    for (int i = 0; i < ni; ++i)
       out << e++ << " 3 2 5 5 " << id(i, j) << " " << id(i + 1, j) << " " << id(i + 1, j + 1) << " "
           << id(i, j + 1) << "\n";
   out << "$EndElements\n";
-  const std::string path = (dir / "turned.msh").string();
+  const std::string path = (dir / name).string();
   std::ofstream(path) << out.str();
   return path;
+}
+
+// The stretched block of UniformStretchIsExact (2 x 1) turned by `angle`: every side inclined.
+std::string turned_block_msh(const testing::TemporaryFolder& dir, double angle, int nx, int ny) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return structured_msh(
+      dir, "turned.msh", nx, ny,
+      [&](double u, double v) { return Eigen::Vector2d(c * 2.0 * u - s * v, s * 2.0 * u + c * v); },
+      {"left", "bottom", "right", "top"});
 }
 
 // The uniform stretch again, turned by 30 degrees: the rollers and the pull are normal
@@ -259,38 +271,15 @@ gap = "1"
   }
 }
 
-// A quarter of a ring 1 <= r <= 2 (Gmsh 2.2, nr x nt quadrilaterals, physical lines inner,
-// outer, axis_x, axis_y), its nodes on the circles.
+// A quarter of a ring 1 <= r <= 2 (nr x nt quadrilaterals, its nodes on the circles; physical
+// lines inner, outer, axis_x, axis_y).
 std::string quarter_ring_msh(const testing::TemporaryFolder& dir, int nr, int nt) {
-  std::ostringstream out;
-  out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n1 1 \"inner\"\n"
-         "1 2 \"outer\"\n1 3 \"axis_x\"\n1 4 \"axis_y\"\n2 5 \"ring\"\n$EndPhysicalNames\n";
-  out << "$Nodes\n" << (nr + 1) * (nt + 1) << "\n";
-  const auto id = [&](int i, int j) { return 1 + i + j * (nr + 1); };
-  out.precision(17);
-  for (int j = 0; j <= nt; ++j)
-    for (int i = 0; i <= nr; ++i) {
-      const double r = 1.0 + 1.0 * i / nr, t = std::numbers::pi / 2.0 * j / nt;
-      out << id(i, j) << " " << r * std::cos(t) << " " << r * std::sin(t) << " 0\n";
-    }
-  out << "$EndNodes\n$Elements\n" << nr * nt + 2 * (nr + nt) << "\n";
-  int e = 1;
-  for (int j = 0; j < nt; ++j) {
-    out << e++ << " 1 2 1 1 " << id(0, j) << " " << id(0, j + 1) << "\n";
-    out << e++ << " 1 2 2 2 " << id(nr, j) << " " << id(nr, j + 1) << "\n";
-  }
-  for (int i = 0; i < nr; ++i) {
-    out << e++ << " 1 2 3 3 " << id(i, 0) << " " << id(i + 1, 0) << "\n";
-    out << e++ << " 1 2 4 4 " << id(i, nt) << " " << id(i + 1, nt) << "\n";
-  }
-  for (int j = 0; j < nt; ++j)
-    for (int i = 0; i < nr; ++i)
-      out << e++ << " 3 2 5 5 " << id(i, j) << " " << id(i + 1, j) << " " << id(i + 1, j + 1) << " "
-          << id(i, j + 1) << "\n";
-  out << "$EndElements\n";
-  const std::string path = (dir / "ring.msh").string();
-  std::ofstream(path) << out.str();
-  return path;
+  return structured_msh(dir, "ring.msh", nr, nt,
+                        [](double u, double v) {
+                          const double r = 1.0 + u, t = std::numbers::pi / 2.0 * v;
+                          return Eigen::Vector2d(r * std::cos(t), r * std::sin(t));
+                        },
+                        {"inner", "axis_x", "outer", "axis_y"});
 }
 
 // On a curved part the normal turns from node to node. A quarter ring 1 <= r <= 2 on rollers
