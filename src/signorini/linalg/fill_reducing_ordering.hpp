@@ -22,8 +22,9 @@ inline constexpr EnumNames<OrderingMethod, 3> kOrderingMethodNames{{
 
 /// A permutation p (new position k holds old unknown p[k]) of the unknowns of the symmetric
 /// matrix A (pattern only, both triangles stored), with the unknowns `last` at the end in the
-/// given order. Auto is AMD: on the paper's meshes up to 1920x640 (2.5 million unknowns) METIS
-/// saves up to 20 % of the flops but no factorisation time, and costs far more to compute.
+/// given order (AMD then is CAMD, which orders the rest knowing that they follow). Auto is AMD: on
+/// the paper's meshes up to 1920x640 (2.5 million unknowns) METIS saves up to 20 % of the flops but
+/// no factorisation time, and costs far more to compute.
 std::vector<Index> fill_reducing_ordering(const SparseMatrix& A, const std::vector<Index>& last,
                                           OrderingMethod method = OrderingMethod::Auto);
 
