@@ -11,8 +11,8 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "app/contact_csv_rows.hpp"
 #include "app/tool_run.hpp"
 
 namespace signorini {
@@ -39,15 +39,9 @@ ContactColumns solve(const testing::TemporaryFolder& dir, const std::string& exa
   EXPECT_TRUE(j["converged"].get<bool>()) << example << " " << name;
   EXPECT_LT(j["kkt"]["equilibrium"].get<double>(), 1e-8) << example << " " << name;
   ContactColumns c;
-  std::ifstream csv(out / "contact.csv");
-  std::string line;
-  std::getline(csv, line);
-  while (std::getline(csv, line)) {
-    std::vector<std::string> field;
-    std::stringstream in(line);
-    for (std::string f; std::getline(in, f, ',');) field.push_back(f);
-    c.u_n.push_back(std::stod(field.at(2)));
-    c.pressure.push_back(std::stod(field.at(4)));
+  for (const testing::ContactCsvRow& row : testing::contact_csv_rows(out / "contact.csv")) {
+    c.u_n.push_back(row.u_n);
+    c.pressure.push_back(row.pressure);
   }
   return c;
 }

@@ -11,8 +11,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
-#include <sstream>
 
+#include "app/contact_csv_rows.hpp"
 #include "app/tool_run.hpp"
 
 namespace signorini {
@@ -58,19 +58,9 @@ HertzErrors solve(const testing::TemporaryFolder& dir, const std::string& mesh,
   const double e_star = E / (1.0 - nu * nu);
   e.a = std::sqrt(4.0 * e.P * R / (pi * e_star));
   const double p0 = 2.0 * e.P / (pi * e.a);
-  std::ifstream csv(out / "contact.csv");
-  std::string line;
-  std::getline(csv, line);  // x,y,u_n,u_t,pressure,gap,n_x,n_y
   double peak = 0.0, lo = 0.0, hi = 0.0;
-  while (std::getline(csv, line)) {
-    std::stringstream s(line);
-    std::string x, y, un, ut, p;
-    std::getline(s, x, ',');
-    std::getline(s, y, ',');
-    std::getline(s, un, ',');
-    std::getline(s, ut, ',');
-    std::getline(s, p, ',');
-    const double xv = std::stod(x), pv = std::stod(p);
+  for (const testing::ContactCsvRow& row : testing::contact_csv_rows(out / "contact.csv")) {
+    const double xv = row.x, pv = row.pressure;
     e.pressure.push_back(pv);
     peak = std::max(peak, pv);
     const double hertz = p0 * std::sqrt(std::max(0.0, 1.0 - xv * xv / (e.a * e.a)));

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "app/contact_csv_rows.hpp"
 #include "app/tool_run.hpp"
 
 namespace signorini {
@@ -36,19 +36,10 @@ Solved solve(const testing::TemporaryFolder& dir, const std::string& method,
   Solved s;
   std::ifstream js(out / "summary.json");
   s.summary = nlohmann::json::parse(js);
-  std::ifstream csv(out / "contact.csv");
-  std::string line;
-  std::getline(csv, line);
-  EXPECT_EQ(line, "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary");
-  while (std::getline(csv, line)) {
-    std::vector<std::string> field;
-    std::stringstream in(line);
-    for (std::string f; std::getline(in, f, ',');) field.push_back(f);
-    EXPECT_EQ(field.size(), 10U) << line;
-    const double p = std::stod(field[4]);
-    s.pressure.push_back(p);
-    s.nodes[field[9]] += 1;
-    s.touching[field[9]] += p > 0.0 ? 1 : 0;
+  for (const testing::ContactCsvRow& row : testing::contact_csv_rows(out / "contact.csv")) {
+    s.pressure.push_back(row.pressure);
+    s.nodes[row.boundary] += 1;
+    s.touching[row.boundary] += row.pressure > 0.0 ? 1 : 0;
   }
   return s;
 }

@@ -78,10 +78,9 @@ class DofMap {
   Vector values_;              // per full dof: the prescribed value; empty while all are 0
   std::vector<int> frame_of_;  // per node: index into frames_, or -1; empty: none
   std::vector<Eigen::Matrix2d> frames_;  // local axes as columns
-  // Full vector in place: each framed node's components from local to Cartesian (Q v), or back
-  // (Q^T v).
-  void to_cartesian(Vector& full) const;
-  void to_local(Vector& full) const;
+  // Full vector in place: each framed node's components from Cartesian to local (Q^T v) or
+  // back (Q v).
+  void rotate_frames(Vector& full, bool to_local) const;
 };
 
 }  // namespace signorini

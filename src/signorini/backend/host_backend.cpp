@@ -179,14 +179,6 @@ void HostBackend::axpbyz(double a, const DeviceVector& x, double b, const Device
   const double* ys = y.data();
   double* zs = z.data();
   const Loop n = z.size();
-  if (n < kParallelFrom) {  // Eigen's expressions, vectorised
-    Eigen::Map<Vector> zm(zs, n);
-    if (b == 0.0)
-      zm = a * Eigen::Map<const Vector>(xs, n);
-    else
-      zm = a * Eigen::Map<const Vector>(xs, n) + b * Eigen::Map<const Vector>(ys, n);
-    return;
-  }
   if (b == 0.0)
     for_each_index(n, [&](Loop i) { zs[i] = a * xs[i]; });
   else

@@ -32,15 +32,13 @@ Eigen::Vector2d DofMap::prescribed_at(Index node) const {
   return has_frame(node) ? Eigen::Vector2d(frame(node) * local) : local;
 }
 
-void DofMap::to_cartesian(Vector& full) const {
-  for (Index node = 0; node < num_nodes_; ++node)
-    if (has_frame(node)) full.segment<2>(node * 2) = frame(node) * full.segment<2>(node * 2);
-}
-
-void DofMap::to_local(Vector& full) const {
-  for (Index node = 0; node < num_nodes_; ++node)
-    if (has_frame(node))
-      full.segment<2>(node * 2) = frame(node).transpose() * full.segment<2>(node * 2);
+void DofMap::rotate_frames(Vector& full, bool to_local) const {
+  for (Index node = 0; node < num_nodes_; ++node) {
+    if (!has_frame(node)) continue;
+    const Eigen::Matrix2d Q = frame(node);
+    auto v = full.segment<2>(node * 2);
+    v = to_local ? Eigen::Vector2d(Q.transpose() * v) : Eigen::Vector2d(Q * v);
+  }
 }
 
 void DofMap::clamp(Index node, int component) {
@@ -58,7 +56,7 @@ void DofMap::prescribe(Index node, int component, double value) {
 Vector DofMap::prescribed_values() const {
   if (values_.size() == 0) return Vector::Zero(num_dofs());
   Vector full = values_;
-  to_cartesian(full);
+  rotate_frames(full, /*to_local=*/false);
   return full;
 }
 
@@ -75,25 +73,21 @@ Vector DofMap::expand(const Vector& free_values) const {
     const Index f = free_[static_cast<std::size_t>(d)];
     if (f >= 0) full(d) = free_values(f);
   }
-  if (has_frames()) to_cartesian(full);
+  if (has_frames()) rotate_frames(full, /*to_local=*/false);
   return full;
 }
 
 Vector DofMap::restrict_to_free(const Vector& full_values) const {
+  Vector local;  // the components along the frames' axes, where a node has one
   if (has_frames()) {
-    Vector local = full_values;
-    to_local(local);
-    Vector out(num_free_);
-    for (Index d = 0; d < num_dofs(); ++d) {
-      const Index f = free_[static_cast<std::size_t>(d)];
-      if (f >= 0) out(f) = local(d);
-    }
-    return out;
+    local = full_values;
+    rotate_frames(local, /*to_local=*/true);
   }
+  const Vector& full = has_frames() ? local : full_values;
   Vector out(num_free_);
   for (Index d = 0; d < num_dofs(); ++d) {
     const Index f = free_[static_cast<std::size_t>(d)];
-    if (f >= 0) out(f) = full_values(d);
+    if (f >= 0) out(f) = full(d);
   }
   return out;
 }

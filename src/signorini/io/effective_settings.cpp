@@ -11,11 +11,16 @@ namespace signorini {
 
 namespace {
 
+// A section's keys and values (region_values(), contact_values(), ...), in their order.
+void emit_values(TomlEmitter& out, const std::vector<std::pair<std::string, OptionValue>>& values) {
+  for (const auto& [key, value] : values) out.value(key, value);
+}
+
 // Every option of `table` that lives in the struct, in the table's order (Custom ones are the
 // caller's).
 template <class S>
 void emit_options(TomlEmitter& out, const OptionTable<S>& table, const S& s) {
-  for (const auto& [key, value] : table.values(s)) out.value(key, value);
+  emit_values(out, table.values(s));
 }
 
 }  // namespace
@@ -30,7 +35,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   emit_options(out, material_options(), spec);
   for (const RegionMaterialSpec& m : spec.region_materials) {
     out.array_table("region");
-    for (const auto& [key, value] : region_values(m)) out.value(key, value);
+    emit_values(out, region_values(m));
   }
   out.table("fem");
   emit_options(out, fem_options(), spec);
@@ -44,7 +49,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   }
   for (const DisplacementSpec& d : spec.displacements) {
     out.array_table("displacement");
-    for (const auto& [key, value] : displacement_values(d)) out.value(key, value);
+    emit_values(out, displacement_values(d));
   }
   for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
     out.array_table("traction");
@@ -58,8 +63,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   }
   for (const PressureSpec& p : spec.pressures) {
     out.array_table("pressure");
-    out.value("boundary", p.boundary);
-    out.value("p", p.text);
+    emit_values(out, pressure_values(p));
   }
   for (const PointLoadSpec& pl : spec.point_loads) {
     out.array_table("point_load");
@@ -77,7 +81,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
       out.table("contact");
     else
       out.array_table("contact");
-    for (const auto& [key, value] : contact_values(c, c.description)) out.value(key, value);
+    emit_values(out, contact_values(c, c.description));
   }
   out.table("solver");
   emit_options(out, contact_solver_option_table(), spec.solver);

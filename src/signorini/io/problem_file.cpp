@@ -42,6 +42,23 @@ T required(const Reader& r, std::optional<T> value, const std::string& key,
   return *value;
 }
 
+// The required `boundary` of a section at `path` ("clamp[0]", "contact").
+std::string boundary_of(const Reader& r, const toml::table& t, const std::string& path) {
+  return required(r, r.string(t, path, "boundary"), join(path, "boundary"),
+                  "name of a boundary part");
+}
+
+// The required pair of numbers `key` of the section at `path` ([x, y], [fx, fy], ...); `what`
+// says what it is, for the message when it is missing.
+Eigen::Vector2d required_pair(const Reader& r, const toml::table& t, const std::string& path,
+                              std::string_view key, const char* what) {
+  const std::string full = join(path, key);
+  const toml::node* n = t.get(key);
+  if (n == nullptr) r.missing(full, what);
+  const std::vector<double> xy = r.numbers(*n, full, 2, "x and y");
+  return {xy[0], xy[1]};
+}
+
 std::string as_text(double x) {
   return toml_float(x);
 }
@@ -154,8 +171,7 @@ void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     const std::string path = element("clamp", i);
     r.check_keys(t, path);
     ClampSpec c;
-    c.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
-                          "name of a boundary part");
+    c.boundary = boundary_of(r, t, path);
     if (const toml::node* n = t.get("components")) {
       const std::string key = join(path, "components");
       const auto* a = n->as_array();
@@ -226,6 +242,12 @@ auto with_file(const Reader& r, Make make) {
   }
 }
 
+// The formula `text` of `key` as a field that refuses non-finite values, naming the key, the
+// formula and the point; a formula that does not parse is refused now, naming the file.
+ScalarField scalar_formula(const Reader& r, const std::string& key, const std::string& text) {
+  return finite_scalar_field(with_file(r, [&] { return make_scalar_field(text, key); }), key, text);
+}
+
 // A formula with a comparison or a ternary switches value between Gauss points, which sample
 // it: a load on part of an edge comes out wrong by up to a whole facet's share.
 bool looks_discontinuous(const std::string& formula) {
@@ -255,8 +277,7 @@ void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
     const std::string path = element("traction", i);
     r.check_keys(t, path);
     TractionSpec tr;
-    tr.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
-                           "name of a boundary part");
+    tr.boundary = boundary_of(r, t, path);
     const auto p = required(r, r.expressions(t, path, "p", 2), join(path, "p"),
                             "2 expressions of x, y: the traction (force per area)");
     tr.p = finite_vector_field(with_file(r, [&] { return make_vector_field(p, join(path, "p")); }),
@@ -284,15 +305,12 @@ void read_displacements(const Reader& r, const toml::table& root, ProblemSpec& s
     const std::string path = element("displacement", i);
     r.check_keys(t, path);
     DisplacementSpec d;
-    d.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
-                          "name of a boundary part");
+    d.boundary = boundary_of(r, t, path);
     const auto field = [&](std::string_view key, std::string& text) -> ScalarField {
       const std::optional<std::string> e = r.expression(t, path, key);
       if (!e) return {};
       text = *e;
-      const std::string full = join(path, key);
-      return finite_scalar_field(with_file(r, [&] { return make_scalar_field(text, full); }), full,
-                                 text);
+      return scalar_formula(r, join(path, key), text);
     };
     d.normal = field("normal", d.normal_text);
     d.values[0] = field("x", d.texts[0]);
@@ -318,13 +336,11 @@ void read_pressures(const Reader& r, const toml::table& root, ProblemSpec& spec)
     const std::string path = element("pressure", i);
     r.check_keys(t, path);
     PressureSpec p;
-    p.boundary = required(r, r.string(t, path, "boundary"), join(path, "boundary"),
-                          "name of a boundary part");
+    p.boundary = boundary_of(r, t, path);
     const std::string key = join(path, "p");
     p.text = required(r, r.expression(t, path, "p"), key,
                       "a number or an expression of x, y: the pressure (force per area)");
-    p.p = finite_scalar_field(with_file(r, [&] { return make_scalar_field(p.text, key); }), key,
-                              p.text);
+    p.p = scalar_formula(r, key, p.text);
     spec.pressures.push_back(std::move(p));
   }
 }
@@ -337,15 +353,10 @@ void read_point_loads(const Reader& r, const toml::table& root, ProblemSpec& spe
     const std::string path = element("point_load", i);
     r.check_keys(t, path);
     PointLoadSpec pl;
-    const auto pair = [&](std::string_view key, const char* what) {
-      const std::string full = join(path, key);
-      const toml::node* n = t.get(key);
-      if (n == nullptr) r.missing(full, what);
-      const std::vector<double> xy = r.numbers(*n, full, 2, "x and y");
-      return Eigen::Vector3d(xy[0], xy[1], 0.0);
-    };
-    pl.at = pair("at", "[x, y]: the point; the load acts at the nearest node");
-    pl.force = pair("force", "[fx, fy]: the force (per unit thickness in 2D)");
+    pl.at.head<2>() =
+        required_pair(r, t, path, "at", "[x, y]: the point; the load acts at the nearest node");
+    pl.force.head<2>() =
+        required_pair(r, t, path, "force", "[fx, fy]: the force (per unit thickness in 2D)");
     pl.boundary = r.string(t, path, "boundary").value_or("");
     spec.point_loads.push_back(std::move(pl));
   }
@@ -368,8 +379,7 @@ void read_body_force(const Reader& r, const toml::table& root, ProblemSpec& spec
 ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std::string& path) {
   r.check_keys(*t, path);
   ContactSpec contact;
-  contact.boundary = required(r, r.string(*t, path, "boundary"), join(path, "boundary"),
-                              "name of a boundary part");
+  contact.boundary = boundary_of(r, *t, path);
   RigidObstacle& o = contact.obstacle;
   const std::string shape = r.string(*t, path, "obstacle").value_or("gap");
   const auto parsed = enum_from_string(kObstacleShapeNames, shape);
@@ -393,10 +403,7 @@ ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std:
                       "obstacle is \"" +
                       shape + "\"");
   const auto pair = [&](const char* key, const char* what) {
-    const toml::node* n = t->get(key);
-    if (n == nullptr) r.missing(join(path, key), what);
-    const std::vector<double> xy = r.numbers(*n, join(path, key), 2, "x and y");
-    return Eigen::Vector2d(xy[0], xy[1]);
+    return required_pair(r, *t, path, key, what);
   };
   if (o.shape == ObstacleShape::Plane) {
     o.point = pair("point", "[x, y]: a point of the plane");
@@ -420,8 +427,7 @@ ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std:
   }
   const std::string gap = r.expression(*t, path, "gap").value_or("0");
   const std::string key = join(path, "gap");
-  contact.gap =
-      finite_scalar_field(with_file(r, [&] { return make_scalar_field(gap, key); }), key, gap);
+  contact.gap = scalar_formula(r, key, gap);
   contact.description = gap;
   return contact;
 }

@@ -367,6 +367,10 @@ std::vector<std::pair<std::string, OptionValue>> displacement_values(
   return out;
 }
 
+std::vector<std::pair<std::string, OptionValue>> pressure_values(const PressureSpec& pressure) {
+  return {{"boundary", pressure.boundary}, {"p", pressure.text}};
+}
+
 std::vector<std::pair<std::string, OptionValue>> region_values(const RegionMaterialSpec& region) {
   return {{"name", region.region}, {"E", region.material.E}, {"nu", region.material.nu}};
 }

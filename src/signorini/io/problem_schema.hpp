@@ -42,6 +42,9 @@ namespace signorini {
 /// given (x, y), as texts.
 [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> displacement_values(
     const DisplacementSpec& displacement);
+/// The keys and values of one [[pressure]]: the boundary and p (its text).
+[[nodiscard]] std::vector<std::pair<std::string, OptionValue>> pressure_values(
+    const PressureSpec& pressure);
 /// The keys and values of one [[region]]: name, E, nu.
 [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> region_values(
     const RegionMaterialSpec& region);

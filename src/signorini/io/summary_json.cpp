@@ -68,18 +68,17 @@ nlohmann::json option_json(const OptionValue& value) {
   return "auto";  // a NumberOrAuto without a number
 }
 
-// {key: value} for every option of `table` that lives in the struct.
-nlohmann::json displacement_json(const DisplacementSpec& d) {
+// A section's keys and values (region_values(), contact_values(), ...) as a JSON object.
+nlohmann::json values_json(const std::vector<std::pair<std::string, OptionValue>>& values) {
   nlohmann::json entry = nlohmann::json::object();
-  for (const auto& [key, value] : displacement_values(d)) entry[key] = option_json(value);
+  for (const auto& [key, value] : values) entry[key] = option_json(value);
   return entry;
 }
 
+// {key: value} for every option of `table` that lives in the struct.
 template <class S>
 nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
-  nlohmann::json out = nlohmann::json::object();
-  for (const auto& [key, value] : table.values(s)) out[key] = option_json(value);
-  return out;
+  return values_json(table.values(s));
 }
 
 }  // namespace
@@ -178,11 +177,8 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   problem["material"] = options_json(material_options(), spec);
   if (!spec.region_materials.empty()) {
     problem["region"] = json::array();
-    for (const RegionMaterialSpec& m : spec.region_materials) {
-      json entry = json::object();
-      for (const auto& [key, value] : region_values(m)) entry[key] = option_json(value);
-      problem["region"].push_back(entry);
-    }
+    for (const RegionMaterialSpec& m : spec.region_materials)
+      problem["region"].push_back(values_json(region_values(m)));
   }
   problem["fem"] = options_json(fem_options(), spec);
   json clamps = json::array();
@@ -196,7 +192,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   if (!spec.displacements.empty()) {
     problem["displacement"] = json::array();
     for (const DisplacementSpec& d : spec.displacements)
-      problem["displacement"].push_back(displacement_json(d));
+      problem["displacement"].push_back(values_json(displacement_values(d)));
   }
   json tractions = json::array();
   for (const TractionSpec& t : spec.tractions) {
@@ -209,17 +205,13 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   if (!spec.pressures.empty()) {
     problem["pressure"] = json::array();
     for (const PressureSpec& p : spec.pressures)
-      problem["pressure"].push_back({{"boundary", p.boundary}, {"p", p.text}});
+      problem["pressure"].push_back(values_json(pressure_values(p)));
   }
   if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
   // One contact boundary as the object of [contact], several as the array of [[contact]].
   json contacts = json::array();
-  for (const ContactSpec& c : spec.contacts) {
-    json entry = json::object();
-    for (const auto& [key, value] : contact_values(c, c.description))
-      entry[key] = option_json(value);
-    contacts.push_back(entry);
-  }
+  for (const ContactSpec& c : spec.contacts)
+    contacts.push_back(values_json(contact_values(c, c.description)));
   problem["contact"] = contacts.size() == 1 ? contacts[0] : contacts;
   problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
   problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);

@@ -7,13 +7,13 @@ namespace signorini {
 void CgSolver::factorize(const SparseMatrix& H) {
   ScopedTimer timer(timings_, "linear factorization");  // here: Jacobi preconditioner setup
   const Index n = H.rows();
-  // The members that refer to the operator go first.
-  pcg_.reset();
+  // The preconditioner refers to the operator: it goes first. The iteration's work vectors and b
+  // and x stay from one Newton matrix to the next of the same size.
   jacobi_.reset();
   operator_ = std::make_unique<PenalizedOperator>(backend_, H, SparseMatrix(0, n));
   jacobi_ = std::make_unique<JacobiPreconditioner>(*operator_);
-  pcg_ = std::make_unique<Pcg>(backend_, n);
-  if (b_.size() != n) {
+  if (!pcg_ || b_.size() != n) {
+    pcg_ = std::make_unique<Pcg>(backend_, n);
     b_ = DeviceVector(backend_, n);
     x_ = DeviceVector(backend_, n);
   }

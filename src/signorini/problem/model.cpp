@@ -47,35 +47,36 @@ void for_each_prescribed(const Mesh& mesh, const DisplacementSpec& d, std::size_
         hold(node, k, d.values[static_cast<std::size_t>(k)](mesh.point(node)));
 }
 
-}  // namespace
-
-DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
-                    const std::vector<DisplacementSpec>& displacements) {
+// The dof numbering, and for each full dof the entry that holds it (-1: free): clamp c as c,
+// displacement entry i as clamps.size() + i. Clamps come first and win; among the displacements
+// the first entry wins. A node held along its normal in local axes belongs to that entry with
+// both of its Cartesian dofs (its reaction is along the normal, in x and y).
+DofMap number_dofs(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
+                   const std::vector<DisplacementSpec>& displacements, std::vector<int>& owner) {
   DofMap dofs(mesh.num_nodes(), mesh.dim());
-  for (const ClampSpec& c : clamps) {
-    const auto nodes = mesh.boundary_part_nodes(c.boundary);  // throws on unknown names
+  owner.assign(static_cast<std::size_t>(dofs.num_dofs()), -1);
+  const auto owner_of = [&](Index node, int k) -> int& {
+    return owner[static_cast<std::size_t>(node * mesh.dim() + k)];
+  };
+  for (std::size_t c = 0; c < clamps.size(); ++c) {
+    const auto nodes = mesh.boundary_part_nodes(clamps[c].boundary);  // throws on unknown names
     for (const Index node : nodes)
-      for (int k = 0; k < mesh.dim(); ++k)
-        if (c.components[static_cast<std::size_t>(k)]) dofs.clamp(node, k);
+      for (int k = 0; k < mesh.dim(); ++k) {
+        if (!clamps[c].components[static_cast<std::size_t>(k)]) continue;
+        dofs.clamp(node, k);
+        if (owner_of(node, k) < 0) owner_of(node, k) = static_cast<int>(c);
+      }
   }
-  // After the clamps, which win; among the displacements the first entry wins.
-  std::vector<bool> held(static_cast<std::size_t>(dofs.num_dofs()), false);
-  for (Index node = 0; node < mesh.num_nodes(); ++node)
-    for (int k = 0; k < mesh.dim(); ++k)
-      held[static_cast<std::size_t>(node * mesh.dim() + k)] = dofs.is_clamped(node, k);
-  for (std::size_t i = 0; i < displacements.size(); ++i)
+  for (std::size_t i = 0; i < displacements.size(); ++i) {
+    const int entry = static_cast<int>(clamps.size() + i);
     for_each_prescribed(
         mesh, displacements[i], i,
         [&](Index node, int k, double value) {
-          auto&& h = held[static_cast<std::size_t>(node * mesh.dim() + k)];
-          if (h || dofs.has_frame(node)) return;
-          h = true;
+          if (owner_of(node, k) >= 0) return;
+          owner_of(node, k) = entry;
           dofs.prescribe(node, k, value);
         },
         [&](Index node, const Eigen::Vector2d& n, double value) {
-          // u . n alone on an inclined or curved part: the node's axes become (n, t), its first
-          // component is held. A node with a component held already keeps its axes (below).
-          const auto dof = static_cast<std::size_t>(node * mesh.dim());
           if (dofs.has_frame(node)) {
             // A corner of two parts held along their normals: u . n1 = v1 and u . n = value fix
             // u; its component along the node's second axis is held too. (Nearly) parallel
@@ -90,24 +91,50 @@ DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
             dofs.prescribe(node, 1, Q.col(1).dot(u));
             return;
           }
-          if (held[dof] && held[dof + 1]) return;
-          if (held[dof] || held[dof + 1]) {
+          const bool held_x = owner_of(node, 0) >= 0, held_y = owner_of(node, 1) >= 0;
+          if (held_x && held_y) return;
+          if (held_x || held_y) {
             // One component held (a roller where the part meets a symmetry line): it keeps its
             // value c, and u . n = value gives the other, (value - n_k c) / n_other.
-            const int k = held[dof] ? 0 : 1, other = 1 - k;
+            const int k = held_x ? 0 : 1, other = 1 - k;
             if (std::abs(n(other)) < 1e-6) return;  // the normal is along the held axis
-            held[dof + static_cast<std::size_t>(other)] = true;
+            owner_of(node, other) = entry;
             dofs.prescribe(node, other, (value - n(k) * dofs.value(node, k)) / n(other));
             return;
           }
-          held[dof] = held[dof + 1] = true;
+          // u . n alone on an inclined or curved part: the node's axes become (n, t), its first
+          // component is held.
+          owner_of(node, 0) = owner_of(node, 1) = entry;
           Eigen::Matrix2d Q;
           Q << n(0), -n(1), n(1), n(0);  // columns: the normal, the tangent n turned a quarter
           dofs.set_frame(node, Q);
           dofs.prescribe(node, 0, value);
         });
+  }
   dofs.finalize();
   return dofs;
+}
+
+// The dofs of each [[clamp]], then of each [[displacement]] entry, from number_dofs's owners:
+// each dof counts for the entry that holds it, so that the reactions add up to the total.
+std::vector<ClampedPart> clamped_parts(const std::vector<ClampSpec>& clamps,
+                                       const std::vector<DisplacementSpec>& displacements,
+                                       const std::vector<int>& owner) {
+  std::vector<ClampedPart> parts;
+  for (const ClampSpec& c : clamps) parts.push_back({c.boundary, {}});
+  for (const DisplacementSpec& d : displacements) parts.push_back({d.boundary, {}});
+  for (std::size_t dof = 0; dof < owner.size(); ++dof)
+    if (owner[dof] >= 0)
+      parts[static_cast<std::size_t>(owner[dof])].dofs.push_back(static_cast<Index>(dof));
+  return parts;
+}
+
+}  // namespace
+
+DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
+                    const std::vector<DisplacementSpec>& displacements) {
+  std::vector<int> owner;
+  return number_dofs(mesh, clamps, displacements, owner);
 }
 
 void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs) {
@@ -135,58 +162,21 @@ void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs) {
 
 namespace {
 
-std::vector<ClampedPart> clamped_parts(const Mesh& mesh, const DofMap& dofs,
-                                       const std::vector<ClampSpec>& clamps,
-                                       const std::vector<DisplacementSpec>& displacements) {
-  std::vector<ClampedPart> parts;
-  std::vector<bool> taken(static_cast<std::size_t>(mesh.num_nodes() * mesh.dim()), false);
-  const auto take = [&](ClampedPart& part, Index node, int k) {
-    const Index dof = node * mesh.dim() + k;
-    if (taken[static_cast<std::size_t>(dof)]) return;
-    taken[static_cast<std::size_t>(dof)] = true;
-    part.dofs.push_back(dof);
-  };
-  for (const ClampSpec& c : clamps) {
-    ClampedPart part{c.boundary, {}};
-    for (const Index node : mesh.boundary_part_nodes(c.boundary))
-      for (int k = 0; k < mesh.dim(); ++k)
-        if (c.components[static_cast<std::size_t>(k)]) take(part, node, k);
-    parts.push_back(std::move(part));
-  }
-  for (std::size_t i = 0; i < displacements.size(); ++i) {
-    ClampedPart part{displacements[i].boundary, {}};
-    // The reaction of a node held along its normal is all of its force (the tangential part is
-    // zero at the solution).
-    for_each_prescribed(
-        mesh, displacements[i], i, [&](Index node, int k, double) { take(part, node, k); },
-        [&](Index node, const Eigen::Vector2d&, double) {
-          // In local axes: both Cartesian components carry the normal reaction. Otherwise the
-          // component this entry held beside a roller (the roller took its own).
-          for (int k = 0; k < 2; ++k)
-            if (dofs.has_frame(node) || dofs.is_clamped(node, k)) take(part, node, k);
-        });
-    parts.push_back(std::move(part));
-  }
-  return parts;
-}
-
 // Each part is either loaded (Gamma_N) or in possible contact (Gamma_K), not both (method.md
 // section 1): a load there would act where the foundation pushes, unaccounted.
 void require_loads_off_contact(const ProblemSpec& spec) {
-  for (const ContactSpec& c : spec.contacts) {
-    for (std::size_t i = 0; i < spec.tractions.size(); ++i)
-      if (spec.tractions[i].boundary == c.boundary)
+  const auto check = [&](const char* section, std::size_t i, const std::string& boundary) {
+    for (const ContactSpec& c : spec.contacts)
+      if (boundary == c.boundary)
         throw InputError(fmt::format(
-            "traction[{}].boundary = '{}' is a contact boundary (contact.boundary): a boundary "
-            "part is either loaded or in contact with the foundation; load another part",
-            i, c.boundary));
-    for (std::size_t i = 0; i < spec.pressures.size(); ++i)
-      if (spec.pressures[i].boundary == c.boundary)
-        throw InputError(fmt::format(
-            "pressure[{}].boundary = '{}' is a contact boundary (contact.boundary): a boundary "
-            "part is either loaded or in contact with the foundation; load another part",
-            i, c.boundary));
-  }
+            "{}[{}].boundary = '{}' is a contact boundary (contact.boundary): a boundary part is "
+            "either loaded or in contact with the foundation; load another part",
+            section, i, boundary));
+  };
+  for (std::size_t i = 0; i < spec.tractions.size(); ++i)
+    check("traction", i, spec.tractions[i].boundary);
+  for (std::size_t i = 0; i < spec.pressures.size(); ++i)
+    check("pressure", i, spec.pressures[i].boundary);
 }
 
 }  // namespace
@@ -220,7 +210,8 @@ Model build_model(const ProblemSpec& spec) {
     if (elasticity.region_materials.size() <= r) elasticity.region_materials.resize(r + 1);
     elasticity.region_materials[r] = m.material;
   }
-  DofMap dofs = make_dof_map(mesh, spec.clamps, spec.displacements);
+  std::vector<int> owner;
+  DofMap dofs = number_dofs(mesh, spec.clamps, spec.displacements, owner);
   mesh_timer.stop();
   if (dofs.num_free() == 0) throw InputError("every dof is clamped: nothing to solve");
   require_no_free_rigid_motion(mesh, dofs);
@@ -293,7 +284,7 @@ Model build_model(const ProblemSpec& spec) {
     ScopedTimer t(timings, "multigrid hierarchy");
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
-  std::vector<ClampedPart> clamps = clamped_parts(mesh, dofs, spec.clamps, spec.displacements);
+  std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, owner);
   return Model{std::move(mesh),          std::move(dofs),
                std::move(problem),       std::move(multigrid),
                std::move(timings),       elasticity,
