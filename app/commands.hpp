@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "plotting.hpp"
+
 namespace signorini::app {
 
 /// Exit statuses, documented in `signorini --help` and docs/problem-format.md.
@@ -23,12 +25,12 @@ struct SolveArguments {
   bool quiet = false;
   std::string log_format = "text";  ///< "text" or "json" (one JSON object per line)
   bool plot = false;                ///< also draw the figures (as `signorini plot`)
-  double plot_scale = 0.0;          ///< magnification of the deformed body; 0: automatic
+  PlotOptions plot_options;         ///< --scale, --plot-format
 };
 
 struct PlotArguments {
   std::string output_dir;
-  double scale = 0.0;  ///< magnification of the deformed body; 0: automatic
+  PlotOptions options;  ///< --scale, --format
 };
 
 struct CheckArguments {

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -35,6 +36,17 @@ int fail(int status, const std::string& message) {
   fmt::print(stderr, "signorini: error: {}\n", line);
   return status;
 }
+
+// CLI::PositiveNumber's message spells out the largest double; this one says what is expected.
+const CLI::Validator kPositive(
+    [](const std::string& text) {
+      double value = 0.0;
+      const bool number = CLI::detail::lexical_cast(text, value);
+      return number && std::isfinite(value) && value > 0.0
+                 ? std::string()
+                 : fmt::format("'{}': expected a positive number", text);
+    },
+    "POSITIVE");
 
 }  // namespace
 
@@ -76,9 +88,15 @@ int main(int argc, char** argv) {
   CLI::Option* plot_flag = solve_cmd->add_flag(
       "--plot", solve.plot, "Also draw the figures into the output folder (as signorini plot)");
   solve_cmd
-      ->add_option("--scale", solve.plot_scale,
+      ->add_option("--scale", solve.plot_options.scale,
                    "With --plot: magnification of the deformed body (default: automatic)")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
+      ->needs(plot_flag);
+  solve_cmd
+      ->add_option("--plot-format", solve.plot_options.formats,
+                   "With --plot: the formats of the figures, png, svg or pdf, or several "
+                   "separated by commas (default: png)")
+      ->type_name("LIST")
       ->needs(plot_flag);
 
   CheckArguments check;
@@ -91,11 +109,17 @@ int main(int argc, char** argv) {
 
   PlotArguments plot;
   CLI::App* plot_cmd = app.add_subcommand(
-      "plot", "Draw the figures of a solve's output folder as PNG and SVG (needs matplotlib)");
+      "plot", "Draw the figures of a solve's output folder as PNG, SVG or PDF (needs matplotlib)");
   plot_cmd->add_option("OUTDIR", plot.output_dir, "Output folder of signorini solve")->required();
   plot_cmd
-      ->add_option("--scale", plot.scale, "Magnification of the deformed body (default: automatic)")
-      ->check(CLI::PositiveNumber);
+      ->add_option("--scale", plot.options.scale,
+                   "Magnification of the deformed body (default: automatic)")
+      ->check(kPositive);
+  plot_cmd
+      ->add_option("--format", plot.options.formats,
+                   "The formats of the figures: png, svg or pdf, or several separated by commas "
+                   "(default: png)")
+      ->type_name("LIST");
 
   BenchArguments bench;
   CLI::App* bench_cmd = app.add_subcommand(
@@ -103,7 +127,7 @@ int main(int argc, char** argv) {
       "Time the paper's benchmark: by default Table 1 beside the paper's (seconds); more meshes "
       "and solver configurations on request (docs/performance.md)");
   bench_cmd->add_option("--repeats,--repeat", bench.repeats, "Best of N runs (default 3)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   bench_cmd->add_flag("--full", bench.full,
                       "The whole suite: meshes up to 1920x640, semismooth Newton, the paper's CG "
                       "configuration and the plain sparse path (minutes)");

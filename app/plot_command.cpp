@@ -1,5 +1,5 @@
-// `signorini plot OUTDIR`: the paper's figures from the results of a solve, as PNG and SVG
-// (tools/plot_results.py, docs/output.md).
+// `signorini plot OUTDIR`: the paper's figures from the results of a solve, as PNG (SVG, PDF on
+// request) (tools/plot_results.py, docs/output.md).
 
 #include <fmt/format.h>
 
@@ -9,11 +9,10 @@
 namespace signorini::app {
 
 int run_plot(const PlotArguments& args) {
-  const PlotRun run = plot_results(
-      args.output_dir, args.scale > 0.0 ? std::optional<double>(args.scale) : std::nullopt, false);
+  const PlotRun run = plot_results(args.output_dir, args.options, false);
   if (run.status == 0) {
     std::string files;
-    for (const std::string& f : figure_files())
+    for (const std::string& f : figure_files(args.options.formats))
       files += (files.empty() ? "" : ", ") + args.output_dir + "/" + f;
     fmt::print("figures: {}\n", files);
     return kSuccess;

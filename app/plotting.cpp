@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -39,11 +41,23 @@ std::string find_script() {
 
 }  // namespace
 
-std::vector<std::string> figure_files() {
+std::vector<std::string> figure_files(const std::string& formats) {
+  // As the script reads --format: lower case, spaces ignored, each format once.
+  std::vector<std::string> chosen;
+  std::size_t start = 0;
+  while (start <= formats.size()) {
+    const std::size_t end = std::min(formats.find(',', start), formats.size());
+    std::string format;
+    for (const char c : formats.substr(start, end - start))
+      if (!std::isspace(static_cast<unsigned char>(c)))
+        format += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (std::find(chosen.begin(), chosen.end(), format) == chosen.end()) chosen.push_back(format);
+    start = end + 1;
+  }
   std::vector<std::string> files;
   for (const char* name :
        {"contact_displacement", "contact_pressure", "deformed_von_mises", "convergence"})
-    for (const char* format : {"png", "svg"}) files.push_back(fmt::format("{}.{}", name, format));
+    for (const std::string& format : chosen) files.push_back(fmt::format("{}.{}", name, format));
   return files;
 }
 
@@ -91,19 +105,19 @@ PlotRun run_plot_script(const std::vector<std::string>& arguments, bool capture)
   return run;
 }
 
-PlotRun plot_results(const std::string& outdir, std::optional<double> scale, bool capture) {
-  std::vector<std::string> arguments = {"--quiet"};
-  if (scale) {
+PlotRun plot_results(const std::string& outdir, const PlotOptions& options, bool capture) {
+  std::vector<std::string> arguments = {"--quiet", "--format", options.formats};
+  if (options.scale) {
     arguments.emplace_back("--scale");
-    arguments.push_back(fmt::format("{:.17g}", *scale));
+    arguments.push_back(fmt::format("{:.17g}", *options.scale));
   }
   arguments.emplace_back("--");  // a folder named "-x" is not an option
   arguments.push_back(outdir);
   return run_plot_script(arguments, capture);
 }
 
-PlotRun check_plotting() {
-  return run_plot_script({"--check"}, true);
+PlotRun check_plotting(const std::string& formats) {
+  return run_plot_script({"--check", "--format", formats}, true);
 }
 
 int exit_status_of(const PlotRun& run) {

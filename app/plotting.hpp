@@ -10,8 +10,16 @@
 
 namespace signorini::app {
 
-/// The files the script writes into the output folder, in the order of docs/output.md.
-std::vector<std::string> figure_files();
+/// What to draw, as `signorini plot` and `solve --plot` take it.
+struct PlotOptions {
+  std::optional<double> scale;  ///< magnification of the deformed body; empty: automatic
+  /// The formats, separated by commas: png, svg, pdf (the script checks them).
+  std::string formats = "png";
+};
+
+/// The files the script writes into the output folder for `formats` (as PlotOptions::formats),
+/// in the order of docs/output.md.
+std::vector<std::string> figure_files(const std::string& formats);
 
 /// How the script ended: its exit status (0 done, 2 a missing package or an unusable folder,
 /// which it reports on stderr in one line, 1 a failure of the script) and, when captured, what it
@@ -27,13 +35,12 @@ struct PlotRun {
 /// or no script.
 PlotRun run_plot_script(const std::vector<std::string>& arguments, bool capture);
 
-/// Draws the figures of `outdir`; `scale` is the magnification of the deformed body (automatic if
-/// empty).
-PlotRun plot_results(const std::string& outdir, std::optional<double> scale, bool capture);
+/// Draws the figures of `outdir`.
+PlotRun plot_results(const std::string& outdir, const PlotOptions& options, bool capture);
 
-/// Whether the script can run (numpy and matplotlib import): the script with --check, its stderr
-/// captured.
-PlotRun check_plotting();
+/// Whether the script can run (numpy and matplotlib are there) and knows `formats`: the script
+/// with --check, its stderr captured.
+PlotRun check_plotting(const std::string& formats);
 
 /// Our exit status for a run of the script: kSuccess, kBadInput or kInternalError.
 int exit_status_of(const PlotRun& run);

@@ -71,7 +71,7 @@ int solve(const SolveArguments& args, LogFormat format) {
   // Before the solve, so that a missing matplotlib fails in a second and not after a long run.
   if (args.plot) {
     progress.phase("checking the plotting tools");
-    const PlotRun run = check_plotting();
+    const PlotRun run = check_plotting(args.plot_options.formats);
     if (run.status != 0) return failed_plot(progress, run);
   }
 
@@ -126,12 +126,11 @@ int solve(const SolveArguments& args, LogFormat format) {
 
   if (args.plot) {
     progress.phase("plotting");
-    const std::optional<double> scale =
-        args.plot_scale > 0.0 ? std::optional<double>(args.plot_scale) : std::nullopt;
-    const PlotRun run = plot_results(args.output_dir, scale, true);
+    const PlotRun run = plot_results(args.output_dir, args.plot_options, true);
     if (run.status != 0) return failed_plot(progress, run);
-    progress.report(fmt::format("figures: {}\n", listed(args.output_dir, figure_files())),
-                    {{"event", "figures"}, {"files", paths(args.output_dir, figure_files())}});
+    const std::vector<std::string> figures = figure_files(args.plot_options.formats);
+    progress.report(fmt::format("figures: {}\n", listed(args.output_dir, figures)),
+                    {{"event", "figures"}, {"files", paths(args.output_dir, figures)}});
   }
   return summary.converged() ? kSuccess : kNotConverged;
 }

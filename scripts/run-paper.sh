@@ -8,5 +8,5 @@ cd "$(dirname "$0")/.."
 outdir="${1:-results/paper}"
 shift || true
 bash scripts/build.sh release
-build/release/app/signorini solve examples/paper.toml -o "$outdir" --plot "$@"
+build/release/app/signorini solve examples/paper.toml -o "$outdir" --plot --plot-format png,svg "$@"
 echo "results written to $outdir (summary.json, contact.csv, solution.vtu, contact.vtu and the figures)"

@@ -15,11 +15,16 @@ run_step("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${pr
 foreach(installed include/signorini/signorini.hpp include/signorini/config.hpp
                   lib/cmake/signorini/signoriniConfig.cmake
                   lib/cmake/signorini/signoriniConfigVersion.cmake bin/signorini
-                  share/signorini/plot_results.py)
+                  share/signorini/plot_results.py share/signorini/signorini_figures.py)
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "not installed: ${installed}")
   endif()
 endforeach()
+# The plotting module compiled where it was installed (a second run of Python need not compile it).
+file(GLOB compiled ${prefix}/share/signorini/__pycache__/signorini_figures.*.pyc)
+if(NOT compiled)
+  message(FATAL_ERROR "share/signorini/signorini_figures.py was installed but not compiled")
+endif()
 # Private headers stay private.
 foreach(private contact/contact_methods.hpp linalg/detail/cholmod_matrix.hpp)
   if(EXISTS ${prefix}/include/signorini/${private})

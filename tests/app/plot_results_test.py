@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Unit tests of the pure functions of tools/plot_results.py (the figures themselves are tested
-through the tool, in plot_test.cpp).
+"""Unit tests of the pure functions of the plotting script (tools/plot_results.py, the command, and
+tools/signorini_figures.py, its module; the figures themselves are tested through the tool, in
+plot_test.cpp).
 
     /usr/bin/python3 tests/app/plot_results_test.py        # exit status 0: all passed
 
@@ -13,9 +14,10 @@ import sys
 import tempfile
 import unittest
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools",
-                      "plot_results.py")
-spec = importlib.util.spec_from_file_location("plot_results", SCRIPT)
+TOOLS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools")
+SCRIPT = os.path.join(TOOLS, "plot_results.py")
+spec = importlib.util.spec_from_file_location("signorini_figures",
+                                              os.path.join(TOOLS, "signorini_figures.py"))
 plot = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(plot)
 
@@ -255,7 +257,7 @@ class TwoProcessesTest(unittest.TestCase):
 
         here = os.getpid()
 
-        def fake_draw(outdir, next_figure, scale, written, warnings=True):
+        def fake_draw(outdir, next_figure, scale, written, formats, warnings=True):
             if os.getpid() == here:
                 time.sleep(0.3)
                 if fails == "here":
@@ -263,7 +265,7 @@ class TwoProcessesTest(unittest.TestCase):
             drawn = []
             while (name := next_figure()) is not None:
                 drawn.append(name)
-                for fmt in plot.FORMATS:
+                for fmt in formats:
                     tmp = os.path.join(outdir, f".{name}.{fmt}.tmp.{os.getpid()}")
                     written.append((tmp, os.path.join(outdir, f"{name}.{fmt}")))
                     with open(tmp, "w") as f:
@@ -275,7 +277,7 @@ class TwoProcessesTest(unittest.TestCase):
         saved = plot.draw, plot.cores
         plot.draw, plot.cores = fake_draw, lambda: 2
         try:
-            plot.save_all(folder, None, quiet=True)
+            plot.save_all(folder, None, True, ["png", "svg"])
         finally:
             plot.draw, plot.cores = saved
 
@@ -283,7 +285,7 @@ class TwoProcessesTest(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             self.run_save_all(d, fails=None)
             self.assertEqual(sorted(os.listdir(d)),
-                             sorted(f"{n}.{e}" for n in plot.FIGURES for e in plot.FORMATS))
+                             sorted(f"{n}.{e}" for n in plot.FIGURES for e in ("png", "svg")))
 
     def test_nothing_when_either_fails(self):
         for fails in ("helper", "here"):
@@ -362,7 +364,8 @@ class ScriptTest(unittest.TestCase):
         import subprocess
 
         return subprocess.run(
-            [sys.executable, SCRIPT, "--quiet", folder], capture_output=True, text=True,
+            [sys.executable, SCRIPT, "--quiet", "--format", "png,svg", folder],
+            capture_output=True, text=True,
             preexec_fn=(lambda: os.sched_setaffinity(0, {min(os.sched_getaffinity(0))}))
             if one_core else None)
 
@@ -386,7 +389,7 @@ class ScriptTest(unittest.TestCase):
                 self.assertEqual(r.returncode, 0, r.stderr)
                 self.assertEqual(r.stderr, "")
                 self.assertEqual(sorted(f for f in os.listdir(d) if f.endswith((".png", ".svg"))),
-                                 sorted(f"{n}.{e}" for n in plot.FIGURES for e in plot.FORMATS))
+                                 sorted(f"{n}.{e}" for n in plot.FIGURES for e in ("png", "svg")))
                 self.assertFalse([f for f in os.listdir(d) if ".tmp." in f])
                 (x0, x1, y0, y1), svg = self.limits(os.path.join(d, "deformed_von_mises.svg"))
                 self.assertGreater(x0, -0.2)
@@ -439,6 +442,54 @@ class ScriptTest(unittest.TestCase):
                                             + (["solution.vtu"] if broken else [])))
                     with open(os.path.join(d, "convergence.png")) as f:
                         self.assertEqual(f.read(), "an earlier figure")
+
+
+class FormatsTest(unittest.TestCase):
+    def test_formats_in_the_order_given_each_once(self):
+        self.assertEqual(plot.formats_of("png"), ["png"])
+        self.assertEqual(plot.formats_of("SVG, png,svg,pdf"), ["svg", "png", "pdf"])
+
+    def test_an_unknown_format_names_the_known_ones(self):
+        for text in ("jpg", "png,", "png;svg", ""):
+            with self.subTest(text=text), self.assertRaises(plot.UsageError) as e:
+                plot.formats_of(text)
+            self.assertIn(f"--format {text}: ", str(e.exception))
+            self.assertIn("expected png, svg or pdf", str(e.exception))
+
+    def test_png_chunks_and_pixels(self):
+        """The PNG writer against Pillow's reader: the pixels of the canvas, the text chunks."""
+        if not have_matplotlib():
+            self.skipTest("no matplotlib")
+        import zlib
+
+        plot.import_plotting()
+        from PIL import Image
+
+        fig = plot.new_figure(2.0, 1.0)
+        ax = fig.add_axes([0.2, 0.2, 0.7, 0.7])
+        ax.plot([0, 1], [0, 1], color="tab:red")
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "f.png")
+            plot.write_png(fig, path, {"Title": "f", "Description": "axes: x from 0 to 1"})
+            rgba = np.asarray(fig.canvas.buffer_rgba())
+            with Image.open(path) as im:
+                self.assertEqual(im.mode, "RGB")
+                self.assertEqual(im.size, (2 * plot.DPI, plot.DPI))
+                self.assertEqual(im.text, {"Title": "f", "Description": "axes: x from 0 to 1"})
+                self.assertAlmostEqual(im.info["dpi"][0], plot.DPI, places=1)
+                self.assertTrue(np.array_equal(np.asarray(im), rgba[..., :3]))
+            with open(path, "rb") as f:
+                data = f.read()
+            # Every chunk's CRC, as a strict reader checks them.
+            at = 8
+            while at < len(data):
+                n = int.from_bytes(data[at:at + 4], "big")
+                kind, body = data[at + 4:at + 8], data[at + 8:at + 8 + n]
+                self.assertEqual(int.from_bytes(data[at + 8 + n:at + 12 + n], "big"),
+                                 zlib.crc32(kind + body), kind)
+                at += 12 + n
+            self.assertEqual(at, len(data))
+            self.assertEqual(kind, b"IEND")
 
 
 if __name__ == "__main__":

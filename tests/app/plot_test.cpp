@@ -1,10 +1,13 @@
-// `signorini plot` and `signorini solve --plot`: the figures are written as PNG and SVG, and a
-// missing Python or matplotlib is a one-line error with exit status 2 (docs/output.md).
+// `signorini plot` and `signorini solve --plot`: the figures are written as PNG (SVG and PDF on
+// request), and a missing Python or matplotlib or an unknown format is a one-line error with exit
+// status 2 (docs/output.md). The tests that read the figures' text ask for SVG, where text stays
+// text.
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <regex>
@@ -24,10 +27,8 @@ using testing::ToolRun;
 
 const std::string kSmall = quoted(SIGNORINI_EXAMPLES_DIR "/paper_small.toml");
 
-const std::vector<std::string> kFigures = {"contact_displacement.png", "contact_displacement.svg",
-                                           "contact_pressure.png",     "contact_pressure.svg",
-                                           "deformed_von_mises.png",   "deformed_von_mises.svg",
-                                           "convergence.png",          "convergence.svg"};
+const std::vector<std::string> kFigureNames = {"contact_displacement", "contact_pressure",
+                                               "deformed_von_mises", "convergence"};
 
 // The tool prefers /usr/bin/python3; the figures need its matplotlib (scripts/setup.sh installs
 // python3-matplotlib). Without it only the error paths can be tested.
@@ -107,6 +108,33 @@ std::string svg_text(const fs::path& file) {
 const std::vector<std::string> kSvgFigures = {"contact_displacement.svg", "contact_pressure.svg",
                                               "deformed_von_mises.svg", "convergence.svg"};
 
+// The text chunks (tEXt: keyword, a zero byte, Latin-1 text) of a PNG file, by keyword; after
+// checking the signature and that each chunk lies within the file.
+std::map<std::string, std::string> png_text(const fs::path& file) {
+  const std::string png = testing::read_text(file);
+  std::map<std::string, std::string> text;
+  EXPECT_EQ(png.rfind("\x89PNG\r\n\x1a\n", 0), 0U) << file;
+  std::size_t at = 8;
+  while (at + 12 <= png.size()) {
+    std::uint32_t length = 0;
+    for (int i = 0; i < 4; ++i) length = length << 8 | static_cast<unsigned char>(png[at + i]);
+    const std::string kind = png.substr(at + 4, 4);
+    if (at + 12 + length > png.size()) {
+      ADD_FAILURE() << file << ": chunk " << kind << " runs past the end";
+      break;
+    }
+    if (kind == "tEXt") {
+      const std::string data = png.substr(at + 8, length);
+      const std::size_t zero = data.find('\0');
+      if (zero != std::string::npos) text[data.substr(0, zero)] = data.substr(zero + 1);
+    }
+    at += 12 + length;
+    if (kind == "IEND") break;
+  }
+  EXPECT_EQ(at, png.size()) << file << ": not ended by IEND";
+  return text;
+}
+
 TEST(Plot, SolveWithPlotWritesEveryFigure) {
   if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
   const testing::TemporaryFolder dir;
@@ -114,15 +142,45 @@ TEST(Plot, SolveWithPlotWritesEveryFigure) {
   const ToolRun r = run_tool(dir, "solve " + kSmall + " --plot -o " + quoted(out.string()));
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_EQ(r.err, "");
+  // PNG only by default; each with its name and the limits of its axes.
   std::string listed;
-  for (const std::string& f : kFigures) {
-    listed += (listed.empty() ? "" : ", ") + out.string() + "/" + f;
-    const std::string contents = testing::read_text(out / f);
-    if (f.ends_with(".png"))
-      EXPECT_EQ(contents.rfind("\x89PNG\r\n\x1a\n", 0), 0U) << f;
-    else
-      EXPECT_CONTAINS(contents, "<svg");
+  for (const std::string& name : kFigureNames) {
+    listed += (listed.empty() ? "" : ", ") + out.string() + "/" + name + ".png";
+    const std::map<std::string, std::string> text = png_text(out / (name + ".png"));
+    EXPECT_EQ(text.count("Title") ? text.at("Title") : "", name);
+    EXPECT_TRUE(axes_limits("<dc:description>" +
+                            (text.count("Description") ? text.at("Description") : "") +
+                            "</dc:description>"))
+        << name;
   }
+  EXPECT_CONTAINS(r.out, "figures: " + listed + "\n");
+  // No temporary file is left behind.
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;
+  EXPECT_EQ(entries, 4U + kFigureNames.size());
+}
+
+TEST(Plot, EveryFormatOnRequest) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "out";
+  const ToolRun r =
+      run_tool(dir, "solve " + kSmall + " --plot --plot-format 'svg, PNG,pdf,svg' -o " +
+                        quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_EQ(r.err, "");
+  std::string listed;
+  for (const std::string& name : kFigureNames)
+    for (const std::string format : {"svg", "png", "pdf"}) {
+      const std::string f = name + "." + format;
+      listed += (listed.empty() ? "" : ", ") + out.string() + "/" + f;
+      const std::string contents = testing::read_text(out / f);
+      if (format == "svg") {
+        EXPECT_CONTAINS(contents, "<svg");
+      } else {
+        EXPECT_EQ(contents.rfind(format == "png" ? "\x89PNG\r\n\x1a\n" : "%PDF-", 0), 0U) << f;
+      }
+    }
   EXPECT_CONTAINS(r.out, "figures: " + listed + "\n");
   // Text stays text in the SVG: titles with the problem and mesh, axis labels (their units:
   // UnitLabelsComeFromTheUnitsSetting).
@@ -134,7 +192,24 @@ TEST(Plot, SolveWithPlotWritesEveryFigure) {
   // No temporary file is left behind.
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;
-  EXPECT_EQ(entries, 4U + kFigures.size());
+  EXPECT_EQ(entries, 4U + 3 * kFigureNames.size());
+}
+
+TEST(Plot, UnknownFormatIsExitStatus2BeforeTheSolve) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "out";
+  const std::string expected =
+      "signorini: error: --format png,jpg: 'jpg' is not a format of the figures; expected png, "
+      "svg or pdf, or several separated by commas (png,svg)\n";
+  const ToolRun r = run_tool(
+      dir, "solve " + kSmall + " -q --plot --plot-format png,jpg -o " + quoted(out.string()));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, expected);
+  EXPECT_FALSE(fs::exists(out));  // found before the solve: nothing written
+  const ToolRun p = run_tool(dir, "plot " + quoted(dir.path().string()) + " --format png,jpg");
+  EXPECT_EQ(p.status, 2);
+  EXPECT_EQ(p.err, expected);
 }
 
 TEST(Plot, PlotCommandWithAGivenMagnification) {
@@ -142,12 +217,12 @@ TEST(Plot, PlotCommandWithAGivenMagnification) {
   const testing::TemporaryFolder dir;
   const fs::path out = dir / "out";
   ASSERT_EQ(run_tool(dir, "solve " + kSmall + " -q -o " + quoted(out.string())).status, 0);
-  ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+  ToolRun r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
   ASSERT_EQ(r.status, 0) << r.err;
   // The automatic magnification of the paper's figure: 1000.
   EXPECT_CONTAINS(testing::read_text(out / "deformed_von_mises.svg"),
                   "displacements magnified s = 1000 times");
-  r = run_tool(dir, "plot " + quoted(out.string()) + " --scale 250");
+  r = run_tool(dir, "plot " + quoted(out.string()) + " --scale 250 --format svg");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_CONTAINS(testing::read_text(out / "deformed_von_mises.svg"),
                   "displacements magnified s = 250 times");
@@ -159,7 +234,7 @@ TEST(Plot, UnitLabelsComeFromTheUnitsSetting) {
   const fs::path out = solve_small(dir);
   // mm and N: stresses in N/mm^2 = MPa, forces per thickness in N/mm.
   set_units(out, "mm-N");
-  ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+  ToolRun r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
   std::string pressure = testing::read_text(out / "contact_pressure.svg");
@@ -175,7 +250,7 @@ TEST(Plot, UnitLabelsComeFromTheUnitsSetting) {
 
   // m and Pa: forces per thickness in N/m.
   set_units(out, "m-Pa");
-  r = run_tool(dir, "plot " + quoted(out.string()));
+  r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
   ASSERT_EQ(r.status, 0) << r.err;
   pressure = testing::read_text(out / "contact_pressure.svg");
   EXPECT_CONTAINS(pressure, ">contact pressure (Pa)</text>");
@@ -184,7 +259,7 @@ TEST(Plot, UnitLabelsComeFromTheUnitsSetting) {
 
   // A setting the script does not know: a warning, and no units.
   set_units(out, "furlongs");
-  r = run_tool(dir, "plot " + quoted(out.string()));
+  r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(count_lines(r.err), 1U) << r.err;
   EXPECT_CONTAINS(r.err, "signorini: warning: units = \"furlongs\" in summary.json is not one of");
@@ -198,7 +273,7 @@ TEST(Plot, NoUnitsWithoutTheUnitsSetting) {
   for (const bool erase : {true, false}) {
     SCOPED_TRACE(erase ? "no units key" : "units null");
     set_units(out, nullptr, erase);
-    const ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+    const ToolRun r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     for (const std::string& f : kSvgFigures) {
@@ -222,7 +297,7 @@ TEST(Plot, CurvedFoundationKeepsTheAxesAtTheBody) {
   if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
   const testing::TemporaryFolder dir;
   const fs::path out = solve_small(dir, " --set " + quoted("contact.gap=3 - sqrt(9 - (x-0.4)^2)"));
-  const ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+  const ToolRun r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
   ASSERT_EQ(r.status, 0) << r.err;
 
   const std::string deformed = testing::read_text(out / "deformed_von_mises.svg");
@@ -261,7 +336,7 @@ TEST(Plot, FlatFoundations) {
     SCOPED_TRACE("gap " + gap);
     const testing::TemporaryFolder dir;
     const fs::path out = solve_small(dir, " --set " + quoted("contact.gap=" + gap));
-    const ToolRun r = run_tool(dir, "plot " + quoted(out.string()));
+    const ToolRun r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string deformed = testing::read_text(out / "deformed_von_mises.svg");
     const std::optional<Limits> body = axes_limits(deformed);

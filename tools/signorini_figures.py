@@ -1,0 +1,1378 @@
+#!/usr/bin/env python3
+"""Draws the figures of a signorini run from its output folder (docs/output.md).
+
+    python3 tools/plot_results.py OUTDIR [--format png,svg,pdf] [--scale S] [--quiet]
+    python3 tools/plot_results.py --check [--format ...]  # numpy and matplotlib there? (0 or 2)
+
+This module does the work; tools/plot_results.py, the command, only imports it, so that Python
+can take the module compiled in advance (__pycache__, written by the build and the installation)
+instead of compiling its 1,300 lines on every run.
+
+`signorini plot OUTDIR` and `signorini solve ... --plot` run this script. It reads
+OUTDIR/summary.json, contact.csv and solution.vtu and writes, as PNG (and SVG or PDF with
+--format):
+
+    contact_displacement   normal and tangential displacement along the contact boundary
+    contact_pressure       the contact pressure along the contact boundary, where the body touches
+    deformed_von_mises     the deformed body x + s u(x) coloured by the von Mises stress
+    convergence            the Uzawa residual per iteration and GNM iterations per Uzawa step
+
+The unit labels come from the `units` setting (summary.json: problem.units, e.g. "m-MPa"); without
+it the labels carry no units. Each file's description (PNG Description, SVG dc:description, PDF
+Subject) holds the limits of its main axes, "axes: x from X0 to X1, y from Y0 to Y1", in the
+units of the data. Exit status: 0 written, 2 a missing package, an unknown format or an unusable
+output folder (one line on stderr), 1 anything else.
+
+Speed matters (the PNG figures of a 480 x 160 mesh in under a second, docs/output.md): pyplot and
+mathtext are never used, the axes are placed by hand (no layout engine, which draws each figure
+once more), solution.vtu is mapped, not read, the mesh is one rasterised quadrilateral mesh, the
+PNG files are written without Pillow, the garbage collector runs once per figure, and on a
+machine with two cores or more two processes draw the figures.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+import textwrap
+from collections import namedtuple
+
+# Line styles of the contact boundaries when there are several.
+STYLES = ["-", (0, (5, 2)), (0, (1, 1.5)), (0, (5, 2, 1, 2))]
+FIGURES = ["contact_displacement", "contact_pressure", "deformed_von_mises", "convergence"]
+# The formats `--format` accepts, and the default: pictures to look at; vectors (SVG, PDF) on
+# request, since each format draws every figure once more.
+FORMATS = ["png", "svg", "pdf"]
+DEFAULT_FORMATS = "png"
+DPI = 150
+
+
+class UsageError(Exception):
+    """A problem the user can fix (exit status 2): a missing file, a missing package."""
+
+
+def fail(status, message):
+    sys.stderr.write("signorini: error: " + " ".join(str(message).split("\n")) + "\n")
+    sys.exit(status)
+
+
+def warn(message):
+    sys.stderr.write("signorini: warning: " + " ".join(str(message).split("\n")) + "\n")
+
+
+def missing_package(reason):
+    return UsageError(
+        f"plotting needs numpy and matplotlib for {sys.executable} ({reason}); on Debian: "
+        "apt-get install python3-matplotlib"
+    )
+
+
+def check_plotting():
+    """Whether numpy and matplotlib can be found, without importing them (which takes half a
+    second): `solve --plot` asks before every solve."""
+    import importlib.util
+
+    for name in ("numpy", "matplotlib"):
+        try:
+            found = importlib.util.find_spec(name) is not None
+        except (ImportError, ValueError) as e:
+            raise missing_package(e)
+        if not found:
+            raise missing_package(f"No module named '{name}'")
+
+
+def keep_freed_memory():
+    """Memory that is freed stays with the process and serves the next figure: on a virtual
+    machine a page fault on fresh memory can cost 20 microseconds, and a 150 dpi picture touches
+    thousands of pages (glibc's mallopt: no mmap for large blocks, no trimming of the heap)."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL("libc.so.6")
+        libc.mallopt(-3, 1 << 30)  # M_MMAP_THRESHOLD
+        libc.mallopt(-1, 1 << 30)  # M_TRIM_THRESHOLD
+    except (ImportError, OSError, AttributeError):
+        pass  # not glibc: only slower
+
+
+def import_plotting():
+    # numpy's BLAS threads are of no use here and take CPU time from the drawing.
+    for name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ.setdefault(name, "1")
+    keep_freed_memory()
+    # The cyclic garbage collector stays off: during the imports it would walk the young objects
+    # again and again (a few percent of the import time) and while drawing it would look through
+    # every figure's objects; draw_and_save collects once after each figure.
+    import gc
+
+    gc.disable()
+    try:
+        import numpy  # noqa: F401
+        import matplotlib
+
+        # Text in the SVG files stays text (searchable, editable), not glyph outlines.
+        matplotlib.rcParams["svg.fonttype"] = "none"
+        # No TeX-like math: its parser takes longer to set up than drawing all the figures, and a
+        # '$' in a problem's name is printed as it is.
+        matplotlib.rcParams["text.parse_math"] = False
+        matplotlib.rcParams["axes.formatter.use_mathtext"] = False
+        # SVG files that are the same for the same results (no date, no random ids).
+        matplotlib.rcParams["svg.hashsalt"] = "signorini"
+        import matplotlib.figure  # noqa: F401
+        import matplotlib.backends.backend_agg  # noqa: F401
+        import PIL.Image
+    except ImportError as e:
+        raise missing_package(e)
+    if hasattr(PIL.Image.core, "set_blocks_max"):
+        PIL.Image.core.set_blocks_max(64)  # Pillow, too, keeps the memory of its images
+    # What is imported stays: the collections after each figure (draw_and_save) look at the
+    # figure's objects only.
+    gc.freeze()
+
+
+# Units -------------------------------------------------------------------------------------
+
+# The `units` setting, "{length}-{stress}" -> (length, stress and pressure, force per unit of
+# thickness = stress x length). To accept another setting, add a row.
+UNIT_SYSTEMS = {
+    "m-Pa": ("m", "Pa", "N/m"),
+    "m-kPa": ("m", "kPa", "kN/m"),
+    "m-MPa": ("m", "MPa", "MN/m"),
+    "m-GPa": ("m", "GPa", "GN/m"),
+    "mm-MPa": ("mm", "MPa", "N/mm"),
+}
+# Other names of the same systems: a force unit instead of a stress unit.
+UNIT_ALIASES = {
+    "mm-N": "mm-MPa",  # N and mm: stresses in N/mm^2 = MPa
+    "m-N": "m-Pa",  # N and m: stresses in N/m^2 = Pa
+}
+
+Units = namedtuple("Units", ["length", "stress", "force_per_thickness"])
+NO_UNITS = Units("", "", "")
+
+
+def units_of(setting):
+    """The unit labels of a `units` setting; NO_UNITS (empty strings) when it is absent (None) or
+    not one of UNIT_SYSTEMS and UNIT_ALIASES."""
+    if not isinstance(setting, str):
+        return NO_UNITS
+    row = UNIT_SYSTEMS.get(UNIT_ALIASES.get(setting, setting))
+    return Units(*row) if row else NO_UNITS
+
+
+def units_of_summary(summary, warnings=True):
+    problem = summary.get("problem")
+    setting = problem.get("units") if isinstance(problem, dict) else None
+    units = units_of(setting)
+    if warnings and setting is not None and units == NO_UNITS:
+        warn(f"units = {json.dumps(setting)} in summary.json is not one of "
+             f"{', '.join(list(UNIT_SYSTEMS) + list(UNIT_ALIASES))}: the figures have no units")
+    return units
+
+
+SUPERSCRIPTS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def power_text(k):
+    """10^k in plain text: 10⁻⁵."""
+    return "10" + str(k).translate(SUPERSCRIPTS)
+
+
+def axis_label(quantity, unit, k=0):
+    """'quantity (unit)', with the power of ten of the axis: 'quantity (10⁻⁵ m)'; without a unit
+    'quantity' or 'quantity (×10⁻⁵)'."""
+    if k != 0:
+        return f"{quantity} ({power_text(k)} {unit})" if unit else f"{quantity} (×{power_text(k)})"
+    return f"{quantity} ({unit})" if unit else quantity
+
+
+def with_unit(number_text, unit):
+    return f"{number_text} {unit}" if unit else number_text
+
+
+# Reading the results -----------------------------------------------------------------------
+
+
+def read_summary(outdir):
+    path = os.path.join(outdir, "summary.json")
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except FileNotFoundError:
+        raise UsageError(f"'{path}' not found: is '{outdir}' the output folder of signorini solve?")
+    except (OSError, ValueError) as e:
+        raise UsageError(f"cannot read '{path}': {e}")
+
+
+def read_contact_csv(outdir):
+    """The columns of contact.csv as arrays; the normal (n_x, n_y) is (0, -1), the paper's bottom
+    edge, in the files of older versions, which did not write it."""
+    import numpy as np
+
+    path = os.path.join(outdir, "contact.csv")
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            rows = list(csv.reader(f))
+        header = [h.strip() for h in rows[0]] if rows else []
+        # Every column is a number but the boundary's name (a text column of newer files).
+        text = [k for k, h in enumerate(header) if h == "boundary"]
+        body = np.array([[0.0 if k in text else float(v) for k, v in enumerate(r)]
+                         for r in rows[1:] if r], dtype=float)
+        if body.size == 0:
+            body = body.reshape(0, len(header))
+        if body.ndim != 2 or body.shape[1] != len(header):
+            raise ValueError("rows of different lengths")
+        columns = {k: body[:, header.index(k)] for k in ("x", "y", "u_n", "u_t", "pressure", "gap")}
+        # The contact boundary of each row (one name in files of one boundary or older ones).
+        names = ([r[text[0]] for r in rows[1:] if r] if text else [""] * len(body))
+        columns["boundary"] = names
+        if "n_x" in header and "n_y" in header:
+            columns["n_x"] = body[:, header.index("n_x")]
+            columns["n_y"] = body[:, header.index("n_y")]
+        else:
+            columns["n_x"] = np.zeros(len(body))
+            columns["n_y"] = -np.ones(len(body))
+    except FileNotFoundError:
+        raise UsageError(f"'{path}' not found: is '{outdir}' the output folder of signorini solve?")
+    except (OSError, IndexError, TypeError, ValueError) as e:
+        raise UsageError(f"cannot read '{path}': expected the columns x,y,u_n,u_t,pressure,gap ({e})")
+    if len(body) == 0:
+        raise UsageError(f"'{path}' has no contact nodes")
+    return columns
+
+
+def check_results(outdir):
+    """The errors that need no numpy, said before it and matplotlib are imported (half a second):
+    summary.json readable, contact.csv and solution.vtu there."""
+    read_summary(outdir)
+    path = os.path.join(outdir, "contact.csv")
+    if not os.path.exists(path):
+        raise UsageError(f"'{path}' not found: is '{outdir}' the output folder of signorini solve?")
+    path = os.path.join(outdir, "solution.vtu")
+    if not os.path.exists(path):
+        raise UsageError(f"'{path}' not found (results of an older signorini? run solve again)")
+
+
+VTK_TYPES = {"Float64": "f8", "Float32": "f4", "Int64": "i8", "Int32": "i4", "UInt64": "u8",
+             "UInt32": "u4", "UInt8": "u1", "Int8": "i1"}
+
+
+def read_vtu(path):
+    """The points, cells and point data of a .vtu written by signorini (raw appended data, read
+    with numpy: docs/output.md)."""
+    import mmap
+    import xml.etree.ElementTree as ET
+
+    import numpy as np
+
+    try:
+        with open(path, "rb") as f:
+            # Mapped, not read: only the pages of the arrays used are touched, in a tenth of the
+            # time. (An empty file cannot be mapped.)
+            empty = os.fstat(f.fileno()).st_size == 0
+            raw = b"" if empty else mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_READ)
+    except FileNotFoundError:
+        raise UsageError(f"'{path}' not found (results of an older signorini? run solve again)")
+    except (OSError, ValueError) as e:
+        raise UsageError(f"cannot read '{path}': {e}")
+    try:
+        start = raw.find(b"<AppendedData")
+        if start < 0:
+            raise ValueError("no <AppendedData> block")
+        close = raw.find(b">", start)
+        underscore = raw.find(b"_", close) if close >= 0 else -1
+        if underscore < 0:
+            raise ValueError("no '_' at the start of the appended data")
+        data = memoryview(raw)[underscore + 1:]
+        root = ET.fromstring(raw[:start].decode("utf-8") + "</VTKFile>")
+        order = "<" if root.get("byte_order", "LittleEndian") == "LittleEndian" else ">"
+        header = np.dtype(order + VTK_TYPES[root.get("header_type", "UInt32")])
+        piece = root.find("UnstructuredGrid/Piece")
+        n_points = int(piece.get("NumberOfPoints"))
+        n_cells = int(piece.get("NumberOfCells"))
+
+        def array(element, count):
+            if element.get("format") != "appended":
+                raise ValueError(f"array '{element.get('Name')}' is not in the appended block")
+            offset = int(element.get("offset"))
+            size = int(np.frombuffer(data[offset:offset + header.itemsize], header)[0])
+            dtype = np.dtype(order + VTK_TYPES[element.get("type")])
+            components = int(element.get("NumberOfComponents", "1"))
+            begin = offset + header.itemsize
+            values = np.frombuffer(data[begin:begin + size], dtype)
+            if count is not None and values.size != count * components:
+                raise ValueError(f"array '{element.get('Name')}' has {values.size} values, "
+                                 f"expected {count * components}")
+            return values.reshape(-1, components) if components > 1 else values
+
+        points = array(piece.find("Points/DataArray"), n_points)
+        cells = {e.get("Name"): e for e in piece.findall("Cells/DataArray")}
+        connectivity = array(cells["connectivity"], None)
+        offsets = array(cells["offsets"], n_cells)
+        types = array(cells["types"], n_cells)
+        point_data = {e.get("Name"): array(e, n_points) for e in piece.findall("PointData/DataArray")}
+    except (ValueError, KeyError, TypeError, AttributeError, IndexError, ET.ParseError) as e:
+        raise UsageError(f"cannot read '{path}': not a VTU file as signorini writes them ({e})")
+    return {"points": points, "connectivity": connectivity, "offsets": offsets, "types": types,
+            "point_data": point_data}
+
+
+# Helpers -----------------------------------------------------------------------------------
+
+
+def nice_below(value):
+    """The largest of 1, 2, 5 x 10^k that is <= value (value > 0)."""
+    k = math.floor(math.log10(value))
+    for m in (5, 2, 1):
+        if m * 10 ** k <= value * (1 + 1e-12):
+            return m * 10 ** k
+    return 10 ** k
+
+
+def magnification(points, displacement):
+    """s such that the largest displacement, magnified, is about 10 % of the body's size."""
+    import numpy as np
+
+    size = float(np.max(points.max(axis=0) - points.min(axis=0)))
+    largest = float(np.sqrt(np.max(np.einsum("ij,ij->i", displacement, displacement)))) \
+        if len(displacement) else 0.0
+    if largest <= 0.0 or size <= 0.0 or not math.isfinite(largest):
+        return 1.0
+    return max(1.0, nice_below(0.1 * size / largest))
+
+
+def power_of_ten(values):
+    """k such that values / 10^k lie roughly in (-1000, 1000), for an axis label "(10^k m)"."""
+    import numpy as np
+
+    finite = np.abs(values[np.isfinite(values)])
+    largest = float(finite.max()) if finite.size else 0.0
+    if largest == 0.0:
+        return 0
+    k = math.floor(math.log10(largest))
+    return 0 if -2 <= k <= 2 else k
+
+
+def padded(lo, hi, fraction=0.05):
+    """[lo, hi] widened by `fraction` of its length either side (a little around 0 if empty)."""
+    span = hi - lo
+    if not span > 0:
+        span = abs(hi) if hi != 0 else 1.0
+    return lo - fraction * span, hi + fraction * span
+
+
+def boundary_parts(contact):
+    """[(name, rows)]: the rows of each contact boundary, in the order of contact.csv."""
+    import numpy as np
+
+    names = contact.get("boundary") or [""] * len(contact["x"])
+    parts, start = [], 0
+    for i in range(1, len(names) + 1):
+        if i == len(names) or names[i] != names[start]:
+            parts.append((names[start], np.arange(start, i)))
+            start = i
+    return parts
+
+
+def boundary_coordinate(contact, units):
+    """The abscissa of the contact-boundary plots: x or y if the boundary is straight along it,
+    else the arc length from the first contact node. With several contact boundaries, the arc
+    length along each, from its first node."""
+    import numpy as np
+
+    parts = boundary_parts(contact)
+    x, y = contact["x"], contact["y"]
+    if len(parts) > 1:
+        t = np.zeros(len(x))
+        for _, rows in parts:
+            xs, ys = x[rows], y[rows]
+            t[rows] = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(xs), np.diff(ys)))])
+        return t, axis_label("arc length along each contact boundary", units.length)
+    if np.ptp(y) <= 1e-9 * max(np.ptp(x), 1e-300):
+        return x, axis_label("x", units.length)
+    if np.ptp(x) <= 1e-9 * max(np.ptp(y), 1e-300):
+        return y, axis_label("y", units.length)
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(x), np.diff(y)))])
+    return s, axis_label("arc length along the contact boundary", units.length)
+
+
+def contact_intervals(t, active):
+    """[(t_begin, t_end)] of the runs of active nodes, extended half a spacing either side so that
+    a single active node still shows."""
+    import numpy as np
+
+    n = len(t)
+    a = np.concatenate([[False], np.asarray(active, dtype=bool), [False]])
+    starts = np.flatnonzero(a[1:] & ~a[:-1])
+    ends = np.flatnonzero(~a[1:] & a[:-1]) - 1
+    intervals = []
+    for j, k in zip(starts, ends):
+        lo = t[j] - 0.5 * (t[j] - t[j - 1]) if j > 0 else t[j]
+        hi = t[k] + 0.5 * (t[k + 1] - t[k]) if k + 1 < n else t[k]
+        intervals.append((float(min(lo, hi)), float(max(lo, hi))))
+    return intervals
+
+
+def shade_contact(ax, intervals, label=True):
+    for i, (lo, hi) in enumerate(intervals):
+        ax.axvspan(lo, hi, color="tab:orange", alpha=0.15, lw=0,
+                   label="in contact (pressure > 0)" if label and i == 0 else None)
+
+
+def wrapped(text, width_inches):
+    """`text` with its lines broken to fit a figure `width_inches` wide (10 pt text)."""
+    columns = max(40, int(width_inches * 12))
+    return "\n".join(textwrap.fill(line, columns) for line in text.split("\n"))
+
+
+def title_of(summary):
+    problem = summary.get("problem", {})
+    mesh = problem.get("mesh", {})
+    name = problem.get("name", "problem")
+    if "nx" in mesh:
+        cell = mesh.get("cell", "quad4")
+        text = f"{name}: {mesh.get('nx', '?')} × {mesh.get('ny', '?')} mesh"
+        if cell != "quad4":
+            text += f" of {cell} cells"
+    else:  # a mesh from a file
+        text = f"{name}: {os.path.basename(str(mesh.get('file', '?')))}"
+    if "n_dofs" in summary:
+        text += f" ({summary['n_dofs']} unknowns)"
+    text += f", {summary.get('method', '?')}"
+    if not summary.get("converged", True):
+        text += f" — NOT CONVERGED ({summary.get('termination', '?')})"
+    return text
+
+
+# Layout ------------------------------------------------------------------------------------
+#
+# The axes are placed by hand, from the sizes of the texts around them: a layout engine
+# (constrained layout) would draw every figure once more to measure it, which takes longer than
+# drawing it. Sizes are in points (1/72 inch).
+
+BORDER = 5.0  # white around the drawing
+TICK = 3.5 + 3.5  # tick length and the gap to its label
+LABEL_PAD = 4.0  # between the tick labels and the axis label
+TITLE_PAD = 6.0  # between an axes and its title
+TEXT_SIZE = 10.0  # tick labels, axis labels, titles
+LEGEND_SIZE = 8.0
+
+
+def new_figure(width, height):
+    """A figure with its own Agg canvas (which keeps one renderer, and the sizes of the texts it
+    measured, for the PNG), without a layout engine."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(width, height))
+    FigureCanvasAgg(fig)
+    return fig
+
+
+class Measure:
+    """Sizes of texts as matplotlib draws them."""
+
+    def __init__(self):
+        from matplotlib.backends.backend_agg import RendererAgg
+
+        self.renderer = RendererAgg(1, 1, 72)  # 72 dpi: pixels are points
+        self.fonts = {}
+        self.sizes = {}
+
+    def size(self, text, size):
+        """(width, height, descent) of one line."""
+        key = (text, size)
+        if key not in self.sizes:
+            self.sizes[key] = self.renderer.get_text_width_height_descent(text, self.font(size),
+                                                                          False)
+        return self.sizes[key]
+
+    def font(self, size):
+        from matplotlib.font_manager import FontProperties
+
+        if size not in self.fonts:
+            self.fonts[size] = FontProperties(size=size)
+        return self.fonts[size]
+
+    def width(self, text, size=TEXT_SIZE):
+        return max((self.size(line, size)[0] for line in text.split("\n") if line), default=0.0)
+
+    def height(self, text, size=TEXT_SIZE):
+        """Of a block of lines, 1.2 lines apart (matplotlib's line spacing); 0 for no text."""
+        if not text:
+            return 0.0
+        _, h, d = self.size("lp", size)
+        return (text.count("\n")) * (h - d) * 1.2 + h
+
+    def tick_labels(self, axis):
+        """The tick labels `axis` will draw with its present limits and size (the major ones,
+        and the minor ones a log axis labels when it spans less than a few decades); the major
+        ticks; the offset text."""
+        lo, hi = sorted(axis.get_view_interval())
+        slack = 1e-9 * (hi - lo)
+
+        def within(locator):
+            return [x for x in locator() if lo - slack <= x <= hi + slack]
+
+        locs = within(axis.get_major_locator())
+        formatter = axis.get_major_formatter()
+        labels = [t for t in formatter.format_ticks(locs) if t]
+        minor = axis.get_minor_formatter()
+        if type(minor).__name__ != "NullFormatter":
+            labels += [t for t in minor.format_ticks(within(axis.get_minor_locator())) if t]
+        offset = formatter.get_offset() if hasattr(formatter, "get_offset") else ""
+        return labels, locs, offset
+
+    def left(self, ax):
+        """Room for the y tick labels and the y label of `ax`."""
+        labels, _, offset = self.tick_labels(ax.yaxis)
+        room = TICK + max((self.width(t) for t in labels), default=0.0)
+        if ax.get_ylabel():
+            room += LABEL_PAD + self.height(ax.get_ylabel())
+        return room, self.height(offset)
+
+    def bottom(self, ax):
+        """Room for the x tick labels and the x label of `ax`; and how far the last tick label
+        reaches beyond the right end of the axis."""
+        labels, locs, offset = self.tick_labels(ax.xaxis)
+        room = TICK + (self.height("0") if labels else 0.0)
+        if ax.get_xlabel():
+            room += LABEL_PAD + self.height(ax.get_xlabel())
+        room += self.height(offset)
+        lo, hi = sorted(ax.get_xlim())
+        beyond = 0.0
+        if labels and locs and hi > lo and len(labels) == len(locs):
+            # The label of a tick at the right end sticks out by half its width.
+            if abs(locs[-1] - hi) <= 0.02 * (hi - lo):
+                beyond = 0.5 * self.width(labels[-1])
+        return room, beyond
+
+
+def place(fig, ax, left, bottom, width, height):
+    """Puts `ax` at (left, bottom), width x height, in points from the figure's lower left."""
+    w, h = fig.get_size_inches() * 72.0
+    ax.set_position([left / w, bottom / h, width / w, height / h])
+
+
+def place_single(fig, ax, measure, title):
+    """The layout of a figure with one axes and a title above it."""
+    w, h = fig.get_size_inches() * 72.0
+    top = BORDER + measure.height(title) + TITLE_PAD
+    for _ in range(2):  # the number of ticks depends on the size of the axes
+        left, offset = measure.left(ax)
+        bottom, beyond = measure.bottom(ax)
+        left += BORDER
+        bottom += BORDER
+        right = BORDER + max(beyond, 2.0)
+        place(fig, ax, left, bottom, w - left - right, h - bottom - top - offset)
+
+
+def legend_columns(measure, labels, width, most=4):
+    """(columns, rows, height) of a frameless legend of `labels` that fits `width` points."""
+    em = LEGEND_SIZE
+    entry = [2.0 * em + 0.8 * em + measure.width(t, LEGEND_SIZE) for t in labels]
+    n = len(labels)
+    for columns in range(min(most, n), 0, -1):
+        rows = -(-n // columns)
+        # matplotlib fills the columns one after the other, the first n % columns with one entry
+        # more than the others
+        sizes = [n // columns + (1 if c < n % columns else 0) for c in range(columns)]
+        starts = [sum(sizes[:c]) for c in range(columns)]
+        widths = [max(entry[b:b + k], default=0.0) for b, k in zip(starts, sizes)]
+        total = sum(widths) + 2.0 * em * (columns - 1) + 2 * 0.4 * em
+        if total <= width or columns == 1:
+            break
+    line = measure.height("lp", LEGEND_SIZE)
+    height = 2 * 0.4 * em + rows * line + (rows - 1) * 0.5 * em
+    return columns, rows, height
+
+
+def describe_limits(ax, yscale=1.0):
+    """The axis limits in the units of the data, for the files' description (tests read it)."""
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    return f"axes: x from {x0:.6g} to {x1:.6g}, y from {y0 * yscale:.6g} to {y1 * yscale:.6g}"
+
+
+# The figures -------------------------------------------------------------------------------
+#
+# Each returns (figure, description): the description goes into the files' metadata.
+
+
+def figure_displacement(summary, contact, units, measure):
+    import numpy as np
+
+    t, xlabel = contact["t"], contact["t_label"]
+    u_n, u_t, gap = contact["u_n"], contact["u_t"], contact["gap"]
+    # The displacements set the axis; the gap, which may be many times larger (a curved
+    # foundation), is drawn where it falls within reach of them.
+    shown = np.concatenate([u_n, u_t, [0.0]])
+    shown = shown[np.isfinite(shown)]
+    lo, hi = (float(shown.min()), float(shown.max())) if shown.size else (0.0, 0.0)
+    has_gap = bool(np.any(gap != 0.0))
+    finite_gap = gap[np.isfinite(gap)]
+    gap_clipped = False
+    if has_gap and finite_gap.size:
+        span = hi - lo if hi > lo else max(float(np.max(np.abs(finite_gap))), 1e-300)
+        # At most one span of the displacements more on either side: the curves keep at least a
+        # third of the height.
+        g_lo, g_hi = float(finite_gap.min()), float(finite_gap.max())
+        lo, hi = min(lo, max(g_lo, lo - span)), max(hi, min(g_hi, hi + span))
+        gap_clipped = g_lo < lo or g_hi > hi
+    k = power_of_ten(np.array([lo, hi]))
+    scale = 10.0 ** k
+    y0, y1 = padded(lo / scale, hi / scale)
+
+    fig = new_figure(8, 4.5)
+    ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+    shade_contact(ax, contact["intervals"])
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    for i, (name, rows) in enumerate(contact["parts"]):
+        on = f" on '{name}'" if len(contact["parts"]) > 1 else ""
+        style = STYLES[i % len(STYLES)]
+        ax.plot(t[rows], u_n[rows] / scale, color="tab:blue", lw=1.6, ls=style,
+                label=("normal uₙ = u·ν (ν: outward normal)" if has_gap else
+                       "normal uₙ = u·ν (ν outward: uₙ < 0 lifts off)") + on)
+        ax.plot(t[rows], u_t[rows] / scale, color="tab:green", lw=1.6, ls=style,
+                label="tangential uₜ = u·τ" + on)
+        if has_gap:
+            ax.plot(t[rows], gap[rows] / scale, color="k", lw=1.0,
+                    ls="--" if len(contact["parts"]) == 1 else style,
+                    label="gap g (the bound: uₙ ≤ g)" +
+                          (", partly off the axis" if gap_clipped else "") + on)
+    ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
+    ax.set_ylim(y0, y1)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(axis_label("displacement", units.length, k))
+    title = wrapped(title_of(summary) + "\nDisplacement along the contact boundar" +
+                    ("ies" if len(contact["parts"]) > 1 else "y"), 8)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=LEGEND_SIZE, loc="best")
+    place_single(fig, ax, measure, title)
+    return fig, describe_limits(ax, scale)
+
+
+def figure_pressure(summary, contact, units, measure):
+    import numpy as np
+
+    t, xlabel = contact["t"], contact["t_label"]
+    p = contact["pressure"]
+    k = power_of_ten(p)  # large numbers in Pa: the power of ten goes into the axis label
+    scale = 10.0 ** k
+    fig = new_figure(8, 4.5)
+    ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+    intervals = contact["intervals"]
+    shade_contact(ax, intervals)
+    for i, (name, rows) in enumerate(contact["parts"]):
+        ax.plot(t[rows], p[rows] / scale, color="tab:red", lw=1.6, ls=STYLES[i % len(STYLES)],
+                label="contact pressure l = −σₙ" +
+                      (f" on '{name}'" if len(contact["parts"]) > 1 else ""))
+    touching = p > 0
+    if np.any(touching):
+        ax.plot(t[touching], p[touching] / scale, "o", color="tab:red", ms=2.5,
+                label=f"nodes in contact: {int(np.count_nonzero(touching))} of {len(p)}")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(axis_label("contact pressure", units.stress, k))
+    ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
+    top = max(float(np.nanmax(p)), 0.0) / scale
+    bottom = min(0.0, float(np.nanmin(p)) / scale)
+    ax.set_ylim(bottom - 0.02 * max(top, 1e-300), top + 0.05 * (top - bottom) if top > bottom
+                else 1.0)
+    where = ", ".join(with_unit(f"{lo:.3g} to {hi:.3g}", units.length) for lo, hi in intervals[:4])
+    if len(intervals) > 4:
+        where += ", ..."
+    subtitle = "Contact pressure along the contact boundar" + \
+        ("ies" if len(contact["parts"]) > 1 else "y")
+    subtitle += f" (touching: {where})" if intervals else " (no contact)"
+    title = wrapped(title_of(summary) + "\n" + subtitle, 8)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
+    force = summary.get("contact_force")
+    if isinstance(force, (int, float)):
+        ax.plot([], [], " ",
+                label="total contact force " + with_unit(f"{force:.4g}", units.force_per_thickness))
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=LEGEND_SIZE, loc="best")
+    place_single(fig, ax, measure, title)
+    return fig, describe_limits(ax, scale)
+
+
+def structured_grid(vtu):
+    """(ny + 1, nx + 1) if the cells are the quadrilaterals of a rectangle mesh numbered row by
+    row (node i + j (nx + 1), as signorini numbers them), else None."""
+    import numpy as np
+
+    conn, types = vtu["connectivity"], vtu["types"]
+    n_points = len(vtu["points"])
+    if len(types) == 0 or not np.all(types == 9) or conn.size != 4 * len(types):
+        return None
+    q = conn.reshape(-1, 4)
+    nxp = int(q[0, 3])
+    if nxp < 2 or n_points % nxp != 0:
+        return None
+    nyp = n_points // nxp
+    if nyp < 2 or (nxp - 1) * (nyp - 1) != len(q):
+        return None
+    n0 = (np.arange(nyp - 1)[:, None] * nxp + np.arange(nxp - 1)[None, :]).ravel()
+    expected = np.stack([n0, n0 + 1, n0 + 1 + nxp, n0 + nxp], axis=1)
+    return (nyp, nxp) if np.array_equal(q, expected) else None
+
+
+def cells_and_outline(vtu):
+    """The cells as polygons of point numbers (an (n, k) array for one kind of cell, else a list)
+    and the outline: the boundary edges joined into polylines."""
+    import numpy as np
+
+    conn, offsets, types = vtu["connectivity"], vtu["offsets"], vtu["types"]
+    # VTK cell type -> (points per cell, the points around its boundary in order): quadratic
+    # cells are drawn as polygons through their corner and mid-edge nodes, so that curved edges
+    # stay curved (a biquadratic quadrilateral's centre node is not drawn).
+    polygon = {5: (3, [0, 1, 2]), 9: (4, [0, 1, 2, 3]), 22: (6, [0, 3, 1, 4, 2, 5]),
+               23: (8, [0, 4, 1, 5, 2, 6, 3, 7]), 28: (9, [0, 4, 1, 5, 2, 6, 3, 7])}
+    kinds = set(int(t) for t in np.unique(types)) if len(types) else set()
+    if len(kinds) == 1 and next(iter(kinds)) in polygon and \
+            conn.size == polygon[next(iter(kinds))][0] * len(types):
+        count, order = polygon[next(iter(kinds))]
+        cells = conn.reshape(-1, count)[:, order]
+    else:
+        begins = np.concatenate([[0], offsets[:-1]])
+        cells = [conn[b:e][polygon[int(kind)][1]] for b, e, kind in zip(begins, offsets, types)
+                 if int(kind) in polygon]
+        if not cells:
+            raise UsageError("solution.vtu has no triangles or quadrilaterals to draw")
+    if isinstance(cells, list):
+        edges = np.array([[c[i], c[(i + 1) % len(c)]] for c in cells for i in range(len(c))])
+    else:
+        edges = np.stack([cells, np.roll(cells, -1, axis=1)], axis=2).reshape(-1, 2)
+    # An edge of one cell only is on the boundary.
+    a = np.minimum(edges[:, 0], edges[:, 1]).astype(np.int64)
+    b = np.maximum(edges[:, 0], edges[:, 1]).astype(np.int64)
+    _, index, count = np.unique(a * (int(b.max()) + 1) + b, return_index=True, return_counts=True)
+    return cells, chains_of(edges[index[count == 1]])
+
+
+def chains_of(edges):
+    """The boundary edges joined into polylines (lists of point numbers), so that a dashed line
+    is dashed along the whole outline and not restarted at every edge."""
+    neighbours = {}
+    for a, b in edges:
+        neighbours.setdefault(int(a), []).append(int(b))
+        neighbours.setdefault(int(b), []).append(int(a))
+    used = set()
+    chains = []
+    # Open chains start at nodes of odd degree; what is left are closed loops.
+    starts = [n for n, nb in neighbours.items() if len(nb) % 2 == 1] + list(neighbours)
+    for start in starts:
+        node = start
+        chain = [node]
+        while True:
+            step = next((m for m in neighbours[node] if (min(node, m), max(node, m)) not in used),
+                        None)
+            if step is None:
+                break
+            used.add((min(node, step), max(node, step)))
+            chain.append(step)
+            node = step
+        if len(chain) > 1:
+            chains.append(chain)
+    return chains
+
+
+def draw_body(ax, vtu, deformed, values, clim, cell_pixels):
+    """The deformed body coloured by `values`, rasterised (in the SVG too: 10^5 shaded cells as
+    vectors would make a file of 100 MB); returns the colour mapping and the outline (chains of
+    point numbers). Cells of more than a few pixels are shaded smoothly between the nodes
+    (Gouraud); smaller ones get the mean of their nodes, which looks the same and is drawn many
+    times faster."""
+    import numpy as np
+    from matplotlib.collections import PolyCollection
+
+    smooth = cell_pixels >= 3.5
+    grid = structured_grid(vtu)
+    if grid is not None:
+        nyp, nxp = grid
+        X = deformed[:, 0].reshape(nyp, nxp)
+        Y = deformed[:, 1].reshape(nyp, nxp)
+        C = values.reshape(nyp, nxp)
+        if not smooth:
+            C = 0.25 * (C[:-1, :-1] + C[:-1, 1:] + C[1:, :-1] + C[1:, 1:])
+        image = ax.pcolormesh(X, Y, C, shading="gouraud" if smooth else "flat", cmap="viridis",
+                              vmin=clim[0], vmax=clim[1], rasterized=True, antialiased=False)
+        ring = np.concatenate([np.arange(nxp),                                     # bottom
+                               np.arange(2 * nxp - 1, nyp * nxp, nxp),             # right
+                               np.arange(nyp * nxp - 2, (nyp - 1) * nxp - 1, -1),  # top
+                               np.arange((nyp - 2) * nxp, -1, -nxp)])              # left
+        return image, [ring]
+    cells, outline = cells_and_outline(vtu)
+    if smooth or isinstance(cells, list):
+        from matplotlib.tri import Triangulation
+
+        if isinstance(cells, list):
+            tri = np.array([[c[0], c[i], c[i + 1]] for c in cells for i in range(1, len(c) - 1)])
+        else:
+            tri = np.concatenate([cells[:, [0, i, i + 1]] for i in range(1, cells.shape[1] - 1)])
+        mesh = Triangulation(deformed[:, 0], deformed[:, 1], tri)
+        image = ax.tripcolor(mesh, values, shading="gouraud" if smooth else "flat",
+                             cmap="viridis", vmin=clim[0], vmax=clim[1], rasterized=True)
+    else:
+        image = PolyCollection(deformed[cells], array=values[cells].mean(axis=1), cmap="viridis",
+                               edgecolors="none", antialiased=False, rasterized=True)
+        image.set_clim(*clim)
+        ax.add_collection(image, autolim=False)
+    return image, outline
+
+
+def figure_deformed(summary, vtu, contact, scale, units, measure):
+    import numpy as np
+    from matplotlib.collections import LineCollection
+
+    points = vtu["points"][:, :2]
+    data = vtu["point_data"]
+    for name in ("displacement", "von_mises"):
+        if name not in data:
+            raise UsageError(f"solution.vtu has no point data '{name}'")
+    u = data["displacement"][:, :2]
+    vm = np.asarray(data["von_mises"], dtype=float)
+    s = magnification(points, u) if scale is None else scale
+    deformed = points + s * u
+
+    # The rigid foundation at its true place, x_j + g_j nu_j: the displacement is magnified s
+    # times, the foundation is not (with a curved foundation it would be thousands of body sizes
+    # away). Where the gap is not 0, the dashed line x_j + s g_j nu_j is where the magnified body
+    # meets the foundation: the nodes in contact lie on it.
+    normal = np.stack([contact["n_x"], contact["n_y"]], axis=1)
+    base = np.stack([contact["x"], contact["y"]], axis=1)
+    gap = contact["gap"]
+    foundation = base + gap[:, None] * normal
+    magnified = base + s * gap[:, None] * normal
+    has_gap = bool(np.any(gap != 0.0))
+
+    # The drawing: the body, undeformed and deformed, and the foundation near it (at most 10 % of
+    # the body's size beyond the body).
+    extent = points.max(axis=0) - points.min(axis=0)
+    size = float(max(extent)) if float(max(extent)) > 0 else 1.0
+    lo = np.minimum(points.min(axis=0), deformed.min(axis=0))
+    hi = np.maximum(points.max(axis=0), deformed.max(axis=0))
+    finite = foundation[np.all(np.isfinite(foundation), axis=1)]
+    if len(finite):
+        reach = 0.1 * size
+        lo, hi = (np.minimum(lo, np.maximum(finite.min(axis=0), lo - reach)),
+                  np.maximum(hi, np.minimum(finite.max(axis=0), hi + reach)))
+    lo, hi = lo - 0.04 * size, hi + 0.04 * size
+    inside = np.all((finite >= lo) & (finite <= hi), axis=1) if len(finite) else np.zeros(0, bool)
+
+    # The axes take the shape of the drawing, at most 7.5 x 6.5 inches.
+    aspect = float((hi[1] - lo[1]) / (hi[0] - lo[0]))
+    axes_w = min(7.5, 6.5 / aspect) * 72.0
+    axes_h = axes_w * aspect
+
+    # A stress singularity (a corner where a clamp meets a load) can exceed the rest of the body
+    # many times over at one node; the colour scale then ends at the 99.9th percentile, so that
+    # the body is not drawn in one colour, and the colour bar says so.
+    top = float(np.nanmax(vm))
+    clip = float(np.nanpercentile(vm, 99.9))
+    clipped = top > 1.1 * clip
+    k = power_of_ten(np.array([top]))
+    vm_scale = 10.0 ** k
+    clim = (float(np.nanmin(vm)) / vm_scale, (clip if clipped else top) / vm_scale)
+    n_cells = max(len(vtu["types"]), 1)
+    cell_pixels = (axes_w / 72.0 * DPI * math.sqrt(extent[0] * extent[1] / n_cells)
+                   / (hi[0] - lo[0])) if extent[0] > 0 and extent[1] > 0 else 0.0
+
+    # The axes at their final size first (the ticks depend on it), their place comes later.
+    bar_gap, bar_w = 0.2 * 72, max(9.0, 0.9 * axes_h / 20)
+    fig = new_figure((axes_w + 200) / 72, (axes_h + 200) / 72)
+    ax = fig.add_axes([0, 0, 1, 1])
+    cax = fig.add_axes([0, 0, 1, 1])
+    place(fig, ax, 50, 50, axes_w, axes_h)
+    place(fig, cax, 60 + axes_w, 50, bar_w, 0.9 * axes_h)
+    image, outline = draw_body(ax, vtu, deformed, vm / vm_scale, clim, cell_pixels)
+    ax.add_collection(LineCollection([points[c] for c in outline], colors="0.3",
+                                     linewidths=0.9, linestyles=(0, (4, 3)),
+                                     label="undeformed body"), autolim=False)
+    ax.add_collection(LineCollection([deformed[c] for c in outline], colors="k",
+                                     linewidths=0.6), autolim=False)
+    # A rigid plane or disc (contact.obstacle) is drawn as it is, across the drawing; a gap
+    # formula as the points x + g nu of the contact nodes.
+    obstacles = summary.get("problem", {}).get("contact", {})
+    obstacles = obstacles if isinstance(obstacles, list) else [obstacles]
+    shapes = [o.get("obstacle", "gap") for o in obstacles]
+    for i, obstacle in enumerate(obstacles):
+        shape = shapes[i]
+        first = i == shapes.index(shape)  # one legend entry per kind
+        if shape == "plane":
+            p, n = np.array(obstacle["point"], float), np.array(obstacle["normal"], float)
+            t = np.array([n[1], -n[0]]) / np.hypot(*n)
+            reach = 2.0 * float(np.hypot(*(hi - lo)))
+            line = np.array([p - reach * t, p + reach * t])
+            ax.plot(line[:, 0], line[:, 1], color="tab:brown", lw=3, alpha=0.8,
+                    solid_capstyle="butt", label="rigid plane (not moved)" if first else None,
+                    zorder=0)
+        elif shape == "disc":
+            c, r = np.array(obstacle["centre"], float), float(obstacle["radius"])
+            a = np.linspace(0.0, 2.0 * np.pi, 721)
+            ax.plot(c[0] + r * np.cos(a), c[1] + r * np.sin(a), color="tab:brown", lw=3,
+                    alpha=0.8, label="rigid disc (not moved)" if first else None, zorder=0)
+        else:
+            if not has_gap:
+                label = "rigid foundation"
+            elif np.any(inside):
+                label = "rigid foundation at its true place x + g·ν (not magnified)"
+            else:
+                label = ("rigid foundation: outside the drawing (gap " +
+                         with_unit(f"{np.nanmin(gap):.3g} to {np.nanmax(gap):.3g}", units.length) +
+                         ")")
+            parts = contact["parts"]
+            rows = parts[i][1] if len(parts) == len(obstacles) else slice(None)
+            ax.plot(foundation[rows, 0], foundation[rows, 1], color="tab:brown", lw=3, alpha=0.8,
+                    solid_capstyle="butt", label=label if first else None, zorder=0)
+    shape = "gap" if "gap" in shapes else shapes[0]
+    # Only where the two lines can be told apart.
+    if shape == "gap" and len(obstacles) == 1 and has_gap and s != 1.0 and \
+            np.nanmax(np.abs((s - 1.0) * gap)) > 0.005 * size:
+        ax.plot(magnified[:, 0], magnified[:, 1], color="tab:brown", lw=1.2, ls=(0, (5, 2)),
+                label=f"foundation with the gap magnified {s:g} times: where the magnified "
+                      "body touches it", zorder=2.5)
+    active = data.get("contact_active")
+    if active is not None and np.any(active):
+        ax.plot(deformed[active == 1, 0], deformed[active == 1, 1], "o", ms=1.8,
+                color="tab:orange", label="nodes in contact", zorder=3)
+    if clipped:
+        at = int(np.nanargmax(vm))
+        ax.plot(deformed[at, 0], deformed[at, 1], "x", color="tab:red", ms=8, mew=2, zorder=4,
+                label=f"max {with_unit(f'{top:.3g}', units.stress)} at "
+                      f"({points[at, 0]:.3g}, {points[at, 1]:.3g}), above the colour scale")
+    ax.set_aspect("equal")
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_xlabel(axis_label("x", units.length))
+    ax.set_ylabel(axis_label("y", units.length))
+    bar = fig.colorbar(image, cax=cax, extend="max" if clipped else "neither")
+    bar.set_label(axis_label("von Mises stress", units.stress, k))
+    bar.solids.set_rasterized(False)  # 256 rectangles: as vectors, one raster less in the SVG
+
+    # The figure around the axes: the y labels on the left, the colour bar on the right, the
+    # legend and the title above.
+    left, _ = measure.left(ax)
+    bottom, beyond = measure.bottom(ax)
+    left += BORDER
+    bottom += BORDER
+    bar_gap = max(bar_gap, beyond + 4.0)
+    bar_labels, _, _ = measure.tick_labels(cax.yaxis)
+    right = (bar_gap + bar_w + TICK + max((measure.width(t) for t in bar_labels), default=0.0)
+             + LABEL_PAD + measure.height(bar.ax.get_ylabel()) + BORDER)
+    width = max(8.0 * 72, left + axes_w + right)
+    shift = 0.5 * (width - (left + axes_w + right))  # a narrow body: centred
+    title = wrapped(title_of(summary) +
+                    f"\nDeformed body x + s·u(x), displacements magnified s = {s:g} times" +
+                    (" (the foundation is not)" if has_gap and s != 1.0 else "") +
+                    ", coloured by the von Mises stress", width / 72)
+    labels = ax.get_legend_handles_labels()[1]
+    columns, _, legend_h = legend_columns(measure, labels, width - 2 * BORDER)
+    top_room = BORDER + measure.height(title) + 4.0 + legend_h + 0.5 * LEGEND_SIZE
+    height = bottom + axes_h + top_room
+    fig.set_size_inches(width / 72, height / 72)
+    place(fig, ax, left + shift, bottom, axes_w, axes_h)
+    place(fig, cax, left + shift + axes_w + bar_gap, bottom + 0.05 * axes_h, bar_w, 0.9 * axes_h)
+    fig.suptitle(title, fontsize=TEXT_SIZE, y=1.0 - BORDER / height, va="top")
+    # Above the drawing, where it cannot hide a part of the body, centred like the title.
+    ax.legend(fontsize=LEGEND_SIZE, loc="lower center", frameon=False, ncol=columns,
+              bbox_to_anchor=(0.5, (bottom + axes_h) / height), bbox_transform=fig.transFigure)
+    return fig, describe_limits(ax)
+
+
+def log_formatter(minor):
+    """Labels of a log axis as 10⁻⁸ and 2×10⁻⁸, in plain text (no mathtext)."""
+    from matplotlib.ticker import LogFormatter
+
+    class PlainPowerFormatter(LogFormatter):
+        def _num_to_string(self, x, vmin, vmax):
+            e = math.floor(math.log10(x) + 1e-9)
+            m = x / 10.0 ** e
+            m_text = f"{round(m)}" if abs(m - round(m)) < 1e-6 else f"{m:.2g}"
+            return power_text(e) if m_text == "1" else f"{m_text}×{power_text(e)}"
+
+    if minor:
+        return PlainPowerFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5))
+    return PlainPowerFormatter(labelOnlyBase=True)
+
+
+def figure_convergence(summary, measure):
+    import numpy as np
+    from matplotlib.ticker import MaxNLocator
+
+    method = summary.get("method", "uzawa_gnm")
+    changes = np.array([np.nan if v is None else v for v in summary.get("dual_changes", [])],
+                       dtype=float)
+    steps = np.arange(1, len(changes) + 1)
+    fig = new_figure(11, 4.2)
+    left = fig.add_axes([0.1, 0.1, 0.35, 0.7])
+    right = fig.add_axes([0.6, 0.1, 0.35, 0.7])
+    outer = "Newton iteration" if method == "semismooth_newton" else "Uzawa iteration k"
+
+    left.set_yscale("log")
+    left.yaxis.set_major_formatter(log_formatter(False))
+    left.yaxis.set_minor_formatter(log_formatter(True))
+    shown = np.isfinite(changes) & (changes > 0)
+    if np.any(shown):
+        left.plot(steps[shown], changes[shown], "o-", color="tab:blue", ms=4,
+                  label="‖lᵏ − lᵏ⁻¹‖ / ‖lᵏ‖")
+    tol = summary.get("problem", {}).get("solver", {}).get("uzawa_tolerance")
+    if method != "semismooth_newton" and isinstance(tol, (int, float)) and tol > 0:
+        left.axhline(tol, color="tab:red", ls="--", lw=1, label=f"tolerance {tol:g}")
+    left.set_xlabel(outer)
+    left.set_ylabel("relative change of the contact pressure")
+    left_title = ("Uzawa residual" if method != "semismooth_newton" else
+                  "Change of the contact pressure (the method stops\nwhen the active set repeats)")
+    left.set_title(left_title, fontsize=TEXT_SIZE, y=1.0)
+    left.grid(True, which="both", alpha=0.3)
+    if len(steps) <= 30:
+        left.set_xticks(steps)
+    if left.get_legend_handles_labels()[0]:
+        left.legend(fontsize=LEGEND_SIZE)
+
+    if method == "uzawa_gnm":
+        gnm = np.array(summary.get("gnm_iterations", []), dtype=float)
+        bars = right.bar(np.arange(1, len(gnm) + 1), gnm, color="tab:green")
+        if len(gnm) <= 40:
+            right.bar_label(bars, fmt="%d", fontsize=LEGEND_SIZE)
+            right.set_xticks(np.arange(1, len(gnm) + 1))
+        right.set_ylabel("GNM iterations")
+        right_title = "Generalised Newton iterations per Uzawa step"
+        right.set_ylim(0, max(gnm.max() if len(gnm) else 1, 1) * 1.15)
+    else:
+        active = np.array(summary.get("active_set_sizes", []), dtype=float)
+        right.plot(np.arange(1, len(active) + 1), active, "o-" if len(active) <= 50 else "-",
+                   color="tab:green", ms=4)
+        right.set_ylabel("nodes in the active set")
+        right_title = "Active set size per iteration"
+        right.yaxis.set_major_locator(MaxNLocator(integer=True))
+    right.set_title(right_title, fontsize=TEXT_SIZE, y=1.0)
+    right.set_xlabel(outer)
+    right.grid(True, axis="y", alpha=0.3)
+    title = wrapped(title_of(summary) + f"\nConvergence: {summary.get('message', '')}", 11)
+    fig.suptitle(title, fontsize=TEXT_SIZE, y=1.0 - BORDER / (4.2 * 72), va="top")
+
+    w, h = 11 * 72.0, 4.2 * 72.0
+    top = (BORDER + measure.height(title) + 8.0
+           + max(measure.height(left_title), measure.height(right_title)) + TITLE_PAD)
+    for _ in range(2):  # the number of ticks depends on the size of the axes
+        l1, o1 = measure.left(left)
+        l2, o2 = measure.left(right)
+        b1, _ = measure.bottom(left)
+        b2, beyond = measure.bottom(right)
+        bottom = BORDER + max(b1, b2)
+        gap = 24.0 + l2
+        width = (w - BORDER - l1 - gap - BORDER - max(beyond, 2.0)) / 2
+        place(fig, left, BORDER + l1, bottom, width, h - bottom - top - o1)
+        place(fig, right, BORDER + l1 + width + gap, bottom, width, h - bottom - top - o2)
+    return fig, describe_limits(left)
+
+
+# Drawing and writing -----------------------------------------------------------------------
+
+
+def png_chunk(kind, data):
+    import zlib
+
+    return (len(data).to_bytes(4, "big") + kind + data
+            + zlib.crc32(kind + data).to_bytes(4, "big"))
+
+
+def write_png(fig, path, metadata):
+    """The figure drawn by Agg at DPI, written as an 8-bit RGB PNG (the PNG specification, ISO/IEC
+    15948). Not through Pillow, as matplotlib does: Pillow copies the picture, keeps its alpha
+    channel (always opaque here) and tries five row filters on every row; rows left unfiltered
+    and compressed quickly make files about 10 % larger, written three to four times faster
+    (a third of the time of a figure went into writing its PNG)."""
+    import zlib
+
+    import numpy as np
+
+    fig.set_dpi(DPI)
+    fig.canvas.draw()
+    rgba = np.asarray(fig.canvas.buffer_rgba())
+    h, w, _ = rgba.shape
+    rows = np.empty((h, 1 + 3 * w), np.uint8)
+    rows[:, 0] = 0  # filter type 0 (None) on each row
+    rows[:, 1:] = rgba[..., :3].reshape(h, 3 * w)
+    text = b"".join(png_chunk(b"tEXt", k.encode("latin-1") + b"\0" + v.encode("latin-1", "replace"))
+                    for k, v in metadata.items())
+    dots_per_metre = round(DPI / 0.0254).to_bytes(4, "big")
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n"
+                + png_chunk(b"IHDR", w.to_bytes(4, "big") + h.to_bytes(4, "big") + bytes([8, 2, 0, 0, 0]))
+                + png_chunk(b"pHYs", dots_per_metre + dots_per_metre + b"\x01")
+                + text
+                + png_chunk(b"IDAT", zlib.compress(rows, 1))  # the array, not a copy
+                + png_chunk(b"IEND", b""))
+
+
+def formats_of(text):
+    """The list of formats in `text` ("png,svg"), each once, in the order given."""
+    formats = []
+    for fmt in text.split(","):
+        fmt = fmt.strip().lower()
+        if fmt not in FORMATS:
+            raise UsageError(f"--format {text}: '{fmt}' is not a format of the figures; expected "
+                             "png, svg or pdf, or several separated by commas (png,svg)")
+        if fmt not in formats:
+            formats.append(fmt)
+    return formats
+
+
+def draw_and_save(outdir, name, make, written, formats):
+    """Draws one figure and writes it in each of `formats` under a temporary name, appending
+    (temporary, final) to `written` before each file is begun."""
+    fig, description = make()
+    for fmt in formats:
+        final = os.path.join(outdir, f"{name}.{fmt}")
+        tmp = os.path.join(outdir, f".{name}.{fmt}.tmp.{os.getpid()}")
+        written.append((tmp, final))
+        metadata = {"Title": name, "Description": description}
+        if fmt == "png":
+            write_png(fig, tmp, metadata)
+        elif fmt == "svg":
+            metadata["Date"] = None  # the same file for the same results
+            fig.savefig(tmp, format=fmt, dpi=DPI, metadata=metadata)
+        else:  # PDF's information dictionary has a Subject, not a Description
+            fig.savefig(tmp, format=fmt, dpi=DPI, metadata={
+                "Title": name, "Subject": description, "CreationDate": None})
+    # A figure is a web of references that only the garbage collector frees: now, so that the
+    # next figure reuses its memory.
+    del fig
+    import gc
+
+    gc.collect()
+
+
+def draw(outdir, next_figure, scale, written, formats, warnings=True):
+    """Reads the results and draws the figures that `next_figure()` names, until it returns
+    None, into temporary files (listed in `written`); returns the names drawn."""
+    import_plotting()
+    summary = read_summary(outdir)
+    units = units_of_summary(summary, warnings)
+    contact = read_contact_csv(outdir)
+    # Shared by the figures along the contact boundary.
+    contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
+    contact["parts"] = boundary_parts(contact)
+    contact["intervals"] = [iv for _, rows in contact["parts"]
+                            for iv in contact_intervals(contact["t"][rows],
+                                                        contact["pressure"][rows] > 0)]
+    measure = Measure()
+    makers = {
+        "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),
+        "contact_pressure": lambda: figure_pressure(summary, contact, units, measure),
+        "deformed_von_mises": lambda: figure_deformed(
+            summary, read_vtu(os.path.join(outdir, "solution.vtu")), contact, scale, units,
+            measure),
+        "convergence": lambda: figure_convergence(summary, measure),
+    }
+    drawn = []
+    while (name := next_figure()) is not None:
+        drawn.append(name)
+        draw_and_save(outdir, name, makers[name], written, formats)
+    return drawn
+
+
+def cores():
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+# The figures, the longest to draw first: with two processes taking them in turn, neither waits
+# long for the other at the end.
+ORDER = ["deformed_von_mises", "convergence", "contact_displacement", "contact_pressure"]
+
+
+class Helper:
+    """A second process (fork, before numpy and matplotlib are imported: the two import them at
+    the same time) that draws figures too. The two take the names of the figures from a pipe,
+    one at a time, so that a process that is faster (or started sooner) draws more; the helper
+    reports the files it wrote, or its error, through another pipe."""
+
+    def __init__(self, outdir, scale, formats):
+        self.outdir = outdir
+        self.formats = formats
+        queue_read, queue_write = os.pipe()
+        os.write(queue_write, bytes(range(len(ORDER))))
+        os.close(queue_write)  # read to the end: no figure left
+        report_read, report_write = os.pipe()
+        sys.stdout.flush()
+        sys.stderr.flush()
+        self.pid = os.fork()
+        if self.pid == 0:
+            os.close(report_read)
+            self.run(queue_read, report_write, outdir, scale, formats)  # does not return
+        os.close(report_write)
+        self.queue = queue_read
+        self.report = report_read
+
+    def next_figure(self):
+        """The next figure to draw, or None: reads one byte (atomic: each name goes to one of
+        the processes)."""
+        index = os.read(self.queue, 1)
+        return ORDER[index[0]] if index else None
+
+    @staticmethod
+    def run(queue, report_end, outdir, scale, formats):
+        status, written = 0, []
+
+        def next_figure():
+            index = os.read(queue, 1)
+            return ORDER[index[0]] if index else None
+
+        try:
+            drawn = draw(outdir, next_figure, scale, written, formats, warnings=False)
+            report = {"drawn": drawn}
+        except UsageError as e:
+            status, report = 2, {"usage": str(e)}
+        except BaseException as e:  # noqa: BLE001 - the parent says it
+            status, report = 1, {"bug": f"{type(e).__name__}: {e}"}
+            if os.environ.get("SIGNORINI_DEBUG"):
+                import traceback
+
+                traceback.print_exc()
+        try:
+            with os.fdopen(report_end, "w") as pipe:
+                pipe.write(json.dumps(report))
+        finally:
+            os._exit(status)
+
+    def temporaries(self, names):
+        """The files the helper writes for the figures `names`."""
+        return [(os.path.join(self.outdir, f".{name}.{fmt}.tmp.{self.pid}"),
+                 os.path.join(self.outdir, f"{name}.{fmt}"))
+                for name in names for fmt in self.formats]
+
+    def finish(self):
+        """Waits for the helper; returns the names of the figures it drew, or raises its error."""
+        os.close(self.queue)
+        with os.fdopen(self.report) as pipe:
+            text = pipe.read()
+        _, status = os.waitpid(self.pid, 0)
+        try:
+            report = json.loads(text)
+        except ValueError:
+            report = {}
+        if "usage" in report:
+            raise UsageError(report["usage"])
+        if "bug" in report:
+            raise RuntimeError(report["bug"])
+        if "drawn" not in report or not os.WIFEXITED(status) or os.WEXITSTATUS(status) != 0:
+            how = (f"signal {os.WTERMSIG(status)}" if os.WIFSIGNALED(status) else
+                   f"exit status {os.WEXITSTATUS(status)}")
+            raise RuntimeError(f"the second process drawing the figures ended ({how}) without "
+                               "saying what it drew")
+        return report["drawn"]
+
+    def stop(self):
+        """Ends the helper (after an error here)."""
+        import signal
+
+        for fd in (self.queue, self.report):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+        try:
+            os.kill(self.pid, signal.SIGTERM)
+            os.waitpid(self.pid, 0)
+        except (ChildProcessError, ProcessLookupError):
+            pass
+
+
+def save_all(outdir, scale, quiet, formats):
+    """Every file is written under a temporary name first and renamed at the end, so that a
+    failure leaves no half-written picture and keeps the pictures of an earlier run. With two
+    cores or more, two processes draw the figures (about half of the time)."""
+    helper = None
+    if cores() >= 2 and hasattr(os, "fork"):
+        helper = Helper(outdir, scale, formats)
+    written, mine = [], []
+    try:
+        if helper is None:
+            figures = iter(ORDER)
+            draw(outdir, lambda: next(figures, None), scale, written, formats)
+        else:
+            mine = draw(outdir, helper.next_figure, scale, written, formats)
+            waiting, helper = helper, None
+            try:
+                theirs = waiting.finish()
+            except BaseException:  # what it wrote before its error goes
+                written += waiting.temporaries([n for n in ORDER if n not in mine])
+                raise
+            written += waiting.temporaries(theirs)
+        for tmp, final in written:
+            os.replace(tmp, final)
+    except OSError as e:
+        raise UsageError(f"cannot write the figures into '{outdir}': {e}")
+    finally:
+        if helper is not None:  # an error here: the helper's work is of no use
+            helper.stop()
+            written += helper.temporaries([n for n in ORDER if n not in mine])
+        for tmp, _ in written:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+    if not quiet:
+        print("figures: " + ", ".join(os.path.join(outdir, f"{n}.{fmt}")
+                                      for n in FIGURES for fmt in formats))
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("outdir", nargs="?", help="output folder of signorini solve")
+    parser.add_argument("--scale", type=float, default=None,
+                        help="magnification of the displacement in the deformed-body figure "
+                             "(default: chosen so that the largest is about 10%% of the body)")
+    parser.add_argument("--format", default=DEFAULT_FORMATS,
+                        help="the formats of the figures: png, svg, pdf, or several separated by "
+                             f"commas (default: {DEFAULT_FORMATS})")
+    parser.add_argument("--quiet", action="store_true", help="print nothing but errors")
+    parser.add_argument("--check", action="store_true",
+                        help="only check that numpy and matplotlib are installed")
+    args = parser.parse_args(argv)
+    try:
+        formats = formats_of(args.format)
+        check_plotting()
+        if args.check:
+            return 0
+        if not args.outdir:
+            raise UsageError("expected the output folder of signorini solve")
+        if args.scale is not None and not (math.isfinite(args.scale) and args.scale > 0):
+            raise UsageError(f"--scale {args.scale}: expected a positive number")
+        if not os.path.isdir(args.outdir):
+            raise UsageError(f"'{args.outdir}' is not a folder")
+        check_results(args.outdir)
+        save_all(args.outdir, args.scale, args.quiet, formats)
+    except UsageError as e:
+        fail(2, e)
+    return 0
+
+
+def run():
+    """The command line (tools/plot_results.py): main() with its exit status, and a bug said in
+    one line."""
+    try:
+        status = main(sys.argv[1:])
+        # Every file is written and closed: the interpreter's clean-up of matplotlib's thousands
+        # of objects (a twentieth of a second) is skipped.
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(status)
+    except SystemExit:
+        raise
+    except BaseException as e:  # a bug: say so in one line, the traceback on request
+        if os.environ.get("SIGNORINI_DEBUG"):
+            raise
+        fail(1, f"plot script failed: {type(e).__name__}: {e} (set SIGNORINI_DEBUG=1 for a "
+                f"traceback)")
+
+
+if __name__ == "__main__":
+    run()
