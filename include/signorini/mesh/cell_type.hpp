@@ -1,9 +1,13 @@
 #pragma once
 // Reference cells: how many nodes a cell has, its dimension and order, and which local nodes make
-// up each facet. Node orders are Gmsh's (and VTK's, which agree for these types): corners first,
-// counterclockwise in 2D, then the mid-edge nodes in the order of the edges, then a centre node.
-// Finite elements exist for the 2D types (fem/reference_element.hpp); Tet4 and Hex8 are listed
-// so that 3D meshes can be held by the same Mesh type when their elements arrive.
+// up each facet. Node orders are Gmsh's: corners first, counterclockwise in 2D, then the mid-edge
+// nodes in the order of the edges, then the face centres and a centre node. VTK agrees for the
+// lines, the 2D types, Tet4 and Hex8; its Tet10 and Hex27 list some nodes in another order
+// (io/vtu_file.cpp permutes them). The 3D cells: Tet4 (corners (0,0,0), (1,0,0), (0,1,0),
+// (0,0,1)); Tet10 (mid-edge nodes on 0-1, 1-2, 2-0, 0-3, 2-3, 1-3); Hex8 on [-1, 1]^3 (the bottom
+// z = -1 counterclockwise 0..3 seen from above, the top 4..7 above them); Hex27 (mid-edge nodes on
+// 0-1, 0-3, 0-4, 1-2, 1-5, 2-3, 2-6, 3-7, 4-5, 4-7, 5-6, 6-7, the centres of the faces z = -1,
+// y = -1, x = -1, x = 1, y = 1, z = 1, the centre of the cell).
 
 #include <span>
 #include <string_view>
@@ -12,9 +16,9 @@
 
 namespace signorini {
 
-enum class CellType { Line2, Line3, Tri3, Tri6, Quad4, Quad8, Quad9, Tet4, Hex8 };
+enum class CellType { Line2, Line3, Tri3, Tri6, Quad4, Quad8, Quad9, Tet4, Tet10, Hex8, Hex27 };
 
-inline constexpr EnumNames<CellType, 9> kCellTypeNames{{
+inline constexpr EnumNames<CellType, 11> kCellTypeNames{{
     {CellType::Line2, "line2"},
     {CellType::Line3, "line3"},
     {CellType::Tri3, "tri3"},
@@ -23,7 +27,9 @@ inline constexpr EnumNames<CellType, 9> kCellTypeNames{{
     {CellType::Quad8, "quad8"},
     {CellType::Quad9, "quad9"},
     {CellType::Tet4, "tet4"},
+    {CellType::Tet10, "tet10"},
     {CellType::Hex8, "hex8"},
+    {CellType::Hex27, "hex27"},
 }};
 
 /// Spatial dimension of the reference cell (1 for lines, which are the facets of 2D cells).
@@ -39,7 +45,9 @@ constexpr int cell_dimension(CellType t) {
     case CellType::Quad9:
       return 2;
     case CellType::Tet4:
+    case CellType::Tet10:
     case CellType::Hex8:
+    case CellType::Hex27:
       return 3;
   }
   return 0;
@@ -63,6 +71,10 @@ constexpr int nodes_per_cell(CellType t) {
       return 8;
     case CellType::Quad9:
       return 9;
+    case CellType::Tet10:
+      return 10;
+    case CellType::Hex27:
+      return 27;
   }
   return 0;
 }
@@ -74,6 +86,8 @@ constexpr int cell_order(CellType t) {
     case CellType::Tri6:
     case CellType::Quad8:
     case CellType::Quad9:
+    case CellType::Tet10:
+    case CellType::Hex27:
       return 2;
     default:
       return 1;
@@ -94,8 +108,10 @@ constexpr int facets_per_cell(CellType t) {
     case CellType::Quad9:
       return 4;
     case CellType::Tet4:
+    case CellType::Tet10:
       return 4;
     case CellType::Hex8:
+    case CellType::Hex27:
       return 6;
   }
   return 0;

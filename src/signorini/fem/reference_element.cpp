@@ -80,7 +80,9 @@ void shape_functions(CellType t, const Eigen::Vector3d& x, ShapeValues& N) {
       for (int a = 0; a < 9; ++a) N(a) = lagrange2(kQuadXi[a], xi) * lagrange2(kQuadEta[a], eta);
       return;
     case CellType::Tet4:
+    case CellType::Tet10:
     case CellType::Hex8:
+    case CellType::Hex27:
       break;
   }
   require_finite_element(t);
@@ -137,7 +139,9 @@ void shape_gradients(CellType t, const Eigen::Vector3d& x, ShapeGradients& dN) {
       }
       return;
     case CellType::Tet4:
+    case CellType::Tet10:
     case CellType::Hex8:
+    case CellType::Hex27:
       break;
   }
   require_finite_element(t);
@@ -158,7 +162,9 @@ Eigen::Vector3d reference_node(CellType t, int a) {
     case CellType::Quad9:
       return {kQuadXi[k], kQuadEta[k], 0.0};
     case CellType::Tet4:
+    case CellType::Tet10:
     case CellType::Hex8:
+    case CellType::Hex27:
       break;
   }
   require_finite_element(t);
@@ -201,7 +207,9 @@ std::vector<QuadraturePoint> cell_quadrature(CellType t, int quad4_points, int l
       tensor(3);
       return rule;
     case CellType::Tet4:
+    case CellType::Tet10:
     case CellType::Hex8:
+    case CellType::Hex27:
       break;
   }
   require_finite_element(t);

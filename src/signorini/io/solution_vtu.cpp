@@ -38,7 +38,7 @@ std::string solution_vtu(const ContactResult& result, const Model& model) {
   VtuFile vtu(mesh.coordinates());
   std::vector<std::int32_t> region(static_cast<std::size_t>(mesh.num_cells()));
   for (Index c = 0; c < mesh.num_cells(); ++c) {
-    vtu.add_cell(vtk_cell_type(mesh.cell_type(c)), mesh.cell(c));
+    vtu.add_cell(mesh.cell_type(c), mesh.cell(c));
     region[static_cast<std::size_t>(c)] = mesh.cell_region(c);
   }
   // The region of each cell: its index in the mesh's region names (0: "", cells in no named

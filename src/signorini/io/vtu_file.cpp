@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <bit>
 #include <cstring>
 #include <stdexcept>
@@ -61,8 +62,12 @@ VtkCellType vtk_cell_type(CellType type) {
       return VtkCellType::BiquadraticQuad;
     case CellType::Tet4:
       return VtkCellType::Tetra;
+    case CellType::Tet10:
+      return VtkCellType::QuadraticTetra;
     case CellType::Hex8:
       return VtkCellType::Hexahedron;
+    case CellType::Hex27:
+      return VtkCellType::TriquadraticHexahedron;
   }
   return VtkCellType::Quad;
 }
@@ -84,8 +89,34 @@ int vtk_points_per_cell(VtkCellType type) {
       return 8;
     case VtkCellType::BiquadraticQuad:
       return 9;
+    case VtkCellType::QuadraticTetra:
+      return 10;
+    case VtkCellType::TriquadraticHexahedron:
+      return 27;
   }
   return 0;
+}
+
+namespace {
+// VTK's node k is our node order[k] where the orders differ (mesh/cell_type.hpp): Tet10 lists the
+// mid-edge nodes of 1-3 and 2-3 the other way round; Hex27 lists the edges bottom, top, vertical
+// and the face centres x, y, z.
+constexpr std::array<int, 10> kTet10ToVtk{0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
+constexpr std::array<int, 27> kHex27ToVtk{0,  1,  2,  3,  4,  5,  6,  7,  8,  11, 13, 9,  16, 18,
+                                          19, 17, 10, 12, 14, 15, 22, 23, 21, 24, 20, 25, 26};
+}  // namespace
+
+void VtuFile::add_cell(CellType type, std::span<const Index> nodes) {
+  std::span<const int> order;
+  if (type == CellType::Tet10) order = kTet10ToVtk;
+  if (type == CellType::Hex27) order = kHex27ToVtk;
+  if (order.empty() || nodes.size() != order.size()) {
+    add_cell(vtk_cell_type(type), nodes);
+    return;
+  }
+  std::array<Index, 27> vtk{};
+  for (std::size_t k = 0; k < order.size(); ++k) vtk[k] = nodes[static_cast<std::size_t>(order[k])];
+  add_cell(vtk_cell_type(type), std::span<const Index>(vtk.data(), order.size()));
 }
 
 VtuFile::VtuFile(const Eigen::MatrixXd& points) : num_points_(points.cols()) {

@@ -25,7 +25,9 @@ enum class VtkCellType : std::uint8_t {
   QuadraticEdge = 21,
   QuadraticTriangle = 22,
   QuadraticQuad = 23,
+  QuadraticTetra = 24,
   BiquadraticQuad = 28,
+  TriquadraticHexahedron = 29,
 };
 
 VtkCellType vtk_cell_type(CellType type);
@@ -40,6 +42,8 @@ class VtuFile {
 
   /// Appends one cell with the given point numbers.
   void add_cell(VtkCellType type, std::span<const Index> points);
+  /// A cell of ours (Gmsh's node order, mesh/cell_type.hpp), its nodes put in VTK's order.
+  void add_cell(CellType type, std::span<const Index> nodes);
 
   /// A point-data array of `components` doubles per point, point after point. `component_names`
   /// (optional, one per component) label the components in ParaView. Throws std::invalid_argument

@@ -15,11 +15,21 @@ constexpr std::array<std::array<int, 3>, 4> kQuad2Facets{
 constexpr std::array<std::array<int, 2>, 3> kTri3Facets{{{0, 1}, {1, 2}, {2, 0}}};
 constexpr std::array<std::array<int, 3>, 3> kTri6Facets{{{0, 1, 3}, {1, 2, 4}, {2, 0, 5}}};
 constexpr std::array<std::array<int, 1>, 2> kLineFacets{{{0}, {1}}};
-// Hex8 and Tet4 faces are ordered counterclockwise seen from outside.
+// 3D faces: corners counterclockwise seen from outside (the outward normal by the right-hand
+// rule), then, on quadratic cells, the face's mid-edge nodes in the order of its edges and its
+// centre (the Tri6 and Quad9 orders). Hexahedra: z = -1, z = 1, y = -1, x = 1, y = 1, x = -1.
 constexpr std::array<std::array<int, 4>, 6> kHex8Facets{
     {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+constexpr std::array<std::array<int, 9>, 6> kHex27Facets{{{0, 3, 2, 1, 9, 13, 11, 8, 20},
+                                                          {4, 5, 6, 7, 16, 18, 19, 17, 25},
+                                                          {0, 1, 5, 4, 8, 12, 16, 10, 21},
+                                                          {1, 2, 6, 5, 11, 14, 18, 12, 23},
+                                                          {2, 3, 7, 6, 13, 15, 19, 14, 24},
+                                                          {3, 0, 4, 7, 9, 10, 17, 15, 22}}};
 constexpr std::array<std::array<int, 3>, 4> kTet4Facets{
     {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+constexpr std::array<std::array<int, 6>, 4> kTet10Facets{
+    {{0, 2, 1, 6, 5, 4}, {0, 1, 3, 4, 9, 7}, {1, 2, 3, 5, 8, 9}, {0, 3, 2, 7, 8, 6}}};
 }  // namespace
 
 CellType facet_type(CellType t) {
@@ -33,8 +43,12 @@ CellType facet_type(CellType t) {
       return CellType::Line3;
     case CellType::Tet4:
       return CellType::Tri3;
+    case CellType::Tet10:
+      return CellType::Tri6;
     case CellType::Hex8:
       return CellType::Quad4;
+    case CellType::Hex27:
+      return CellType::Quad9;
     case CellType::Line2:
     case CellType::Line3:
       break;
@@ -61,8 +75,12 @@ std::span<const int> facet_local_nodes(CellType t, int facet) {
       return kQuad2Facets[f];
     case CellType::Tet4:
       return kTet4Facets[f];
+    case CellType::Tet10:
+      return kTet10Facets[f];
     case CellType::Hex8:
       return kHex8Facets[f];
+    case CellType::Hex27:
+      return kHex27Facets[f];
   }
   throw std::logic_error("unknown cell type");
 }
