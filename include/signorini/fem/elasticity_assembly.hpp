@@ -20,20 +20,21 @@ struct ElasticityOptions {
   /// `material` everywhere.
   std::vector<std::optional<IsotropicMaterial>> region_materials;
   PlaneModel plane_model = PlaneModel::PlaneStrain;
-  /// Gauss points per direction in Q1 quadrilaterals (the paper's 2x2 rule); the other cell
-  /// types have their own rules (3x3 on quadratic quadrilaterals, 3 and 6 points on P1 and P2
-  /// triangles).
+  /// Gauss points per direction in Q1 quadrilaterals and hexahedra (the paper's 2x2 rule); the
+  /// other cell types have their own rules (fem/reference_element.hpp). plane_model is for 2D
+  /// meshes; 3D ones use the full Hooke's law.
   int gauss_points = 2;
 };
 
 /// The material of the cells of region r.
 const IsotropicMaterial& material_of_region(const ElasticityOptions& options, int region);
-/// The plane elasticity matrix D of each region of the mesh (index: Mesh::cell_region).
+/// The plane elasticity matrix D of each region of a 2D mesh (index: Mesh::cell_region); any
+/// dimension: fem/elasticity_matrices.hpp.
 std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
                                                         const ElasticityOptions& options);
 
-/// Throws InputError unless the mesh is 2D and every cell type has a finite element (tri3, tri6,
-/// quad4, quad8, quad9).
+/// Throws InputError unless the mesh is 2D or 3D and every cell type has a finite element of the
+/// mesh's dimension (tri3, tri6, quad4, quad8, quad9; tet4, tet10, hex8, hex27).
 void require_supported_cells(const Mesh& mesh);
 
 /// Reduced stiffness A (num_free x num_free, SPD when clamping holds the body, both triangles

@@ -27,4 +27,8 @@ void validate(const IsotropicMaterial& material);
 /// The 3x3 matrix D with (s_xx, s_yy, s_xy) = D (e_xx, e_yy, 2 e_xy).
 Eigen::Matrix3d plane_elasticity_matrix(const IsotropicMaterial& material, PlaneModel model);
 
+/// The 6x6 matrix D of a 3D body with (s_xx, s_yy, s_zz, s_yz, s_xz, s_xy) = D (e_xx, e_yy, e_zz,
+/// 2 e_yz, 2 e_xz, 2 e_xy) (Voigt order): Hooke's law sigma = lambda tr(e) I + 2 mu e.
+Eigen::Matrix<double, 6, 6> elasticity_matrix_3d(const IsotropicMaterial& material);
+
 }  // namespace signorini

@@ -8,6 +8,7 @@ DofMap::DofMap(Index num_nodes, int dim)
     : num_nodes_(num_nodes), dim_(dim), free_(static_cast<std::size_t>(num_nodes * dim), 0) {}
 
 void DofMap::set_frame(Index node, const Eigen::Matrix2d& Q) {
+  if (dim_ != 2) throw std::logic_error("DofMap::set_frame: local axes are 2D only so far");
   if (finalized_) throw std::logic_error("DofMap::set_frame after finalize");
   if (dim_ != 2) throw std::logic_error("DofMap::set_frame: 2D only");
   if (frame_of_.empty()) frame_of_.assign(static_cast<std::size_t>(num_nodes_), -1);

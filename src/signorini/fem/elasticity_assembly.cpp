@@ -5,8 +5,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "signorini/core/error.hpp"
+#include "signorini/fem/elasticity_matrices.hpp"
 #include "signorini/fem/isoparametric_element.hpp"
 #include "signorini/fem/sparsity_pattern.hpp"
 
@@ -35,24 +37,27 @@ const IsotropicMaterial& material_of_region(const ElasticityOptions& options, in
 
 std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
                                                         const ElasticityOptions& options) {
-  std::vector<Eigen::Matrix3d> D;
-  for (std::size_t r = 0; r < mesh.region_names().size(); ++r)
-    D.push_back(plane_elasticity_matrix(material_of_region(options, static_cast<int>(r)),
-                                        options.plane_model));
-  return D;
+  return region_elasticity_matrices_of<2>(mesh, options);
 }
 
 void require_supported_cells(const Mesh& mesh) {
-  if (mesh.dim() != 2)
-    throw InputError("finite elements for " + std::to_string(mesh.dim()) +
-                     "D meshes are not implemented yet (2D only)");
-  for (const CellType t : mesh.cell_types()) require_finite_element(t);
+  if (mesh.dim() != 2 && mesh.dim() != 3)
+    throw InputError("a mesh of dimension " + std::to_string(mesh.dim()) +
+                     ": expected a 2D or a 3D mesh");
+  for (const CellType t : mesh.cell_types()) {
+    require_finite_element(t);
+    if (cell_dimension(t) != mesh.dim())
+      throw InputError(std::string("a ") + std::string(enum_to_string(kCellTypeNames, t)) +
+                       " cell in a " + std::to_string(mesh.dim()) +
+                       "D mesh: expected cells of the mesh's dimension");
+  }
 }
 
-SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
-                                const ElasticityOptions& options) {
-  require_supported_cells(mesh);
-  const std::vector<Eigen::Matrix3d> D = region_elasticity_matrices(mesh, options);
+namespace {
+
+template <int Dim>
+SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& options) {
+  const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices_of<Dim>(mesh, options);
   const SparsityPattern pattern(mesh, dofs);
   SparseMatrix A = pattern.zero_matrix();
   double* values = A.valuePtr();
@@ -60,13 +65,13 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
   // mesh) share its element matrix: compare the node coordinates relative to the first node.
   CellType previous_type = mesh.num_cells() > 0 ? mesh.cell_type(0) : CellType::Quad4;
   int previous_region = mesh.num_cells() > 0 ? mesh.cell_region(0) : 0;
-  CellCoordinates previous = CellCoordinates::Zero(2, 0);
+  CellCoordinatesOf<Dim> previous = CellCoordinatesOf<Dim>::Zero(Dim, 0);
   CellRules rules(options.gauss_points);
-  ElementMatrix K;
+  ElementMatrixOf<Dim> K;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const CellType type = mesh.cell_type(c);
-    const CellCoordinates X = cell_coordinates(mesh, c);
-    const CellCoordinates relative = X.colwise() - X.col(0);
+    const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
+    const CellCoordinatesOf<Dim> relative = X.colwise() - X.col(0);
     const int region = mesh.cell_region(c);
     bool same = c > 0 && type == previous_type && region == previous_region;
     if (same) {
@@ -79,7 +84,7 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
     }
     if (!same) {
       try {
-        K = element_stiffness(type, X, D[static_cast<std::size_t>(region)], rules(type));
+        K = element_stiffness<Dim>(type, X, D[static_cast<std::size_t>(region)], rules(type));
       } catch (const InputError& e) {
         throw InputError(cell_name(mesh, c) + ": " + e.what());
       }
@@ -89,61 +94,82 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
     }
     const auto nodes = mesh.cell(c);
     const auto n = static_cast<int>(nodes.size());
-    // Nodes with local axes (DofMap::set_frame): R^T K R, R the block diagonal of their axes, on
-    // a copy (K may serve the next cell too).
-    const ElementMatrix* Kc = &K;
-    ElementMatrix rotated;
-    if (dofs.has_frames()) {
-      for (int a = 0; a < n; ++a) {
-        const Index node = nodes[static_cast<std::size_t>(a)];
-        if (!dofs.has_frame(node)) continue;
-        if (Kc == &K) {
-          rotated = K;
-          Kc = &rotated;
+    // Nodes with local axes (DofMap::set_frame, 2D): R^T K R, R the block diagonal of their
+    // axes, on a copy (K may serve the next cell too).
+    const ElementMatrixOf<Dim>* Kc = &K;
+    ElementMatrixOf<Dim> rotated;
+    if constexpr (Dim == 2) {
+      if (dofs.has_frames()) {
+        for (int a = 0; a < n; ++a) {
+          const Index node = nodes[static_cast<std::size_t>(a)];
+          if (!dofs.has_frame(node)) continue;
+          if (Kc == &K) {
+            rotated = K;
+            Kc = &rotated;
+          }
+          const Eigen::Matrix2d Q = dofs.frame(node);
+          rotated.middleRows(2 * a, 2) = (Q.transpose() * rotated.middleRows(2 * a, 2)).eval();
+          rotated.middleCols(2 * a, 2) = (rotated.middleCols(2 * a, 2) * Q).eval();
         }
-        const Eigen::Matrix2d Q = dofs.frame(node);
-        rotated.middleRows(2 * a, 2) = (Q.transpose() * rotated.middleRows(2 * a, 2)).eval();
-        rotated.middleCols(2 * a, 2) = (rotated.middleCols(2 * a, 2) * Q).eval();
       }
     }
-    std::array<Index, 4> block{};
+    std::array<Index, Dim * Dim> block{};
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a) {
         pattern.block_positions(nodes[static_cast<std::size_t>(a)],
                                 nodes[static_cast<std::size_t>(b)], block.data());
-        for (int ka = 0; ka < 2; ++ka)
-          for (int kb = 0; kb < 2; ++kb) {
-            const Index pos = block[static_cast<std::size_t>(ka * 2 + kb)];
-            if (pos >= 0) values[pos] += (*Kc)(2 * a + ka, 2 * b + kb);  // clamped: eliminated
+        for (int ka = 0; ka < Dim; ++ka)
+          for (int kb = 0; kb < Dim; ++kb) {
+            const Index pos = block[static_cast<std::size_t>(ka * Dim + kb)];
+            if (pos >= 0) values[pos] += (*Kc)(Dim * a + ka, Dim * b + kb);  // clamped: eliminated
           }
       }
   }
   return A;
 }
 
-Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,
-                       const std::function<bool(Index)>& needed) {
-  require_supported_cells(mesh);
-  const std::vector<Eigen::Matrix3d> D = region_elasticity_matrices(mesh, options);
+template <int Dim>
+Vector internal_forces_of(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,
+                          const std::function<bool(Index)>& needed) {
+  const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices_of<Dim>(mesh, options);
   CellRules rules(options.gauss_points);
   Vector f = Vector::Zero(u.size());
-  ElementVector ue;
+  ElementVectorOf<Dim> ue;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     if (needed && !needed(c)) continue;
     const CellType type = mesh.cell_type(c);
     const auto nodes = mesh.cell(c);
     const auto n = static_cast<Index>(nodes.size());
-    ue.resize(2 * n);
+    ue.resize(Dim * n);
     for (Index a = 0; a < n; ++a)
-      for (int k = 0; k < 2; ++k) ue(2 * a + k) = u(nodes[static_cast<std::size_t>(a)] * 2 + k);
-    const ElementVector fe =
-        element_stiffness(type, cell_coordinates(mesh, c),
-                          D[static_cast<std::size_t>(mesh.cell_region(c))], rules(type)) *
+      for (int k = 0; k < Dim; ++k)
+        ue(Dim * a + k) = u(nodes[static_cast<std::size_t>(a)] * Dim + k);
+    const ElementVectorOf<Dim> fe =
+        element_stiffness<Dim>(type, cell_coordinates<Dim>(mesh, c),
+                               D[static_cast<std::size_t>(mesh.cell_region(c))], rules(type)) *
         ue;
     for (Index a = 0; a < n; ++a)
-      for (int k = 0; k < 2; ++k) f(nodes[static_cast<std::size_t>(a)] * 2 + k) += fe(2 * a + k);
+      for (int k = 0; k < Dim; ++k)
+        f(nodes[static_cast<std::size_t>(a)] * Dim + k) += fe(Dim * a + k);
   }
   return f;
+}
+
+}  // namespace
+
+SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
+                                const ElasticityOptions& options) {
+  require_supported_cells(mesh);
+  if (dofs.dim() != mesh.dim())
+    throw std::logic_error("assemble_stiffness: the dof map has another dimension than the mesh");
+  return mesh.dim() == 2 ? assemble<2>(mesh, dofs, options) : assemble<3>(mesh, dofs, options);
+}
+
+Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,
+                       const std::function<bool(Index)>& needed) {
+  require_supported_cells(mesh);
+  return mesh.dim() == 2 ? internal_forces_of<2>(mesh, options, u, needed)
+                         : internal_forces_of<3>(mesh, options, u, needed);
 }
 
 }  // namespace signorini

@@ -1,5 +1,6 @@
 #include "signorini/fem/load_assembly.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -59,6 +60,41 @@ std::array<double, 2> CoordinateBox::clip(const Point& a, const Point& b) const 
 
 namespace {
 
+// int_part t . v dGamma into f in 3D, t = traction(x, outward unit normal at x): each face by the
+// rule of its type (fem/reference_element.hpp; Quad4 faces with gauss_points per direction),
+// the surface element |dx/ds1 x dx/ds2| and the normal along it, outward because the faces'
+// corners run counterclockwise seen from outside (mesh/cell_type.hpp).
+template <class Traction>
+void integrate_over_faces(const Mesh& mesh, const BoundaryPart& part, const Traction& traction,
+                          int gauss_points, Vector& f) {
+  CellRules rules(gauss_points);
+  ShapeValues N;
+  ShapeGradients dN;
+  for (const Facet& facet : part.facets) {
+    const CellType type = facet_type(mesh.cell_type(facet.cell));
+    const auto fn = mesh.facet_nodes(facet);
+    const auto n = static_cast<int>(fn.size());
+    for (const QuadraturePoint& q : rules(type)) {
+      shape_functions(type, q.xi, N);
+      shape_gradients(type, q.xi, dN);
+      Point x = Point::Zero(), t1 = Point::Zero(), t2 = Point::Zero();
+      for (int a = 0; a < n; ++a) {
+        const Point xa = mesh.point(fn[static_cast<std::size_t>(a)]);
+        x += N(a) * xa;
+        t1 += dN(0, a) * xa;
+        t2 += dN(1, a) * xa;
+      }
+      const Eigen::Vector3d area = t1.cross(t2);
+      const double da = area.norm();
+      if (!(da > 0.0)) continue;  // a degenerate face carries nothing
+      const Eigen::Vector3d pv = traction(x, Eigen::Vector3d(area / da));
+      for (int a = 0; a < n; ++a)
+        for (int k = 0; k < 3; ++k)
+          f(fn[static_cast<std::size_t>(a)] * 3 + k) += N(a) * pv(k) * da * q.w;
+    }
+  }
+}
+
 // int_{part ∩ box} t . v dGamma into f, t = traction(x, outward unit normal at x).
 template <class Traction>
 void integrate_over_facets(const Mesh& mesh, const BoundaryPart& part, const Traction& traction,
@@ -67,6 +103,14 @@ void integrate_over_facets(const Mesh& mesh, const BoundaryPart& part, const Tra
   require_supported_cells(mesh);
   const int dim = mesh.dim();
   const bool whole = box.unbounded();
+  if (dim == 3) {
+    if (!whole)
+      throw InputError(what +
+                       ": a coordinate box on a 3D boundary part is not supported yet; make the "
+                       "loaded part a boundary part of its own");
+    integrate_over_faces(mesh, part, traction, gauss_points, f);
+    return;
+  }
   ShapeValues N;
   ShapeGradients dN;
   for (const Facet& facet : part.facets) {
@@ -118,8 +162,9 @@ void integrate_over_facets(const Mesh& mesh, const BoundaryPart& part, const Tra
 void add_traction_forces(const Mesh& mesh, const BoundaryPart& part, const VectorField& p,
                          int gauss_points, Vector& f, const std::string& what,
                          const CoordinateBox& box) {
+  const int dim = mesh.dim();
   integrate_over_facets(
-      mesh, part, [&](const Point& x, const Eigen::Vector3d&) { return checked(p, x, 2, what); },
+      mesh, part, [&](const Point& x, const Eigen::Vector3d&) { return checked(p, x, dim, what); },
       gauss_points, f, what, box);
 }
 
@@ -130,37 +175,50 @@ void add_pressure_forces(const Mesh& mesh, const BoundaryPart& part, const Scala
       [&](const Point& x, const Eigen::Vector3d& normal) -> Eigen::Vector3d {
         const double value = p(x);
         if (!std::isfinite(value))
-          throw InputError(what + " is not finite at x = " + position_text(x, 2) +
+          throw InputError(what + " is not finite at x = " + position_text(x, mesh.dim()) +
                            ": expected finite values everywhere it is used");
         return -value * normal;  // a pressure pushes into the body: t = -p n
       },
       gauss_points, f, what, CoordinateBox{});
 }
 
-void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,
-                     const std::string& what) {
-  require_supported_cells(mesh);
+namespace {
+
+template <int Dim>
+void add_body_forces_of(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,
+                        const std::string& what) {
   CellRules rules(gauss_points);
   ShapeValues N;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const CellType type = mesh.cell_type(c);
-    const CellCoordinates X = cell_coordinates(mesh, c);
+    const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
     const auto nodes = mesh.cell(c);
     for (const QuadraturePoint& q : rules(type)) {
       shape_functions(type, q.xi, N);
-      const double det_j = cell_jacobian(type, X, q.xi).determinant();
+      const double det_j = cell_jacobian<Dim>(type, X, q.xi).determinant();
       if (!(det_j > 0.0))
         throw InputError("mesh cell " + std::to_string(c) + ": inverted or degenerate " +
                          std::string(enum_to_string(kCellTypeNames, type)) +
                          " (det J = " + std::to_string(det_j) + " at a quadrature point)");
       Point x = Point::Zero();
-      x.head<2>() = X * N;
-      const Eigen::Vector3d fv = checked(force, x, 2, what);
+      x.head<Dim>() = X * N;
+      const Eigen::Vector3d fv = checked(force, x, Dim, what);
       for (Index a = 0; a < N.size(); ++a)
-        for (int k = 0; k < 2; ++k)
-          f(nodes[static_cast<std::size_t>(a)] * 2 + k) += N(a) * fv(k) * det_j * q.w;
+        for (int k = 0; k < Dim; ++k)
+          f(nodes[static_cast<std::size_t>(a)] * Dim + k) += N(a) * fv(k) * det_j * q.w;
     }
   }
+}
+
+}  // namespace
+
+void add_body_forces(const Mesh& mesh, const VectorField& force, int gauss_points, Vector& f,
+                     const std::string& what) {
+  require_supported_cells(mesh);
+  if (mesh.dim() == 2)
+    add_body_forces_of<2>(mesh, force, gauss_points, f, what);
+  else
+    add_body_forces_of<3>(mesh, force, gauss_points, f, what);
 }
 
 void add_traction_load(const Mesh& mesh, const DofMap& dofs, const BoundaryPart& part,

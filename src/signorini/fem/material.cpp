@@ -36,4 +36,15 @@ Eigen::Matrix3d plane_elasticity_matrix(const IsotropicMaterial& m, PlaneModel m
   return D;
 }
 
+Eigen::Matrix<double, 6, 6> elasticity_matrix_3d(const IsotropicMaterial& m) {
+  validate(m);
+  const double lambda = m.E * m.nu / ((1.0 + m.nu) * (1.0 - 2.0 * m.nu));
+  const double mu = m.E / (2.0 * (1.0 + m.nu));
+  Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
+  D.topLeftCorner<3, 3>().setConstant(lambda);
+  D.topLeftCorner<3, 3>().diagonal().array() += 2.0 * mu;
+  D.bottomRightCorner<3, 3>().diagonal().setConstant(mu);  // shear: tau = mu (2 e)
+  return D;
+}
+
 }  // namespace signorini

@@ -7,8 +7,9 @@
 namespace signorini {
 
 struct NodalStress {
-  /// 4 x num_nodes: sigma_xx, sigma_yy, sigma_zz, sigma_xy. sigma_zz = nu (sigma_xx + sigma_yy) in
-  /// plane strain and 0 in plane stress.
+  /// 6 x num_nodes, in VTK's order for symmetric tensors: sigma_xx, sigma_yy, sigma_zz,
+  /// sigma_xy, sigma_yz, sigma_xz. In 2D sigma_yz = sigma_xz = 0, and sigma_zz = nu (sigma_xx +
+  /// sigma_yy) in plane strain and 0 in plane stress.
   Eigen::MatrixXd sigma;
   Vector von_mises;  ///< num_nodes
 };
@@ -17,7 +18,8 @@ struct NodalStress {
 /// (num_dofs, node-major), converts it to stress and averages at each node.
 NodalStress nodal_stress(const Mesh& mesh, const ElasticityOptions& options, const Vector& u_full);
 
-/// von Mises stress of (sxx, syy, szz, sxy).
-double von_mises_stress(double sxx, double syy, double szz, double sxy);
+/// von Mises stress of a stress tensor.
+double von_mises_stress(double sxx, double syy, double szz, double sxy, double syz = 0.0,
+                        double sxz = 0.0);
 
 }  // namespace signorini

@@ -9,24 +9,34 @@ namespace signorini {
 Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs) {
   if (mesh.dim() != dofs.dim() || mesh.num_nodes() != dofs.num_nodes())
     throw NumericalError("rigid_body_modes: the dof map does not match the mesh");
-  // Only plane elasticity exists so far; 3D would add three translations and three rotations.
-  if (dofs.dim() != 2)
-    throw NumericalError(
-        fmt::format("rigid_body_modes: {}D meshes are not supported yet", dofs.dim()));
-  // The rotation about the centroid keeps its column as well scaled as the translations'.
-  const Eigen::Vector2d centre = mesh.coordinates().topRows(2).rowwise().mean();
-  Matrix B = Matrix::Zero(dofs.num_free(), 3);
+  const int dim = dofs.dim();
+  if (dim != 2 && dim != 3)
+    throw NumericalError(fmt::format("rigid_body_modes: {}D meshes are not supported", dim));
+  const int count = dim == 2 ? 3 : 6;
+  // The rotations about the centroid keep their columns as well scaled as the translations'.
+  const Eigen::VectorXd centre = mesh.coordinates().rowwise().mean();
+  Matrix B = Matrix::Zero(dofs.num_free(), count);
+  Eigen::Matrix<double, 3, 6> modes;
   for (Index node = 0; node < dofs.num_nodes(); ++node) {
-    const Eigen::Vector2d x = mesh.node(node).head(2) - centre;
-    // Translations along x and y, and the rotation about the z axis, u = (-y, x); at a node with
-    // local axes, their components along them.
-    Eigen::Matrix<double, 2, 3> modes;
-    modes << 1.0, 0.0, -x[1], 0.0, 1.0, x[0];
-    if (dofs.has_frame(node)) modes = (dofs.frame(node).transpose() * modes).eval();
-    for (int k = 0; k < 2; ++k) {
+    const Eigen::VectorXd x = mesh.node(node) - centre;
+    if (dim == 2) {
+      // Translations along x and y, and the rotation about the z axis, u = (-y, x); at a node
+      // with local axes, their components along them.
+      Eigen::Matrix<double, 2, 3> m2;
+      m2 << 1.0, 0.0, -x[1], 0.0, 1.0, x[0];
+      if (dofs.has_frame(node)) m2 = (dofs.frame(node).transpose() * m2).eval();
+      modes.topLeftCorner<2, 3>() = m2;
+    } else {
+      // Translations along x, y, z, and the rotations about the three axes, u = e_k x r.
+      modes.leftCols<3>().setIdentity();
+      modes.col(3) << 0.0, -x[2], x[1];
+      modes.col(4) << x[2], 0.0, -x[0];
+      modes.col(5) << -x[1], x[0], 0.0;
+    }
+    for (int k = 0; k < dim; ++k) {
       const Index f = dofs.free_index(node, k);
       if (f < 0) continue;
-      B.row(f) = modes.row(k);
+      B.row(f) = modes.row(k).head(count);
     }
   }
   return B;

@@ -9,8 +9,9 @@
 
 namespace signorini {
 
-/// num_free x 3 for plane elasticity: the two translations and the rotation about the centroid,
-/// restricted to the free dofs. Other dimensions are refused (not supported yet).
+/// num_free x 3 in 2D (the two translations and the rotation about the centroid) and num_free x 6
+/// in 3D (three translations, three rotations about axes through the centroid), restricted to
+/// the free dofs.
 Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs);
 
 /// The node of every free dof, in free-dof order (the dofs of a node are consecutive).

@@ -30,7 +30,6 @@ std::uint8_t flag(bool b) {
 }  // namespace
 
 std::string solution_vtu(const ContactResult& result, const Model& model) {
-  require_2d(model, "solution.vtu");
   const Mesh& mesh = model.mesh;
   const Index n = mesh.num_nodes();
   const Vector u = model.dofs.expand(result.u);  // clamped dofs are 0
@@ -48,14 +47,9 @@ std::string solution_vtu(const ContactResult& result, const Model& model) {
   vtu.add_point_data("displacement", 3, displacement_xyz(u, n, mesh.dim()), {"X", "Y", "Z"});
 
   const NodalStress stress = nodal_stress(mesh, model.elasticity, u);
-  std::vector<double> tensor(static_cast<std::size_t>(6 * n), 0.0);  // YZ, XZ stay 0 in 2D
-  for (Index k = 0; k < n; ++k) {
-    double* t = &tensor[static_cast<std::size_t>(6 * k)];
-    t[0] = stress.sigma(0, k);  // XX
-    t[1] = stress.sigma(1, k);  // YY
-    t[2] = stress.sigma(2, k);  // ZZ
-    t[3] = stress.sigma(3, k);  // XY
-  }
+  std::vector<double> tensor(static_cast<std::size_t>(6 * n));  // YZ, XZ are 0 in 2D
+  for (Index k = 0; k < n; ++k)
+    for (int i = 0; i < 6; ++i) tensor[static_cast<std::size_t>(6 * k + i)] = stress.sigma(i, k);
   vtu.add_point_data("stress", 6, tensor, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
   vtu.add_point_data("von_mises", 1,
                      std::vector<double>(stress.von_mises.data(), stress.von_mises.data() + n));
