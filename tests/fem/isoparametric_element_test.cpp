@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/material.hpp"
@@ -63,6 +64,21 @@ TEST_P(IsoparametricElement, InvertedCellIsReported) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("inverted or degenerate"), std::string::npos);
+  }
+}
+
+TEST(IsoparametricElementTypes, ThreeDimensionalCellsAreRefused) {
+  // 3D types have shape functions (reference_element.hpp) but no plane kernel here.
+  const Eigen::Matrix3d D = plane_elasticity_matrix({1000.0, 0.3}, PlaneModel::PlaneStrain);
+  for (const CellType t : {CellType::Tet4, CellType::Tet10, CellType::Hex8, CellType::Hex27}) {
+    const CellCoordinates X = CellCoordinates::Zero(2, std::min(nodes_per_cell(t), 9));
+    try {
+      (void)element_stiffness(t, X, D, cell_quadrature(t));
+      FAIL() << enum_to_string(kCellTypeNames, t);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected a 2D cell type"), std::string::npos)
+          << e.what();
+    }
   }
 }
 

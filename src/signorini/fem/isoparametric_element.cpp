@@ -22,6 +22,14 @@ void fill_strain_matrix(const Gradients& dNdx, Strain& B) {
   }
 }
 
+// The kernels here are plane ones (2 x n coordinates, 2 x 2 Jacobians): 3D types, which have
+// shape functions with three rows of derivatives, are refused before they reach them.
+void require_plane_cell(CellType t) {
+  if (cell_dimension(t) != 2)
+    throw InputError("plane elasticity on a " + std::string(enum_to_string(kCellTypeNames, t)) +
+                     " cell: expected a 2D cell type (tri3, tri6, quad4, quad8, quad9)");
+}
+
 }  // namespace
 
 CellCoordinates cell_coordinates(const Mesh& mesh, Index c) {
@@ -32,6 +40,7 @@ CellCoordinates cell_coordinates(const Mesh& mesh, Index c) {
 }
 
 Eigen::Matrix2d cell_jacobian(CellType t, const CellCoordinates& X, const Eigen::Vector3d& xi) {
+  require_plane_cell(t);
   ShapeGradients dN;
   shape_gradients(t, xi, dN);
   return dN * X.transpose();
@@ -39,6 +48,7 @@ Eigen::Matrix2d cell_jacobian(CellType t, const CellCoordinates& X, const Eigen:
 
 StrainMatrix strain_matrix(CellType t, const CellCoordinates& X, const Eigen::Vector3d& xi,
                            double& det_j) {
+  require_plane_cell(t);
   ShapeGradients dN;
   shape_gradients(t, xi, dN);
   const Eigen::Matrix2d J = dN * X.transpose();  // J(i, k) = d x_k / d xi_i

@@ -13,10 +13,13 @@
 
 namespace signorini {
 
-inline constexpr int kMaxElementDofs = 2 * kMaxElementNodes;
+/// The most nodes of a 2D cell (Quad9): the bound of the plane kernels' buffers, kept apart from
+/// kMaxElementNodes (Hex27) so that 2D assembly does not carry 3D-sized element matrices.
+inline constexpr int kMaxPlaneElementNodes = 9;
+inline constexpr int kMaxElementDofs = 2 * kMaxPlaneElementNodes;
 
 /// Node coordinates of one cell: column a = node a.
-using CellCoordinates = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxElementNodes>;
+using CellCoordinates = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxPlaneElementNodes>;
 /// B with (e_xx, e_yy, 2 e_xy) = B u_e.
 using StrainMatrix = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxElementDofs>;
 using ElementMatrix =
@@ -26,7 +29,8 @@ using ElementVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxElementDof
 /// The coordinates of cell c of a 2D mesh.
 CellCoordinates cell_coordinates(const Mesh& mesh, Index c);
 
-/// The Jacobian J(i, k) = d x_k / d xi_i of the map from the reference cell at xi.
+/// The Jacobian J(i, k) = d x_k / d xi_i of the map from the reference cell at xi. This function,
+/// strain_matrix, check_cell_geometry and element_stiffness throw InputError for 3D cell types.
 Eigen::Matrix2d cell_jacobian(CellType t, const CellCoordinates& X, const Eigen::Vector3d& xi);
 
 /// B at xi and det J there. det J <= 0 means an inverted or degenerate cell (B is then zero);
