@@ -52,8 +52,16 @@ CellCoordinatesOf<Dim> cell_coordinates(const Mesh& mesh, Index c) {
 }
 
 template <int Dim>
+void require_dimension(CellType t) {
+  if (cell_dimension(t) != Dim)
+    throw std::logic_error("a " + std::string(enum_to_string(kCellTypeNames, t)) + " cell given as a " +
+                           std::to_string(Dim) + "D one");
+}
+
+template <int Dim>
 JacobianOf<Dim> cell_jacobian(CellType t, const CellCoordinatesOf<Dim>& X,
                               const Eigen::Vector3d& xi) {
+  require_dimension<Dim>(t);
   ShapeGradients dN;
   shape_gradients(t, xi, dN);
   return dN.topRows(Dim) * X.transpose();
@@ -62,6 +70,7 @@ JacobianOf<Dim> cell_jacobian(CellType t, const CellCoordinatesOf<Dim>& X,
 template <int Dim>
 StrainMatrixOf<Dim> strain_matrix(CellType t, const CellCoordinatesOf<Dim>& X,
                                   const Eigen::Vector3d& xi, double& det_j) {
+  require_dimension<Dim>(t);
   ShapeGradients dN;
   shape_gradients(t, xi, dN);
   const JacobianOf<Dim> J = dN.topRows(Dim) * X.transpose();  // J(i, k) = d x_k / d xi_i
@@ -126,8 +135,7 @@ template <int Dim>
 ElementMatrixOf<Dim> element_stiffness(CellType t, const CellCoordinatesOf<Dim>& X,
                                        const ElasticityMatrixOf<Dim>& D,
                                        const std::vector<QuadraturePoint>& rule) {
-  if (cell_dimension(t) != Dim)
-    throw std::logic_error("element_stiffness: a cell of another dimension");
+  require_dimension<Dim>(t);
   check_cell_geometry<Dim>(t, X);
   if constexpr (Dim == 2) {
     switch (nodes_per_cell(t)) {
