@@ -14,6 +14,7 @@
 #include "signorini/io/problem_file.hpp"
 #include "signorini/io/result_writer.hpp"
 #include "signorini/io/summary_json.hpp"
+#include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/mesh.hpp"
 #include "signorini/mesh/mesh_description.hpp"

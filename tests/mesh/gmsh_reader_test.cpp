@@ -1,17 +1,23 @@
 // The Gmsh reader: one mixed, second-order mesh written by Gmsh in the formats 2.2 and 4.1, ASCII
 // and binary (tests/mesh/data/mixed.geo), reads to the same mesh in all four; cells, regions and
 // boundary parts come out as documented in gmsh_reader.hpp; a solve on it passes the patch test;
-// and every kind of bad file gets one line naming the file and the place.
+// and every kind of bad file gets one line naming the file and the place. 3D: hand-written
+// tetrahedra and a hexahedron, and boxes meshed by the gmsh program (where installed) with
+// tetrahedra and hexahedra of both orders, read with their regions and boundary faces.
 
 #include "signorini/mesh/gmsh_reader.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "fem/uniaxial_tension.hpp"
+#include "io/temporary_folder.hpp"
+#include "mesh/cell_geometry.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/load_assembly.hpp"
@@ -128,14 +134,15 @@ TEST(GmshReader, BadFilesAreNamedWithTheLine) {
   EXPECT_EQ(error_of("$MeshFormat\n4.0 0 8\n$EndMeshFormat\n"),
             "bad.msh:2: format 4.0 is not supported: save the mesh as 4.1 or 2.2 (Gmsh: "
             "-format msh41 or msh22)");
-  // A truncated file, an unsupported and a 3D element, an undefined node, an odd line.
+  // A truncated file, an unsupported 2D and 3D element, an undefined node, an odd line.
   EXPECT_EQ(error_of(head + "$Nodes\n3\n1 0 0 0\n2 1"),
             "bad.msh:7: file ends where a node coordinate was expected (truncated?)");
   EXPECT_EQ(error_of(head + nodes + "$Elements\n1\n5 20 2 0 1 1 2 3 1 2 3 1 2 3\n$EndElements\n"),
             "bad.msh:11: element 5 has Gmsh type 20, which is not supported (supported: lines of "
             "2 and 3 nodes, triangles of 3 and 6, quadrilaterals of 4, 8 and 9)");
-  EXPECT_EQ(error_of(head + nodes + "$Elements\n1\n5 4 2 0 1 1 2 3 1\n$EndElements\n"),
-            "bad.msh:11: element 5 is a 3D element (Gmsh type 4): 3D meshes are not supported yet");
+  EXPECT_EQ(error_of(head + nodes + "$Elements\n1\n5 6 2 0 1 1 2 3 1 2 3\n$EndElements\n"),
+            "bad.msh:11: element 5 has Gmsh type 6, a 3D element that is not supported "
+            "(supported: tetrahedra of 4 and 10 nodes, hexahedra of 8 and 27)");
   EXPECT_EQ(error_of(head + nodes + "$Elements\n1\n5 2 2 0 1 1 2 9\n$EndElements\n"),
             "bad.msh: element 5 uses node 9, which $Nodes does not define");
   EXPECT_EQ(error_of(head + nodes + "$Elements\n2\n5 2 2 0 1 1 2 3\n6 1 2 4 1 2 9\n$EndElements\n"),
@@ -213,6 +220,193 @@ TEST(GmshReader, MaterialsPerRegionGiveEachItsStrain) {
   // The stresses are uniform across the interface: sigma_xx = sigma in both materials.
   const NodalStress s = nodal_stress(m, opt, full);
   for (Index n = 0; n < m.num_nodes(); ++n) EXPECT_NEAR(s.sigma(0, n), sigma, 1e-9);
+}
+
+// 3D -----------------------------------------------------------------------------------------
+
+// The checks every 3D mesh of a box [0, a] x [0, b] x [0, c] passes: positive cells filling it,
+// straight second-order cells with their middle nodes in the middle, and each named side with
+// its facets on the side's plane, outward, covering its area.
+struct BoxSide {
+  const char* name;
+  int axis;
+  double value, sign, area;
+};
+void expect_box(const Mesh& m, double volume, const std::vector<BoxSide>& sides,
+                const std::string& what) {
+  ASSERT_EQ(m.dim(), 3) << what;
+  double sum = 0.0;
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    for (const double d : testing::corner_dets(m, c)) EXPECT_GT(d, 0.0) << what << " cell " << c;
+    sum += testing::cell_volume(m, c);
+    EXPECT_LT(testing::middle_node_error(m, c), 1e-12) << what << " cell " << c;
+  }
+  EXPECT_NEAR(sum, volume, 1e-12 * volume) << what;
+  for (const BoxSide& s : sides) {
+    double area = 0.0;
+    for (const Facet& f : m.boundary_part(s.name).facets) {
+      for (const Index n : m.facet_nodes(f))
+        EXPECT_NEAR(m.point(n)(s.axis), s.value, 1e-14) << what << " " << s.name;
+      EXPECT_GT(testing::facet_normal(m, f)(s.axis) * s.sign, 0.0) << what << " " << s.name;
+      area += testing::facet_area(m, f);
+    }
+    EXPECT_NEAR(area, s.area, 1e-12 * s.area) << what << " " << s.name;
+  }
+}
+
+// The unit cube in six tetrahedra around its diagonal from node 1 to node 7 (nodes 1..8 at the
+// corners in the Hex8 order), its bottom and top as physical surfaces (the triangles written
+// with either orientation), the cube as a physical volume, a triangle of the side x = 0 in no
+// group and a line in a group (both ignored in 3D). `tets[k]` replaces the k-th tetrahedron,
+// `more` adds elements.
+std::string tet_cube(const std::map<int, std::string>& tets = {}, const std::string& more = "") {
+  std::vector<std::string> elements{"1 2 2 1 1 1 3 2",    "2 2 2 1 1 1 4 3",   "3 2 2 2 2 5 6 7",
+                                    "4 2 2 2 2 5 7 8",    "5 4 2 3 1 1 2 3 7", "6 4 2 3 1 1 4 8 7",
+                                    "7 4 2 3 1 1 5 6 7",  "8 4 2 3 1 1 6 2 7", "9 4 2 3 1 1 3 4 7",
+                                    "10 4 2 3 1 1 8 5 7", "11 2 2 0 1 1 4 8",  "12 1 2 4 1 1 2"};
+  for (const auto& [k, tet] : tets) elements[static_cast<std::size_t>(4 + k)] = tet;
+  if (!more.empty()) elements.push_back(more);
+  std::string text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n2 1 \"bottom\"\n2 2 \"top\"\n"
+      "3 3 \"cube\"\n$EndPhysicalNames\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+      "5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n$EndNodes\n$Elements\n" +
+      std::to_string(elements.size()) + "\n";
+  for (const std::string& e : elements) text += e + "\n";
+  return text + "$EndElements\n";
+}
+
+TEST(GmshReader, TetrahedraWithPhysicalSurfacesAndVolume) {
+  const Mesh m = parse_gmsh_mesh(tet_cube(), "cube.msh");
+  EXPECT_EQ(m.num_nodes(), 8);
+  EXPECT_EQ(m.num_cells(), 6);
+  EXPECT_EQ(m.cell_types(), std::vector<CellType>{CellType::Tet4});
+  EXPECT_EQ(m.region_names(), (std::vector<std::string>{"", "cube"}));
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    EXPECT_EQ(m.cell_region(c), 1);
+    EXPECT_GE(m.cell_source_tag(c), 5);
+    EXPECT_LE(m.cell_source_tag(c), 10);
+  }
+  EXPECT_EQ(m.boundary_part_names(), (std::vector<std::string>{"bottom", "top"}));
+  EXPECT_EQ(m.boundary_part("bottom").facets.size(), 2u);
+  EXPECT_EQ(m.boundary_part_nodes("top").size(), 4u);
+  expect_box(m, 1.0, {{"bottom", 2, 0.0, -1.0, 1.0}, {"top", 2, 1.0, 1.0, 1.0}}, "cube");
+}
+
+// One hexahedron, 2 x 1 x 3, in the format 4.1 (physical groups through $Entities), its base as
+// a physical surface written upwards (into the cell).
+std::string hex_41(const std::string& hex_nodes) {
+  return "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n2 1 \"base\"\n3 2 \"brick\"\n"
+         "$EndPhysicalNames\n$Entities\n0 0 1 1\n1 0 0 0 2 1 0 1 1 0\n1 0 0 0 2 1 3 1 2 0\n"
+         "$EndEntities\n$Nodes\n2 8 1 8\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n"
+         "3 1 0 4\n5\n6\n7\n8\n0 0 3\n2 0 3\n2 1 3\n0 1 3\n$EndNodes\n"
+         "$Elements\n2 2 1 2\n2 1 3 1\n1 1 2 3 4\n3 1 5 1\n2 " +
+         hex_nodes + "\n$EndElements\n";
+}
+
+TEST(GmshReader, HexahedronInFormat41) {
+  const Mesh m = parse_gmsh_mesh(hex_41("1 2 3 4 5 6 7 8"), "hex.msh");
+  EXPECT_EQ(m.num_nodes(), 8);
+  EXPECT_EQ(m.cell_types(), std::vector<CellType>{CellType::Hex8});
+  EXPECT_EQ(m.region_names(), (std::vector<std::string>{"", "brick"}));
+  EXPECT_EQ(m.cell_region(0), 1);
+  EXPECT_EQ(m.cell_source_tag(0), 2);
+  ASSERT_EQ(m.boundary_part("base").facets.size(), 1u);
+  EXPECT_EQ(m.boundary_part("base").facets[0].local, 0);  // the face z = -1 of the reference
+  expect_box(m, 6.0, {{"base", 2, 0.0, -1.0, 2.0}}, "hex");
+}
+
+TEST(GmshReader, Bad3DFilesAreNamedWithTheElement) {
+  // A tetrahedron and a hexahedron turned inside out (two nodes swapped; top and bottom
+  // swapped), a degenerate one, and a triangle in a physical surface that no tetrahedron has.
+  EXPECT_EQ(error_of(tet_cube({{3, "8 4 2 3 1 1 2 6 7"}})),
+            "bad.msh: element 8 (tet4) is inverted: det J < 0 at a corner (Gmsh's node order "
+            "gives det J > 0)");
+  EXPECT_EQ(error_of(hex_41("5 6 7 8 1 2 3 4")),
+            "bad.msh: element 2 (hex8) is inverted: det J < 0 at a corner (Gmsh's node order "
+            "gives det J > 0)");
+  EXPECT_EQ(error_of(tet_cube({{3, "8 4 2 3 1 1 6 2 6"}})),
+            "bad.msh: element 8 (tet4) is degenerate: det J = 0 at a corner");
+  EXPECT_EQ(error_of(tet_cube({}, "13 2 2 1 1 1 2 4")),
+            "bad.msh: surface element 13 (physical group 'bottom') is not a face of any 3D "
+            "element");
+  // A second-order triangle on first-order tetrahedra: its middle nodes are not the face's.
+  EXPECT_EQ(error_of(tet_cube({}, "13 9 2 2 1 1 2 3 5 6 7")),
+            "bad.msh: surface element 13 (physical group 'top') is not a face of any 3D element");
+}
+
+// Boxes meshed by the gmsh program: tetrahedra (an unstructured mesh) and hexahedra (a
+// transfinite one), of the first and second order, in the formats 4.1 and 2.2, ASCII and binary.
+TEST(GmshReader, BoxesMeshedByGmsh) {
+  if (std::system("command -v gmsh > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "the gmsh program is not installed (apt-get install gmsh)";
+  const testing::TemporaryFolder dir;
+  const std::string sides =
+      "e = 1e-6;\n"
+      "Physical Surface(\"bottom\") = Surface In BoundingBox{-e, -e, -e, 2 + e, 1 + e, e};\n"
+      "Physical Surface(\"top\") = Surface In BoundingBox{-e, -e, 1 - e, 2 + e, 1 + e, 1 + e};\n"
+      "Physical Volume(\"solid\") = {1};\n";
+  std::ofstream(dir / "tet.geo") << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 2, 1, 1};\n"
+                                 << sides << "Mesh.MeshSizeMax = 0.5;\n";
+  std::ofstream(dir / "hex.geo") << "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 2, 1, 1};\n"
+                                 << "Transfinite Curve{:} = 3;\nTransfinite Surface{:};\n"
+                                    "Recombine Surface{:};\nTransfinite Volume{:};\n"
+                                 << sides;
+  const auto mesh = [&](const std::string& geo, const std::string& options,
+                        const std::string& out) {
+    const std::string command = "gmsh -3 " + options + " '" + (dir / geo).string() + "' -o '" +
+                                (dir / out).string() + "' -v 0 > /dev/null 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return read_gmsh_mesh(dir / out);
+  };
+  const std::vector<BoxSide> box_sides{{"bottom", 2, 0.0, -1.0, 2.0}, {"top", 2, 1.0, 1.0, 2.0}};
+  struct Case {
+    const char* geo;
+    const char* options;
+    CellType type;
+  };
+  for (const Case& k : {Case{"tet.geo", "-format msh41", CellType::Tet4},
+                        Case{"tet.geo", "-order 2 -format msh41", CellType::Tet10},
+                        Case{"hex.geo", "-format msh22", CellType::Hex8},
+                        Case{"hex.geo", "-order 2 -format msh41 -bin", CellType::Hex27}}) {
+    const std::string what = std::string(k.geo) + " " + k.options;
+    const Mesh m = mesh(k.geo, k.options, "out.msh");
+    EXPECT_EQ(m.cell_types(), std::vector<CellType>{k.type}) << what;
+    EXPECT_EQ(m.region_names(), (std::vector<std::string>{"", "solid"})) << what;
+    for (Index c = 0; c < m.num_cells(); ++c) EXPECT_EQ(m.cell_region(c), 1) << what;
+    EXPECT_EQ(m.boundary_part_names(), (std::vector<std::string>{"bottom", "top"})) << what;
+    expect_box(m, 2.0, box_sides, what);
+    if (k.type == CellType::Hex8 || k.type == CellType::Hex27) {
+      // 2 x 2 x 2 bricks on the 3 x 3 x 3 (or 5 x 5 x 5) lattice.
+      EXPECT_EQ(m.num_cells(), 8) << what;
+      EXPECT_EQ(m.num_nodes(), k.type == CellType::Hex8 ? 27 : 125) << what;
+      EXPECT_EQ(m.boundary_part("bottom").facets.size(), 4u) << what;
+    }
+  }
+  // The same second-order tetrahedra from the four formats: the same mesh, node for node and
+  // cell for cell.
+  const Mesh a = mesh("tet.geo", "-order 2 -format msh41", "a.msh");
+  for (const char* options :
+       {"-order 2 -format msh41 -bin", "-order 2 -format msh22", "-order 2 -format msh22 -bin"}) {
+    const Mesh b = mesh("tet.geo", options, "b.msh");
+    ASSERT_EQ(b.num_nodes(), a.num_nodes()) << options;
+    ASSERT_EQ(b.num_cells(), a.num_cells()) << options;
+    EXPECT_LT((b.coordinates() - a.coordinates()).cwiseAbs().maxCoeff(), 1e-15) << options;
+    for (Index c = 0; c < a.num_cells(); ++c)
+      EXPECT_TRUE(std::equal(a.cell(c).begin(), a.cell(c).end(), b.cell(c).begin())) << options;
+    for (const auto& name : a.boundary_part_names())
+      EXPECT_EQ(b.boundary_part_nodes(name), a.boundary_part_nodes(name)) << options << name;
+  }
+}
+
+// A 3D file meshed in 2D only (no volumes): read as before, as a 2D mesh of its surfaces, which
+// here do not lie in one plane.
+TEST(GmshReader, SurfacesWithoutVolumesAreA2DMesh) {
+  const std::string msh =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"
+      "$EndNodes\n$Elements\n2\n1 2 2 0 1 1 2 3\n2 2 2 0 2 1 2 4\n$EndElements\n";
+  EXPECT_EQ(error_of(msh),
+            "bad.msh: the 2D elements do not lie in one plane z = constant (z from 0.000000 to "
+            "1.000000)");
 }
 
 }  // namespace

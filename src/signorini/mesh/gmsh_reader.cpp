@@ -28,8 +28,8 @@ constexpr std::array<int, 32> kGmshNodes{0,  2,  3,  4,  4, 8, 6,  5,  3,  6, 9,
                                          10, 27, 18, 14, 1, 8, 20, 15, 13, 9, 10,
                                          12, 15, 15, 21, 4, 5, 6,  20, 35, 56};
 
-// Nodes of the largest cell we read (Quad9): the length of the cells' sort keys.
-constexpr std::size_t kMaxSortKey = 9;
+// Nodes of the largest cell we read (Hex27): the length of the cells' sort keys.
+constexpr std::size_t kMaxSortKey = 27;
 
 int gmsh_nodes(int type) {
   return type >= 1 && type < static_cast<int>(kGmshNodes.size())
@@ -54,6 +54,14 @@ std::optional<CellType> cell_type_of(int gmsh_type) {
       return CellType::Quad8;
     case 10:
       return CellType::Quad9;
+    case 4:
+      return CellType::Tet4;
+    case 11:
+      return CellType::Tet10;
+    case 5:
+      return CellType::Hex8;
+    case 12:
+      return CellType::Hex27;
     default:
       return std::nullopt;
   }
@@ -214,7 +222,8 @@ struct Parsed {
   }
   std::vector<Index> node_tags;
   std::vector<double> xyz;  // 3 per node
-  RawElements cells, lines;
+  // By dimension: the highest present holds the cells, the one below the boundary parts.
+  RawElements volumes, surfaces, lines;
 };
 
 void read_physical_names(Reader& r, Parsed& p) {
@@ -292,14 +301,17 @@ void add_element(Reader& r, Parsed& p, int type, Index tag, int group, const Ind
   if (!ct) {
     if (type == 15) return;  // a point element: nothing to do
     if (is_3d_type(type))
-      r.fail_at(where, "element " + std::to_string(tag) + " is a 3D element (Gmsh type " +
-                           std::to_string(type) + "): 3D meshes are not supported yet");
+      r.fail_at(where, "element " + std::to_string(tag) + " has Gmsh type " + std::to_string(type) +
+                           ", a 3D element that is not supported (supported: tetrahedra of 4 "
+                           "and 10 nodes, hexahedra of 8 and 27)");
     r.fail_at(where, "element " + std::to_string(tag) + " has Gmsh type " + std::to_string(type) +
                          ", which is not supported (supported: lines of 2 and 3 nodes, "
                          "triangles of 3 and 6, quadrilaterals of 4, 8 and 9)");
   }
-  RawElements& e = cell_dimension(*ct) == 2 ? p.cells : p.lines;
-  if (cell_dimension(*ct) == 1 && group == 0) return;  // a line in no group: ignored
+  const int dim = cell_dimension(*ct);
+  RawElements& e = dim == 3 ? p.volumes : dim == 2 ? p.surfaces : p.lines;
+  // A line in no group bounds nothing (a surface in none may yet be a cell of a 2D mesh).
+  if (dim == 1 && group == 0) return;
   e.types.push_back(type);
   e.tags.push_back(tag);
   e.group.push_back(group);
@@ -325,9 +337,10 @@ void read_elements_41(Reader& r, Parsed& p) {
     const int group = it == p.entity_physicals.end() ? 0 : p.group_of(it->second);
     r.check_count(n, static_cast<std::size_t>(r.binary() ? 8 * (k + 1) : 2 * (k + 1)),
                   "elements in a block");
-    if (dim == 2) {  // room for the block at once, not by doubling
-      p.cells.nodes.reserve(p.cells.nodes.size() + static_cast<std::size_t>(n * k));
-      for (auto* v : {&p.cells.tags, &p.cells.offsets}) v->reserve(v->size() + n);
+    if (dim >= 2) {  // room for the block at once, not by doubling
+      RawElements& e = dim == 3 ? p.volumes : p.surfaces;
+      e.nodes.reserve(e.nodes.size() + static_cast<std::size_t>(n * k));
+      for (auto* v : {&e.tags, &e.offsets}) v->reserve(v->size() + n);
     }
     nodes.resize(static_cast<std::size_t>(k));
     for (long long e = 0; e < n; ++e) {
@@ -487,11 +500,82 @@ void mirror(CellType t, Index* v) {
   }
 }
 
+// Corners of a cell or facet type: its first nodes, those of the first-order element.
+int corner_count(CellType t) {
+  switch (t) {
+    case CellType::Line2:
+    case CellType::Line3:
+      return 2;
+    case CellType::Tri3:
+    case CellType::Tri6:
+      return 3;
+    case CellType::Hex8:
+    case CellType::Hex27:
+      return 8;
+    default:
+      return 4;  // quadrilaterals, tetrahedra
+  }
+}
+
+// A facet (an edge in 2D, a face in 3D) by its sorted corners, -1 after them: the same from both
+// cells it bounds and from the boundary element on it, whatever their node orders.
+using FacetKey = std::array<Index, 4>;
+
+struct FacetKeyHash {
+  std::size_t operator()(const FacetKey& k) const {
+    std::uint64_t h = 0;
+    for (const Index v : k) h = (h ^ static_cast<std::uint64_t>(v)) * 0x9e3779b97f4a7c15ULL;
+    return static_cast<std::size_t>(h ^ (h >> 32));
+  }
+};
+
+// The key of `n` corners; nullopt if one is a node no cell uses (numbered -1).
+template <class Corner>
+std::optional<FacetKey> facet_key(int n, Corner corner) {
+  FacetKey k;
+  k.fill(-1);
+  for (int a = 0; a < n; ++a) {
+    k[static_cast<std::size_t>(a)] = corner(a);
+    if (k[static_cast<std::size_t>(a)] < 0) return std::nullopt;
+  }
+  std::sort(k.begin(), k.begin() + n);
+  return k;
+}
+
+// The smallest of det J at the corners of a volume cell, up to a positive factor: the triple
+// product of the edges from each corner (one for a tetrahedron, whose det J is constant; for a
+// hexahedron, each corner with its neighbours along xi, eta, zeta, taken right-handed).
+double min_corner_det(CellType t, const Index* v, const Eigen::MatrixXd& x) {
+  const auto triple = [&](int a, int b, int c, int d) {
+    const Eigen::Vector3d o = x.col(v[a]);
+    const Eigen::Vector3d e1 = x.col(v[b]) - o, e2 = x.col(v[c]) - o, e3 = x.col(v[d]) - o;
+    return e1(0) * (e2(1) * e3(2) - e2(2) * e3(1)) - e1(1) * (e2(0) * e3(2) - e2(2) * e3(0)) +
+           e1(2) * (e2(0) * e3(1) - e2(1) * e3(0));
+  };
+  if (corner_count(t) == 4) return triple(0, 1, 2, 3);
+  static constexpr std::array<std::array<int, 4>, 8> kHexCorners{{{0, 1, 3, 4},
+                                                                  {1, 2, 0, 5},
+                                                                  {2, 3, 1, 6},
+                                                                  {3, 0, 2, 7},
+                                                                  {4, 7, 5, 0},
+                                                                  {5, 4, 6, 1},
+                                                                  {6, 5, 7, 2},
+                                                                  {7, 6, 4, 3}}};
+  double m = INFINITY;
+  for (const auto& [a, b, c, d] : kHexCorners) m = std::min(m, triple(a, b, c, d));
+  return m;
+}
+
 }  // namespace
 
 Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   const Parsed p = parse(content, name);
-  if (p.cells.types.empty())
+  // The highest dimension present decides: volumes are the cells of a 3D mesh and its physical
+  // surfaces the boundary parts; without volumes, surfaces and physical curves make a 2D mesh.
+  const int dim = p.volumes.types.empty() ? 2 : 3;
+  const RawElements& raw = dim == 3 ? p.volumes : p.surfaces;
+  const RawElements& bounds = dim == 3 ? p.surfaces : p.lines;
+  if (raw.types.empty())
     throw InputError(name +
                      ": no 2D elements (triangles or quadrilaterals): is it meshed in 2D "
                      "(gmsh -2)?");
@@ -527,160 +611,184 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   };
   // Number the nodes that cells use, in the order of their tags.
   std::vector<char> used(p.node_tags.size(), 0);
-  for (std::size_t i = 0; i < p.cells.types.size(); ++i)
-    for (Index k = p.cells.offsets[i]; k < p.cells.offsets[i + 1]; ++k)
-      used[static_cast<std::size_t>(
-          node_slot(p.cells, i, p.cells.nodes[static_cast<std::size_t>(k)]))] = 1;
+  for (std::size_t i = 0; i < raw.types.size(); ++i)
+    for (Index k = raw.offsets[i]; k < raw.offsets[i + 1]; ++k)
+      used[static_cast<std::size_t>(node_slot(raw, i, raw.nodes[static_cast<std::size_t>(k)]))] = 1;
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < used.size(); ++k)
     if (used[k] != 0) order.push_back(k);
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return p.node_tags[a] < p.node_tags[b]; });
   std::vector<Index> number(p.node_tags.size(), -1);
-  Eigen::MatrixXd xy(2, static_cast<Index>(order.size()));
+  Eigen::MatrixXd xy(dim, static_cast<Index>(order.size()));
   double zmin = INFINITY, zmax = -INFINITY, size = 0.0;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::size_t s = order[k];
     number[s] = static_cast<Index>(k);
-    xy(0, static_cast<Index>(k)) = p.xyz[3 * s];
-    xy(1, static_cast<Index>(k)) = p.xyz[3 * s + 1];
+    for (int d = 0; d < dim; ++d) xy(d, static_cast<Index>(k)) = p.xyz[3 * s + d];
     zmin = std::min(zmin, p.xyz[3 * s + 2]);
     zmax = std::max(zmax, p.xyz[3 * s + 2]);
   }
   if (!xy.allFinite()) throw InputError(name + ": a node coordinate is not finite");
   size = (xy.rowwise().maxCoeff() - xy.rowwise().minCoeff()).maxCoeff();
-  if (zmax - zmin > 1e-9 * std::max(size, 1e-300))
+  if (dim == 2 && zmax - zmin > 1e-9 * std::max(size, 1e-300))
     throw InputError(name + ": the 2D elements do not lie in one plane z = constant (z from " +
                      std::to_string(zmin) + " to " + std::to_string(zmax) + ")");
 
-  // Cells, counterclockwise.
+  // Cells, counterclockwise in 2D, positively oriented in 3D.
   std::vector<CellType> types;
   std::vector<Index> cells;
   std::vector<Index> tags;
   std::vector<int> region_tag;
-  types.reserve(p.cells.types.size());
+  types.reserve(raw.types.size());
   // Cells in an order that does not depend on the format: Gmsh numbers the elements differently
   // in 2.2 and 4.1, but not the nodes. Sorted by their node tags (sorted, compared as words), the
   // same mesh in any format assembles in the same order: the same sums, the same bits.
-  const std::size_t nc = p.cells.types.size();
+  const std::size_t nc = raw.types.size();
   // The sorted node tags of cell i, the order's key.
   const auto sorted_tags = [&](std::size_t i) {
     std::array<Index, kMaxSortKey> k;
     k.fill(-1);
-    const auto b = static_cast<std::size_t>(p.cells.offsets[i]);
-    const auto e = static_cast<std::size_t>(p.cells.offsets[i + 1]);
-    std::copy(p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(b),
-              p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(e), k.begin());
+    const auto b = static_cast<std::size_t>(raw.offsets[i]);
+    const auto e = static_cast<std::size_t>(raw.offsets[i + 1]);
+    std::copy(raw.nodes.begin() + static_cast<std::ptrdiff_t>(b),
+              raw.nodes.begin() + static_cast<std::ptrdiff_t>(e), k.begin());
     std::sort(k.begin(), k.begin() + static_cast<std::ptrdiff_t>(e - b));
     return k;
   };
   // First by the smallest node tag (a sort of 8-byte words), then runs of equal smallest tags
-  // (a few cells each) by the whole key.
+  // (a few cells each, a few dozen around a node of a tetrahedral mesh) by the whole key, each
+  // key made once.
   std::vector<std::pair<Index, std::size_t>> by_first(nc);
   for (std::size_t i = 0; i < nc; ++i) {
-    const auto b = p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(p.cells.offsets[i]);
-    const auto e = p.cells.nodes.begin() + static_cast<std::ptrdiff_t>(p.cells.offsets[i + 1]);
+    const auto b = raw.nodes.begin() + static_cast<std::ptrdiff_t>(raw.offsets[i]);
+    const auto e = raw.nodes.begin() + static_cast<std::ptrdiff_t>(raw.offsets[i + 1]);
     by_first[i] = {*std::min_element(b, e), i};
   }
   std::sort(by_first.begin(), by_first.end());
   std::vector<std::size_t> canonical(nc);
+  std::vector<std::pair<std::array<Index, kMaxSortKey>, std::size_t>> run_keys;
   for (std::size_t run = 0; run < nc;) {
     std::size_t end = run + 1;
     while (end < nc && by_first[end].first == by_first[run].first) ++end;
-    if (end - run > 1)
-      std::sort(by_first.begin() + static_cast<std::ptrdiff_t>(run),
-                by_first.begin() + static_cast<std::ptrdiff_t>(end),
-                [&](const auto& a, const auto& b) {
-                  const auto ka = sorted_tags(a.second), kb = sorted_tags(b.second);
-                  return ka != kb ? ka < kb : a.second < b.second;
-                });
-    for (std::size_t k = run; k < end; ++k) canonical[k] = by_first[k].second;
+    if (end - run > 1) {
+      run_keys.clear();
+      for (std::size_t k = run; k < end; ++k)
+        run_keys.emplace_back(sorted_tags(by_first[k].second), by_first[k].second);
+      std::sort(run_keys.begin(), run_keys.end());
+      for (std::size_t k = run; k < end; ++k) canonical[k] = run_keys[k - run].second;
+    } else {
+      canonical[run] = by_first[run].second;
+    }
     run = end;
   }
   for (const std::size_t i : canonical) {
-    const CellType t = *cell_type_of(p.cells.types[i]);
+    const CellType t = *cell_type_of(raw.types[i]);
     const std::size_t first = cells.size();
-    for (Index k = p.cells.offsets[i]; k < p.cells.offsets[i + 1]; ++k)
+    for (Index k = raw.offsets[i]; k < raw.offsets[i + 1]; ++k)
       cells.push_back(number[static_cast<std::size_t>(
-          node_slot(p.cells, i, p.cells.nodes[static_cast<std::size_t>(k)]))]);
+          node_slot(raw, i, raw.nodes[static_cast<std::size_t>(k)]))]);
     Index* v = cells.data() + first;
-    const int corners = (t == CellType::Tri3 || t == CellType::Tri6) ? 3 : 4;
-    double area2 = 0.0;  // shoelace over the corners
-    for (int a = 0; a < corners; ++a) {
-      const Index m = v[a], q = v[(a + 1) % corners];
-      area2 += xy(0, m) * xy(1, q) - xy(0, q) * xy(1, m);
+    if (dim == 2) {
+      const int corners = corner_count(t);
+      double area2 = 0.0;  // shoelace over the corners
+      for (int a = 0; a < corners; ++a) {
+        const Index m = v[a], q = v[(a + 1) % corners];
+        area2 += xy(0, m) * xy(1, q) - xy(0, q) * xy(1, m);
+      }
+      if (area2 < 0.0) mirror(t, v);
+    } else if (const double det = min_corner_det(t, v, xy); !(det > 0.0)) {
+      // Gmsh writes positive volumes; a hand-written or converted file may not, and a cell
+      // turned inside out must not reach the assembly as a negative stiffness.
+      throw InputError(name + ": element " + std::to_string(raw.tags[i]) + " (" +
+                       std::string(enum_to_string(kCellTypeNames, t)) + ") is " +
+                       (det < 0.0 ? "inverted: det J < 0 at a corner (Gmsh's node order gives "
+                                    "det J > 0)"
+                                  : "degenerate: det J = 0 at a corner"));
     }
-    if (area2 < 0.0) mirror(t, v);
     types.push_back(t);
-    tags.push_back(p.cells.tags[i]);
-    const std::vector<int>& groups = p.groups[static_cast<std::size_t>(p.cells.group[i])];
+    tags.push_back(raw.tags[i]);
+    const std::vector<int>& groups = p.groups[static_cast<std::size_t>(raw.group[i])];
     region_tag.push_back(groups.empty() ? -1 : groups.front());
   }
   Mesh mesh(std::move(types), std::move(xy), std::move(cells));
   mesh.set_cell_source_tags(std::move(tags));
 
-  // Regions: "" for cells in no physical surface, then the groups in the order of their tags.
+  // Regions: "" for cells in no physical surface (volume in 3D), then the groups in the order of
+  // their tags.
   std::map<int, int> region_index;
   std::vector<std::string> region_names{""};
   for (const int t : region_tag)
     if (t >= 0 && !region_index.contains(t)) region_index[t] = 0;
   for (auto& [t, index] : region_index) {
     index = static_cast<int>(region_names.size());
-    region_names.push_back(physical_name(p, 2, t));
+    region_names.push_back(physical_name(p, dim, t));
   }
   std::vector<int> regions;
   regions.reserve(region_tag.size());
   for (const int t : region_tag) regions.push_back(t < 0 ? 0 : region_index.at(t));
   mesh.set_cell_regions(std::move(region_names), std::move(regions));
 
-  // Boundary parts: each line matched to the cell edge with the same end nodes. The lines'
-  // keys go into a table first (a boundary's worth), then every cell edge is looked up in it.
-  const auto key = [](Index a, Index b) {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-           static_cast<std::uint64_t>(std::max(a, b));
-  };
-  std::vector<std::vector<Index>> line_nodes(p.lines.types.size());
-  std::unordered_map<std::uint64_t, Facet> edges;
-  for (std::size_t i = 0; i < p.lines.types.size(); ++i) {
-    for (Index k = p.lines.offsets[i]; k < p.lines.offsets[i + 1]; ++k) {
-      const Index s = node_slot(p.lines, i, p.lines.nodes[static_cast<std::size_t>(k)]);
-      line_nodes[i].push_back(number[static_cast<std::size_t>(s)]);
+  // Boundary parts: each element of a physical group one dimension down (a line in 2D, a
+  // triangle or quadrilateral in 3D) matched to the cell facet with the same corners. Their keys
+  // go into a table first (a boundary's worth), then every cell facet is looked up in it.
+  std::vector<std::vector<Index>> bound_nodes(bounds.types.size());
+  std::vector<std::optional<FacetKey>> bound_keys(bounds.types.size());
+  std::unordered_map<FacetKey, Facet, FacetKeyHash> facets;
+  for (std::size_t i = 0; i < bounds.types.size(); ++i) {
+    if (bounds.group[i] == 0) continue;  // a surface of a 3D mesh in no physical group
+    for (Index k = bounds.offsets[i]; k < bounds.offsets[i + 1]; ++k) {
+      const Index s = node_slot(bounds, i, bounds.nodes[static_cast<std::size_t>(k)]);
+      bound_nodes[i].push_back(number[static_cast<std::size_t>(s)]);
     }
-    const auto& v = line_nodes[i];
-    if (v[0] >= 0 && v[1] >= 0) edges.emplace(key(v[0], v[1]), Facet{-1, 0});
+    const auto& v = bound_nodes[i];
+    bound_keys[i] = facet_key(corner_count(*cell_type_of(bounds.types[i])),
+                              [&](int a) { return v[static_cast<std::size_t>(a)]; });
+    if (bound_keys[i]) facets.emplace(*bound_keys[i], Facet{-1, 0});
   }
-  if (!edges.empty())
+  if (!facets.empty())
     for (Index c = 0; c < mesh.num_cells(); ++c)
       for (int f = 0; f < facets_per_cell(mesh.cell_type(c)); ++f) {
         const auto local = facet_local_nodes(mesh.cell_type(c), f);
         const auto cell = mesh.cell(c);
-        const auto it = edges.find(key(cell[static_cast<std::size_t>(local[0])],
-                                       cell[static_cast<std::size_t>(local[1])]));
-        if (it != edges.end() && it->second.cell < 0) it->second = Facet{c, f};
+        const auto k = facet_key(corner_count(facet_type(mesh.cell_type(c))), [&](int a) {
+          return cell[static_cast<std::size_t>(local[static_cast<std::size_t>(a)])];
+        });
+        const auto it = facets.find(*k);
+        if (it != facets.end() && it->second.cell < 0) it->second = Facet{c, f};
       }
   std::map<int, std::vector<Facet>> parts;
-  for (std::size_t i = 0; i < p.lines.types.size(); ++i) {
-    const std::vector<Index>& v = line_nodes[i];
-    const auto it = (v[0] < 0 || v[1] < 0) ? edges.end() : edges.find(key(v[0], v[1]));
-    bool match = it != edges.end() && it->second.cell >= 0;
-    if (match && v.size() == 3) {
-      const auto fn = mesh.facet_nodes(it->second);
-      match = fn.size() == 3 && fn[2] == v[2];
+  for (std::size_t i = 0; i < bounds.types.size(); ++i) {
+    if (bounds.group[i] == 0) continue;
+    std::vector<Index>& v = bound_nodes[i];  // sorted below: not needed in file order after
+    const auto it = bound_keys[i] ? facets.find(*bound_keys[i]) : facets.end();
+    bool match = it != facets.end() && it->second.cell >= 0;
+    // An element with more than its corners (a second-order one) must have the facet's nodes;
+    // one of the first order names the facet by its corners alone.
+    if (match &&
+        v.size() > static_cast<std::size_t>(corner_count(*cell_type_of(bounds.types[i])))) {
+      std::vector<Index> fn = mesh.facet_nodes(it->second);
+      std::sort(fn.begin(), fn.end());
+      std::sort(v.begin(), v.end());
+      match = fn == v;
     }
     if (!match)
       throw InputError(
-          name + ": line element " + std::to_string(p.lines.tags[i]) + " (physical group '" +
-          physical_name(p, 1, p.groups[static_cast<std::size_t>(p.lines.group[i])].front()) +
-          "') is not an edge of any 2D element");
-    for (const int t : p.groups[static_cast<std::size_t>(p.lines.group[i])])
+          name + (dim == 3 ? ": surface element " : ": line element ") +
+          std::to_string(bounds.tags[i]) + " (physical group '" +
+          physical_name(p, dim - 1, p.groups[static_cast<std::size_t>(bounds.group[i])].front()) +
+          (dim == 3 ? "') is not a face of any 3D element"
+                    : "') is not an edge of any 2D element"));
+    for (const int t : p.groups[static_cast<std::size_t>(bounds.group[i])])
       parts[t].push_back(it->second);
   }
-  for (auto& [t, facets] : parts) {
-    // In cell order, whatever the order of the lines in the file (the same sums in any format).
-    std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) {
+  for (auto& [t, part] : parts) {
+    // In cell order, whatever the order of the elements in the file (the same sums in any
+    // format).
+    std::sort(part.begin(), part.end(), [](const Facet& a, const Facet& b) {
       return a.cell != b.cell ? a.cell < b.cell : a.local < b.local;
     });
-    mesh.set_boundary_part(physical_name(p, 1, t), std::move(facets));
+    mesh.set_boundary_part(physical_name(p, dim - 1, t), std::move(part));
   }
   return mesh;
 }
