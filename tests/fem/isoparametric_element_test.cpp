@@ -103,8 +103,7 @@ TEST_P(SolidElement, StiffnessSymmetricPsdWithExactlySixRigidBodyModes) {
   for (int a = 0; a < n; ++a) {
     const Eigen::Vector3d x = X.col(a);
     rigid.block<3, 3>(3 * a, 0).setIdentity();
-    for (int k = 0; k < 3; ++k)
-      rigid.block<3, 1>(3 * a, 3 + k) = Eigen::Vector3d::Unit(k).cross(x);
+    for (int k = 0; k < 3; ++k) rigid.block<3, 1>(3 * a, 3 + k) = Eigen::Vector3d::Unit(k).cross(x);
   }
   EXPECT_LT((K * rigid).norm(), 1e-11 * top * rigid.norm());
 }

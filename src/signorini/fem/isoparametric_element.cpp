@@ -22,7 +22,7 @@ void fill_strain_matrix(const Gradients& dNdx, Strain& B) {
       B(2, 2 * a + 1) = dNdx(0, a);
     } else {
       const Index i = 3 * a;
-      B(0, i) = dNdx(0, a);  // e_xx
+      B(0, i) = dNdx(0, a);      // e_xx
       B(1, i + 1) = dNdx(1, a);  // e_yy
       B(2, i + 2) = dNdx(2, a);  // e_zz
       B(3, i + 1) = dNdx(2, a);  // 2 e_yz
@@ -54,8 +54,8 @@ CellCoordinatesOf<Dim> cell_coordinates(const Mesh& mesh, Index c) {
 template <int Dim>
 void require_dimension(CellType t) {
   if (cell_dimension(t) != Dim)
-    throw std::logic_error("a " + std::string(enum_to_string(kCellTypeNames, t)) + " cell given as a " +
-                           std::to_string(Dim) + "D one");
+    throw std::logic_error("a " + std::string(enum_to_string(kCellTypeNames, t)) +
+                           " cell given as a " + std::to_string(Dim) + "D one");
 }
 
 template <int Dim>

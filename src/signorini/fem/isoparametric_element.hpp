@@ -19,7 +19,7 @@ namespace signorini {
 template <int Dim>
 struct ElementSizes {
   static_assert(Dim == 2 || Dim == 3, "elements are 2D or 3D");
-  static constexpr int kStrains = Dim == 2 ? 3 : 6;     ///< Voigt components
+  static constexpr int kStrains = Dim == 2 ? 3 : 6;    ///< Voigt components
   static constexpr int kMaxNodes = Dim == 2 ? 9 : 27;  ///< Quad9, Hex27
   static constexpr int kMaxDofs = Dim * kMaxNodes;
 };
@@ -40,8 +40,7 @@ template <int Dim>
 using ElementMatrixOf = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                       ElementSizes<Dim>::kMaxDofs, ElementSizes<Dim>::kMaxDofs>;
 template <int Dim>
-using ElementVectorOf =
-    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ElementSizes<Dim>::kMaxDofs, 1>;
+using ElementVectorOf = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ElementSizes<Dim>::kMaxDofs, 1>;
 /// J(i, k) = d x_k / d xi_i.
 template <int Dim>
 using JacobianOf = Eigen::Matrix<double, Dim, Dim>;
