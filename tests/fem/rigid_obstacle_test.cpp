@@ -17,24 +17,24 @@ namespace {
 TEST(RigidObstacle, PlaneGapAlongTheNormal) {
   RigidObstacle o;
   o.shape = ObstacleShape::Plane;
-  o.point = {0.0, -1.0};
-  o.normal = {0.0, 2.0};  // any length: the obstacle is y <= -1
-  const Eigen::Vector2d down(0.0, -1.0);
+  o.point = {0.0, -1.0, 0.0};
+  o.normal = {0.0, 2.0, 0.0};  // any length: the obstacle is y <= -1
+  const Eigen::Vector3d down(0.0, -1.0, 0.0);
   EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.3, 0.5, 0.0), down, 99.0), 1.5);
   // Along a normal at 60 degrees from the vertical the way is twice as long.
-  const Eigen::Vector2d slanted(std::sqrt(3.0) / 2.0, -0.5);
+  const Eigen::Vector3d slanted(std::sqrt(3.0) / 2.0, -0.5, 0.0);
   EXPECT_NEAR(obstacle_gap(o, Point(0.0, 0.0, 0.0), slanted, 99.0), 2.0, 1e-15);
   EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.0, -1.25, 0.0), down, 99.0), -0.25);  // inside
-  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector2d(1.0, 0.0), 99.0), 99.0);
-  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector2d(0.0, 1.0), 99.0), 99.0);
+  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0), 99.0), 99.0);
+  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.0, 1.0, 0.0), 99.0), 99.0);
 }
 
 TEST(RigidObstacle, DiscGapOutsideAndInside) {
   RigidObstacle o;
   o.shape = ObstacleShape::Disc;
-  o.centre = {0.0, -2.0};
+  o.centre = {0.0, -2.0, 0.0};
   o.radius = 1.0;
-  const Eigen::Vector2d down(0.0, -1.0);
+  const Eigen::Vector3d down(0.0, -1.0, 0.0);
   EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), down, 99.0), 1.0);
   // Off the axis: x = 0.6 meets the circle at y = -2 + 0.8.
   EXPECT_NEAR(obstacle_gap(o, Point(0.6, 0.0, 0.0), down, 99.0), 1.2, 1e-15);
@@ -44,9 +44,30 @@ TEST(RigidObstacle, DiscGapOutsideAndInside) {
   // A body inside the disc (a shaft in a bore of radius 1): the way out along the normal.
   o.body_inside = true;
   EXPECT_NEAR(obstacle_gap(o, Point(0.0, -2.5, 0.0), down, 99.0), 0.5, 1e-15);
-  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -2.0, 0.0), Eigen::Vector2d(1.0, 0.0), 99.0), 1.0, 1e-15);
+  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -2.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0), 99.0), 1.0,
+              1e-15);
   o.radius = 0.0;
   EXPECT_THROW(validate(o), InputError);
+}
+
+TEST(RigidObstacle, HalfSpaceAndSphereIn3D) {
+  RigidObstacle plane;
+  plane.shape = ObstacleShape::Plane;
+  plane.point = {0.0, 0.0, -1.0};
+  plane.normal = {0.0, 0.0, 3.0};  // the obstacle is z <= -1
+  const Eigen::Vector3d down(0.0, 0.0, -1.0);
+  EXPECT_DOUBLE_EQ(obstacle_gap(plane, Point(0.4, -0.7, 0.5), down, 99.0), 1.5);
+  const Eigen::Vector3d slanted(std::sqrt(3.0 / 8.0), std::sqrt(3.0 / 8.0), -0.5);  // 60 degrees
+  EXPECT_NEAR(obstacle_gap(plane, Point(0.0, 0.0, 0.0), slanted, 99.0), 2.0, 1e-15);
+  // A ball of radius 1 centred at (1, 2, -2): the ray down from (1.6, 2.0, 0) meets it at
+  // z = -2 + 0.8, and the ray from (1, 2.6, 0) too.
+  RigidObstacle ball;
+  ball.shape = ObstacleShape::Disc;
+  ball.centre = {1.0, 2.0, -2.0};
+  ball.radius = 1.0;
+  EXPECT_NEAR(obstacle_gap(ball, Point(1.6, 2.0, 0.0), down, 99.0), 1.2, 1e-15);
+  EXPECT_NEAR(obstacle_gap(ball, Point(1.0, 2.6, 0.0), down, 99.0), 1.2, 1e-15);
+  EXPECT_EQ(obstacle_gap(ball, Point(1.8, 2.8, 0.0), down, 99.0), 99.0);  // passes beside it
 }
 
 std::string error_of(const std::string& contact) {

@@ -362,8 +362,8 @@ TEST(SeveralContacts, BlockBetweenFoundationAndWall) {
   ContactSpec wall;
   wall.boundary = "right";
   wall.obstacle.shape = ObstacleShape::Plane;
-  wall.obstacle.point = Eigen::Vector2d(3.0 - 1e-5, 0.0);
-  wall.obstacle.normal = Eigen::Vector2d(-1.0, 0.0);
+  wall.obstacle.point = Eigen::Vector3d(3.0 - 1e-5, 0.0, 0.0);
+  wall.obstacle.normal = Eigen::Vector3d(-1.0, 0.0, 0.0);
   spec.tractions.erase(spec.tractions.begin());  // the right side is the wall's now
   spec.contacts.push_back(wall);
   const Model model = build_model(spec);

@@ -28,9 +28,9 @@ class DofMap {
   }
   /// The node's local axes as columns (the identity without a frame).
   [[nodiscard]] Eigen::Matrix2d frame(Index node) const;
-  /// The prescribed displacement of a node, Cartesian (its clamped components' values along
-  /// their axes; zero for a free node). 2D.
-  [[nodiscard]] Eigen::Vector2d prescribed_at(Index node) const;
+  /// The prescribed displacement of a node, Cartesian, dim entries (its clamped components'
+  /// values along their axes; zero for a free node).
+  [[nodiscard]] Eigen::VectorXd prescribed_at(Index node) const;
 
   /// Marks a component of a node as clamped (u = 0). Call before finalize().
   void clamp(Index node, int component);

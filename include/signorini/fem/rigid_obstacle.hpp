@@ -1,9 +1,10 @@
 #pragma once
 // The rigid partner of a contact boundary, and the gap g_j from each contact node to it measured
 // along the body's outward unit normal nu_j (method.md section 3): a gap formula g(x) as the
-// paper has it, a half-plane, or a disc (a roller or punch outside the body, or a bore the body
-// sits in). For planes and discs the gap is exact: the distance from x_j along nu_j to the
-// obstacle's surface, negative where the node starts inside the obstacle.
+// paper has it, a half-plane (a half-space in 3D), or a disc (a sphere in 3D: a roller, punch or
+// ball outside the body, or a bore the body sits in). For planes and discs the gap is exact: the
+// distance from x_j along nu_j to the obstacle's surface, negative where the node starts inside
+// the obstacle. Points and vectors have three coordinates; 2D problems leave z at 0.
 
 #include <Eigen/Core>
 
@@ -26,11 +27,11 @@ struct RigidObstacle {
   ScalarField gap = [](const Point&) { return 0.0; };
   /// Plane: a point of its surface, and its unit normal pointing out of the obstacle (towards
   /// the body): the obstacle is the half-plane (x - point) . normal <= 0.
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();
-  Eigen::Vector2d normal = Eigen::Vector2d(0.0, 1.0);
-  /// Disc: centre and radius; the body outside the disc (a roller, a punch) or, with
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d(0.0, 1.0, 0.0);
+  /// Disc (sphere in 3D): centre and radius; the body outside it (a roller, a punch) or, with
   /// body_inside, inside it (a bore, a groove).
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double radius = 1.0;
   bool body_inside = false;
 };
@@ -42,7 +43,7 @@ void validate(const RigidObstacle& obstacle);
 /// The gap from x along the unit vector nu to the obstacle: the t >= 0 of the first point
 /// x + t nu on its surface, or t < 0 where x is inside it already. Where the ray x + t nu never
 /// meets the obstacle (a node whose normal faces away from it), `far`.
-double obstacle_gap(const RigidObstacle& obstacle, const Point& x, const Eigen::Vector2d& nu,
+double obstacle_gap(const RigidObstacle& obstacle, const Point& x, const Eigen::Vector3d& nu,
                     double far);
 
 }  // namespace signorini

@@ -12,6 +12,7 @@
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/rigid_obstacle.hpp"
 #include "signorini/fem/vector_field.hpp"
+#include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 
 namespace signorini {
@@ -80,12 +81,14 @@ struct RegionMaterialSpec {
   IsotropicMaterial material;
 };
 
-/// Where the mesh comes from.
-enum class MeshType { Rectangle, Gmsh };
+/// Where the mesh comes from. Box (3D) is built through the library so far; problem files
+/// refuse it with a message until the 3D problem file arrives.
+enum class MeshType { Rectangle, Gmsh, Box };
 
-inline constexpr EnumNames<MeshType, 2> kMeshTypeNames{{
+inline constexpr EnumNames<MeshType, 3> kMeshTypeNames{{
     {MeshType::Rectangle, "rectangle"},
     {MeshType::Gmsh, "gmsh"},
+    {MeshType::Box, "box"},
 }};
 
 struct ProblemSpec {
@@ -96,6 +99,7 @@ struct ProblemSpec {
   /// [mesh] type: the structured rectangle of `mesh`, or a Gmsh file (`mesh_file`).
   MeshType mesh_type = MeshType::Rectangle;
   RectangleMeshOptions mesh;  ///< the rectangle (mesh_type = Rectangle)
+  BoxMeshOptions box;         ///< the box (mesh_type = Box), a 3D mesh
   /// The .msh file (or a .geo file, meshed by the gmsh program) for mesh_type = Gmsh; the
   /// problem-file reader makes a relative path relative to the problem file's folder.
   std::string mesh_file;

@@ -220,12 +220,19 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
                       st.residual);
       return o;
     }
-    // The next active set: nodes pressed (l_j > 0) stay, free nodes that penetrate join.
+    // The next active set: nodes pressed (l_j > 0) stay, free nodes that penetrate join. A node
+    // that touches without pressing (l_j = 0 and u_n = g_j: no strict complementarity, as at the
+    // corners of quadratic triangles under a uniform pressure) gets l_j and its gap residual
+    // within rounding of 0 with either sign: it keeps its state within 1e-13 of the largest
+    // values, instead of leaving and rejoining in a cycle.
+    const double l_tol = 1e-13 * o.l.cwiseAbs().maxCoeff();
+    const double g_tol = 1e-13 * std::max(gap_residual.cwiseAbs().maxCoeff(),
+                                          c.gaps.size() > 0 ? c.gaps.cwiseAbs().maxCoeff() : 0.0);
     ActiveSet next(static_cast<std::size_t>(nc), false);
     for (Index j = 0; j < nc; ++j) {
       if (!c.movable[static_cast<std::size_t>(j)]) continue;
       next[static_cast<std::size_t>(j)] =
-          active[static_cast<std::size_t>(j)] ? o.l(j) > 0.0 : gap_residual(j) > 0.0;
+          active[static_cast<std::size_t>(j)] ? o.l(j) > -l_tol : gap_residual(j) > g_tol;
     }
     rec.dual_change = relative_change(o.l, l);
     rec.active_set_size = count_active(active);

@@ -1,9 +1,11 @@
 #include "signorini/fem/contact_boundary.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <string>
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/quadrature.hpp"
@@ -45,6 +47,86 @@ std::vector<Index> walk_edges(const Mesh& mesh, const BoundaryPart& part) {
   return order;
 }
 
+// The contact surface of a 3D boundary part: its nodes in the order the faces first name them,
+// weights h_j and normals (method.md section 3, on surfaces). Linear faces and Quad9 faces
+// give h_j = int N_j dA and nu_j along int N_j n dA, as lines do in 2D. On a Tri6 face the
+// corner functions integrate to zero (h_j = 0 would leave a corner without a constraint of its
+// own), so its weights are lumped as Hinton, Rock and Zienkiewicz do it: h_a proportional to
+// int N_a^2 dA, scaled to the face's area; its normals are the face's normal at each node,
+// weighted so.
+BoundaryNodes surface_nodes(const Mesh& mesh, const BoundaryPart& part) {
+  BoundaryNodes out;
+  std::map<Index, Index> position;
+  for (const Facet& f : part.facets)
+    for (const Index v : mesh.facet_nodes(f))
+      if (position.try_emplace(v, static_cast<Index>(out.nodes.size())).second)
+        out.nodes.push_back(v);
+  const auto n = static_cast<Index>(out.nodes.size());
+  out.normals = Eigen::MatrixXd::Zero(3, n);
+  out.weights = Vector::Zero(n);
+  ShapeValues N;
+  ShapeGradients dN;
+  for (const Facet& f : part.facets) {
+    const auto fn = mesh.facet_nodes(f);
+    const auto k = static_cast<Index>(fn.size());
+    std::vector<Index> facet;
+    for (const Index v : fn) facet.push_back(position.at(v));
+    const CellType type = facet_type(mesh.cell_type(f.cell));
+    // dA n at a reference point: the cross product of the tangents (outward: the faces' corners
+    // run counterclockwise seen from outside, mesh/cell_type.hpp).
+    const auto area_vector = [&](const Eigen::Vector3d& xi) {
+      shape_gradients(type, xi, dN);
+      Eigen::Vector3d t1 = Eigen::Vector3d::Zero(), t2 = Eigen::Vector3d::Zero();
+      for (Index a = 0; a < k; ++a) {
+        t1 += dN(0, a) * mesh.point(fn[static_cast<std::size_t>(a)]);
+        t2 += dN(1, a) * mesh.point(fn[static_cast<std::size_t>(a)]);
+      }
+      return Eigen::Vector3d(t1.cross(t2));
+    };
+    const std::vector<QuadraturePoint> rule = cell_quadrature(type, 3);
+    if (type == CellType::Tri6) {
+      Vector mass = Vector::Zero(k);
+      double area = 0.0;
+      for (const QuadraturePoint& q : rule) {
+        shape_functions(type, q.xi, N);
+        const double da = area_vector(q.xi).norm() * q.w;
+        area += da;
+        mass += N.head(k).cwiseAbs2() * da;
+      }
+      for (Index a = 0; a < k; ++a) {
+        const double h = area * mass(a) / mass.sum();
+        const Index j = facet[static_cast<std::size_t>(a)];
+        out.weights(j) += h;
+        out.normals.col(j) +=
+            h * area_vector(reference_node(type, static_cast<int>(a))).normalized();
+      }
+    } else {
+      for (const QuadraturePoint& q : rule) {
+        shape_functions(type, q.xi, N);
+        const Eigen::Vector3d dA = area_vector(q.xi) * q.w;
+        for (Index a = 0; a < k; ++a) {
+          const Index j = facet[static_cast<std::size_t>(a)];
+          out.weights(j) += N(a) * dA.norm();
+          out.normals.col(j) += N(a) * dA;
+        }
+      }
+    }
+    out.facets.push_back(std::move(facet));
+  }
+  return out;
+}
+
+void normalize_normals(BoundaryNodes& out, const BoundaryPart& part, const std::string& what) {
+  for (Index j = 0; j < static_cast<Index>(out.nodes.size()); ++j) {
+    const double len = out.normals.col(j).norm();
+    if (!(len > 0.0))
+      throw InputError(what + " = '" + part.name + "': node " +
+                       std::to_string(out.nodes[static_cast<std::size_t>(j)]) +
+                       " has no defined normal (facets cancel out)");
+    out.normals.col(j) /= len;
+  }
+}
+
 }  // namespace
 
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
@@ -55,10 +137,13 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
 }
 
 BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const std::string& what) {
-  if (mesh.dim() != 2)
-    throw InputError(what + ": only 2D meshes are supported so far (3D is not implemented)");
   if (part.facets.empty())
     throw InputError(what + " = '" + part.name + "': the boundary part has no facets");
+  if (mesh.dim() == 3) {
+    BoundaryNodes out = surface_nodes(mesh, part);
+    normalize_normals(out, part, what);
+    return out;
+  }
   BoundaryNodes out;
   out.nodes = walk_edges(mesh, part);
   const auto n = static_cast<Index>(out.nodes.size());
@@ -104,14 +189,7 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
       }
     }
   }
-  for (Index j = 0; j < n; ++j) {
-    const double len = out.normals.col(j).norm();
-    if (!(len > 0.0))
-      throw InputError(what + " = '" + part.name + "': node " +
-                       std::to_string(out.nodes[static_cast<std::size_t>(j)]) +
-                       " has no defined normal (facets cancel out)");
-    out.normals.col(j) /= len;
-  }
+  normalize_normals(out, part, what);
   return out;
 }
 
@@ -136,17 +214,22 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
   for (Index j = 0; j < n; ++j) {
     const Index node = cs.nodes[static_cast<std::size_t>(j)];
     const Point x = mesh.point(node);
-    cs.gaps(j) = obstacle_gap(obstacle, x, cs.normals.col(j), far);
+    Eigen::Vector3d nu = Eigen::Vector3d::Zero();
+    nu.head(mesh.dim()) = cs.normals.col(j);
+    cs.gaps(j) = obstacle_gap(obstacle, x, nu, far);
     if (!std::isfinite(cs.gaps(j)))
       throw InputError("contact.gap is not finite at x = (" + std::to_string(x(0)) + ", " +
-                       std::to_string(x(1)) + "): expected finite values on the contact boundary");
+                       std::to_string(x(1)) + (mesh.dim() == 3 ? ", " + std::to_string(x(2)) : "") +
+                       "): expected finite values on the contact boundary");
     // A prescribed displacement moves the node towards the obstacle by nu . u_D: the constraint
     // (N x)_j <= g_j holds on the free dofs with that part taken off the gap. A node with local
-    // axes (DofMap::set_frame) has its row in them.
+    // axes (DofMap::set_frame, 2D) has its row in them.
     cs.gaps(j) -= cs.normals.col(j).dot(dofs.prescribed_at(node));
-    const Eigen::Vector2d normal = dofs.frame(node).transpose() * cs.normals.col(j);
+    const Eigen::VectorXd normal =
+        dofs.has_frame(node) ? Eigen::VectorXd(dofs.frame(node).transpose() * cs.normals.col(j))
+                             : Eigen::VectorXd(cs.normals.col(j));
     double free_normal = 0.0;
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < mesh.dim(); ++k) {
       const Index d = dofs.free_index(node, k);
       if (d < 0) continue;
       triplets.emplace_back(static_cast<int>(j), static_cast<int>(d), normal(k));

@@ -27,10 +27,10 @@ Eigen::Matrix2d DofMap::frame(Index node) const {
              : Eigen::Matrix2d::Identity();
 }
 
-Eigen::Vector2d DofMap::prescribed_at(Index node) const {
-  if (values_.size() == 0) return Eigen::Vector2d::Zero();
-  const Eigen::Vector2d local(values_(node * dim_), values_(node * dim_ + 1));
-  return has_frame(node) ? Eigen::Vector2d(frame(node) * local) : local;
+Eigen::VectorXd DofMap::prescribed_at(Index node) const {
+  if (values_.size() == 0) return Eigen::VectorXd::Zero(dim_);
+  const Eigen::VectorXd local = values_.segment(node * dim_, dim_);
+  return has_frame(node) ? Eigen::VectorXd(frame(node) * local) : local;
 }
 
 void DofMap::rotate_frames(Vector& full, bool to_local) const {

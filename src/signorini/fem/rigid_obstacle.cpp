@@ -29,22 +29,20 @@ void validate(const RigidObstacle& o) {
   }
 }
 
-double obstacle_gap(const RigidObstacle& o, const Point& x3, const Eigen::Vector2d& nu,
-                    double far) {
-  const Eigen::Vector2d x = x3.head<2>();
+double obstacle_gap(const RigidObstacle& o, const Point& x, const Eigen::Vector3d& nu, double far) {
   switch (o.shape) {
     case ObstacleShape::Gap:
-      return o.gap(x3);
+      return o.gap(x);
     case ObstacleShape::Plane: {
-      // x + t nu on the line: ((x + t nu) - p) . n = 0.
-      const Eigen::Vector2d n = o.normal.normalized();
+      // x + t nu on the line (plane): ((x + t nu) - p) . n = 0.
+      const Eigen::Vector3d n = o.normal.normalized();
       const double approach = nu.dot(n);  // < 0 where nu points into the obstacle's side
       if (!(approach < -1e-12)) return far;
       return (o.point - x).dot(n) / approach;
     }
     case ObstacleShape::Disc: {
       // |x + t nu - c| = R: t^2 + 2 b t + q = 0 with b = nu . (x - c), q = |x - c|^2 - R^2.
-      const Eigen::Vector2d d = x - o.centre;
+      const Eigen::Vector3d d = x - o.centre;
       const double b = nu.dot(d);
       const double q = d.squaredNorm() - o.radius * o.radius;
       const double disc = b * b - q;

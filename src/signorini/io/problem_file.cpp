@@ -84,6 +84,10 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
               "or type = \"gmsh\" with file");
   r.check_keys(*t, "mesh");
   read_options(r, *t, mesh_options(), spec);
+  if (spec.mesh_type == MeshType::Box)
+    r.fail_at(t->get("type")->source(),
+              "mesh.type = \"box\": 3D problems are not readable from problem files yet (the "
+              "library builds them: ProblemSpec::box); expected \"rectangle\" or \"gmsh\"");
   check_options(r, t, mesh_options(), spec);
   // Which keys a type needs (those it has no use for were refused by check_options).
   if (spec.mesh_type == MeshType::Rectangle) {
@@ -406,8 +410,9 @@ ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std:
     return required_pair(r, *t, path, key, what);
   };
   if (o.shape == ObstacleShape::Plane) {
-    o.point = pair("point", "[x, y]: a point of the plane");
-    o.normal = pair("normal", "[nx, ny]: the plane's normal, towards the body");
+    o.point.head<2>() = pair("point", "[x, y]: a point of the plane");
+    o.normal.head<2>() = pair("normal", "[nx, ny]: the plane's normal, towards the body");
+    o.normal(2) = 0.0;
     if (!(o.normal.norm() > 0.0))
       r.fail_at(t->get("normal")->source(),
                 join(path, "normal") +
@@ -416,7 +421,7 @@ ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std:
     return contact;
   }
   if (o.shape == ObstacleShape::Disc) {
-    o.centre = pair("centre", "[x, y]: the disc's centre");
+    o.centre.head<2>() = pair("centre", "[x, y]: the disc's centre");
     const std::optional<double> radius = r.number(*t, path, "radius");
     if (!radius) r.missing(join(path, "radius"), "a positive number");
     if (!(*radius > 0.0))

@@ -80,7 +80,8 @@ const OptionTable<P>& mesh_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("mesh");
     t.choice("type", &P::mesh_type, kMeshTypeNames,
-             "`rectangle`: the structured mesh of the keys below; `gmsh`: the mesh of `file`");
+             "`rectangle`: the structured mesh of the keys below; `gmsh`: the mesh of `file`; "
+             "`box`, the 3D box, is built through the library only so far (refused here)");
     t.text("file", &P::mesh_file,
            "type = \"gmsh\": the mesh file, a path relative to the problem file; a Gmsh .msh "
            "file (formats 4.1 and 2.2, ASCII or binary), or a .geo file that the `gmsh` program "
@@ -334,7 +335,7 @@ std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpe
                                                                 const std::string& gap_text) {
   std::vector<std::pair<std::string, OptionValue>> out{{"boundary", contact.boundary}};
   const RigidObstacle& o = contact.obstacle;
-  const auto xy = [](const Eigen::Vector2d& v) { return std::array<double, 2>{v(0), v(1)}; };
+  const auto xy = [](const Eigen::Vector3d& v) { return std::array<double, 2>{v(0), v(1)}; };
   switch (o.shape) {
     case ObstacleShape::Gap:
       out.emplace_back("gap", gap_text);

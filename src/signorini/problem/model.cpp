@@ -192,8 +192,9 @@ Model build_model(const ProblemSpec& spec) {
   require_loads_off_contact(spec);
   TimingTable timings;
   ScopedTimer mesh_timer(timings, "mesh");
-  Mesh mesh = spec.mesh_type == MeshType::Gmsh ? read_mesh_file(spec.mesh_file)
-                                               : make_rectangle_mesh(spec.mesh);
+  Mesh mesh = spec.mesh_type == MeshType::Gmsh  ? read_mesh_file(spec.mesh_file)
+              : spec.mesh_type == MeshType::Box ? make_box_mesh(spec.box)
+                                                : make_rectangle_mesh(spec.mesh);
   // Materials per region, by the regions' names.
   ElasticityOptions elasticity = spec.elasticity;
   for (const RegionMaterialSpec& m : spec.region_materials) {
