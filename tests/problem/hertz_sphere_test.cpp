@@ -1,0 +1,115 @@
+// Hertz's contact of an elastic ball on a rigid plane (examples/gmsh/hertz_sphere.geo: a quarter
+// of the lower half of a ball of radius R = 1, its flat top pushed down by d, rollers on the
+// symmetry planes). From the total force F the solver finds, Hertz gives the contact radius
+// a = (3 F R / (4 E*))^(1/3) with E* = E / (1 - nu^2), and the pressure p(r) = p0 sqrt(1 - r^2/a^2)
+// with p0 = 3 F / (2 pi a^2). The nodes in contact must straddle a, the pressure follow the
+// profile, and the errors fall from the coarse mesh to the fine one; the methods agree.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini {
+namespace {
+
+constexpr double kE = 1.0, kNu = 0.3, kR = 1.0, kD = 1e-3;
+
+ProblemSpec ball(const std::string& mesh) {
+  ProblemSpec spec;
+  spec.name = "hertz_sphere";
+  spec.mesh_type = MeshType::Gmsh;
+  spec.mesh_file = std::string(SIGNORINI_EXAMPLES_DIR) + "/gmsh/" + mesh;
+  spec.elasticity.material = {kE, kNu};
+  spec.clamps = {{"xsym", {true, false, false}}, {"ysym", {false, true, false}}};
+  DisplacementSpec top;
+  top.boundary = "top";
+  top.values[2] = [](const Point&) { return -kD; };
+  top.texts[2] = "-0.001";
+  spec.displacements = {top};
+  ContactSpec plane;
+  plane.boundary = "contact";
+  plane.obstacle.shape = ObstacleShape::Plane;
+  plane.obstacle.point = Eigen::Vector3d::Zero();
+  plane.obstacle.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
+  spec.contacts = {plane};
+  return spec;
+}
+
+struct HertzErrors {
+  double radius;    // |a_found - a| / a, a_found halfway between the last node in and the first out
+  double peak;      // |l(pole) - p0| / p0
+  double profile;   // max_j |l_j - p(r_j)| / p0
+  double rms;       // the root mean square of l_j - p(r_j) over the nodes within a, / p0
+  double straddle;  // the gap between the last node in contact and the first out, / a
+};
+
+HertzErrors hertz_errors(const Model& model, const ContactResult& r) {
+  const ContactSet& c = model.problem.contact;
+  const double F = 4.0 * r.summary.contact_force;  // the whole ball: four quarters
+  const double a = std::cbrt(3.0 * F * kR / (4.0 * kE / (1.0 - kNu * kNu)));
+  const double p0 = 3.0 * F / (2.0 * std::numbers::pi * a * a);
+  double in = 0.0, out = 1e9, pole = 0.0, profile = 0.0, sum2 = 0.0;
+  int inside = 0;
+  for (Index j = 0; j < c.size(); ++j) {
+    const Point x = model.mesh.point(c.nodes[static_cast<std::size_t>(j)]);
+    const double rr = std::hypot(x(0), x(1));
+    if (r.l(j) > 0.0)
+      in = std::max(in, rr);
+    else
+      out = std::min(out, rr);
+    if (rr < 1e-12) pole = r.l(j);
+    const double p = rr < a ? p0 * std::sqrt(1.0 - rr * rr / (a * a)) : 0.0;
+    profile = std::max(profile, std::abs(r.l(j) - p));
+    if (rr < a) {
+      sum2 += (r.l(j) - p) * (r.l(j) - p);
+      ++inside;
+    }
+  }
+  return {std::abs(0.5 * (in + out) - a) / a, std::abs(pole - p0) / p0, profile / p0,
+          std::sqrt(sum2 / std::max(inside, 1)) / p0, (out - in) / a};
+}
+
+TEST(HertzSphere, ContactRadiusAndPressureApproachHertzUnderRefinement) {
+  std::vector<HertzErrors> errors;
+  for (const char* mesh : {"hertz_sphere_coarse.msh", "hertz_sphere.msh"}) {
+    SCOPED_TRACE(mesh);
+    const ProblemSpec spec = ball(mesh);
+    const Model model = build_model(spec);
+    ContactSolverOptions o = spec.solver;
+    std::vector<ContactResult> results;
+    for (const ContactMethod method : {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton}) {
+      o.method = method;
+      results.push_back(solve_contact(model.problem, o));
+      ASSERT_TRUE(results.back().summary.converged()) << results.back().summary.message;
+      EXPECT_LT(results.back().summary.kkt.max(), 1e-8);
+    }
+    EXPECT_LT((results[1].u - results[0].u).norm(), 1e-8 * results[0].u.norm());
+    EXPECT_LT((results[1].l - results[0].l).norm(), 1e-7 * results[0].l.norm());
+    const HertzErrors e = hertz_errors(model, results[0]);
+    std::cout << mesh << ": " << model.mesh.num_nodes() << " nodes, "
+              << model.problem.contact.size() << " contact nodes, " << results[0].summary.num_active
+              << " in contact; errors: radius " << e.radius << ", peak " << e.peak << ", profile "
+              << e.profile << " (root mean square " << e.rms << "; node spacing at the edge "
+              << e.straddle << " a)\n";
+    errors.push_back(e);
+  }
+  // What the fine mesh reaches (cells 0.004 long, a = 0.038: about 10 along a radius of the
+  // contact zone); the errors of the whole profile, largest at the edge where p falls like a
+  // square root, halve from the coarse mesh. The peak, one node's value on an unstructured mesh,
+  // stays within a few percent on both.
+  EXPECT_LT(errors[1].radius, 0.01);
+  EXPECT_LT(errors[1].peak, 0.03);
+  EXPECT_LT(errors[1].rms, 0.06);
+  EXPECT_LT(errors[1].rms, 0.6 * errors[0].rms);
+  EXPECT_LT(errors[1].profile, 0.17);
+  EXPECT_LT(errors[1].profile, 0.7 * errors[0].profile);
+  EXPECT_LT(errors[1].radius, errors[0].radius);
+}
+
+}  // namespace
+}  // namespace signorini
