@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/fem/nodal_stress.hpp"
@@ -143,6 +145,113 @@ TEST(SolidContactBall, BallPressedIntoABlockMethodsAgree) {
       }
     }
   }
+}
+
+}  // namespace
+}  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// The paper's problem extruded: a slab of hex8 cells one cell thick, held by u_z = 0 on both faces
+// z = 0 and z = t, loaded and clamped as the 2D problem. Its displacement does not depend on z and
+// it is the plane-strain solution: the 3D discrete problem is t times the 2D one (the element
+// matrices, loads and contact weights, split between the two faces), so the iterates are the same
+// and the Uzawa and GNM counts too.
+TEST(SolidContactSlab, ExtrudedPaperProblemIsThePlaneStrainSolution) {
+  const Index nx = 30, ny = 10;
+  const double t = 0.25;
+  const ProblemSpec plane = paper_benchmark(nx, ny);
+  ProblemSpec slab = plane;
+  slab.mesh_type = MeshType::Box;
+  slab.box.length = 3.0;
+  slab.box.width = 1.0;
+  slab.box.height = t;
+  slab.box.nx = nx;
+  slab.box.ny = ny;
+  slab.box.nz = 1;
+  slab.clamps = {
+      {"xmin", {true, true, true}}, {"zmin", {false, false, true}}, {"zmax", {false, false, true}}};
+  slab.tractions[0].boundary = "xmax";
+  slab.tractions[1].boundary = "ymax";
+  slab.contacts[0].boundary = "ymin";
+
+  const Model m2 = build_model(plane);
+  const Model m3 = build_model(slab);
+  const ContactResult r2 = solve_contact(m2.problem, plane.solver);
+  const ContactResult r3 = solve_contact(m3.problem, slab.solver);
+  ASSERT_TRUE(r2.summary.converged()) << r2.summary.message;
+  ASSERT_TRUE(r3.summary.converged()) << r3.summary.message;
+  EXPECT_EQ(r3.summary.outer_iterations, r2.summary.outer_iterations);
+  EXPECT_EQ(r3.summary.inner_iterations(), r2.summary.inner_iterations());
+  EXPECT_NEAR(r3.summary.energy / t, r2.summary.energy, 1e-10 * std::abs(r2.summary.energy));
+
+  const Vector u2 = m2.dofs.expand(r2.u);
+  const Vector u3 = m3.dofs.expand(r3.u);
+  const Index layer = (nx + 1) * (ny + 1);
+  double difference = 0.0;
+  for (Index n = 0; n < layer; ++n)
+    for (Index k = 0; k < 2; ++k) {
+      const Index n3 = n + k * layer;
+      ASSERT_LT((m3.mesh.point(n3).head<2>() - m2.mesh.point(n).head<2>()).norm(), 1e-14);
+      difference = std::max({difference, std::abs(u3(3 * n3) - u2(2 * n)),
+                             std::abs(u3(3 * n3 + 1) - u2(2 * n + 1)), std::abs(u3(3 * n3 + 2))});
+    }
+  EXPECT_LT(difference, 1e-10 * u2.cwiseAbs().maxCoeff());
+
+  // The contact pressures: both nodes of the slab at x_j carry the 2D node's pressure.
+  std::map<Index, double> l2;
+  for (Index j = 0; j < m2.problem.contact.size(); ++j)
+    l2[m2.problem.contact.nodes[static_cast<std::size_t>(j)]] = r2.l(j);
+  ASSERT_EQ(m3.problem.contact.size(), 2 * m2.problem.contact.size());
+  for (Index j = 0; j < m3.problem.contact.size(); ++j) {
+    const Index n3 = m3.problem.contact.nodes[static_cast<std::size_t>(j)];
+    EXPECT_NEAR(r3.l(j), l2.at(n3 % layer), 1e-10 * r2.l.maxCoeff()) << "contact node " << j;
+  }
+}
+
+}  // namespace
+}  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// The iterative path in 3D: conjugate gradients preconditioned by smoothed-aggregation multigrid
+// built on the six rigid-body modes, against the direct (condensed) path, on a ball pressed into
+// a block.
+TEST(SolidContactPaths, IterativeWithAggregationMultigridAgreesWithDirect) {
+  ProblemSpec spec;
+  spec.mesh_type = MeshType::Box;
+  spec.box.nx = 12;  // 3,042 free unknowns: above the 1,000 of the coarsest level
+  spec.box.ny = 12;
+  spec.box.nz = 6;
+  spec.box.height = 0.5;
+  spec.elasticity.material = {1000.0, 0.3};
+  spec.clamps = {{"zmax", {true, true, true}}};
+  ContactSpec ball;
+  ball.boundary = "zmin";
+  ball.obstacle.shape = ObstacleShape::Disc;
+  ball.obstacle.radius = 2.0;
+  ball.obstacle.centre = Eigen::Vector3d(0.5, 0.5, -2.0 + 2e-3);
+  spec.contacts = {ball};
+  spec.solver.uzawa_tolerance = 1e-10;
+  const ContactResult direct = solve_contact(build_model(spec).problem, spec.solver);
+  ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;
+
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  const Model model = build_model(spec);
+  ASSERT_EQ(model.multigrid.kind, HierarchyKind::Aggregation);
+  ASSERT_FALSE(model.multigrid.prolongations.empty());
+  const ContactResult cg = solve_contact(model.problem, spec.solver, &model.multigrid);
+  ASSERT_TRUE(cg.summary.converged()) << cg.summary.message;
+  EXPECT_LT(cg.summary.kkt.max(), 1e-8);
+  EXPECT_EQ(cg.summary.num_active, direct.summary.num_active);
+  EXPECT_LT((cg.u - direct.u).norm(), 1e-8 * direct.u.norm());
+  EXPECT_LT((cg.l - direct.l).norm(), 1e-7 * direct.l.norm());
+  int iterations = 0;
+  for (const auto& step : cg.summary.steps) iterations += step.linear_iterations;
+  EXPECT_GT(iterations, 0);
 }
 
 }  // namespace
