@@ -7,14 +7,21 @@
 // three methods agree, with small KKT residuals. A ball pressed into a block agrees between the
 // methods too.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
+#include "app/tool_run.hpp"
+#include "io/temporary_folder.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/fem/nodal_stress.hpp"
+#include "signorini/io/result_writer.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {
@@ -252,6 +259,59 @@ TEST(SolidContactPaths, IterativeWithAggregationMultigridAgreesWithDirect) {
   int iterations = 0;
   for (const auto& step : cg.summary.steps) iterations += step.linear_iterations;
   EXPECT_GT(iterations, 0);
+}
+
+}  // namespace
+}  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// The result files of a 3D solve: contact.csv with three coordinates, the normal displacement and
+// the tangential displacement vector; contact.vtu with the contact faces; solution.vtu with the
+// 3D cells; summary.json. Read back: the block pressed onto a half-space has u_n = 0 and the
+// pressure p at every contact node, and the files agree with the solution.
+TEST(SolidContactFiles, ResultFilesOfA3DSolve) {
+  const ProblemSpec spec = pressed_block(CellType::Hex27);
+  const Model model = build_model(spec);
+  const ContactResult r = solve_contact(model.problem, spec.solver);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  const testing::TemporaryFolder dir;
+  write_results(dir / "out", r, model, spec);
+
+  std::ifstream csv(dir / "out" / "contact.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary");
+  Index rows = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream s(line);
+    for (std::string v; std::getline(s, v, ',');) f.push_back(v);
+    ASSERT_EQ(f.size(), 13U) << line;
+    const Point x(std::stod(f[0]), std::stod(f[1]), std::stod(f[2]));
+    EXPECT_NEAR(x(2), 0.0, 1e-15);
+    EXPECT_NEAR(std::stod(f[3]), 0.0, 1e-14);                   // u_n: in contact
+    EXPECT_NEAR(std::stod(f[4]), kNu * kP / kE * x(0), 1e-12);  // u_t = (u_x, u_y, 0)
+    EXPECT_NEAR(std::stod(f[5]), kNu * kP / kE * x(1), 1e-12);
+    EXPECT_NEAR(std::stod(f[6]), 0.0, 1e-15);
+    EXPECT_NEAR(std::stod(f[7]), kP, 1e-8);
+    EXPECT_EQ(f[11], "-1");
+    EXPECT_EQ(f[12], "zmin");
+    ++rows;
+  }
+  EXPECT_EQ(rows, model.problem.contact.size());
+
+  const std::string contact = testing::read_text(dir / "out" / "contact.vtu");
+  // 4 x 3 biquadratic faces (VTK type 28) with 9 x 7 nodes.
+  EXPECT_NE(contact.find("NumberOfPoints=\"63\" NumberOfCells=\"12\""), std::string::npos);
+  const std::string solution = testing::read_text(dir / "out" / "solution.vtu");
+  EXPECT_NE(solution.find(fmt::format("NumberOfPoints=\"{}\" NumberOfCells=\"{}\"",
+                                      model.mesh.num_nodes(), model.mesh.num_cells())),
+            std::string::npos);
+  const nlohmann::json summary =
+      nlohmann::json::parse(testing::read_text(dir / "out" / "summary.json"));
+  EXPECT_NEAR(summary["contact_force"].get<double>(), kP * 0.8, 1e-9);
 }
 
 }  // namespace

@@ -6,22 +6,53 @@
 
 namespace signorini {
 
+namespace {
+
+// The boundary's name, quoted as CSV wants when it holds a comma or a quote.
+std::string csv_name(const std::string& name) {
+  if (name.find_first_of(",\"\n") == std::string::npos) return name;
+  std::string quoted = "\"";
+  for (const char ch : name) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
+// 3D: a surface has no single tangential direction, so the tangential displacement is given as
+// the Cartesian vector u - u_n nu; no arc length.
+std::string contact_csv_3d(const ContactResult& result, const Model& model) {
+  const ContactSet& c = model.problem.contact;
+  const Vector u = model.dofs.expand(result.u);
+  std::string out = "x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary\n";
+  for (std::size_t part = 0; part < model.contact_boundaries.size(); ++part) {
+    const std::string name = csv_name(model.contact_boundaries[part]);
+    for (Index j = model.contact_starts[part]; j < model.contact_starts[part + 1]; ++j) {
+      const Index node = c.nodes[static_cast<std::size_t>(j)];
+      const Eigen::Vector3d uj = u.segment<3>(3 * node);
+      const Eigen::Vector3d n = c.normals.col(j);
+      const double un = uj.dot(n);
+      const Eigen::Vector3d ut = uj - un * n;
+      const double gap = c.gaps(j) + n.dot(model.dofs.prescribed_at(node));
+      const auto x = model.mesh.node(node);
+      out += fmt::format(
+          "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
+          "{:.17g},{}\n",
+          x(0), x(1), x(2), un, ut(0) + 0.0, ut(1) + 0.0, ut(2) + 0.0, result.l(j), gap, n(0) + 0.0,
+          n(1) + 0.0, n(2) + 0.0, name);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string contact_csv(const ContactResult& result, const Model& model) {
-  if (model.mesh.dim() != 2)
-    throw InputError("contact.csv: only 2D problems have a single tangential direction");
+  if (model.mesh.dim() == 3) return contact_csv_3d(result, model);
   const ContactSet& c = model.problem.contact;
   // result.u holds the free dofs only; expand() adds the prescribed values (0 for clamps).
   const Vector u = model.dofs.expand(result.u);
   std::string out = "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary\n";
   // s: the arc length along the contact nodes of each contact boundary in their order (chords
   // between consecutive nodes, so along a quadratic edge through its middle node), from 0 at the
-  // start of each; the boundary's name, quoted as CSV wants when it holds a comma or a quote.
-  const auto csv_name = [](std::string name) {
-    if (name.find_first_of(",\"\n") == std::string::npos) return name;
-    std::string quoted = "\"";
-    for (const char ch : name) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-    return quoted + "\"";
-  };
+  // start of each.
   for (std::size_t part = 0; part < model.contact_boundaries.size(); ++part) {
     const std::string name = csv_name(model.contact_boundaries[part]);
     const Index first = model.contact_starts[part];

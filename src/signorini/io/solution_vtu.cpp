@@ -10,11 +10,6 @@ namespace signorini {
 
 namespace {
 
-void require_2d(const Model& model, const char* file) {
-  if (model.mesh.dim() != 2)
-    throw InputError(std::string(file) + ": only 2D problems can be written so far");
-}
-
 // (u_x, u_y, u_z) per node (u_z = 0 in 2D), from the full node-major displacement.
 std::vector<double> displacement_xyz(const Vector& u_full, Index num_nodes, int dim) {
   std::vector<double> out(static_cast<std::size_t>(3 * num_nodes), 0.0);
@@ -74,41 +69,62 @@ std::string solution_vtu(const ContactResult& result, const Model& model) {
 }
 
 std::string contact_vtu(const ContactResult& result, const Model& model) {
-  require_2d(model, "contact.vtu");
   const Mesh& mesh = model.mesh;
+  const int dim = mesh.dim();
   const ContactSet& c = model.problem.contact;
   const Index m = c.size();
   const Vector u = model.dofs.expand(result.u);
 
-  Eigen::MatrixXd points(2, m);
-  for (Index j = 0; j < m; ++j) {
-    const Index node = c.nodes[static_cast<std::size_t>(j)];
-    points.col(j) = mesh.node(node);
-  }
+  Eigen::MatrixXd points(dim, m);
+  for (Index j = 0; j < m; ++j) points.col(j) = mesh.node(c.nodes[static_cast<std::size_t>(j)]);
   VtuFile vtu(points);
   // The facets of the contact set itself, so that contact.vtu shows the boundary the solver used
-  // (also for a contact set not made from spec.contact).
-  for (const std::vector<Index>& facet : c.facets)
-    vtu.add_cell(facet.size() == 3 ? VtkCellType::QuadraticEdge : VtkCellType::Line, facet);
+  // (also for a contact set not made from spec.contact): lines in 2D, faces in 3D (the Tri6 and
+  // Quad9 node orders are VTK's).
+  for (const std::vector<Index>& facet : c.facets) {
+    if (dim == 2) {
+      vtu.add_cell(facet.size() == 3 ? VtkCellType::QuadraticEdge : VtkCellType::Line, facet);
+      continue;
+    }
+    switch (facet.size()) {
+      case 3:
+        vtu.add_cell(VtkCellType::Triangle, facet);
+        break;
+      case 4:
+        vtu.add_cell(VtkCellType::Quad, facet);
+        break;
+      case 6:
+        vtu.add_cell(VtkCellType::QuadraticTriangle, facet);
+        break;
+      default:
+        vtu.add_cell(VtkCellType::BiquadraticQuad, facet);
+    }
+  }
 
   std::vector<double> displacement(static_cast<std::size_t>(3 * m), 0.0);
   std::vector<double> normal(static_cast<std::size_t>(3 * m), 0.0);
-  std::vector<double> un(static_cast<std::size_t>(m)), ut(static_cast<std::size_t>(m));
+  std::vector<double> un(static_cast<std::size_t>(m));
+  std::vector<double> ut(static_cast<std::size_t>(dim == 2 ? m : 3 * m));
   std::vector<double> pressure(static_cast<std::size_t>(m)), gap(static_cast<std::size_t>(m));
   std::vector<double> deformed_gap(static_cast<std::size_t>(m));
   std::vector<std::uint8_t> active(static_cast<std::size_t>(m));
   for (Index j = 0; j < m; ++j) {
     const auto k = static_cast<std::size_t>(j);
     const Index node = c.nodes[k];
-    const double ux = u(2 * node), uy = u(2 * node + 1);
-    const double nx = c.normals(0, j), ny = c.normals(1, j);
-    displacement[3 * k] = ux;
-    displacement[3 * k + 1] = uy;
-    normal[3 * k] = nx;
-    normal[3 * k + 1] = ny;
-    // As contact.csv: tau is nu turned a quarter counterclockwise.
-    un[k] = ux * nx + uy * ny;
-    ut[k] = -ux * ny + uy * nx;
+    Eigen::Vector3d uj = Eigen::Vector3d::Zero(), nj = Eigen::Vector3d::Zero();
+    uj.head(dim) = u.segment(dim * node, dim);
+    nj.head(dim) = c.normals.col(j);
+    for (std::size_t i = 0; i < 3; ++i) {
+      displacement[3 * k + i] = uj(static_cast<Index>(i));
+      normal[3 * k + i] = nj(static_cast<Index>(i));
+    }
+    un[k] = uj.dot(nj);
+    if (dim == 2) {  // as contact.csv: tau is nu turned a quarter counterclockwise
+      ut[k] = -uj(0) * nj(1) + uj(1) * nj(0);
+    } else {  // the tangential displacement vector u - u_n nu
+      const Eigen::Vector3d t = uj - un[k] * nj;
+      for (std::size_t i = 0; i < 3; ++i) ut[3 * k + i] = t(static_cast<Index>(i));
+    }
     pressure[k] = result.l(j);
     gap[k] = c.gaps(j);
     deformed_gap[k] = c.gaps(j) - un[k];
@@ -117,7 +133,10 @@ std::string contact_vtu(const ContactResult& result, const Model& model) {
   vtu.add_point_data("displacement", 3, displacement, {"X", "Y", "Z"});
   vtu.add_point_data("normal", 3, normal, {"X", "Y", "Z"});
   vtu.add_point_data("normal_displacement", 1, un);
-  vtu.add_point_data("tangential_displacement", 1, ut);
+  if (dim == 2)
+    vtu.add_point_data("tangential_displacement", 1, ut);
+  else
+    vtu.add_point_data("tangential_displacement", 3, ut, {"X", "Y", "Z"});
   vtu.add_point_data("contact_pressure", 1, pressure);
   vtu.add_point_data("gap", 1, gap);
   vtu.add_point_data("deformed_gap", 1, deformed_gap);
