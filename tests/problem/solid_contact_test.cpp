@@ -316,3 +316,54 @@ TEST(SolidContactFiles, ResultFilesOfA3DSolve) {
 
 }  // namespace
 }  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// A block on a rigid roller (a cylinder along y): the contact is a strip along the roller's axis,
+// the same at every y away from the block's ends, symmetric about x = 0.5; the methods agree.
+TEST(SolidContactCylinder, BlockOnARollerMethodsAgree) {
+  ProblemSpec spec = pressed_block(CellType::Hex8);
+  spec.box.nx = 8;
+  spec.box.ny = 6;
+  spec.box.nz = 3;
+  spec.displacements.clear();
+  spec.clamps = {{"zmax", {true, true, true}}};
+  RigidObstacle& roller = spec.contacts[0].obstacle;
+  roller = RigidObstacle{};
+  roller.shape = ObstacleShape::Cylinder;
+  roller.radius = 1.0;
+  roller.centre = Eigen::Vector3d(0.5, 0.0, -1.0 + 1e-3);  // 1e-3 into the block
+  roller.axis = Eigen::Vector3d(0.0, 1.0, 0.0);
+  const Model model = build_model(spec);
+  std::vector<ContactResult> results;
+  for (const ContactMethod method : {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton}) {
+    ContactSolverOptions o = spec.solver;
+    o.method = method;
+    results.push_back(solve_contact(model.problem, o));
+    ASSERT_TRUE(results.back().summary.converged()) << results.back().summary.message;
+    EXPECT_LT(results.back().summary.kkt.max(), 1e-8);
+  }
+  EXPECT_LT((results[1].u - results[0].u).norm(), 1e-8 * results[0].u.norm());
+  EXPECT_LT((results[1].l - results[0].l).norm(), 1e-7 * results[0].l.norm());
+  const ContactSet& c = model.problem.contact;
+  const Vector& l = results[1].l;
+  bool touches_at_the_middle = false;
+  for (Index j = 0; j < c.size(); ++j) {
+    const Point x = model.mesh.point(c.nodes[static_cast<std::size_t>(j)]);
+    if (std::abs(x(0) - 0.5) < 1e-12 && l(j) > 0.0) touches_at_the_middle = true;
+    if (std::abs(x(0) - 0.5) > 0.3) {
+      EXPECT_EQ(l(j), 0.0) << "far from the roller's top line, at x = " << x(0);
+    }
+    for (Index k = 0; k < c.size(); ++k) {  // mirrored about x = 0.5
+      const Point y = model.mesh.point(c.nodes[static_cast<std::size_t>(k)]);
+      if (std::abs(y(0) - (1.0 - x(0))) < 1e-12 && std::abs(y(1) - x(1)) < 1e-12) {
+        EXPECT_NEAR(l(j), l(k), 1e-9 * l.maxCoeff());
+      }
+    }
+  }
+  EXPECT_TRUE(touches_at_the_middle);
+}
+
+}  // namespace
+}  // namespace signorini

@@ -13,12 +13,13 @@
 
 namespace signorini {
 
-enum class ObstacleShape { Gap, Plane, Disc };
+enum class ObstacleShape { Gap, Plane, Disc, Cylinder };
 
-inline constexpr EnumNames<ObstacleShape, 3> kObstacleShapeNames{{
+inline constexpr EnumNames<ObstacleShape, 4> kObstacleShapeNames{{
     {ObstacleShape::Gap, "gap"},
     {ObstacleShape::Plane, "plane"},
     {ObstacleShape::Disc, "disc"},
+    {ObstacleShape::Cylinder, "cylinder"},
 }};
 
 struct RigidObstacle {
@@ -34,6 +35,9 @@ struct RigidObstacle {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double radius = 1.0;
   bool body_inside = false;
+  /// Cylinder (3D): the points within `radius` of the line through `centre` along `axis` (any
+  /// length, not zero); body_inside as for a disc. In 2D a disc is the cylinder's section.
+  Eigen::Vector3d axis = Eigen::Vector3d(0.0, 0.0, 1.0);
 };
 
 /// Throws InputError unless the obstacle is well defined (a non-zero, finite plane normal, a

@@ -397,6 +397,11 @@ ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std:
       {ObstacleShape::Gap, {"gap"}},
       {ObstacleShape::Plane, {"point", "normal"}},
       {ObstacleShape::Disc, {"centre", "radius", "inside"}}};
+  if (o.shape == ObstacleShape::Cylinder)
+    r.fail_at(t->get("obstacle")->source(),
+              join(path, "obstacle") +
+                  " = \"cylinder\": a 3D obstacle, not readable from problem files yet (the "
+                  "library builds it: RigidObstacle); in 2D a disc is a cylinder's section");
   for (const auto& [other, names] : keys)
     for (const std::string& key : names)
       if (other != o.shape && t->contains(key))

@@ -345,11 +345,13 @@ std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpe
           out.end(),
           {{"obstacle", std::string("plane")}, {"point", xy(o.point)}, {"normal", xy(o.normal)}});
       break;
+    case ObstacleShape::Cylinder:  // 3D, through the library only: its (x, y) here too
     case ObstacleShape::Disc:
-      out.insert(out.end(), {{"obstacle", std::string("disc")},
-                             {"centre", xy(o.centre)},
-                             {"radius", o.radius},
-                             {"inside", o.body_inside}});
+      out.insert(out.end(),
+                 {{"obstacle", std::string(enum_to_string(kObstacleShapeNames, o.shape))},
+                  {"centre", xy(o.centre)},
+                  {"radius", o.radius},
+                  {"inside", o.body_inside}});
       break;
   }
   return out;
