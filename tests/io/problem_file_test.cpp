@@ -607,3 +607,32 @@ TEST(ProblemFile, BoxMeshIsRefusedUntilTheThreeDimensionalFileArrives) {
 
 }  // namespace
 }  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// Problem files describe 2D problems so far: a 3D mesh file is refused when it is read, in one
+// line naming it, while the library (ProblemSpec left as it is) solves the same mesh.
+TEST(ProblemFile, ThreeDimensionalMeshFileIsRefusedWhenRead) {
+  const std::string mesh = SIGNORINI_EXAMPLES_DIR "/gmsh/hertz_sphere_coarse.msh";
+  const std::string text = "[mesh]\ntype = \"gmsh\"\nfile = \"" + mesh +
+                           "\"\n[material]\nE = 1\nnu = 0.3\n[[clamp]]\nboundary = \"top\"\n"
+                           "[contact]\nboundary = \"contact\"\n";
+  const LoadedProblem p = parse_problem_string(text, "ball.toml");
+  try {
+    (void)build_model(p.spec);
+    FAIL() << "a 3D mesh was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "'" + mesh +
+                  "' is a 3D mesh (tetrahedra or hexahedra): problem files describe 2D problems "
+                  "so far (3D problems are solved through the library for now); expected a 2D "
+                  "mesh (gmsh -2)");
+  }
+  ProblemSpec library = p.spec;
+  library.three_dimensional_allowed = true;
+  EXPECT_EQ(build_model(library).mesh.dim(), 3);
+}
+
+}  // namespace
+}  // namespace signorini

@@ -103,6 +103,10 @@ struct ProblemSpec {
   /// The .msh file (or a .geo file, meshed by the gmsh program) for mesh_type = Gmsh; the
   /// problem-file reader makes a relative path relative to the problem file's folder.
   std::string mesh_file;
+  /// False for problems read from files, which describe 2D problems so far: a 3D mesh file is
+  /// then refused when it is read (build_model), not after its model is built. The library
+  /// (box meshes, Gmsh volume meshes) leaves it true.
+  bool three_dimensional_allowed = true;
   ElasticityOptions elasticity;  ///< `material` is that of every cell not in region_materials
   std::vector<RegionMaterialSpec> region_materials;
   int boundary_gauss_points = 2;  ///< Gauss points per boundary facet for tractions

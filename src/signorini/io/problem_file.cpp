@@ -531,6 +531,7 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   LoadedProblem out;
   out.path = name_for_errors;
   ProblemSpec& spec = out.spec;
+  spec.three_dimensional_allowed = false;  // problem files describe 2D problems so far
   ExpressionTexts texts;
   read_top_level(r, root, spec);
   read_mesh(r, root, spec);

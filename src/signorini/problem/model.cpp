@@ -195,6 +195,11 @@ Model build_model(const ProblemSpec& spec) {
   Mesh mesh = spec.mesh_type == MeshType::Gmsh  ? read_mesh_file(spec.mesh_file)
               : spec.mesh_type == MeshType::Box ? make_box_mesh(spec.box)
                                                 : make_rectangle_mesh(spec.mesh);
+  if (mesh.dim() == 3 && !spec.three_dimensional_allowed)
+    throw InputError("'" + spec.mesh_file +
+                     "' is a 3D mesh (tetrahedra or hexahedra): problem files describe 2D "
+                     "problems so far (3D problems are solved through the library for now); "
+                     "expected a 2D mesh (gmsh -2)");
   // Materials per region, by the regions' names.
   ElasticityOptions elasticity = spec.elasticity;
   for (const RegionMaterialSpec& m : spec.region_materials) {
