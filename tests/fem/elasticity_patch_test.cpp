@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "fem/uniaxial_tension.hpp"
+#include "mesh/moved_mesh.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/load_assembly.hpp"
@@ -35,16 +36,7 @@ Mesh distorted_rectangle(CellType type = CellType::Quad4) {
       xy(1, n) += a * 0.06 * std::cos(5.0 * x - 4.0 * y);
     }
   }
-  std::vector<CellType> types;
-  std::vector<Index> cells;
-  for (Index c = 0; c < grid.num_cells(); ++c) {
-    types.push_back(grid.cell_type(c));
-    for (const Index v : grid.cell(c)) cells.push_back(v);
-  }
-  Mesh mesh(types, xy, cells);
-  for (const auto& name : grid.boundary_part_names())
-    mesh.set_boundary_part(name, grid.boundary_part(name).facets);
-  return mesh;
+  return testing::with_coordinates(grid, std::move(xy));
 }
 
 class PatchTest : public ::testing::TestWithParam<std::tuple<CellType, PlaneModel>> {};

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "fem/uniaxial_tension.hpp"
+#include "mesh/moved_mesh.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/material.hpp"
@@ -48,16 +49,7 @@ Mesh distorted_box(CellType type) {
     xyz(1, n) += a * 0.05 * std::cos(2.0 * x(0) - 3.0 * x(1) + x(2));
     xyz(2, n) += a * 0.06 * std::sin(x(0) + x(1) + 2.0 * x(2));
   }
-  std::vector<CellType> types;
-  std::vector<Index> cells;
-  for (Index c = 0; c < grid.num_cells(); ++c) {
-    types.push_back(grid.cell_type(c));
-    for (const Index v : grid.cell(c)) cells.push_back(v);
-  }
-  Mesh mesh(types, xyz, cells);
-  for (const auto& name : grid.boundary_part_names())
-    mesh.set_boundary_part(name, grid.boundary_part(name).facets);
-  return mesh;
+  return testing::with_coordinates(grid, std::move(xyz));
 }
 
 class SolidPatchTest : public ::testing::TestWithParam<CellType> {};

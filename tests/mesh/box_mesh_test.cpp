@@ -18,12 +18,12 @@ namespace signorini {
 namespace {
 
 using Vec = Eigen::Vector3d;
-using testing::corners_of;
 
 // The sorted corners of a facet: the same set from either cell that has it.
 std::vector<Index> facet_key(const Mesh& m, const Facet& f) {
   const auto nodes = m.facet_nodes(f);
-  std::vector<Index> k(nodes.begin(), nodes.begin() + corners_of(facet_type(m.cell_type(f.cell))));
+  std::vector<Index> k(nodes.begin(),
+                       nodes.begin() + corners_per_cell(facet_type(m.cell_type(f.cell))));
   std::sort(k.begin(), k.end());
   return k;
 }

@@ -12,23 +12,6 @@
 
 namespace signorini::testing {
 
-/// Corners (the first-order nodes) of a cell or facet type.
-inline int corners_of(CellType t) {
-  switch (t) {
-    case CellType::Line2:
-    case CellType::Line3:
-      return 2;
-    case CellType::Tri3:
-    case CellType::Tri6:
-      return 3;
-    case CellType::Hex8:
-    case CellType::Hex27:
-      return 8;
-    default:
-      return 4;  // quadrilaterals, tetrahedra
-  }
-}
-
 inline double triple(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   return a.dot(b.cross(c));
 }
@@ -39,7 +22,7 @@ inline double triple(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const E
 inline std::vector<double> corner_dets(const Mesh& m, Index c) {
   const auto v = m.cell(c);
   const auto x = [&](int k) { return m.point(v[static_cast<std::size_t>(k)]); };
-  if (corners_of(m.cell_type(c)) == 4) return {triple(x(1) - x(0), x(2) - x(0), x(3) - x(0))};
+  if (corners_per_cell(m.cell_type(c)) == 4) return {triple(x(1) - x(0), x(2) - x(0), x(3) - x(0))};
   static constexpr std::array<std::array<int, 4>, 8> kHexCorners{{{0, 1, 3, 4},
                                                                   {1, 2, 0, 5},
                                                                   {2, 3, 1, 6},
@@ -62,7 +45,7 @@ inline double cell_volume(const Mesh& m, Index c) {
   const auto tet = [&](int a, int b, int d, int e) {
     return triple(x(b) - x(a), x(d) - x(a), x(e) - x(a)) / 6.0;
   };
-  if (corners_of(m.cell_type(c)) == 4) return tet(0, 1, 2, 3);
+  if (corners_per_cell(m.cell_type(c)) == 4) return tet(0, 1, 2, 3);
   return tet(0, 1, 2, 6) + tet(0, 3, 7, 6) + tet(0, 4, 5, 6) + tet(0, 5, 1, 6) + tet(0, 2, 3, 6) +
          tet(0, 7, 4, 6);
 }
@@ -78,7 +61,8 @@ inline Eigen::Vector3d facet_normal(const Mesh& m, const Facet& f) {
 /// Area of a triangle or of a plane quadrilateral (half the cross product of its diagonals).
 inline double facet_area(const Mesh& m, const Facet& f) {
   const auto v = m.facet_nodes(f);
-  if (corners_of(facet_type(m.cell_type(f.cell))) == 3) return 0.5 * facet_normal(m, f).norm();
+  if (corners_per_cell(facet_type(m.cell_type(f.cell))) == 3)
+    return 0.5 * facet_normal(m, f).norm();
   return 0.5 * (m.point(v[2]) - m.point(v[0])).cross(m.point(v[3]) - m.point(v[1])).norm();
 }
 
@@ -114,7 +98,7 @@ inline std::vector<std::vector<int>> middle_nodes_of(CellType t) {
 inline double middle_node_error(const Mesh& m, Index c) {
   const auto v = m.cell(c);
   const auto between = middle_nodes_of(m.cell_type(c));
-  const auto first = static_cast<std::size_t>(corners_of(m.cell_type(c)));
+  const auto first = static_cast<std::size_t>(corners_per_cell(m.cell_type(c)));
   double worst = 0.0;
   for (std::size_t q = 0; q < between.size(); ++q) {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <numbers>
 
+#include "problem/each_method.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
 
@@ -80,16 +81,10 @@ TEST(HertzSphere, ContactRadiusAndPressureApproachHertzUnderRefinement) {
     SCOPED_TRACE(mesh);
     const ProblemSpec spec = ball(mesh);
     const Model model = build_model(spec);
-    ContactSolverOptions o = spec.solver;
     std::vector<ContactResult> results;
-    for (const ContactMethod method : {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton}) {
-      o.method = method;
-      results.push_back(solve_contact(model.problem, o));
-      ASSERT_TRUE(results.back().summary.converged()) << results.back().summary.message;
-      EXPECT_LT(results.back().summary.kkt.max(), 1e-8);
-    }
-    EXPECT_LT((results[1].u - results[0].u).norm(), 1e-8 * results[0].u.norm());
-    EXPECT_LT((results[1].l - results[0].l).norm(), 1e-7 * results[0].l.norm());
+    ASSERT_NO_FATAL_FAILURE(testing::solve_by_each(
+        model, spec.solver, {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton}, results));
+    testing::expect_same_solution(results, 1e-8, 1e-7);
     const HertzErrors e = hertz_errors(model, results[0]);
     std::cout << mesh << ": " << model.mesh.num_nodes() << " nodes, "
               << model.problem.contact.size() << " contact nodes, " << results[0].summary.num_active

@@ -19,7 +19,9 @@
 
 #include "app/tool_run.hpp"
 #include "io/temporary_folder.hpp"
+#include "problem/each_method.hpp"
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/core/error.hpp"
 #include "signorini/fem/nodal_stress.hpp"
 #include "signorini/io/result_writer.hpp"
 #include "signorini/problem/model.hpp"
@@ -28,6 +30,8 @@ namespace signorini {
 namespace {
 
 constexpr double kE = 1000.0, kNu = 0.3, kP = 2.0;
+constexpr std::initializer_list<ContactMethod> kAllMethods{
+    ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton, ContactMethod::ClassicalUzawa};
 
 ProblemSpec pressed_block(CellType cell) {
   ProblemSpec spec;
@@ -69,14 +73,9 @@ TEST_P(SolidContact, BlockOnAHalfSpaceIsUniaxialCompression) {
     EXPECT_LT((c.normals.col(j) - Eigen::Vector3d(0, 0, -1)).norm(), 1e-14);
 
   std::vector<ContactResult> results;
-  for (const ContactMethod method :
-       {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton, ContactMethod::ClassicalUzawa}) {
-    SCOPED_TRACE(std::string(enum_to_string(kContactMethodNames, method)));
-    ContactSolverOptions o = spec.solver;
-    o.method = method;
-    const ContactResult r = solve_contact(model.problem, o);
-    ASSERT_TRUE(r.summary.converged()) << r.summary.message;
-    EXPECT_LT(r.summary.kkt.max(), 1e-8);
+  ASSERT_NO_FATAL_FAILURE(testing::solve_by_each(model, spec.solver, kAllMethods, results));
+  for (const ContactResult& r : results) {
+    SCOPED_TRACE(std::string(enum_to_string(kContactMethodNames, r.summary.method)));
     const Vector u = model.dofs.expand(r.u);
     for (Index n = 0; n < model.mesh.num_nodes(); ++n) {
       const Point x = model.mesh.point(n);
@@ -90,12 +89,8 @@ TEST_P(SolidContact, BlockOnAHalfSpaceIsUniaxialCompression) {
     }
     const NodalStress s = nodal_stress(model.mesh, model.elasticity, u);
     for (Index n = 0; n < model.mesh.num_nodes(); ++n) EXPECT_NEAR(s.sigma(2, n), -kP, 1e-9);
-    results.push_back(r);
   }
-  for (std::size_t i = 1; i < results.size(); ++i) {
-    EXPECT_LT((results[i].u - results[0].u).norm(), 1e-8 * results[0].u.norm());
-    EXPECT_LT((results[i].l - results[0].l).norm(), 1e-8 * results[0].l.norm());
-  }
+  testing::expect_same_solution(results, 1e-8, 1e-8);
 }
 
 INSTANTIATE_TEST_SUITE_P(CellTypes, SolidContact,
@@ -122,23 +117,13 @@ TEST(SolidContactBall, BallPressedIntoABlockMethodsAgree) {
   ball.obstacle.centre = Eigen::Vector3d(0.5, 0.5, -2.0 + 2e-3);  // 2e-3 into the block
   const Model model = build_model(spec);
   std::vector<ContactResult> results;
-  for (const ContactMethod method :
-       {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton, ContactMethod::ClassicalUzawa}) {
-    SCOPED_TRACE(std::string(enum_to_string(kContactMethodNames, method)));
-    ContactSolverOptions o = spec.solver;
-    o.method = method;
-    const ContactResult r = solve_contact(model.problem, o);
-    ASSERT_TRUE(r.summary.converged()) << r.summary.message;
-    EXPECT_LT(r.summary.kkt.max(), 1e-8);
+  ASSERT_NO_FATAL_FAILURE(testing::solve_by_each(model, spec.solver, kAllMethods, results));
+  for (const ContactResult& r : results) {
     EXPECT_GT(r.summary.num_active, 0);
     EXPECT_LT(r.summary.num_active, model.problem.contact.size());
-    results.push_back(r);
+    EXPECT_EQ(r.summary.num_active, results[0].summary.num_active);
   }
-  for (std::size_t i = 1; i < results.size(); ++i) {
-    EXPECT_LT((results[i].u - results[0].u).norm(), 1e-8 * results[0].u.norm());
-    EXPECT_LT((results[i].l - results[0].l).norm(), 1e-8 * results[0].l.norm());
-    EXPECT_EQ(results[i].summary.num_active, results[0].summary.num_active);
-  }
+  testing::expect_same_solution(results, 1e-8, 1e-8);
   // The contact zone is round: symmetric about the ball's axis (x = y = 0.5).
   const ContactSet& c = model.problem.contact;
   for (Index j = 0; j < c.size(); ++j) {
@@ -312,6 +297,9 @@ TEST(SolidContactFiles, ResultFilesOfA3DSolve) {
   const nlohmann::json summary =
       nlohmann::json::parse(testing::read_text(dir / "out" / "summary.json"));
   EXPECT_NEAR(summary["contact_force"].get<double>(), kP * 0.8, 1e-9);
+  // Pushed up by the half-space: (0, 0, p A).
+  ASSERT_EQ(summary["contact_force_vector"].size(), 3U);
+  EXPECT_NEAR(summary["contact_force_vector"][2].get<double>(), kP * 0.8, 1e-9);
 }
 
 }  // namespace
@@ -337,15 +325,9 @@ TEST(SolidContactCylinder, BlockOnARollerMethodsAgree) {
   roller.axis = Eigen::Vector3d(0.0, 1.0, 0.0);
   const Model model = build_model(spec);
   std::vector<ContactResult> results;
-  for (const ContactMethod method : {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton}) {
-    ContactSolverOptions o = spec.solver;
-    o.method = method;
-    results.push_back(solve_contact(model.problem, o));
-    ASSERT_TRUE(results.back().summary.converged()) << results.back().summary.message;
-    EXPECT_LT(results.back().summary.kkt.max(), 1e-8);
-  }
-  EXPECT_LT((results[1].u - results[0].u).norm(), 1e-8 * results[0].u.norm());
-  EXPECT_LT((results[1].l - results[0].l).norm(), 1e-7 * results[0].l.norm());
+  ASSERT_NO_FATAL_FAILURE(testing::solve_by_each(
+      model, spec.solver, {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton}, results));
+  testing::expect_same_solution(results, 1e-8, 1e-7);
   const ContactSet& c = model.problem.contact;
   const Vector& l = results[1].l;
   bool touches_at_the_middle = false;
@@ -363,6 +345,28 @@ TEST(SolidContactCylinder, BlockOnARollerMethodsAgree) {
     }
   }
   EXPECT_TRUE(touches_at_the_middle);
+}
+
+}  // namespace
+}  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// Local axes per node (a normal displacement on an inclined part) are 2D so far: in 3D the
+// entry is refused by name instead of being read with two components.
+TEST(SolidContactLimits, NormalDisplacementIsRefusedIn3D) {
+  ProblemSpec spec = pressed_block(CellType::Hex8);
+  spec.displacements[0].values[2] = {};
+  spec.displacements[0].normal = [](const Point&) { return -1e-3; };
+  try {
+    (void)build_model(spec);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "displacement[0].normal: a normal displacement is supported on 2D meshes only so "
+              "far; give the components x, y, z");
+  }
 }
 
 }  // namespace

@@ -89,7 +89,8 @@ INSTANTIATE_TEST_SUITE_P(Methods, UnitInvariance,
                          ::testing::Values(ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton,
                                            ContactMethod::ClassicalUzawa),
                          [](const auto& param_info) {
-                           return std::string(enum_to_string(kContactMethodNames, param_info.param));
+                           return std::string(
+                               enum_to_string(kContactMethodNames, param_info.param));
                          });
 
 // Converged means the KKT residuals are small, whatever r is: r = 1e20 loses the Newton systems'

@@ -93,9 +93,10 @@ struct SolveSummary {
   double lagrangian = 0.0;     ///< M(u, l), the modified Lagrangian (10) at the result
   double energy = 0.0;         ///< J(u)
   double contact_force = 0.0;  ///< sum_j h_j l_j: total normal contact force
-  Eigen::Vector2d contact_force_vector = Eigen::Vector2d::Zero();  ///< -sum_j h_j l_j nu_j
-  Index num_active = 0;                                            ///< contact nodes with l_j > 0
-  double classical_step = 0.0;                                     ///< rho used by classical_uzawa
+  /// -sum_j h_j l_j nu_j (z = 0 in 2D)
+  Eigen::Vector3d contact_force_vector = Eigen::Vector3d::Zero();
+  Index num_active = 0;         ///< contact nodes with l_j > 0
+  double classical_step = 0.0;  ///< rho used by classical_uzawa
   /// The augmentation parameter used (uzawa_gnm), whether it was given or automatic, and the
   /// automatic value for comparison (method.md section 7).
   double r = 0.0;

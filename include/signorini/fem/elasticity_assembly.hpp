@@ -28,11 +28,6 @@ struct ElasticityOptions {
 
 /// The material of the cells of region r.
 const IsotropicMaterial& material_of_region(const ElasticityOptions& options, int region);
-/// The plane elasticity matrix D of each region of a 2D mesh (index: Mesh::cell_region); any
-/// dimension: fem/elasticity_matrices.hpp.
-std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
-                                                        const ElasticityOptions& options);
-
 /// Throws InputError unless the mesh is 2D or 3D and every cell type has a finite element of the
 /// mesh's dimension (tri3, tri6, quad4, quad8, quad9; tet4, tet10, hex8, hex27).
 void require_supported_cells(const Mesh& mesh);

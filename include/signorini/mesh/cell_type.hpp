@@ -94,6 +94,28 @@ constexpr int cell_order(CellType t) {
   }
 }
 
+/// Number of corners of a cell: its first nodes, the nodes of the first-order cell of its shape.
+constexpr int corners_per_cell(CellType t) {
+  switch (t) {
+    case CellType::Line2:
+    case CellType::Line3:
+      return 2;
+    case CellType::Tri3:
+    case CellType::Tri6:
+      return 3;
+    case CellType::Quad4:
+    case CellType::Quad8:
+    case CellType::Quad9:
+    case CellType::Tet4:
+    case CellType::Tet10:
+      return 4;
+    case CellType::Hex8:
+    case CellType::Hex27:
+      return 8;
+  }
+  return 0;
+}
+
 /// Number of facets (end points of lines, edges in 2D, faces in 3D) of a cell.
 constexpr int facets_per_cell(CellType t) {
   switch (t) {

@@ -263,7 +263,8 @@ ContactResult ContactSolver::solve() {
       ModifiedLagrangian::value(problem, *options.r, result.u, result.l, contact_law(options));
   const ContactSet& c = problem.contact;
   s.contact_force = c.weights.dot(result.l);
-  s.contact_force_vector = -(c.normals * c.weights.cwiseProduct(result.l));
+  s.contact_force_vector.setZero();
+  s.contact_force_vector.head(c.normals.rows()) = -(c.normals * c.weights.cwiseProduct(result.l));
   s.num_active = (result.l.array() > 0.0).count();
 
   // Converged means the KKT conditions hold, not only that the method's rule was met: a

@@ -1,6 +1,5 @@
 #include "signorini/fem/contact_boundary.hpp"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <string>
 
 #include "signorini/core/error.hpp"
+#include "signorini/fem/face_geometry.hpp"
 #include "signorini/fem/quadrature.hpp"
 #include "signorini/fem/reference_element.hpp"
 
@@ -65,30 +65,21 @@ BoundaryNodes surface_nodes(const Mesh& mesh, const BoundaryPart& part) {
   out.normals = Eigen::MatrixXd::Zero(3, n);
   out.weights = Vector::Zero(n);
   ShapeValues N;
-  ShapeGradients dN;
   for (const Facet& f : part.facets) {
     const auto fn = mesh.facet_nodes(f);
     const auto k = static_cast<Index>(fn.size());
     std::vector<Index> facet;
     for (const Index v : fn) facet.push_back(position.at(v));
     const CellType type = facet_type(mesh.cell_type(f.cell));
-    // dA n at a reference point: the cross product of the tangents (outward: the faces' corners
-    // run counterclockwise seen from outside, mesh/cell_type.hpp).
+    // dA n at a reference point (fem/face_geometry.hpp); N gets the shape values there.
     const auto area_vector = [&](const Eigen::Vector3d& xi) {
-      shape_gradients(type, xi, dN);
-      Eigen::Vector3d t1 = Eigen::Vector3d::Zero(), t2 = Eigen::Vector3d::Zero();
-      for (Index a = 0; a < k; ++a) {
-        t1 += dN(0, a) * mesh.point(fn[static_cast<std::size_t>(a)]);
-        t2 += dN(1, a) * mesh.point(fn[static_cast<std::size_t>(a)]);
-      }
-      return Eigen::Vector3d(t1.cross(t2));
+      return face_point(mesh, type, fn, xi, N).area;
     };
     const std::vector<QuadraturePoint> rule = cell_quadrature(type, 3);
     if (type == CellType::Tri6) {
       Vector mass = Vector::Zero(k);
       double area = 0.0;
       for (const QuadraturePoint& q : rule) {
-        shape_functions(type, q.xi, N);
         const double da = area_vector(q.xi).norm() * q.w;
         area += da;
         mass += N.head(k).cwiseAbs2() * da;
@@ -102,7 +93,6 @@ BoundaryNodes surface_nodes(const Mesh& mesh, const BoundaryPart& part) {
       }
     } else {
       for (const QuadraturePoint& q : rule) {
-        shape_functions(type, q.xi, N);
         const Eigen::Vector3d dA = area_vector(q.xi) * q.w;
         for (Index a = 0; a < k; ++a) {
           const Index j = facet[static_cast<std::size_t>(a)];

@@ -35,11 +35,6 @@ const IsotropicMaterial& material_of_region(const ElasticityOptions& options, in
   return options.material;
 }
 
-std::vector<Eigen::Matrix3d> region_elasticity_matrices(const Mesh& mesh,
-                                                        const ElasticityOptions& options) {
-  return region_elasticity_matrices_of<2>(mesh, options);
-}
-
 void require_supported_cells(const Mesh& mesh) {
   if (mesh.dim() != 2 && mesh.dim() != 3)
     throw InputError("a mesh of dimension " + std::to_string(mesh.dim()) +
@@ -57,7 +52,7 @@ namespace {
 
 template <int Dim>
 SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& options) {
-  const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices_of<Dim>(mesh, options);
+  const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices<Dim>(mesh, options);
   const SparsityPattern pattern(mesh, dofs);
   SparseMatrix A = pattern.zero_matrix();
   double* values = A.valuePtr();
@@ -131,7 +126,7 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
 template <int Dim>
 Vector internal_forces_of(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,
                           const std::function<bool(Index)>& needed) {
-  const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices_of<Dim>(mesh, options);
+  const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices<Dim>(mesh, options);
   CellRules rules(options.gauss_points);
   Vector f = Vector::Zero(u.size());
   ElementVectorOf<Dim> ue;

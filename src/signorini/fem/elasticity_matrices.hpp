@@ -10,8 +10,8 @@ namespace signorini {
 
 /// D of each region (index: Mesh::cell_region), for a mesh of dimension Dim.
 template <int Dim>
-std::vector<ElasticityMatrixOf<Dim>> region_elasticity_matrices_of(
-    const Mesh& mesh, const ElasticityOptions& options) {
+std::vector<ElasticityMatrixOf<Dim>> region_elasticity_matrices(const Mesh& mesh,
+                                                                const ElasticityOptions& options) {
   std::vector<ElasticityMatrixOf<Dim>> D;
   for (std::size_t r = 0; r < mesh.region_names().size(); ++r) {
     const IsotropicMaterial& m = material_of_region(options, static_cast<int>(r));

@@ -1,6 +1,5 @@
 #include "signorini/fem/load_assembly.hpp"
 
-#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/face_geometry.hpp"
 #include "signorini/fem/isoparametric_element.hpp"
 #include "signorini/fem/quadrature.hpp"
 
@@ -69,28 +69,16 @@ void integrate_over_faces(const Mesh& mesh, const BoundaryPart& part, const Trac
                           int gauss_points, Vector& f) {
   CellRules rules(gauss_points);
   ShapeValues N;
-  ShapeGradients dN;
   for (const Facet& facet : part.facets) {
     const CellType type = facet_type(mesh.cell_type(facet.cell));
     const auto fn = mesh.facet_nodes(facet);
-    const auto n = static_cast<int>(fn.size());
     for (const QuadraturePoint& q : rules(type)) {
-      shape_functions(type, q.xi, N);
-      shape_gradients(type, q.xi, dN);
-      Point x = Point::Zero(), t1 = Point::Zero(), t2 = Point::Zero();
-      for (int a = 0; a < n; ++a) {
-        const Point xa = mesh.point(fn[static_cast<std::size_t>(a)]);
-        x += N(a) * xa;
-        t1 += dN(0, a) * xa;
-        t2 += dN(1, a) * xa;
-      }
-      const Eigen::Vector3d area = t1.cross(t2);
-      const double da = area.norm();
+      const FacePoint p = face_point(mesh, type, fn, q.xi, N);
+      const double da = p.area.norm();
       if (!(da > 0.0)) continue;  // a degenerate face carries nothing
-      const Eigen::Vector3d pv = traction(x, Eigen::Vector3d(area / da));
-      for (int a = 0; a < n; ++a)
-        for (int k = 0; k < 3; ++k)
-          f(fn[static_cast<std::size_t>(a)] * 3 + k) += N(a) * pv(k) * da * q.w;
+      const Eigen::Vector3d pv = traction(p.x, Eigen::Vector3d(p.area / da));
+      for (std::size_t a = 0; a < fn.size(); ++a)
+        for (int k = 0; k < 3; ++k) f(fn[a] * 3 + k) += N(static_cast<Index>(a)) * pv(k) * da * q.w;
     }
   }
 }

@@ -19,7 +19,7 @@ template <int Dim>
 NodalStress nodal_stress_of(const Mesh& mesh, const ElasticityOptions& options,
                             const Vector& u_full) {
   const std::vector<ElasticityMatrixOf<Dim>> region_D =
-      region_elasticity_matrices_of<Dim>(mesh, options);
+      region_elasticity_matrices<Dim>(mesh, options);
   const bool plane_strain = options.plane_model == PlaneModel::PlaneStrain;
   NodalStress out;
   out.sigma = Eigen::MatrixXd::Zero(6, mesh.num_nodes());

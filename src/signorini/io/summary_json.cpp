@@ -147,8 +147,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   j["n_contact_nodes"] = model.problem.contact.size();
   j["n_active"] = summary.num_active;
   j["contact_force"] = summary.contact_force;
-  j["contact_force_vector"] = vector_json(
-      Eigen::Vector3d(summary.contact_force_vector(0), summary.contact_force_vector(1), 0.0), 2);
+  j["contact_force_vector"] = vector_json(summary.contact_force_vector, dim);
   j["resultants"] = resultants_json(resultants, dim);
   json point_loads = json::array();
   for (const PlacedPointLoad& p : model.point_loads)

@@ -500,23 +500,6 @@ void mirror(CellType t, Index* v) {
   }
 }
 
-// Corners of a cell or facet type: its first nodes, those of the first-order element.
-int corner_count(CellType t) {
-  switch (t) {
-    case CellType::Line2:
-    case CellType::Line3:
-      return 2;
-    case CellType::Tri3:
-    case CellType::Tri6:
-      return 3;
-    case CellType::Hex8:
-    case CellType::Hex27:
-      return 8;
-    default:
-      return 4;  // quadrilaterals, tetrahedra
-  }
-}
-
 // A facet (an edge in 2D, a face in 3D) by its sorted corners, -1 after them: the same from both
 // cells it bounds and from the boundary element on it, whatever their node orders.
 using FacetKey = std::array<Index, 4>;
@@ -552,7 +535,7 @@ double min_corner_det(CellType t, const Index* v, const Eigen::MatrixXd& x) {
     return e1(0) * (e2(1) * e3(2) - e2(2) * e3(1)) - e1(1) * (e2(0) * e3(2) - e2(2) * e3(0)) +
            e1(2) * (e2(0) * e3(1) - e2(1) * e3(0));
   };
-  if (corner_count(t) == 4) return triple(0, 1, 2, 3);
+  if (corners_per_cell(t) == 4) return triple(0, 1, 2, 3);
   static constexpr std::array<std::array<int, 4>, 8> kHexCorners{{{0, 1, 3, 4},
                                                                   {1, 2, 0, 5},
                                                                   {2, 3, 1, 6},
@@ -690,7 +673,7 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
           node_slot(raw, i, raw.nodes[static_cast<std::size_t>(k)]))]);
     Index* v = cells.data() + first;
     if (dim == 2) {
-      const int corners = corner_count(t);
+      const int corners = corners_per_cell(t);
       double area2 = 0.0;  // shoelace over the corners
       for (int a = 0; a < corners; ++a) {
         const Index m = v[a], q = v[(a + 1) % corners];
@@ -742,7 +725,7 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
       bound_nodes[i].push_back(number[static_cast<std::size_t>(s)]);
     }
     const auto& v = bound_nodes[i];
-    bound_keys[i] = facet_key(corner_count(*cell_type_of(bounds.types[i])),
+    bound_keys[i] = facet_key(corners_per_cell(*cell_type_of(bounds.types[i])),
                               [&](int a) { return v[static_cast<std::size_t>(a)]; });
     if (bound_keys[i]) facets.emplace(*bound_keys[i], Facet{-1, 0});
   }
@@ -751,7 +734,7 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
       for (int f = 0; f < facets_per_cell(mesh.cell_type(c)); ++f) {
         const auto local = facet_local_nodes(mesh.cell_type(c), f);
         const auto cell = mesh.cell(c);
-        const auto k = facet_key(corner_count(facet_type(mesh.cell_type(c))), [&](int a) {
+        const auto k = facet_key(corners_per_cell(facet_type(mesh.cell_type(c))), [&](int a) {
           return cell[static_cast<std::size_t>(local[static_cast<std::size_t>(a)])];
         });
         const auto it = facets.find(*k);
@@ -766,7 +749,7 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
     // An element with more than its corners (a second-order one) must have the facet's nodes;
     // one of the first order names the facet by its corners alone.
     if (match &&
-        v.size() > static_cast<std::size_t>(corner_count(*cell_type_of(bounds.types[i])))) {
+        v.size() > static_cast<std::size_t>(corners_per_cell(*cell_type_of(bounds.types[i])))) {
       std::vector<Index> fn = mesh.facet_nodes(it->second);
       std::sort(fn.begin(), fn.end());
       std::sort(v.begin(), v.end());

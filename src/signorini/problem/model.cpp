@@ -26,6 +26,11 @@ template <class Hold, class HoldNormal>
 void for_each_prescribed(const Mesh& mesh, const DisplacementSpec& d, std::size_t i,
                          const Hold& hold, const HoldNormal& hold_normal) {
   if (d.normal) {
+    if (mesh.dim() != 2)  // local axes per node (DofMap::set_frame) are 2D so far
+      throw InputError(fmt::format(
+          "displacement[{}].normal: a normal displacement is supported on 2D meshes only so far; "
+          "give the components x, y, z",
+          i));
     const BoundaryNodes b = boundary_nodes(mesh, mesh.boundary_part(d.boundary),
                                            fmt::format("displacement[{}].boundary", i));
     for (std::size_t j = 0; j < b.nodes.size(); ++j) {
