@@ -10,6 +10,7 @@
 
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/iterative/chebyshev_smoother.hpp"
+#include "signorini/iterative/eigenvalue_estimate.hpp"
 #include "signorini/iterative/galerkin_product.hpp"
 #include "signorini/iterative/jacobi_preconditioner.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
@@ -100,13 +101,14 @@ TEST(Pcg, JacobiAndMultigridMatchCholmod) {
   EXPECT_LT(rm.iterations * 10, rj.iterations) << rm.iterations << " vs " << rj.iterations;
 }
 
-TEST(ChebyshevSmoother, LanczosEstimateIsJustBelowTheLargestEigenvalue) {
+TEST(EigenvalueEstimate, LanczosEstimateIsJustBelowTheLargestEigenvalue) {
   Fixture f(30);
   HostBackend be;
   PenalizedOperator op(be, f.model.problem.A, f.model.problem.contact.N);
   op.set_weights(f.c);
   JacobiPreconditioner jacobi(op);
-  const double estimate = estimate_lambda_max(op, jacobi.inverse_diagonal(), 12);
+  const DeviceVector start = to_device(be, eigenvalue_estimate_start(op.size()));
+  const double estimate = estimate_largest_eigenvalue(op, jacobi, start, 12);
   // D^{-1/2} H D^{-1/2} has the eigenvalues of D^{-1} H.
   const SparseMatrix H = f.hessian();
   const Vector s = Vector(H.diagonal()).cwiseSqrt().cwiseInverse();

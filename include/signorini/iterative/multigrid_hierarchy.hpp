@@ -19,6 +19,13 @@ inline constexpr EnumNames<HierarchyKind, 4> kHierarchyKindNames{{
     {HierarchyKind::GeometricThenAggregation, "geometric+aggregation"},
 }};
 
+/// The largest coarsest level that the multigrid preconditioner solves exactly, by a dense
+/// factorisation (MultigridOptions::max_dense_coarse); the makers of hierarchies aim below it
+/// (SmoothedAggregationOptions::max_coarse_unknowns, problem/model_hierarchy.cpp). The one owner
+/// of the coarsest size: a dense solve of 2,000 unknowns costs a product with a 2,000 x 2,000
+/// inverse per V-cycle, about that of a fine level of a few hundred thousand unknowns.
+inline constexpr Index kDenseCoarsestUnknowns = 2000;
+
 struct MultigridHierarchy {
   /// prolongations[l] maps level l+1 to level l (level 0: the free dofs of the mesh).
   std::vector<SparseMatrix> prolongations;

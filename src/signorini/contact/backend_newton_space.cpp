@@ -5,6 +5,7 @@
 
 #include "signorini/iterative/jacobi_preconditioner.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
+#include "signorini/linalg/iterative_options.hpp"
 
 namespace signorini {
 
@@ -41,10 +42,9 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
   if (o_.linear.preconditioner == PreconditionerType::Multigrid) {
     static const MultigridHierarchy kSingleLevel;  // no hierarchy: smoothing alone
     const MultigridHierarchy& levels = multigrid != nullptr ? *multigrid : kSingleLevel;
-    MultigridOptions mo;
-    mo.smoother.degree = o_.linear.chebyshev_degree;
     auto mg = std::make_unique<MultigridPreconditioner>(
-        *H_, problem.A, problem.contact.N, levels.prolongations, mo, levels.coarse_operators);
+        *H_, problem.A, problem.contact.N, levels.prolongations, multigrid_options(o_.linear),
+        levels.coarse_operators);
     levels_ = mg->level_sizes();
     preconditioner_ = std::move(mg);
   } else {
@@ -76,13 +76,10 @@ NewtonSolveStats BackendNewtonSpace::solve(const Vector& terms) {
   be_.copy(b_, work_);
   H_->apply_contact_transpose(contact_, work_, 1.0);
   be_.copy(x_, x_new_);
-  PcgOptions po;
-  po.tolerance = o_.linear.cg_tolerance;
-  po.max_iterations = o_.linear.cg_iteration_limit(n_);
   PcgResult lin;
   {
     ScopedTimer t(timings_, "linear solve");
-    lin = pcg_->solve(*H_, *preconditioner_, work_, x_new_, po);
+    lin = pcg_->solve(*H_, *preconditioner_, work_, x_new_, pcg_options(o_.linear, n_));
   }
   NewtonSolveStats out;
   out.converged = lin.converged;

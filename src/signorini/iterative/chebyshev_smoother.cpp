@@ -1,70 +1,10 @@
 #include "signorini/iterative/chebyshev_smoother.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <algorithm>
-#include <cmath>
-#include <random>
-
 #include "signorini/core/error.hpp"
+#include "signorini/iterative/eigenvalue_estimate.hpp"
+#include "signorini/iterative/jacobi_preconditioner.hpp"
 
 namespace signorini {
-
-namespace {
-
-// A fixed start (seeded), so that runs are repeatable and the CPU and GPU agree.
-Vector lanczos_start(Index n) {
-  Vector start(n);
-  std::mt19937_64 rng(12345);
-  std::uniform_real_distribution<double> uni(-1.0, 1.0);
-  for (Index i = 0; i < n; ++i) start(i) = uni(rng);
-  return start;
-}
-
-// The estimate with the caller's vectors: r holds the start on entry; r, z, p, q are overwritten.
-double lanczos_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int steps,
-                          DeviceVector& r, DeviceVector& z, DeviceVector& p, DeviceVector& q) {
-  Backend& be = op.backend();
-  steps = static_cast<int>(std::min<Index>(steps, op.size()));
-  // CG on H x = r with x0 = 0 and Jacobi preconditioning; its coefficients give the Lanczos
-  // tridiagonal matrix of D^{-1} H (Saad, Iterative Methods, section 6.7.3):
-  //   T_jj = 1/alpha_j + beta_{j-1}/alpha_{j-1},  T_{j,j+1} = sqrt(beta_j)/alpha_j.
-  std::vector<double> alphas, betas;
-  be.multiply(dinv, r, z);
-  be.copy(z, p);
-  double rz = be.dot(r, z);
-  for (int j = 0; j < steps && rz > 0.0; ++j) {
-    op.apply(p, q);
-    const double pq = be.dot(p, q);
-    if (!(pq > 0.0)) break;
-    const double alpha = rz / pq;
-    alphas.push_back(alpha);
-    be.axpby(-alpha, q, 1.0, r);
-    be.multiply(dinv, r, z);
-    const double rz_new = be.dot(r, z);
-    const double beta = rz_new / rz;
-    betas.push_back(beta);
-    rz = rz_new;
-    be.axpby(1.0, z, beta, p);
-  }
-  const auto k = static_cast<Index>(alphas.size());
-  if (k == 0) throw NumericalError("eigenvalue estimate: the operator is not positive definite");
-  Matrix T = Matrix::Zero(k, k);
-  for (Index j = 0; j < k; ++j) {
-    const auto uj = static_cast<std::size_t>(j);
-    T(j, j) = 1.0 / alphas[uj] + (j > 0 ? betas[uj - 1] / alphas[uj - 1] : 0.0);
-    if (j + 1 < k) T(j, j + 1) = T(j + 1, j) = std::sqrt(betas[uj]) / alphas[uj];
-  }
-  return Eigen::SelfAdjointEigenSolver<Matrix>(T, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
-}
-
-}  // namespace
-
-double estimate_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int steps) {
-  Backend& be = op.backend();
-  const Index n = op.size();
-  DeviceVector r = to_device(be, lanczos_start(n)), z(be, n), p(be, n), q(be, n);
-  return lanczos_lambda_max(op, dinv, steps, r, z, p, q);
-}
 
 ChebyshevSmoother::ChebyshevSmoother(PenalizedOperator& op, ChebyshevOptions options)
     : op_(op),
@@ -78,14 +18,16 @@ ChebyshevSmoother::ChebyshevSmoother(PenalizedOperator& op, ChebyshevOptions opt
 
 void ChebyshevSmoother::refresh() {
   op_.inverse_diagonal(dinv_);
-  // The start vector and one more work vector are made on the first estimate only (levels
-  // estimated elsewhere never need them), then reused: no allocation or upload per active set.
-  if (start_.size() == 0) {
-    start_ = to_device(op_.backend(), lanczos_start(op_.size()));
-    z_ = DeviceVector(op_.backend(), op_.size());
+  // lambda_max of D^{-1} H by Lanczos steps (eigenvalue_estimate.hpp) with the smoother's own
+  // D^{-1}; the start and the work vectors are made on the first estimate only (levels estimated
+  // elsewhere never need them), then reused: no allocation or upload per active set.
+  if (!estimate_) {
+    start_ = to_device(op_.backend(), eigenvalue_estimate_start(op_.size()));
+    estimate_ = std::make_unique<Pcg>(op_.backend(), op_.size());
   }
-  op_.backend().copy(start_, r_);
-  lambda_max_ = lanczos_lambda_max(op_, dinv_, options_.lanczos_steps, r_, z_, d_, q_);
+  DiagonalPreconditioner jacobi(dinv_);
+  lambda_max_ =
+      estimate_largest_eigenvalue(op_, jacobi, start_, options_.lanczos_steps, *estimate_, r_);
 }
 
 void ChebyshevSmoother::refresh(double lambda_max) {

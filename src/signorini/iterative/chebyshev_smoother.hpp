@@ -1,10 +1,13 @@
 #pragma once
 // Chebyshev–Jacobi smoothing (docs/gpu.md): a fixed polynomial in D^{-1} H that damps the
 // eigencomponents of D^{-1} H in [lower_fraction, upper_factor] * lambda_max, where lambda_max is
-// estimated by a few Lanczos steps (from the coefficients of Jacobi-preconditioned CG). It needs
+// estimated by a few Lanczos steps (eigenvalue_estimate.hpp, with the Jacobi scaling). It needs
 // only products with H and vector updates, which suits a GPU, and being a fixed polynomial it
 // keeps the multigrid V-cycle symmetric, as conjugate gradients require.
 
+#include <memory>
+
+#include "signorini/iterative/pcg.hpp"
 #include "signorini/iterative/penalized_operator.hpp"
 
 namespace signorini {
@@ -15,10 +18,6 @@ struct ChebyshevOptions {
   double upper_factor = 1.1;    ///< safety above the Lanczos estimate (a Ritz value, from below)
   int lanczos_steps = 12;
 };
-
-/// Largest eigenvalue of D^{-1} H (D = diag H, dinv = D^{-1}) estimated by `steps` Lanczos steps
-/// from a fixed pseudo-random start: the largest Ritz value, which is below the true one.
-double estimate_lambda_max(PenalizedOperator& op, const DeviceVector& dinv, int steps);
 
 class ChebyshevSmoother {
  public:
@@ -37,7 +36,10 @@ class ChebyshevSmoother {
   PenalizedOperator& op_;
   ChebyshevOptions options_;
   DeviceVector dinv_, r_, d_, q_;
-  DeviceVector start_, z_;  // Lanczos start and work vector, made on the first refresh()
+  // The estimate's start and work vectors (r_ is its x), made on the first refresh() (levels
+  // estimated elsewhere never need them) and reused: no allocation per active set.
+  DeviceVector start_;
+  std::unique_ptr<Pcg> estimate_;
   double lambda_max_ = 0.0;
 };
 

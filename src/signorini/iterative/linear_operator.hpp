@@ -23,4 +23,23 @@ class Preconditioner {
   virtual void refresh() = 0;
 };
 
+/// z = r: no preconditioning.
+class IdentityPreconditioner final : public Preconditioner {
+ public:
+  void apply(const DeviceVector& r, DeviceVector& z) override { r.backend()->copy(r, z); }
+  void refresh() override {}
+};
+
+/// y = A x for a symmetric matrix held on the host, on vectors of a host backend, without a copy
+/// of A (it must outlive this object). Rows in parallel: column i of A is its row i.
+class SymmetricMatrixOperator final : public LinearOperator {
+ public:
+  explicit SymmetricMatrixOperator(const SparseMatrix& A) : A_(A) {}
+  [[nodiscard]] Index size() const override { return A_.rows(); }
+  void apply(const DeviceVector& x, DeviceVector& y) override;
+
+ private:
+  const SparseMatrix& A_;
+};
+
 }  // namespace signorini

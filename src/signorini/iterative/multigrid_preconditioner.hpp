@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "signorini/iterative/chebyshev_smoother.hpp"
+#include "signorini/iterative/multigrid_hierarchy.hpp"
 
 namespace signorini {
 
@@ -22,7 +23,7 @@ struct MultigridOptions {
   ChebyshevOptions smoother;
   /// The coarsest level is solved exactly (dense) up to this size; above it by a Chebyshev sweep
   /// of 10 times the smoother's degree (then the preconditioner is no longer mesh-independent).
-  Index max_dense_coarse = 2000;
+  Index max_dense_coarse = kDenseCoarsestUnknowns;
   /// Levels below this many unknowns estimate their lambda_max on the host, from a copy of the
   /// level: on a GPU a Lanczos step costs some 60 us of launches and synchronisations whatever
   /// the size, on the host about 30 ns per unknown, so the host wins below a few thousand

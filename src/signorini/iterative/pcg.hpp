@@ -4,6 +4,8 @@
 // ||b||_2, measured on the recursively updated residual; per iteration three dot products come
 // back to the host, nothing else.
 
+#include <vector>
+
 #include "signorini/iterative/linear_operator.hpp"
 
 namespace signorini {
@@ -11,6 +13,14 @@ namespace signorini {
 struct PcgOptions {
   double tolerance = 1e-13;  ///< relative to ||b||_2 (the paper's CG tolerance)
   int max_iterations = 10000;
+  /// Start from x = 0 whatever x holds (saves the product H x of the first residual).
+  bool zero_initial_guess = false;
+};
+
+/// The step lengths alpha_j and the ratios beta_j = (r_{j+1}, z_{j+1}) / (r_j, z_j) of a run, in
+/// order: the Lanczos coefficients of M^{-1} H (eigenvalue_estimate.hpp).
+struct PcgCoefficients {
+  std::vector<double> alpha, beta;
 };
 
 struct PcgResult {
@@ -22,9 +32,10 @@ struct PcgResult {
 class Pcg {
  public:
   Pcg(Backend& backend, Index n);
-  /// Solves H x = b; x holds the initial guess on entry.
+  /// Solves H x = b; x holds the initial guess on entry. With `record`, the coefficients of
+  /// every step are appended to it.
   PcgResult solve(LinearOperator& H, Preconditioner& M, const DeviceVector& b, DeviceVector& x,
-                  const PcgOptions& options);
+                  const PcgOptions& options, PcgCoefficients* record = nullptr);
 
  private:
   Backend& backend_;

@@ -22,8 +22,9 @@ struct SmoothedAggregationOptions {
   /// blocks); 0 takes every matrix neighbour.
   double strength_threshold = 0.0;
   /// Coarsening stops once a level has at most this many unknowns (it is then solved densely by
-  /// the multigrid preconditioner, whose limit is 2,000).
-  Index max_coarse_unknowns = 1000;
+  /// the multigrid preconditioner, up to kDenseCoarsestUnknowns): half that limit, so that the
+  /// level which stops it, one coarsening below a level just above, is well inside the limit.
+  Index max_coarse_unknowns = kDenseCoarsestUnknowns / 2;
   /// ... or when a level has fewer than this fraction of unknowns less than the one above.
   double min_reduction = 0.2;
   int max_levels = 25;

@@ -1,6 +1,7 @@
 #include "signorini/linalg/cg_solver.hpp"
 
 #include "signorini/core/error.hpp"
+#include "signorini/linalg/iterative_options.hpp"
 
 namespace signorini {
 
@@ -27,10 +28,7 @@ LinearSolveStats CgSolver::solve(const Vector& rhs, Vector& x) {
   if (x.size() != n) x = Vector::Zero(n);
   backend_.upload(rhs.data(), n, b_.data());
   backend_.upload(x.data(), n, x_.data());
-  PcgOptions o;
-  o.tolerance = options_.cg_tolerance;
-  o.max_iterations = options_.cg_iteration_limit(n);
-  const PcgResult r = pcg_->solve(*operator_, *jacobi_, b_, x_, o);
+  const PcgResult r = pcg_->solve(*operator_, *jacobi_, b_, x_, pcg_options(options_, n));
   backend_.download(x_.data(), n, x.data());
   LinearSolveStats stats;
   stats.iterations = r.iterations;

@@ -5,8 +5,8 @@
 #include "signorini/core/error.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/iterative/galerkin_product.hpp"
-#include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/iterative/smoothed_aggregation.hpp"
+#include "signorini/linalg/iterative_options.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/rectangle_hierarchy.hpp"
@@ -34,7 +34,7 @@ MultigridHierarchy make_model_hierarchy(const ProblemSpec& spec, const Mesh& mes
       make_rectangle_prolongations(spec.mesh, spec.clamps, dofs, 400, spec.displacements);
   if (!h.prolongations.empty()) h.kind = HierarchyKind::Geometric;
   const Index coarsest = h.prolongations.empty() ? dofs.num_free() : h.prolongations.back().cols();
-  const Index dense_limit = MultigridOptions{}.max_dense_coarse;
+  const Index dense_limit = multigrid_options(spec.solver.linear).max_dense_coarse;
   const int halvings = static_cast<int>(h.prolongations.size());
   if (coarsest <= dense_limit) return h;
   if (asked == MultigridCoarsening::Geometric)
