@@ -207,7 +207,11 @@ int whole_process(const BenchArguments& args, const std::vector<std::pair<Index,
           flag));
   if (!args.peer_configs.empty() && !args.peers)
     throw InputError("--peer-config goes with --peers");
+  if (args.interleave && args.warmup >= 0)
+    throw InputError("--warmup does not go with --interleave, which runs no warm-up");
   WholeProcessOptions o;
+  o.warmup = args.warmup >= 0 ? args.warmup : 1;
+  o.interleave = args.interleave;
   o.meshes = meshes;
   o.repeats = args.repeats;
   o.peers = args.peers;
@@ -221,7 +225,8 @@ int whole_process(const BenchArguments& args, const std::vector<std::pair<Index,
 int run_bench(const BenchArguments& args) {
   if (!args.problem_file.empty()) {
     if (args.full || args.larger || args.huge || !args.meshes.empty() || args.whole_process ||
-        args.peers || args.cg || args.plain || args.device != "cpu")
+        args.peers || args.cg || args.plain || args.device != "cpu" || args.warmup >= 0 ||
+        args.interleave)
       throw InputError(
           "--problem times one problem file: it takes --repeats and --json only (the paper's "
           "meshes and configurations are options of the paper's benchmark)");
@@ -240,6 +245,9 @@ int run_bench(const BenchArguments& args) {
   if (args.huge) options.meshes.emplace_back(3840, 1280);
   if (args.whole_process || args.peers || !args.peer_configs.empty())
     return whole_process(args, options.meshes);
+  if (args.warmup >= 0 || args.interleave)
+    throw InputError(fmt::format("{} goes with --whole-process or --peers",
+                                 args.interleave ? "--interleave" : "--warmup"));
   for (const auto& name : args.methods) {
     const auto m = enum_from_string(kContactMethodNames, name);
     if (!m)

@@ -30,7 +30,7 @@ struct SolveArguments {
 
 struct PlotArguments {
   std::string output_dir;
-  PlotOptions options;  ///< --scale, --format
+  PlotOptions options;  ///< --scale, --format, --hertz-radius
 };
 
 struct CheckArguments {
@@ -57,6 +57,8 @@ struct BenchArguments {
   bool whole_process = false;
   bool peers = false;                     ///< with the whole process: also the PETSc peer
   std::vector<std::string> peer_configs;  ///< the peer's --config values; empty: its default
+  int warmup = -1;          ///< whole process: untimed runs per program first (-1: not given, 1)
+  bool interleave = false;  ///< whole process: repeat by repeat across programs
   /// A problem file to time against one linear solve instead of the paper's benchmark
   /// (problem_bench.hpp).
   std::string problem_file;

@@ -116,6 +116,12 @@ int main(int argc, char** argv) {
                    "Magnification of the deformed body (default: automatic)")
       ->check(kPositive);
   plot_cmd
+      ->add_option("--hertz-radius", plot.options.hertz_radius,
+                   "3D: draw Hertz's pressure profile for a sphere of this radius pressed onto a "
+                   "rigid plane (default: that of a rigid sphere obstacle, if there is one)")
+      ->type_name("R")
+      ->check(kPositive);
+  plot_cmd
       ->add_option("--format", plot.options.formats,
                    "The formats of the figures: png, svg or pdf, or several separated by commas "
                    "(default: png)")
@@ -171,6 +177,15 @@ int main(int argc, char** argv) {
                    "With --peers: the peer's configuration (mumps, cholmod, petsc, gamg; "
                    "repeatable; default: the script's)")
       ->type_name("NAME");
+  bench_cmd
+      ->add_option("--warmup", bench.warmup,
+                   "With --whole-process or --peers: untimed runs of each program before its "
+                   "timed repeats (default 1)")
+      ->check(CLI::NonNegativeNumber);
+  bench_cmd->add_flag("--interleave", bench.interleave,
+                      "With --whole-process or --peers: run the programs repeat by repeat "
+                      "instead of program by program (no warm-up; each run follows another "
+                      "program's)");
 
   try {
     app.parse(argc, argv);

@@ -128,10 +128,16 @@ std::string mesh_name(const std::pair<Index, Index>& m) {
 }
 
 std::string with_thousands(long n) {
-  std::string digits = std::to_string(n);
-  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
-    digits.insert(static_cast<std::size_t>(i), ",");
-  return digits;
+  // Built forwards rather than by std::string::insert, on which g++ 12 warns falsely
+  // (-Wrestrict) once it is inlined.
+  const std::string digits = std::to_string(n);
+  const std::size_t lead = digits[0] == '-' ? 1 : 0;
+  std::string out = digits.substr(0, lead);
+  for (std::size_t i = lead; i < digits.size(); ++i) {
+    if (i > lead && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
 }
 
 void check_exit(const ChildRun& run, const std::string& what, int converged_or_not) {
@@ -210,9 +216,13 @@ int run_whole_process_bench(const WholeProcessOptions& options) {
 
   fmt::print(
       "signorini bench --whole-process: the paper's problem, each run a separate process, best "
-      "of {} by wall time, {} hardware threads\n  signorini: {} solve <paper.toml> --set "
+      "of {} by wall time ({}), {} hardware threads\n  signorini: {} solve <paper.toml> --set "
       "mesh.nx=NX --set mesh.ny=NY -o <folder> -q\n",
-      options.repeats, std::thread::hardware_concurrency(), self);
+      options.repeats,
+      options.interleave
+          ? std::string("programs interleaved repeat by repeat")
+          : fmt::format("program by program, after {} warm-up run(s) each", options.warmup),
+      std::thread::hardware_concurrency(), self);
   if (!python.empty())
     fmt::print("  peer:      {} {} --nx NX --ny NY{} --json <file> --quiet\n", python, script,
                configs.front().empty() && configs.size() == 1 ? "" : " --config CONFIG");
@@ -232,48 +242,68 @@ int run_whole_process_bench(const WholeProcessOptions& options) {
       row.measured.push_back(Measured{"petsc_snesvi " + shown, shown, {}, {}});
     }
     const std::string nx = std::to_string(mesh.first), ny = std::to_string(mesh.second);
-    // Back to back, repeat by repeat, so that a change in the machine's load affects both.
-    for (int r = 0; r < options.repeats; ++r) {
-      const fs::path out = scratch.path() / fmt::format("solve-{}", ++run_number);
-      fmt::print(stderr, "  running {} signorini ({}/{})\n", row.mesh, r + 1, options.repeats);
-      const ChildRun run = run_child({self, "solve", problem.string(), "--set", "mesh.nx=" + nx,
-                                      "--set", "mesh.ny=" + ny, "-o", out.string(), "-q"},
-                                     environment);
-      check_exit(run, fmt::format("signorini solve at {}", row.mesh), kNotConverged);
-      const nlohmann::json summary = read_json(out / "summary.json", "the summary of a solve");
-      row.measured[0].add(run,
-                          summary.contains("timings") ? number_or_nan(summary["timings"], "total")
-                                                      : std::numeric_limits<double>::quiet_NaN(),
-                          number_or_nan(summary, "energy"),
-                          summary.value("converged", false) && run.exit_status == 0,
-                          summary.value("n_active", -1L), -1);
-      std::error_code ec;
-      fs::remove_all(out, ec);
-
-      for (std::size_t k = 0; k < configs.size(); ++k) {
-        Measured& peer = row.measured[k + 1];
-        const fs::path json = scratch.path() / fmt::format("peer-{}.json", ++run_number);
-        std::vector<std::string> argv = {python, script,   "--nx",        nx,       "--ny",
-                                         ny,     "--json", json.string(), "--quiet"};
-        if (!configs[k].empty()) {
-          argv.emplace_back("--config");
-          argv.push_back(configs[k]);
-        }
-        fmt::print(stderr, "  running {} {} ({}/{})\n", row.mesh, peer.program, r + 1,
-                   options.repeats);
-        const ChildRun p = run_child(argv, environment);
-        check_exit(p, fmt::format("the peer ({}) at {}", peer.program, row.mesh), kNotConverged);
-        const nlohmann::json result = read_json(json, "the peer's result");
-        if (configs[k].empty() && result.contains("config"))
-          peer.config = result["config"].get<std::string>();
-        peer.program = "petsc_snesvi " + peer.config;
-        peer.add(p,
-                 result.contains("seconds") ? number_or_nan(result["seconds"], "total")
+    // One run of program p (0: signorini, k > 0: the peer's configuration k - 1); a timed run
+    // is added to its row, a warm-up run is checked (exit status, energy) and dropped.
+    const auto run_program = [&](std::size_t p, int number, bool timed) {
+      Measured& m = row.measured[p];
+      const std::string what =
+          timed ? fmt::format("{}/{}", number, options.repeats) : std::string("warm-up");
+      fmt::print(stderr, "  running {} {} ({})\n", row.mesh, m.program, what);
+      if (p == 0) {
+        const fs::path out = scratch.path() / fmt::format("solve-{}", ++run_number);
+        const ChildRun run = run_child({self, "solve", problem.string(), "--set", "mesh.nx=" + nx,
+                                        "--set", "mesh.ny=" + ny, "-o", out.string(), "-q"},
+                                       environment);
+        check_exit(run, fmt::format("signorini solve at {}", row.mesh), kNotConverged);
+        const nlohmann::json summary = read_json(out / "summary.json", "the summary of a solve");
+        if (timed)
+          m.add(run,
+                summary.contains("timings") ? number_or_nan(summary["timings"], "total")
                                             : std::numeric_limits<double>::quiet_NaN(),
-                 number_or_nan(result, "energy"),
-                 result.value("converged", false) && p.exit_status == 0,
-                 result.value("active_nodes", -1L), result.value("snes_iterations", -1L));
-        fs::remove(json, ec);
+                number_or_nan(summary, "energy"),
+                summary.value("converged", false) && run.exit_status == 0,
+                summary.value("n_active", -1L), -1);
+        std::error_code ec;
+        fs::remove_all(out, ec);
+        return;
+      }
+      const std::string& config = configs[p - 1];
+      const fs::path json = scratch.path() / fmt::format("peer-{}.json", ++run_number);
+      std::vector<std::string> argv = {python, script,   "--nx",        nx,       "--ny",
+                                       ny,     "--json", json.string(), "--quiet"};
+      if (!config.empty()) {
+        argv.emplace_back("--config");
+        argv.push_back(config);
+      }
+      const ChildRun run = run_child(argv, environment);
+      check_exit(run, fmt::format("the peer ({}) at {}", m.program, row.mesh), kNotConverged);
+      const nlohmann::json result = read_json(json, "the peer's result");
+      if (config.empty() && result.contains("config"))
+        m.config = result["config"].get<std::string>();
+      m.program = "petsc_snesvi " + m.config;
+      if (timed)
+        m.add(run,
+              result.contains("seconds") ? number_or_nan(result["seconds"], "total")
+                                         : std::numeric_limits<double>::quiet_NaN(),
+              number_or_nan(result, "energy"),
+              result.value("converged", false) && run.exit_status == 0,
+              result.value("active_nodes", -1L), result.value("snes_iterations", -1L));
+      std::error_code ec;
+      fs::remove(json, ec);
+    };
+    if (options.interleave) {
+      // Repeat by repeat, so that a change in the machine's load affects every program alike;
+      // but each run then follows another program's (docs/performance.md).
+      for (int r = 0; r < options.repeats; ++r)
+        for (std::size_t p = 0; p < row.measured.size(); ++p) run_program(p, r + 1, true);
+    } else {
+      // Program by program: its warm-up runs, then its timed repeats back to back. A run that
+      // follows a larger process waits for the memory that process gave back (on a virtual
+      // machine several tenths of a second at 480x160, docs/performance.md); after a warm-up
+      // each timed run follows a run of its own program, whatever the other programs' sizes.
+      for (std::size_t p = 0; p < row.measured.size(); ++p) {
+        for (int w = 0; w < options.warmup; ++w) run_program(p, w + 1, false);
+        for (int r = 0; r < options.repeats; ++r) run_program(p, r + 1, true);
       }
     }
     for (std::size_t k = 1; k < row.measured.size(); ++k)
@@ -318,6 +348,8 @@ int run_whole_process_bench(const WholeProcessOptions& options) {
     j["benchmark"] = "paper";
     j["mode"] = "whole_process";
     j["repeats"] = options.repeats;
+    j["warmup"] = options.interleave ? 0 : options.warmup;
+    j["order"] = options.interleave ? "interleaved" : "program by program";
     j["hardware_threads"] = std::thread::hardware_concurrency();
     j["signorini"] = self;
     if (!python.empty()) {

@@ -113,6 +113,43 @@ TEST(BenchWholeProcess, FlagsThatDoNotGoWithItAreRefused) {
                                   "SIGNORINI_PEER_SCRIPT=" + quoted((dir / "none.py").string()));
   EXPECT_EQ(script.status, 2);
   EXPECT_CONTAINS(script.err, "SIGNORINI_PEER_SCRIPT = ");
+  const ToolRun warmup = run_tool(dir, "bench --warmup 2 --mesh 30x10");
+  EXPECT_EQ(warmup.status, 2);
+  EXPECT_CONTAINS(warmup.err, "--warmup goes with --whole-process or --peers");
+  const ToolRun both = run_tool(dir, "bench --whole-process --interleave --warmup 1 --mesh 30x10");
+  EXPECT_EQ(both.status, 2);
+  EXPECT_CONTAINS(both.err, "--warmup does not go with --interleave");
+}
+
+// Program by program after the warm-up runs (the default), or interleaved: the runs are made in
+// that order, and only the timed ones are kept.
+TEST(BenchWholeProcess, WarmUpRunsAreMadeAndNotCounted) {
+  const testing::TemporaryFolder dir;
+  const fs::path json = dir / "whole.json";
+  ToolRun r = run_tool(dir,
+                       "bench --whole-process --mesh 30x10 --mesh 20x10 --repeat 2 "
+                       "--warmup 1 --json " +
+                           quoted(json.string()));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_CONTAINS(r.out,
+                  "best of 2 by wall time (program by program, after 1 warm-up run(s) each)");
+  EXPECT_CONTAINS(r.err,
+                  "  running 30x10 signorini (warm-up)\n  running 30x10 signorini (1/2)\n"
+                  "  running 30x10 signorini (2/2)\n  running 20x10 signorini (warm-up)\n");
+  auto j = nlohmann::json::parse(read_text(json));
+  EXPECT_EQ(j["warmup"], 1);
+  EXPECT_EQ(j["order"], "program by program");
+  ASSERT_EQ(j["rows"].size(), 2U);
+  EXPECT_EQ(j["rows"][0]["wall_seconds_each"].size(), 2U);
+
+  r = run_tool(dir, "bench --whole-process --mesh 30x10 --repeat 2 --interleave --json " +
+                        quoted(json.string()));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_CONTAINS(r.out, "(programs interleaved repeat by repeat)");
+  EXPECT_EQ(r.err.find("warm-up"), std::string::npos) << r.err;
+  j = nlohmann::json::parse(read_text(json));
+  EXPECT_EQ(j["warmup"], 0);
+  EXPECT_EQ(j["order"], "interleaved");
 }
 
 TEST(BenchWholeProcess, PeerWithoutPetsc4pyIsSkippedSayingHowToInstallIt) {
