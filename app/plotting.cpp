@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 
@@ -41,7 +42,7 @@ std::string find_script() {
 
 }  // namespace
 
-std::vector<std::string> figure_files(const std::string& formats) {
+std::vector<std::string> figure_files(const std::string& formats, int dimension) {
   // As the script reads --format: lower case, spaces ignored, each format once.
   std::vector<std::string> chosen;
   std::size_t start = 0;
@@ -55,10 +56,30 @@ std::vector<std::string> figure_files(const std::string& formats) {
     start = end + 1;
   }
   std::vector<std::string> files;
-  for (const char* name :
-       {"contact_displacement", "contact_pressure", "deformed_von_mises", "convergence"})
+  const std::vector<const char*> names =
+      dimension == 3
+          ? std::vector<const char*>{"contact_pressure_map", "contact_pressure", "convergence"}
+          : std::vector<const char*>{"contact_displacement", "contact_pressure",
+                                     "deformed_von_mises", "convergence"};
+  for (const char* name : names)
     for (const std::string& format : chosen) files.push_back(fmt::format("{}.{}", name, format));
   return files;
+}
+
+int result_dimension(const std::string& outdir) {
+  std::ifstream in(std::filesystem::path(outdir) / "contact.csv");
+  std::string header;
+  if (!in || !std::getline(in, header)) return 2;
+  std::size_t start = 0;
+  while (start <= header.size()) {
+    const std::size_t end = std::min(header.find(',', start), header.size());
+    std::string column;
+    for (const char c : header.substr(start, end - start))
+      if (!std::isspace(static_cast<unsigned char>(c))) column += c;
+    if (column == "z") return 3;
+    start = end + 1;
+  }
+  return 2;
 }
 
 PlotRun run_plot_script(const std::vector<std::string>& arguments, bool capture) {
@@ -110,6 +131,10 @@ PlotRun plot_results(const std::string& outdir, const PlotOptions& options, bool
   if (options.scale) {
     arguments.emplace_back("--scale");
     arguments.push_back(fmt::format("{:.17g}", *options.scale));
+  }
+  if (options.hertz_radius) {
+    arguments.emplace_back("--hertz-radius");
+    arguments.push_back(fmt::format("{:.17g}", *options.hertz_radius));
   }
   arguments.emplace_back("--");  // a folder named "-x" is not an option
   arguments.push_back(outdir);

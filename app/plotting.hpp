@@ -13,13 +13,20 @@ namespace signorini::app {
 /// What to draw, as `signorini plot` and `solve --plot` take it.
 struct PlotOptions {
   std::optional<double> scale;  ///< magnification of the deformed body; empty: automatic
+  /// 3D: the radius of Hertz's profile drawn beside the pressure; empty: that of a rigid sphere
+  /// obstacle, if there is one.
+  std::optional<double> hertz_radius;
   /// The formats, separated by commas: png, svg, pdf (the script checks them).
   std::string formats = "png";
 };
 
-/// The files the script writes into the output folder for `formats` (as PlotOptions::formats),
-/// in the order of docs/output.md.
-std::vector<std::string> figure_files(const std::string& formats);
+/// The files the script writes into the output folder for `formats` (as PlotOptions::formats)
+/// and the problem's dimension (2 or 3), in the order of docs/output.md.
+std::vector<std::string> figure_files(const std::string& formats, int dimension);
+
+/// The dimension of the results in `outdir`, as the script decides it: 3 if contact.csv has a z
+/// column, else 2 (also when it cannot be read: the script says why).
+int result_dimension(const std::string& outdir);
 
 /// How the script ended: its exit status (0 done, 2 a missing package or an unusable folder,
 /// which it reports on stderr in one line, 1 a failure of the script) and, when captured, what it

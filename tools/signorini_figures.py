@@ -17,6 +17,14 @@ OUTDIR/summary.json, contact.csv and solution.vtu and writes, as PNG (and SVG or
     deformed_von_mises     the deformed body x + s u(x) coloured by the von Mises stress
     convergence            the Uzawa residual per iteration and GNM iterations per Uzawa step
 
+and for a 3D problem (contact.csv with a z column):
+
+    contact_pressure_map   the pressure over the contact surface, seen along its mean normal
+    contact_pressure       the pressure along a line through the centre of the contact zone, every
+                           node at its distance from the centre, and Hertz's profile where it
+                           applies (a rigid sphere, or --hertz-radius R for a body of radius R)
+    convergence            as in 2D
+
 The unit labels come from the `units` setting (summary.json: problem.units, e.g. "m-MPa"); without
 it the labels carry no units. Each file's description (PNG Description, SVG dc:description, PDF
 Subject) holds the limits of its main axes, "axes: x from X0 to X1, y from Y0 to Y1", in the
@@ -42,6 +50,7 @@ from collections import namedtuple
 # Line styles of the contact boundaries when there are several.
 STYLES = ["-", (0, (5, 2)), (0, (1, 1.5)), (0, (5, 2, 1, 2))]
 FIGURES = ["contact_displacement", "contact_pressure", "deformed_von_mises", "convergence"]
+FIGURES_3D = ["contact_pressure_map", "contact_pressure", "convergence"]
 # The formats `--format` accepts, and the default: pictures to look at; vectors (SVG, PDF) on
 # request, since each format draws every figure once more.
 FORMATS = ["png", "svg", "pdf"]
@@ -151,6 +160,14 @@ UNIT_ALIASES = {
 
 Units = namedtuple("Units", ["length", "stress", "force_per_thickness"])
 NO_UNITS = Units("", "", "")
+# The unit of a force (stress x length^2: 3D contact forces) in each system.
+FORCE_UNITS = {"m-Pa": "N", "m-kPa": "kN", "m-MPa": "MN", "m-GPa": "GN", "mm-MPa": "N"}
+
+
+def force_unit(summary):
+    problem = summary.get("problem")
+    setting = problem.get("units") if isinstance(problem, dict) else None
+    return FORCE_UNITS.get(UNIT_ALIASES.get(setting, setting), "") if setting else ""
 
 
 def units_of(setting):
@@ -224,11 +241,20 @@ def read_contact_csv(outdir):
             body = body.reshape(0, len(header))
         if body.ndim != 2 or body.shape[1] != len(header):
             raise ValueError("rows of different lengths")
-        columns = {k: body[:, header.index(k)] for k in ("x", "y", "u_n", "u_t", "pressure", "gap")}
+        if "z" in header:  # 3D: the tangential displacement is a vector
+            columns = {k: body[:, header.index(k)]
+                       for k in ("x", "y", "z", "u_n", "pressure", "gap", "n_x", "n_y", "n_z")}
+            columns["u_t"] = np.sqrt(sum(body[:, header.index(k)] ** 2
+                                         for k in ("u_tx", "u_ty", "u_tz")))
+        else:
+            columns = {k: body[:, header.index(k)]
+                       for k in ("x", "y", "u_n", "u_t", "pressure", "gap")}
         # The contact boundary of each row (one name in files of one boundary or older ones).
         names = ([r[text[0]] for r in rows[1:] if r] if text else [""] * len(body))
         columns["boundary"] = names
-        if "n_x" in header and "n_y" in header:
+        if "z" in header:
+            pass  # the normal was read above
+        elif "n_x" in header and "n_y" in header:
             columns["n_x"] = body[:, header.index("n_x")]
             columns["n_y"] = body[:, header.index("n_y")]
         else:
@@ -237,10 +263,22 @@ def read_contact_csv(outdir):
     except FileNotFoundError:
         raise UsageError(f"'{path}' not found: is '{outdir}' the output folder of signorini solve?")
     except (OSError, IndexError, TypeError, ValueError) as e:
-        raise UsageError(f"cannot read '{path}': expected the columns x,y,u_n,u_t,pressure,gap ({e})")
+        raise UsageError(f"cannot read '{path}': expected the columns x,y,u_n,u_t,pressure,gap "
+                         f"(2D) or x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z (3D) ({e})")
     if len(body) == 0:
         raise UsageError(f"'{path}' has no contact nodes")
     return columns
+
+
+def contact_dimension(outdir):
+    """3 if contact.csv has a z column (a 3D problem), else 2; read before numpy is imported, so
+    that the list of figures is known at once."""
+    try:
+        with open(os.path.join(outdir, "contact.csv"), encoding="utf-8") as f:
+            header = [h.strip() for h in f.readline().split(",")]
+    except OSError:
+        return 2  # said by check_results and read_contact_csv
+    return 3 if "z" in header else 2
 
 
 def check_results(outdir):
@@ -431,11 +469,16 @@ def title_of(summary):
     problem = summary.get("problem", {})
     mesh = problem.get("mesh", {})
     name = problem.get("name", "problem")
-    if "nx" in mesh:
+    if "nz" in mesh:  # the 3D box
+        text = (f"{name}: {mesh.get('nx', '?')} × {mesh.get('ny', '?')} × {mesh.get('nz', '?')} "
+                f"mesh of {mesh.get('cell', 'hex8')} cells")
+    elif "nx" in mesh:
         cell = mesh.get("cell", "quad4")
         text = f"{name}: {mesh.get('nx', '?')} × {mesh.get('ny', '?')} mesh"
         if cell != "quad4":
             text += f" of {cell} cells"
+    elif mesh.get("type") == "box":
+        text = f"{name}: a box mesh"
     else:  # a mesh from a file
         text = f"{name}: {os.path.basename(str(mesh.get('file', '?')))}"
     if "n_dofs" in summary:
@@ -1072,6 +1115,215 @@ def figure_convergence(summary, measure):
     return fig, describe_limits(left)
 
 
+# 3D: the contact surface -------------------------------------------------------------------
+
+AXIS_NAMES = "xyz"
+
+
+def surface_plane(contact):
+    """(i, j): the two coordinates that show the contact surface best, seen along its mean
+    normal: the coordinate plane most nearly perpendicular to it (the surface of a box face, or a
+    cap of a sphere, seen from outside)."""
+    import numpy as np
+
+    n = np.array([np.mean(contact["n_x"]), np.mean(contact["n_y"]), np.mean(contact["n_z"])])
+    dropped = int(np.argmax(np.abs(n))) if np.any(n != 0) else 2
+    i, j = [k for k in range(3) if k != dropped]
+    return i, j
+
+
+def surface_triangulation(a, b):
+    """A Delaunay triangulation of the projected nodes without the triangles that bridge gaps
+    (between two contact surfaces, or across a hole): those with an edge over three times the
+    median edge length."""
+    import numpy as np
+    from matplotlib.tri import Triangulation
+
+    tri = Triangulation(a, b)
+    t = tri.triangles
+    if len(t) == 0:
+        return tri
+    pa, pb = a[t], b[t]
+    edges = np.hypot(pa - np.roll(pa, 1, axis=1), pb - np.roll(pb, 1, axis=1))
+    typical = np.median(edges)
+    if typical > 0:
+        tri.set_mask(np.max(edges, axis=1) > 3.0 * typical)
+    return tri
+
+
+def contact_zone(contact, i, j):
+    """The centre of the contact zone (the pressure-weighted mean of the touching nodes) and its
+    extent, in the plane (i, j); None without contact."""
+    import numpy as np
+
+    coords = [contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]]
+    p = contact["pressure"]
+    touching = p > 0
+    if not np.any(touching):
+        return None
+    w = p[touching]
+    centre = [float(np.sum(c[touching] * w) / np.sum(w)) for c in coords]
+    extent = [(float(c[touching].min()), float(c[touching].max())) for c in coords]
+    return centre, extent
+
+
+def node_spacing(a, b):
+    """A typical distance between neighbouring nodes of the surface (the median edge of its
+    triangulation)."""
+    import numpy as np
+
+    tri = surface_triangulation(a, b)
+    edges = tri.edges
+    if len(edges) == 0:
+        return 0.0
+    return float(np.median(np.hypot(a[edges[:, 0]] - a[edges[:, 1]],
+                                    b[edges[:, 0]] - b[edges[:, 1]])))
+
+
+def figure_pressure_map(summary, contact, units, measure):
+    import numpy as np
+
+    i, j = surface_plane(contact)
+    a, b = contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]
+    p = contact["pressure"]
+    k = power_of_ten(p)
+    scale = 10.0 ** k
+    fig = new_figure(7.5, 6.5)
+    ax = fig.add_axes([0.1, 0.1, 0.7, 0.8])
+    cax = fig.add_axes([0.85, 0.1, 0.03, 0.8])
+    tri = surface_triangulation(a, b)
+    top = max(float(np.nanmax(p)), 0.0) / scale
+    image = ax.tripcolor(tri, p / scale, shading="gouraud", cmap="viridis", vmin=0.0,
+                         vmax=top if top > 0 else 1.0, rasterized=True)
+    zone = contact_zone(contact, i, j)
+    touching = p > 0
+    if zone is not None and np.count_nonzero(touching) <= 5000:
+        ax.plot(a[touching], b[touching], ".", color="white", ms=1.5, alpha=0.6,
+                label=f"nodes in contact: {int(np.count_nonzero(touching))} of {len(p)}")
+    ax.set_aspect("equal")
+    ax.set_xlabel(axis_label(AXIS_NAMES[i], units.length))
+    ax.set_ylabel(axis_label(AXIS_NAMES[j], units.length))
+    zoomed = False
+    if zone is not None:
+        (c0, c1), ((a0, a1), (b0, b1)) = zone
+        size = max(a1 - a0, b1 - b0, node_spacing(a, b) * 4)
+        whole = max(np.ptp(a), np.ptp(b))
+        if size < 0.4 * whole:  # a small zone on a large surface: zoomed onto it
+            half = 0.8 * size
+            ax.set_xlim(c0 - half, c0 + half)
+            ax.set_ylim(c1 - half, c1 + half)
+            zoomed = True
+    colorbar = fig.colorbar(image, cax=cax)
+    colorbar.set_label(axis_label("contact pressure", units.stress, k), fontsize=TEXT_SIZE)
+    subtitle = f"Contact pressure over the contact surface, seen along {AXIS_NAMES[3 - i - j]}"
+    subtitle += " (zoomed onto the contact zone)" if zoomed else ""
+    if zone is None:
+        subtitle += " (no contact)"
+    force = summary.get("contact_force")
+    if isinstance(force, (int, float)):
+        subtitle += ", contact force " + with_unit(f"{force:.4g}", force_unit(summary))
+    title = wrapped(title_of(summary) + "\n" + subtitle, 7.5)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=LEGEND_SIZE, loc="upper right", facecolor="0.3", labelcolor="white")
+    w, h = fig.get_size_inches() * 72.0
+    top_margin = BORDER + measure.height(title) + TITLE_PAD
+    for _ in range(2):
+        left, offset = measure.left(ax)
+        bottom, _ = measure.bottom(ax)
+        left += BORDER
+        bottom += BORDER
+        bar = 12.0 + 14.0 + 46.0 + 2 * TEXT_SIZE  # the colour bar, its ticks and its label
+        size = min(w - left - bar - BORDER, h - bottom - top_margin - offset)
+        place(fig, ax, left, bottom, size, h - bottom - top_margin - offset)
+        place(fig, cax, left + size + 12.0, bottom, 14.0, h - bottom - top_margin - offset)
+    return fig, describe_limits(ax)
+
+
+def hertz_parameters(summary, radius=None):
+    """(R, E*, a, p0) of Hertz's contact of a sphere of radius R with a flat elastic body or of
+    an elastic sphere with a rigid plane (E* = E / (1 - nu^2), the partner rigid) under the
+    computed contact force F: a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2). R is `radius`
+    if given, else that of a rigid sphere obstacle (a disc in 3D, the body outside it); None
+    where neither applies (another obstacle, several contact boundaries, no force)."""
+    problem = summary.get("problem", {})
+    contact = problem.get("contact")
+    material = problem.get("material", {})
+    if radius is None:
+        if not (isinstance(contact, dict) and contact.get("obstacle") == "disc" and
+                not contact.get("inside", False)):
+            return None
+        radius = contact.get("radius")
+    E, nu = material.get("E"), material.get("nu")
+    force = summary.get("contact_force")
+    if not all(isinstance(v, (int, float)) for v in (radius, E, nu, force)):
+        return None
+    if radius <= 0 or E <= 0 or force <= 0 or problem.get("region"):
+        return None
+    e_star = E / (1.0 - nu * nu)
+    a = (3.0 * force * radius / (4.0 * e_star)) ** (1.0 / 3.0)
+    p0 = 3.0 * force / (2.0 * math.pi * a * a)
+    return radius, e_star, a, p0
+
+
+def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None):
+    import numpy as np
+
+    i, j = surface_plane(contact)
+    a, b = contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]
+    p = contact["pressure"]
+    k = power_of_ten(p)
+    scale = 10.0 ** k
+    fig = new_figure(8, 4.5)
+    ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+    zone = contact_zone(contact, i, j)
+    centre = zone[0] if zone is not None else [float(np.mean(a)), float(np.mean(b))]
+    h = node_spacing(a, b)
+    # Every node at its distance from the centre, on the side of its first in-plane coordinate
+    # (for a round contact zone, the profile folded onto one line).
+    da, db = a - centre[0], b - centre[1]
+    r = np.hypot(da, db)
+    signed = np.where(da < 0, -r, r)
+    ax.plot(signed, p / scale, ".", color="0.65", ms=2.5,
+            label=f"every contact node at ± its distance from the centre ({len(p)})")
+    # The nodes on the line through the centre along the first in-plane axis.
+    line = np.abs(db) <= 0.51 * h if h > 0 else np.ones(len(p), dtype=bool)
+    order = np.argsort(da[line])
+    ax.plot(da[line][order], p[line][order] / scale, "o-", color="tab:red", ms=3, lw=1.4,
+            label=f"nodes within half a spacing of the line {AXIS_NAMES[j]} = {centre[1]:.4g}")
+    hertz = hertz_parameters(summary, hertz_radius)
+    description = ""
+    if hertz is not None:
+        radius, e_star, ra, p0 = hertz
+        s = np.linspace(-ra, ra, 201)
+        ax.plot(s, p0 * np.sqrt(np.maximum(1.0 - (s / ra) ** 2, 0.0)) / scale, "--",
+                color="black", lw=1.2,
+                label=f"Hertz, same force (R = {radius:.4g}, E* = {e_star:.4g}): "
+                      f"a = {ra:.4g}, p0 = {p0:.4g}")
+        description = f"; hertz: a {ra:.6g}, p0 {p0:.6g}"
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel(axis_label(f"{AXIS_NAMES[i]} − {centre[0]:.4g} (distance from the centre of "
+                             "the contact zone)", units.length))
+    ax.set_ylabel(axis_label("contact pressure", units.stress, k))
+    if zone is not None:
+        extent = max(np.max(np.abs(signed[p > 0])), h)
+        if hertz is not None:
+            extent = max(extent, hertz[2])
+        ax.set_xlim(-1.6 * extent, 1.6 * extent)
+    top = max(float(np.nanmax(p)), hertz[3] if hertz else 0.0, 0.0) / scale
+    ax.set_ylim(-0.02 * max(top, 1e-300), 1.1 * top if top > 0 else 1.0)
+    subtitle = "Contact pressure through the centre of the contact zone"
+    if zone is None:
+        subtitle += " (no contact)"
+    title = wrapped(title_of(summary) + "\n" + subtitle, 8)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=LEGEND_SIZE, loc="upper right")
+    place_single(fig, ax, measure, title)
+    return fig, describe_limits(ax, scale) + description
+
+
+
 # Drawing and writing -----------------------------------------------------------------------
 
 
@@ -1149,20 +1401,32 @@ def draw_and_save(outdir, name, make, written, formats):
     gc.collect()
 
 
-def draw(outdir, next_figure, scale, written, formats, warnings=True):
+def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz_radius=None):
     """Reads the results and draws the figures that `next_figure()` names, until it returns
     None, into temporary files (listed in `written`); returns the names drawn."""
     import_plotting()
     summary = read_summary(outdir)
     units = units_of_summary(summary, warnings)
     contact = read_contact_csv(outdir)
+    measure = Measure()
+    if "z" in contact:  # 3D: the contact surface
+        makers = {
+            "contact_pressure_map": lambda: figure_pressure_map(summary, contact, units, measure),
+            "contact_pressure": lambda: figure_pressure_profile(summary, contact, units, measure,
+                                                                hertz_radius),
+            "convergence": lambda: figure_convergence(summary, measure),
+        }
+        drawn = []
+        while (name := next_figure()) is not None:
+            drawn.append(name)
+            draw_and_save(outdir, name, makers[name], written, formats)
+        return drawn
     # Shared by the figures along the contact boundary.
     contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
     contact["parts"] = boundary_parts(contact)
     contact["intervals"] = [iv for _, rows in contact["parts"]
                             for iv in contact_intervals(contact["t"][rows],
                                                         contact["pressure"][rows] > 0)]
-    measure = Measure()
     makers = {
         "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),
         "contact_pressure": lambda: figure_pressure(summary, contact, units, measure),
@@ -1188,6 +1452,11 @@ def cores():
 # The figures, the longest to draw first: with two processes taking them in turn, neither waits
 # long for the other at the end.
 ORDER = ["deformed_von_mises", "convergence", "contact_displacement", "contact_pressure"]
+ORDER_3D = ["contact_pressure_map", "convergence", "contact_pressure"]
+
+
+def order_of(dimension):
+    return ORDER_3D if dimension == 3 else ORDER
 
 
 class Helper:
@@ -1196,11 +1465,12 @@ class Helper:
     one at a time, so that a process that is faster (or started sooner) draws more; the helper
     reports the files it wrote, or its error, through another pipe."""
 
-    def __init__(self, outdir, scale, formats):
+    def __init__(self, outdir, scale, formats, order, hertz_radius=None):
         self.outdir = outdir
         self.formats = formats
+        self.order = order
         queue_read, queue_write = os.pipe()
-        os.write(queue_write, bytes(range(len(ORDER))))
+        os.write(queue_write, bytes(range(len(order))))
         os.close(queue_write)  # read to the end: no figure left
         report_read, report_write = os.pipe()
         sys.stdout.flush()
@@ -1208,7 +1478,8 @@ class Helper:
         self.pid = os.fork()
         if self.pid == 0:
             os.close(report_read)
-            self.run(queue_read, report_write, outdir, scale, formats)  # does not return
+            self.run(queue_read, report_write, outdir, scale, formats, order,
+                     hertz_radius)  # does not return
         os.close(report_write)
         self.queue = queue_read
         self.report = report_read
@@ -1217,18 +1488,19 @@ class Helper:
         """The next figure to draw, or None: reads one byte (atomic: each name goes to one of
         the processes)."""
         index = os.read(self.queue, 1)
-        return ORDER[index[0]] if index else None
+        return self.order[index[0]] if index else None
 
     @staticmethod
-    def run(queue, report_end, outdir, scale, formats):
+    def run(queue, report_end, outdir, scale, formats, order, hertz_radius):
         status, written = 0, []
 
         def next_figure():
             index = os.read(queue, 1)
-            return ORDER[index[0]] if index else None
+            return order[index[0]] if index else None
 
         try:
-            drawn = draw(outdir, next_figure, scale, written, formats, warnings=False)
+            drawn = draw(outdir, next_figure, scale, written, formats, warnings=False,
+                         hertz_radius=hertz_radius)
             report = {"drawn": drawn}
         except UsageError as e:
             status, report = 2, {"usage": str(e)}
@@ -1287,25 +1559,29 @@ class Helper:
             pass
 
 
-def save_all(outdir, scale, quiet, formats):
+def save_all(outdir, scale, quiet, formats, hertz_radius=None):
     """Every file is written under a temporary name first and renamed at the end, so that a
     failure leaves no half-written picture and keeps the pictures of an earlier run. With two
     cores or more, two processes draw the figures (about half of the time)."""
+    dimension = contact_dimension(outdir)
+    order = order_of(dimension)
     helper = None
     if cores() >= 2 and hasattr(os, "fork"):
-        helper = Helper(outdir, scale, formats)
+        helper = Helper(outdir, scale, formats, order, hertz_radius)
     written, mine = [], []
     try:
         if helper is None:
-            figures = iter(ORDER)
-            draw(outdir, lambda: next(figures, None), scale, written, formats)
+            figures = iter(order)
+            draw(outdir, lambda: next(figures, None), scale, written, formats,
+                 hertz_radius=hertz_radius)
         else:
-            mine = draw(outdir, helper.next_figure, scale, written, formats)
+            mine = draw(outdir, helper.next_figure, scale, written, formats,
+                        hertz_radius=hertz_radius)
             waiting, helper = helper, None
             try:
                 theirs = waiting.finish()
             except BaseException:  # what it wrote before its error goes
-                written += waiting.temporaries([n for n in ORDER if n not in mine])
+                written += waiting.temporaries([n for n in order if n not in mine])
                 raise
             written += waiting.temporaries(theirs)
         for tmp, final in written:
@@ -1315,13 +1591,14 @@ def save_all(outdir, scale, quiet, formats):
     finally:
         if helper is not None:  # an error here: the helper's work is of no use
             helper.stop()
-            written += helper.temporaries([n for n in ORDER if n not in mine])
+            written += helper.temporaries([n for n in order if n not in mine])
         for tmp, _ in written:
             if os.path.exists(tmp):
                 os.unlink(tmp)
     if not quiet:
         print("figures: " + ", ".join(os.path.join(outdir, f"{n}.{fmt}")
-                                      for n in FIGURES for fmt in formats))
+                                      for n in (FIGURES_3D if dimension == 3 else FIGURES)
+                                      for fmt in formats))
 
 
 def main(argv):
@@ -1333,6 +1610,10 @@ def main(argv):
     parser.add_argument("--format", default=DEFAULT_FORMATS,
                         help="the formats of the figures: png, svg, pdf, or several separated by "
                              f"commas (default: {DEFAULT_FORMATS})")
+    parser.add_argument("--hertz-radius", type=float, default=None, metavar="R",
+                        help="3D: draw Hertz's pressure profile for a sphere of radius R (the "
+                             "body's, pressed onto a rigid plane; default: the radius of a rigid "
+                             "sphere obstacle, if there is one)")
     parser.add_argument("--quiet", action="store_true", help="print nothing but errors")
     parser.add_argument("--check", action="store_true",
                         help="only check that numpy and matplotlib are installed")
@@ -1348,8 +1629,11 @@ def main(argv):
             raise UsageError(f"--scale {args.scale}: expected a positive number")
         if not os.path.isdir(args.outdir):
             raise UsageError(f"'{args.outdir}' is not a folder")
+        if args.hertz_radius is not None and not (math.isfinite(args.hertz_radius) and
+                                                  args.hertz_radius > 0):
+            raise UsageError(f"--hertz-radius {args.hertz_radius}: expected a positive number")
         check_results(args.outdir)
-        save_all(args.outdir, args.scale, args.quiet, formats)
+        save_all(args.outdir, args.scale, args.quiet, formats, args.hertz_radius)
     except UsageError as e:
         fail(2, e)
     return 0

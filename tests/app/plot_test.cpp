@@ -5,15 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 #include <regex>
 
 #include "app/tool_run.hpp"
 #include "io/expect_contains.hpp"
+#include "signorini/signorini.hpp"
 
 namespace signorini {
 namespace {
@@ -387,6 +390,82 @@ TEST(Plot, MissingPythonIsExitStatus2) {
   EXPECT_EQ(r.err,
             "signorini: error: plotting: SIGNORINI_PYTHON = '/no/such/python3' is not an "
             "executable file: expected a Python 3 interpreter with numpy and matplotlib\n");
+}
+
+// A 3D problem (results written through the library, as the tool writes them): the pressure map,
+// the pressure through the centre of the contact zone with Hertz's profile for the rigid sphere
+// (its a and p0 from the computed contact force, checked here against the formula), and the
+// convergence; the tool lists the 3D figures. --hertz-radius overrides the sphere's radius.
+TEST(Plot, ThreeDimensionalResultsWithHertzsProfile) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const testing::TemporaryFolder dir;
+  ProblemSpec spec;
+  spec.name = "ball";
+  spec.units = "m-MPa";
+  spec.mesh_type = MeshType::Box;
+  spec.box.height = 0.5;
+  spec.box.nx = spec.box.ny = 12;
+  spec.box.nz = 4;
+  const double E = 1000.0, nu = 0.3, R = 2.0;
+  spec.elasticity.material = {E, nu};
+  spec.clamps = {{"zmax", {true, true, true}}};
+  ContactSpec ball;
+  ball.boundary = "zmin";
+  ball.obstacle.shape = ObstacleShape::Disc;  // a sphere in 3D
+  ball.obstacle.radius = R;
+  ball.obstacle.centre = Eigen::Vector3d(0.5, 0.5, -R + 4e-3);
+  spec.contacts = {ball};
+  const Model model = build_model(spec);
+  const ContactResult result = solve_contact(model.problem, spec.solver);
+  ASSERT_TRUE(result.summary.converged());
+  const fs::path out = dir / "out";
+  write_results(out, result, model, spec);
+
+  const ToolRun r = run_tool(dir, "plot " + quoted(out.string()) + " --format svg");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> names = {"contact_pressure_map", "contact_pressure",
+                                          "convergence"};
+  std::string listed;
+  for (const std::string& name : names) {
+    EXPECT_TRUE(fs::exists(out / (name + ".svg"))) << name;
+    listed += (listed.empty() ? "" : ", ") + (out / (name + ".svg")).string();
+  }
+  EXPECT_CONTAINS(r.out, "figures: " + listed + "\n");
+  EXPECT_FALSE(fs::exists(out / "deformed_von_mises.svg"));  // 2D only
+
+  // The map is zoomed onto the contact zone around (0.5, 0.5), about 0.1 m in radius.
+  const std::optional<Limits> map =
+      axes_limits(testing::read_text(out / "contact_pressure_map.svg"));
+  ASSERT_TRUE(map);
+  EXPECT_LT(map->x0, 0.45);
+  EXPECT_GT(map->x0, 0.2);
+  EXPECT_GT(map->x1, 0.55);
+  EXPECT_LT(map->x1, 0.8);
+
+  // Hertz: a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2) with the computed force.
+  const double F = result.summary.contact_force;
+  const double a = std::cbrt(3.0 * F * R / (4.0 * E / (1.0 - nu * nu)));
+  const double p0 = 3.0 * F / (2.0 * std::numbers::pi * a * a);
+  const auto hertz_of = [](const std::string& svg) -> std::pair<double, double> {
+    static const std::regex pattern(R"(hertz: a ([-+.0-9eE]+), p0 ([-+.0-9eE]+))");
+    std::smatch m;
+    if (!std::regex_search(svg, m, pattern)) return {0.0, 0.0};
+    return {std::stod(m[1]), std::stod(m[2])};
+  };
+  const std::string profile = testing::read_text(out / "contact_pressure.svg");
+  const auto [a_drawn, p0_drawn] = hertz_of(profile);
+  EXPECT_NEAR(a_drawn, a, 1e-5 * a);
+  EXPECT_NEAR(p0_drawn, p0, 1e-5 * p0);
+  // The computed peak is Hertz's within this coarse mesh's accuracy, and the zone as wide.
+  EXPECT_NEAR(result.l.maxCoeff(), p0, 0.15 * p0);
+
+  const ToolRun other =
+      run_tool(dir, "plot " + quoted(out.string()) + " --format svg --hertz-radius 4");
+  ASSERT_EQ(other.status, 0) << other.err;
+  EXPECT_NEAR(hertz_of(testing::read_text(out / "contact_pressure.svg")).first,
+              std::cbrt(3.0 * F * 4.0 / (4.0 * E / (1.0 - nu * nu))), 1e-5 * a);
+  const ToolRun bad = run_tool(dir, "plot " + quoted(out.string()) + " --hertz-radius -1");
+  EXPECT_EQ(bad.status, 2);
 }
 
 }  // namespace
