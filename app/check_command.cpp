@@ -20,6 +20,7 @@ int run_check(const CheckArguments& args) {
     fmt::print("device: {}\n", backend->description());
   }
   fmt::print("mesh: {}\n", mesh_description(model.mesh));
+  fmt::print("solver path: {}\n", model.solver_reason);
   fmt::print("ok: {} dofs, {} contact nodes\n", model.dofs.num_dofs(),
              model.problem.contact.size());
   return kSuccess;

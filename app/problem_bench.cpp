@@ -20,7 +20,6 @@ int run_problem_bench(const ProblemBenchOptions& options) {
   const LoadedProblem loaded = read_problem_file(options.file);
   for (const std::string& w : loaded.warnings) fmt::print(stderr, "signorini: warning: {}\n", w);
   const ProblemSpec& spec = loaded.spec;
-  const ContactSolverOptions& solver = spec.solver;
 
   // In this process: the model, the contact solve, and the yardstick, one linear solve of the
   // same A and b with the same linear solver (analysis, factorisation, solve: what a solve of
@@ -39,7 +38,8 @@ int run_problem_bench(const ProblemBenchOptions& options) {
     best_build = std::min(best_build, model.timings.total());
     dofs = model.dofs.num_dofs();
     contact_nodes = model.problem.contact.size();
-    if (dofs > 2000000) repeats = 2;  // minutes otherwise
+    if (dofs > 2000000) repeats = 2;                    // minutes otherwise
+    const ContactSolverOptions& solver = model.solver;  // the path planned from the size
     const ContactResult result = solve_contact(model.problem, solver, &model.multigrid);
     best_contact = std::min(best_contact, result.summary.timings.seconds("contact solve"));
     converged = converged && result.summary.converged();
@@ -71,8 +71,8 @@ int run_problem_bench(const ProblemBenchOptions& options) {
   }
 
   fmt::print("{}: {} unknowns, {} contact nodes; {} ({}), best of {} (whole process: {})\n",
-             options.file, dofs, contact_nodes, enum_to_string(kContactMethodNames, solver.method),
-             path, repeats, child_repeats);
+             options.file, dofs, contact_nodes,
+             enum_to_string(kContactMethodNames, spec.solver.method), path, repeats, child_repeats);
   fmt::print("  {:<44} {:>9}  {:>8}\n", "", "seconds", "ratio");
   fmt::print("  {:<44} {:>9.3f}  {:>8}\n", "one linear solve (analyse, factorise, solve)",
              best_linear, "1");
@@ -86,7 +86,7 @@ int run_problem_bench(const ProblemBenchOptions& options) {
     const nlohmann::json j = {{"file", options.file},
                               {"n_dofs", dofs},
                               {"n_contact_nodes", contact_nodes},
-                              {"method", enum_to_string(kContactMethodNames, solver.method)},
+                              {"method", enum_to_string(kContactMethodNames, spec.solver.method)},
                               {"path", path},
                               {"repeats", repeats},
                               {"converged", converged},

@@ -94,8 +94,10 @@ int solve(const SolveArguments& args, LogFormat format) {
   create_output_folder(args.output_dir);
 
   progress.phase("contact solve");
-  spec.solver.observer = [&progress](const IterationEvent& e) { progress.iteration(e); };
-  const ContactResult result = solve_contact(model.problem, spec.solver, &model.multigrid);
+  ContactSolverOptions solver = model.solver;  // the path planned from the problem's size
+  solver.observer = [&progress](const IterationEvent& e) { progress.iteration(e); };
+  ContactResult result = solve_contact(model.problem, solver, &model.multigrid);
+  result.summary.path_reason = model.solver_reason;
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
   // Once, for the report, the log and summary.json.

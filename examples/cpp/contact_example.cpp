@@ -20,7 +20,9 @@ int main(int argc, char** argv) {
     spec.solver.method = signorini::ContactMethod::UzawaGnm;
 
     const signorini::Model model = signorini::build_model(spec);  // mesh, A, b, contact boundary
-    const signorini::ContactResult result = signorini::solve_contact(model.problem, spec.solver);
+    // model.solver: spec.solver with the path planned from the problem's size (docs/solvers.md).
+    const signorini::ContactResult result =
+        signorini::solve_contact(model.problem, model.solver, &model.multigrid);
     const signorini::SolveSummary& s = result.summary;
 
     std::printf("signorini %s: %s after %d Uzawa steps, J(u) = %.10e, %d active contact nodes\n",

@@ -22,4 +22,5 @@
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/problem_spec.hpp"
 #include "signorini/problem/resultants.hpp"
+#include "signorini/problem/solver_plan.hpp"
 #include "signorini/problem/unit_system.hpp"

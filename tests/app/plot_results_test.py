@@ -257,7 +257,8 @@ class TwoProcessesTest(unittest.TestCase):
 
         here = os.getpid()
 
-        def fake_draw(outdir, next_figure, scale, written, formats, warnings=True):
+        def fake_draw(outdir, next_figure, scale, written, formats, warnings=True,
+                      hertz_radius=None):
             if os.getpid() == here:
                 time.sleep(0.3)
                 if fails == "here":

@@ -250,7 +250,8 @@ TEST(SignoriniApp, Check) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out,
             "mesh: 1281 nodes, 1200 cells (quad4: 1200); boundary parts: bottom (61 nodes), left "
-            "(21 nodes), right (21 nodes), top (61 nodes)\nok: 2562 dofs, 61 contact nodes\n");
+            "(21 nodes), right (21 nodes), top (61 nodes)\nsolver path: condensed direct: 61 "
+            "contact nodes, a dense matrix of about 119 kB\nok: 2562 dofs, 61 contact nodes\n");
   r = run_tool(dir, "check " + kSmall + " --set mesh.nx=0");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "signorini: error: " SIGNORINI_EXAMPLES_DIR

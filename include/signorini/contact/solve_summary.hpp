@@ -84,6 +84,8 @@ inline constexpr EnumNames<SolvePath, 4> kSolvePathNames{{
 struct SolveSummary {
   ContactMethod method = ContactMethod::UzawaGnm;
   SolvePath path = SolvePath::CondensedDirect;  ///< how it was solved
+  /// Why that path (SolverPlan::reason, set by the caller that planned it); empty: not said.
+  std::string path_reason;
   bool warm_started = false;  ///< started from an earlier solution (ContactSolver::warm_start)
   Termination termination = Termination::Converged;
   std::string message;                 ///< one line: why it stopped, with the residuals

@@ -40,6 +40,10 @@ struct Model {
   /// options ask for multigrid; empty otherwise. A set-up argument of the solver
   /// (solve_contact(model.problem, options, &model.multigrid)), not part of the problem.
   MultigridHierarchy multigrid;
+  /// The solver options to solve with: the spec's, with the path chosen from the problem's size
+  /// when spec.solver.automatic_path is set (solver_plan.hpp), and why.
+  ContactSolverOptions solver;
+  std::string solver_reason;
   TimingTable timings;  ///< "mesh", "assembly", "loads", "contact set", "multigrid hierarchy"
   ElasticityOptions elasticity;
   /// Every applied load (tractions, body force, point loads) on the full dofs; problem.b is its

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "signorini/core/error.hpp"
+#include "signorini/core/peak_memory.hpp"
 #include "signorini/fem/contact_boundary.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
@@ -13,6 +14,7 @@
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
+#include "signorini/problem/solver_plan.hpp"
 
 namespace signorini {
 
@@ -288,19 +290,25 @@ Model build_model(const ProblemSpec& spec) {
       contact_starts.push_back(problem.contact.size());
     }
   }
+  // The solver path from the problem's size (solver_plan.hpp), before the hierarchy that it may
+  // call for.
+  const SolverPlan plan =
+      plan_solver(spec.solver, ProblemSize{mesh.dim(), mesh.num_nodes(), dofs.num_free(),
+                                           problem.contact.size(), physical_memory_bytes()});
   MultigridHierarchy multigrid;
-  const LinearSolverOptions& linear = spec.solver.linear;
+  const LinearSolverOptions& linear = plan.options.linear;
   if (linear.type == LinearSolverType::ConjugateGradient &&
       linear.preconditioner == PreconditionerType::Multigrid) {
     ScopedTimer t(timings, "multigrid hierarchy");
+    // (The plan changes neither the coarsening nor the smoother, which the hierarchy reads from
+    // the spec.)
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, owner);
-  return Model{std::move(mesh),          std::move(dofs),
-               std::move(problem),       std::move(multigrid),
-               std::move(timings),       elasticity,
-               std::move(loads),         std::move(clamps),
-               std::move(placed),        std::move(contact_boundaries),
+  return Model{std::move(mesh),          std::move(dofs),   std::move(problem),
+               std::move(multigrid),     plan.options,      plan.reason,
+               std::move(timings),       elasticity,        std::move(loads),
+               std::move(clamps),        std::move(placed), std::move(contact_boundaries),
                std::move(contact_starts)};
 }
 

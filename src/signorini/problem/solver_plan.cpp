@@ -1,0 +1,77 @@
+#include "signorini/problem/solver_plan.hpp"
+
+#include <fmt/format.h>
+
+namespace signorini {
+
+namespace {
+
+std::string gigabytes(double bytes) {
+  if (bytes >= 1e9) return fmt::format("{:.1f} GB", bytes / 1e9);
+  if (bytes >= 1e6) return fmt::format("{:.0f} MB", bytes / 1e6);
+  return fmt::format("{:.0f} kB", bytes / 1e3);
+}
+
+std::string thousands(Index n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+double estimated_factor_bytes(const ProblemSize& size) {
+  return size.dimension == 3 ? 25e3 * static_cast<double>(size.free_unknowns)
+                             : 4096.0 * static_cast<double>(size.nodes);
+}
+
+SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& size) {
+  SolverPlan plan{given, {}};
+  ContactSolverOptions& o = plan.options;
+  const auto as_configured = [&](const std::string& why) {
+    plan.reason = fmt::format("as configured ({})", why);
+    return plan;
+  };
+  if (!given.automatic_path) return as_configured("automatic_path = false");
+  if (given.device != DeviceKind::Cpu) return as_configured("a device");
+  if (given.linear.type != LinearSolverType::Cholmod)
+    return as_configured(fmt::format("linear.type = \"{}\"",
+                                     enum_to_string(kLinearSolverTypeNames, given.linear.type)));
+
+  const double factor = estimated_factor_bytes(size);
+  const bool memory_known = size.memory_bytes > 0.0;
+  const auto go_iterative = [&](const std::string& why) {
+    o.linear.type = LinearSolverType::ConjugateGradient;
+    o.linear.preconditioner = PreconditionerType::Multigrid;
+    plan.reason = "iterative, CG with multigrid: " + why;
+    return plan;
+  };
+  if (size.dimension == 3 && size.free_unknowns > kIterativeFromUnknowns3D)
+    return go_iterative(
+        fmt::format("3D with {} free unknowns, above {}, where a sparse factorisation costs more",
+                    thousands(size.free_unknowns), thousands(kIterativeFromUnknowns3D)));
+  if (memory_known && factor > 0.5 * size.memory_bytes)
+    return go_iterative(
+        fmt::format("a sparse factor of about {} would exceed half of the {} of "
+                    "this machine",
+                    gigabytes(factor), gigabytes(size.memory_bytes)));
+  if (!given.schur_complement) return as_configured("schur_complement = false");
+  const double nc = static_cast<double>(size.contact_nodes);
+  const double dense = kCondensedBytesPerEntry * nc * nc;
+  if (memory_known && dense > 0.25 * size.memory_bytes) {
+    o.schur_complement = false;
+    plan.reason = fmt::format(
+        "sparse direct: the condensed matrix of {} contact nodes (about {}) would exceed a "
+        "quarter of the {} of this machine",
+        thousands(size.contact_nodes), gigabytes(dense), gigabytes(size.memory_bytes));
+    return plan;
+  }
+  plan.reason = fmt::format("condensed direct: {} contact nodes, a dense matrix of about {}",
+                            thousands(size.contact_nodes), gigabytes(dense));
+  return plan;
+}
+
+}  // namespace signorini

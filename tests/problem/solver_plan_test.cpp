@@ -1,0 +1,121 @@
+// The solver path chosen from the problem's size and the machine's memory (solver_plan.hpp), and
+// through build_model: the path a 3D problem above the threshold solves on, and its answer
+// against the direct path's.
+
+#include "signorini/problem/solver_plan.hpp"
+
+#include <gtest/gtest.h>
+
+#include "io/expect_contains.hpp"
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini {
+namespace {
+
+constexpr double kGB = 1e9;
+
+TEST(SolverPlan, TwoDimensionalProblemsStayCondensedWhileTheyFit) {
+  const ContactSolverOptions given;
+  // The paper's 960x320 mesh: 309,123 nodes, 617,604 free unknowns, 961 contact nodes.
+  const SolverPlan plan = plan_solver(given, {2, 309123, 617604, 961, 24 * kGB});
+  EXPECT_EQ(plan.options.linear.type, LinearSolverType::Cholmod);
+  EXPECT_TRUE(plan.options.schur_complement);
+  EXPECT_CONTAINS(plan.reason,
+                  "condensed direct: 961 contact nodes, a dense matrix of about 30 MB");
+}
+
+TEST(SolverPlan, ACondensedMatrixThatDoesNotFitGoesSparseDirect) {
+  // 50,000 contact nodes: 32 * 50,000^2 bytes = 80 GB of dense matrices.
+  const SolverPlan plan = plan_solver(ContactSolverOptions{}, {2, 400000, 800000, 50000, 24 * kGB});
+  EXPECT_EQ(plan.options.linear.type, LinearSolverType::Cholmod);
+  EXPECT_FALSE(plan.options.schur_complement);
+  EXPECT_CONTAINS(plan.reason,
+                  "sparse direct: the condensed matrix of 50,000 contact nodes "
+                  "(about 80.0 GB) would exceed a quarter of the 24.0 GB");
+  // Unknown memory: no memory rule.
+  EXPECT_TRUE(plan_solver(ContactSolverOptions{}, {2, 400000, 800000, 50000, 0.0})
+                  .options.schur_complement);
+}
+
+TEST(SolverPlan, LargeThreeDimensionalProblemsGoIterative) {
+  const SolverPlan small =
+      plan_solver(ContactSolverOptions{}, {3, 9000, kIterativeFromUnknowns3D, 600, 24 * kGB});
+  EXPECT_EQ(small.options.linear.type, LinearSolverType::Cholmod);
+  const SolverPlan large =
+      plan_solver(ContactSolverOptions{}, {3, 20000, kIterativeFromUnknowns3D + 1, 900, 24 * kGB});
+  EXPECT_EQ(large.options.linear.type, LinearSolverType::ConjugateGradient);
+  EXPECT_EQ(large.options.linear.preconditioner, PreconditionerType::Multigrid);
+  EXPECT_CONTAINS(large.reason, "iterative, CG with multigrid: 3D with 30,001 free unknowns");
+  EXPECT_TRUE(uses_backend_path(large.options));
+}
+
+TEST(SolverPlan, AFactorThatDoesNotFitGoesIterativeIn2D) {
+  // 4 KB per node: 4 million nodes, 16 GB, more than half of 24 GB.
+  const SolverPlan plan =
+      plan_solver(ContactSolverOptions{}, {2, 4000000, 8000000, 4000, 24 * kGB});
+  EXPECT_EQ(plan.options.linear.type, LinearSolverType::ConjugateGradient);
+  EXPECT_CONTAINS(plan.reason, "a sparse factor of about 16.4 GB would exceed half of the 24.0 GB");
+}
+
+TEST(SolverPlan, WhatTheUserChoseStays) {
+  ContactSolverOptions off;
+  off.automatic_path = false;
+  SolverPlan plan = plan_solver(off, {3, 1000000, 3000000, 20000, 24 * kGB});
+  EXPECT_EQ(plan.options.linear.type, LinearSolverType::Cholmod);
+  EXPECT_TRUE(plan.options.schur_complement);
+  EXPECT_EQ(plan.reason, "as configured (automatic_path = false)");
+
+  ContactSolverOptions cg;
+  cg.linear.type = LinearSolverType::ConjugateGradient;  // the paper's Jacobi CG
+  plan = plan_solver(cg, {3, 1000000, 3000000, 20000, 24 * kGB});
+  EXPECT_EQ(plan.options.linear.preconditioner, PreconditionerType::Jacobi);
+  EXPECT_EQ(plan.reason, "as configured (linear.type = \"cg\")");
+
+  ContactSolverOptions plain;
+  plain.schur_complement = false;
+  plan = plan_solver(plain, {2, 1000, 2000, 50, 24 * kGB});
+  EXPECT_FALSE(plan.options.schur_complement);
+  EXPECT_EQ(plan.reason, "as configured (schur_complement = false)");
+}
+
+// Through build_model: a ball pressed into a block of 35,000 free unknowns is planned onto CG
+// with multigrid (its hierarchy built), and solves to the direct path's answer.
+TEST(SolverPlan, BuildModelPlansAndBuildsTheHierarchy) {
+  ProblemSpec spec;
+  spec.mesh_type = MeshType::Box;
+  spec.box.height = 0.5;
+  spec.box.nx = spec.box.ny = 28;
+  spec.box.nz = 14;
+  spec.elasticity.material = {1000.0, 0.3};
+  spec.clamps = {{"zmax", {true, true, true}}};
+  ContactSpec ball;
+  ball.boundary = "zmin";
+  ball.obstacle.shape = ObstacleShape::Disc;
+  ball.obstacle.radius = 2.0;
+  ball.obstacle.centre = Eigen::Vector3d(0.5, 0.5, -2.0 + 4e-3);
+  spec.contacts = {ball};
+  spec.solver.uzawa_tolerance = 1e-10;
+  const Model model = build_model(spec);
+  ASSERT_GT(model.dofs.num_free(), kIterativeFromUnknowns3D);
+  EXPECT_EQ(model.solver.linear.type, LinearSolverType::ConjugateGradient);
+  EXPECT_FALSE(model.multigrid.prolongations.empty());
+  EXPECT_CONTAINS(model.solver_reason, "iterative");
+  const ContactResult iterative = solve_contact(model.problem, model.solver, &model.multigrid);
+  ASSERT_TRUE(iterative.summary.converged());
+  EXPECT_EQ(iterative.summary.path, SolvePath::Backend);
+  EXPECT_GT(iterative.summary.num_active, 0);
+
+  spec.solver.automatic_path = false;
+  const Model direct_model = build_model(spec);
+  EXPECT_EQ(direct_model.solver.linear.type, LinearSolverType::Cholmod);
+  EXPECT_TRUE(direct_model.multigrid.prolongations.empty());
+  const ContactResult direct = solve_contact(direct_model.problem, direct_model.solver);
+  EXPECT_EQ(direct.summary.path, SolvePath::CondensedDirect);
+  EXPECT_EQ(direct.summary.num_active, iterative.summary.num_active);
+  EXPECT_LT((direct.l - iterative.l).norm(), 1e-7 * direct.l.norm());
+  EXPECT_LT((direct.u - iterative.u).norm(), 1e-7 * direct.u.norm());
+}
+
+}  // namespace
+}  // namespace signorini
