@@ -74,7 +74,8 @@ TEST(GmshMesh, BadMeshFilesAreOneLine) {
   // Rectangle keys with a Gmsh mesh, and a Gmsh mesh without its file.
   r = check(write("c.toml", "[mesh]\ntype = \"gmsh\"\nfile = \"x.msh\"\nnx = 4\n" + rest));
   EXPECT_EQ(r.status, 2);
-  EXPECT_CONTAINS(r.err, "c.toml:4: mesh.nx applies with type = \"rectangle\" only; remove it\n");
+  EXPECT_CONTAINS(
+      r.err, "c.toml:4: mesh.nx applies with type = \"rectangle\" or \"box\" only; remove it\n");
   r = check(write("d.toml", "[mesh]\ntype = \"gmsh\"\n" + rest));
   EXPECT_EQ(r.status, 2);
   EXPECT_CONTAINS(r.err, "missing required key 'mesh.file'");

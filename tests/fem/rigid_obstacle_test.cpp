@@ -107,15 +107,20 @@ TEST(RigidObstacle, ProblemFileKeys) {
   EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"sphere\"\n"),
             "t.toml:13: contact.obstacle = \"sphere\": expected \"gap\", \"plane\", \"disc\" or "
             "\"cylinder\"");
-  // The cylinder is a 3D obstacle, built through the library so far.
-  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"cylinder\"\n"),
-            "t.toml:13: contact.obstacle = \"cylinder\": a 3D obstacle, not readable from problem "
-            "files yet (the library builds it: RigidObstacle); in 2D a disc is a cylinder's "
-            "section");
+  // The cylinder is a 3D obstacle: in 2D its section, a disc, stands for it.
+  EXPECT_EQ(
+      error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"cylinder\"\n"),
+      "t.toml:13: key 'contact.obstacle' gives a cylinder (3D problems only), but the mesh is "
+      "2D (mesh.type = \"rectangle\"): expected obstacle = \"disc\" (the cylinder's "
+      "section)");
   EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"plane\"\npoint = [0, 0]\n"
                      "normal = [0, 1]\nradius = 2\n"),
-            "t.toml:16: contact.radius applies with obstacle = \"disc\" only; this obstacle is "
-            "\"plane\"");
+            "t.toml:16: contact.radius applies with obstacle = \"disc\" or \"cylinder\" only; "
+            "this obstacle is \"plane\"");
+  EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"disc\"\ncentre = [1, -1]\n"
+                     "radius = 1\naxis = [0, 0, 1]\n"),
+            "t.toml:16: contact.axis applies with obstacle = \"cylinder\" only; this obstacle is "
+            "\"disc\"");
   EXPECT_EQ(error_of("[contact]\nboundary = \"bottom\"\nobstacle = \"disc\"\ncentre = [0, 0]\n"
                      "radius = -1\n"),
             "t.toml:15: key 'contact.radius' = -1.0: expected a positive number");

@@ -91,7 +91,10 @@ TEST(Options, WordsOfKindsAndRanges) {
   EXPECT_EQ(type_words(*solver.find("schur_complement")), "boolean");
   EXPECT_EQ(type_words(*linear_solver_option_table().find("chebyshev_degree")),
             "integer in [1, 50]");
-  EXPECT_EQ(type_words(*mesh_options().find("origin")), "array of 2 numbers");
+  EXPECT_EQ(type_words(*mesh_options().find("origin")),
+            "array of 2 numbers (rectangle) or 3 (box)");
+  EXPECT_EQ(expected_words(*mesh_options().find("origin")),
+            "an array of 2 numbers (rectangle) or 3 (box)");
   EXPECT_FALSE(positive().contains(0.0));
   EXPECT_FALSE(positive().contains(std::numeric_limits<double>::infinity()));
   EXPECT_FALSE(at_least(0.0).contains(std::nan("")));
@@ -127,14 +130,23 @@ TEST(Options, EveryOptionCanBeSet) {
     for (const OptionInfo& o : table->options) {
       const std::string key = table->full_key(o.key);
       // mesh.type = "gmsh" needs a file, and the keys of a Gmsh mesh apply to it alone (read by
-      // tests/app/gmsh_mesh_test.cpp); here the mesh stays a rectangle.
+      // tests/app/gmsh_mesh_test.cpp); here the mesh stays a rectangle, but for the box's own
+      // keys, set on a box.
       if (key == "mesh.type" || o.condition == "type = \"gmsh\"") continue;
       const std::optional<OptionValue> v = testing::other_value(o, key);
       if (!v) continue;
-      EXPECT_EQ(error_of({key + "=" + toml_value_text(*v)}), "no error") << key;
+      const std::vector<std::string> box = {"mesh.type=\"box\"", "mesh.width=1", "mesh.nz=1",
+                                            "mesh.cell=\"hex8\""};
+      std::vector<std::string> overrides =
+          o.condition == "type = \"box\"" ? box : std::vector<std::string>{};
+      overrides.push_back(key + "=" + toml_value_text(*v));
+      EXPECT_EQ(error_of(overrides), "no error") << key;
       ++count;
     }
   EXPECT_GE(count, 25);
+  EXPECT_EQ(error_of({"mesh.type=\"box\"", "mesh.width=1", "mesh.nz=1", "mesh.cell=\"tet10\"",
+                      "mesh.origin=[1, 2, 3]"}),
+            "no error");
   // An option where it does not apply is refused with its condition.
   EXPECT_EQ(error_of({"mesh.file=\"x.msh\""}),
             "t.toml: mesh.file applies with type = \"gmsh\" only; remove it");
@@ -152,7 +164,12 @@ TEST(Options, EveryRangeIsCheckedByTheReader) {
       const std::string value = o.kind == OptionKind::Integer
                                     ? std::to_string(static_cast<long long>(outside))
                                     : toml_float(outside);
-      const std::string m = error_of({key + "=" + value});
+      // The box's own keys on a box (whose other keys the rectangle's file has, but these).
+      std::vector<std::string> overrides;
+      if (o.condition == "type = \"box\"")
+        overrides = {"mesh.type=\"box\"", "mesh.width=1", "mesh.nz=1", "mesh.cell=\"hex8\""};
+      overrides.push_back(key + "=" + value);
+      const std::string m = error_of(overrides);
       if (table->path == "material") {
         EXPECT_EQ(m.rfind("t.toml: " + key + " = ", 0), 0U) << m;
       } else {
@@ -194,10 +211,15 @@ TEST(Options, MarkdownTable) {
   EXPECT_CONTAINS(md, "\\|\\|l^k - l^(k-1)\\|\\|");  // '|' escaped in a cell
   const std::string mesh = option_table_markdown(mesh_options());
   EXPECT_CONTAINS(mesh, "| key | type | unit | default | meaning |");
-  EXPECT_CONTAINS(mesh, "| `origin` | array of 2 numbers | L | `[0.0, 0.0]` | ");
-  EXPECT_CONTAINS(
-      mesh,
-      "| `nx` | integer >= 1 | | required with type = \"rectangle\" | rectangle: cells along x |");
+  EXPECT_CONTAINS(mesh,
+                  "| `origin` | array of 2 numbers (rectangle) or 3 (box) | L | `[0.0, 0.0]` or "
+                  "`[0.0, 0.0, 0.0]` | ");
+  EXPECT_CONTAINS(mesh,
+                  "| `nx` | integer >= 1 | | required with type = \"rectangle\" or \"box\" | cells "
+                  "along x |");
+  EXPECT_CONTAINS(mesh,
+                  "| `nz` | integer >= 1 | | required with type = \"box\" | box: cells "
+                  "along z |");
   EXPECT_EQ(section_title(clamp_options()), "[[clamp]]");
   EXPECT_EQ(section_title(top_level_options()), "top level");
   EXPECT_THROW((void)with_generated_option_tables("no markers"), InputError);

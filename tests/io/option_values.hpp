@@ -39,9 +39,10 @@ inline std::optional<OptionValue> other_value(const OptionInfo& o, const std::st
       return std::nullopt;
     case OptionKind::Text:
       return std::get<std::string>(d) + "_other";
-    case OptionKind::Pair: {
-      const auto p = std::get<std::array<double, 2>>(d);
-      return std::array<double, 2>{p[0] + 1.0, p[1] - 0.5};
+    case OptionKind::Coordinates: {
+      std::vector<double> v = std::get<std::vector<double>>(d);
+      for (std::size_t k = 0; k < v.size(); ++k) v[k] += k % 2 == 0 ? 1.0 : -0.5;
+      return v;
     }
     case OptionKind::Custom:
       break;

@@ -276,8 +276,10 @@ TEST(ProblemFile, EffectiveSettingsRoundTripEveryOption) {
     for (const OptionInfo& o : table->options) {
       const std::string key = table->full_key(o.key);
       // The kind of mesh stays a rectangle, and the keys of a Gmsh mesh out (the file would
-      // have to exist): tests/app/gmsh_mesh_test.cpp reads those.
-      if (key == "mesh.type" || o.condition == "type = \"gmsh\"") continue;
+      // have to exist): tests/app/gmsh_mesh_test.cpp reads those; the box's own keys are
+      // ProblemFile3D.EffectiveSettingsRoundTrip's.
+      if (key == "mesh.type" || o.condition == "type = \"gmsh\"" || o.condition == "type = \"box\"")
+        continue;
       const std::optional<OptionValue> v = testing::other_value(o, key);
       if (!v) continue;
       overrides.push_back(key + "=" + toml_value_text(*v));
@@ -595,43 +597,319 @@ TEST(ProblemFileOverrides, Errors) {
 namespace signorini {
 namespace {
 
-// The 3D box is built through the library only so far: a problem file asking for it is told so,
-// in one line naming the key, rather than reading further keys as a rectangle's.
-TEST(ProblemFile, BoxMeshIsRefusedUntilTheThreeDimensionalFileArrives) {
-  const std::string m = error_of(with("type = \"rectangle\"", "type = \"box\""));
-  EXPECT_NE(m.find("test.toml:"), std::string::npos) << m;
-  EXPECT_NE(m.find("mesh.type = \"box\": 3D problems are not readable from problem files yet"),
-            std::string::npos)
-      << m;
+// 3D problems ------------------------------------------------------------------------------
+
+// A box on a rigid half-space, every 3D key present (lines as numbered in the messages below).
+const std::string kBox = R"toml(
+name = "box"
+[mesh]
+type = "box"
+origin = [0.0, 0.0, 0.0]
+length = 1.0
+width = 1.0
+height = 0.5
+nx = 2
+ny = 2
+nz = 1
+cell = "hex8"
+[material]
+E = 1000.0
+nu = 0.3
+[[clamp]]
+boundary = "xmin"
+components = ["x"]
+[[clamp]]
+boundary = "ymin"
+components = ["y"]
+[[displacement]]
+boundary = "zmax"
+z = "-0.001*(1 + x)"
+[[traction]]
+boundary = "xmax"
+p = [0, 0, "-0.1*z"]
+[[point_load]]
+at = [1, 1, 0.5]
+force = [0, 0, -0.01]
+[body_force]
+f = [0, 0, -0.01]
+[contact]
+boundary = "zmin"
+obstacle = "plane"
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 0.0, 1.0]
+)toml";
+
+// `text` with `old` (which it must have) replaced.
+std::string replaced(std::string text, const std::string& old, const std::string& replacement) {
+  const auto pos = text.find(old);
+  if (pos == std::string::npos) throw std::logic_error("no '" + old + "' in the text");
+  return text.replace(pos, old.size(), replacement);
 }
 
-}  // namespace
-}  // namespace signorini
+std::string box_with(const std::string& line, const std::string& replacement) {
+  std::string text = kBox;
+  const auto pos = text.find("\n" + line + "\n");
+  if (pos == std::string::npos) throw std::logic_error("kBox has no line '" + line + "'");
+  text.replace(pos + 1, line.size(), replacement);
+  return text;
+}
 
-namespace signorini {
-namespace {
+TEST(ProblemFile3D, BoxReadsIntoTheLibrarySpec) {
+  const LoadedProblem p = parse_problem_string(
+      box_with("origin = [0.0, 0.0, 0.0]", "origin = [1, -2, 0.5]"), "box.toml");
+  const ProblemSpec& s = p.spec;
+  EXPECT_EQ(s.mesh_type, MeshType::Box);
+  EXPECT_EQ(s.box.x0, 1.0);
+  EXPECT_EQ(s.box.y0, -2.0);
+  EXPECT_EQ(s.box.z0, 0.5);
+  EXPECT_EQ(s.box.length, 1.0);
+  EXPECT_EQ(s.box.width, 1.0);
+  EXPECT_EQ(s.box.height, 0.5);
+  EXPECT_EQ(s.box.nx, 2);
+  EXPECT_EQ(s.box.ny, 2);
+  EXPECT_EQ(s.box.nz, 1);
+  EXPECT_EQ(s.box.cell, CellType::Hex8);
+  // The rectangle's fields are left as they were.
+  EXPECT_EQ(s.mesh.nx, RectangleMeshOptions{}.nx);
+  ASSERT_EQ(s.clamps.size(), 2U);
+  EXPECT_EQ(s.clamps[0].components, (std::array<bool, 3>{true, false, false}));
+  EXPECT_EQ(s.clamps[1].components, (std::array<bool, 3>{false, true, false}));
+  ASSERT_EQ(s.displacements.size(), 1U);
+  EXPECT_FALSE(s.displacements[0].values[0]);
+  EXPECT_FALSE(s.displacements[0].values[1]);
+  EXPECT_DOUBLE_EQ(s.displacements[0].values[2](Point(1.0, 0.0, 0.5)), -0.002);
+  EXPECT_EQ(s.tractions[0].p(Point(1.0, 0.5, 0.5)), Eigen::Vector3d(0.0, 0.0, -0.05));
+  EXPECT_EQ(s.point_loads[0].at, Point(1.0, 1.0, 0.5));
+  EXPECT_EQ(s.point_loads[0].force, Eigen::Vector3d(0.0, 0.0, -0.01));
+  EXPECT_EQ(s.body_force(Point(0.0, 0.0, 0.0)), Eigen::Vector3d(0.0, 0.0, -0.01));
+  EXPECT_EQ(s.contacts[0].obstacle.shape, ObstacleShape::Plane);
+  EXPECT_EQ(s.contacts[0].obstacle.normal, Eigen::Vector3d(0.0, 0.0, 1.0));
+  const Model m = build_model(s);
+  EXPECT_EQ(m.mesh.dim(), 3);
+  EXPECT_EQ(m.dofs.num_dofs(), 3 * 3 * 3 * 2);
+  EXPECT_EQ(m.problem.contact.size(), 9);
+}
 
-// Problem files describe 2D problems so far: a 3D mesh file is refused when it is read, in one
-// line naming it, while the library (ProblemSpec left as it is) solves the same mesh.
-TEST(ProblemFile, ThreeDimensionalMeshFileIsRefusedWhenRead) {
+TEST(ProblemFile3D, BoxDefaultsAndOverrides) {
+  // No origin and no cell: the box's own defaults (BoxMeshOptions), not the rectangle's.
+  const std::string text =
+      replaced(box_with("origin = [0.0, 0.0, 0.0]", ""), "cell = \"hex8\"", "");
+  const BoxMeshOptions defaults;
+  LoadedProblem p = parse_problem_string(text, "box.toml");
+  EXPECT_EQ(p.spec.box.cell, defaults.cell);
+  EXPECT_EQ(p.spec.box.z0, defaults.z0);
+  EXPECT_CONTAINS(p.effective_toml, "origin = [0.0, 0.0, 0.0]\n");
+  EXPECT_CONTAINS(p.effective_toml, "cell = \"hex8\"\n");
+  // --set reaches every key of the box.
+  p = parse_problem_string(kBox, "box.toml",
+                           {"mesh.nz=3", "mesh.origin=[1, 2, 3]", "mesh.cell=tet10", "mesh.width=2",
+                            "contact.normal=[0, 1, 1]"});
+  EXPECT_EQ(p.spec.box.nz, 3);
+  EXPECT_EQ(p.spec.box.z0, 3.0);
+  EXPECT_EQ(p.spec.box.cell, CellType::Tet10);
+  EXPECT_EQ(p.spec.box.width, 2.0);
+  EXPECT_EQ(p.spec.contacts[0].obstacle.normal, Eigen::Vector3d(0.0, 1.0, 1.0));
+  EXPECT_CONTAINS(p.effective_toml, "nz = 3\n");
+  EXPECT_CONTAINS(p.effective_toml, "origin = [1.0, 2.0, 3.0]\n");
+  EXPECT_EQ(build_model(p.spec).dofs.num_dofs(), 3 * 5 * 5 * 7);  // tet10: the half-step lattice
+  // A box has no plane model: the effective settings leave it out.
+  EXPECT_EQ(p.effective_toml.find("plane_model"), std::string::npos);
+}
+
+// The effective settings of a 3D problem read back to the same problem: every option of the box
+// away from its default, and every section of formulas and lists with three components.
+TEST(ProblemFile3D, EffectiveSettingsRoundTrip) {
+  std::string text = replaced(kBox, "obstacle = \"plane\"",
+                              "obstacle = \"cylinder\"\ncentre = [0.5, 0, -2]\naxis = [0, 1, 0]\n"
+                              "radius = 2\ninside = false");
+  text = replaced(text, "point = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n", "");
+  text += "[[pressure]]\nboundary = \"ymax\"\np = \"1 + z\"\n";
+  const LoadedProblem p = parse_problem_string(
+      text, "box.toml",
+      {"mesh.origin=[0.5, -0.5, 1]", "mesh.length=2", "mesh.width=1.5", "mesh.height=0.75",
+       "mesh.nx=3", "mesh.ny=4", "mesh.nz=2", "mesh.cell=\"hex27\"",
+       "clamp.0.components=[\"x\", \"z\"]", "displacement.0.y=0.001"});
+  const LoadedProblem again = parse_problem_string(p.effective_toml, "effective.toml");
+  EXPECT_EQ(again.effective_toml, p.effective_toml);
+  const auto values = option_values(p.spec);
+  const auto values_again = option_values(again.spec);
+  ASSERT_EQ(values.size(), values_again.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    EXPECT_EQ(values_again[i].first, values[i].first);
+    EXPECT_TRUE(values_again[i].second == values[i].second)
+        << values[i].first << " = " << toml_value_text(values[i].second) << " read back as "
+        << toml_value_text(values_again[i].second);
+  }
+  const ProblemSpec& s = p.spec;
+  const ProblemSpec& a = again.spec;
+  EXPECT_EQ(a.box.x0, 0.5);
+  EXPECT_EQ(a.box.z0, 1.0);
+  EXPECT_EQ(a.box.cell, CellType::Hex27);
+  ASSERT_EQ(a.clamps.size(), s.clamps.size());
+  for (std::size_t i = 0; i < s.clamps.size(); ++i)
+    EXPECT_EQ(a.clamps[i].components, s.clamps[i].components) << i;
+  EXPECT_EQ(a.clamps[0].components, (std::array<bool, 3>{true, false, true}));
+  EXPECT_EQ(displacement_values(a.displacements[0]), displacement_values(s.displacements[0]));
+  EXPECT_EQ(a.tractions[0].description, s.tractions[0].description);
+  EXPECT_EQ(a.point_loads[0].at, s.point_loads[0].at);
+  EXPECT_EQ(a.point_loads[0].force, s.point_loads[0].force);
+  EXPECT_EQ(a.body_force_description, s.body_force_description);
+  EXPECT_EQ(pressure_values(a.pressures[0]), pressure_values(s.pressures[0]));
+  EXPECT_EQ(contact_values(a.contacts[0], a.contacts[0].description, 3),
+            contact_values(s.contacts[0], s.contacts[0].description, 3));
+  EXPECT_EQ(a.contacts[0].obstacle.axis, Eigen::Vector3d(0.0, 1.0, 0.0));
+  EXPECT_CONTAINS(p.effective_toml, "components = [\"x\", \"z\"]\n");
+  EXPECT_CONTAINS(p.effective_toml, "at = [1.0, 1.0, 0.5]\n");
+  EXPECT_CONTAINS(p.effective_toml, "axis = [0.0, 1.0, 0.0]\n");
+}
+
+// Each 3D example reads back from its effective settings to the same settings, and a Gmsh
+// volume mesh with them: the settings say the dimension by their points.
+TEST(ProblemFile3D, ExamplesRoundTrip) {
+  for (const char* name : {"box_on_plane", "box_on_sphere", "box_on_cylinder", "hertz_sphere"}) {
+    SCOPED_TRACE(name);
+    const LoadedProblem p =
+        read_problem_file(std::string(SIGNORINI_EXAMPLES_DIR) + "/" + name + ".toml");
+    const LoadedProblem again = parse_problem_string(p.effective_toml, p.path);
+    EXPECT_EQ(again.effective_toml, p.effective_toml);
+    EXPECT_EQ(option_values(again.spec), option_values(p.spec));
+    EXPECT_EQ(build_model(again.spec).dofs.num_dofs(), build_model(p.spec).dofs.num_dofs());
+  }
+}
+
+// A Gmsh volume mesh from a problem file: the keys' three components are checked against the
+// mesh when it is read.
+TEST(ProblemFile3D, GmshVolumeMesh) {
   const std::string mesh = SIGNORINI_EXAMPLES_DIR "/gmsh/hertz_sphere_coarse.msh";
   const std::string text = "[mesh]\ntype = \"gmsh\"\nfile = \"" + mesh +
                            "\"\n[material]\nE = 1\nnu = 0.3\n[[clamp]]\nboundary = \"top\"\n"
                            "[contact]\nboundary = \"contact\"\n";
   const LoadedProblem p = parse_problem_string(text, "ball.toml");
+  EXPECT_EQ(p.spec.implied_dimension.dimension, 0);  // nothing said: the mesh decides
+  // A clamp of every component, written so that it holds z too once the mesh is 3D.
+  EXPECT_EQ(p.effective_toml.find("components"), std::string::npos) << p.effective_toml;
+  EXPECT_EQ(build_model(p.spec).mesh.dim(), 3);
+  EXPECT_EQ(build_model(parse_problem_string(p.effective_toml, "again.toml").spec).dofs.num_free(),
+            build_model(p.spec).dofs.num_free());
+  // Keys that disagree with each other are refused when the file is read, naming both (the
+  // tractions are read before the point loads).
+  const std::string both = text +
+                           "[[point_load]]\nat = [0, 0, 1]\nforce = [0, 0, -1]\n"
+                           "[[traction]]\nboundary = \"xsym\"\np = [1, 0]\n";
+  EXPECT_EQ(error_of(both),
+            "test.toml:12: key 'point_load[0].at' gives 3 components (3D problems only), but "
+            "traction[0].p gives 2 components (2D problems only): expected 2 components (x, y)");
+  // Keys that disagree with the mesh, when the model is built.
+  const LoadedProblem flat =
+      parse_problem_string(text + "[[point_load]]\nat = [0, 0]\nforce = [0, -1]\n", "t.toml");
   try {
-    (void)build_model(p.spec);
-    FAIL() << "a 3D mesh was accepted";
+    (void)build_model(flat.spec);
+    FAIL() << "2D points on a 3D mesh were accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "'" + mesh +
-                  "' is a 3D mesh (tetrahedra or hexahedra): problem files describe 2D problems "
-                  "so far (3D problems are solved through the library for now); expected a 2D "
-                  "mesh (gmsh -2)");
+              "point_load[0].at gives 2 components (2D problems only), but "
+              "the mesh '" +
+                  mesh + "' is 3D: expected 3 components (x, y, z)");
   }
-  ProblemSpec library = p.spec;
-  library.three_dimensional_allowed = true;
-  EXPECT_EQ(build_model(library).mesh.dim(), 3);
+}
+
+TEST(ProblemFile3DErrors, BoxKeys) {
+  EXPECT_EQ(error_of(box_with("origin = [0.0, 0.0, 0.0]", "origin = [0.0, 0.0]")),
+            "test.toml:5: key 'mesh.origin' must have 3 entries (x0, y0, z0), got 2");
+  EXPECT_EQ(error_of(with("origin = [0.0, 0.0]", "origin = [0.0, 0.0, 0.0]")),
+            "test.toml:5: key 'mesh.origin' must have 2 entries (x0, y0), got 3");
+  EXPECT_EQ(error_of(box_with("nz = 1", "nz = 0")),
+            "test.toml:11: key 'mesh.nz' = 0: expected an integer >= 1");
+  EXPECT_EQ(error_of(kBox, {"mesh.nz=-2"}),
+            "test.toml: key 'mesh.nz' = -2: expected an integer >= 1");
+  EXPECT_EQ(error_of(box_with("width = 1.0", "width = 0")),
+            "test.toml:7: key 'mesh.width' = 0.0: expected a positive number");
+  EXPECT_EQ(error_of(box_with("nz = 1", "")),
+            "test.toml: missing required key 'mesh.nz' (integer >= 1)");
+  EXPECT_EQ(error_of(box_with("width = 1.0", "")),
+            "test.toml: missing required key 'mesh.width' (number > 0)");
+  EXPECT_CONTAINS(
+      error_of(box_with("cell = \"hex8\"", "cell = \"hex20\"")),
+      "test.toml:12: key 'mesh.cell' must be \"quad4\", \"quad8\", \"quad9\", \"tri3\", "
+      "\"tri6\", \"hex8\", \"hex27\", \"tet4\" or \"tet10\", got 'hex20'");
+  EXPECT_EQ(error_of(box_with("cell = \"hex8\"", "cell = \"quad4\"")),
+            "test.toml:12: key 'mesh.cell' = \"quad4\" is a 2D cell: with type = \"box\" expected "
+            "\"hex8\", \"hex27\", \"tet4\" or \"tet10\"");
+  EXPECT_EQ(error_of(kBase, {"mesh.cell=hex8"}),
+            "test.toml: key 'mesh.cell' = \"hex8\" is a 3D cell: with type = \"rectangle\" "
+            "expected \"quad4\", \"quad8\", \"quad9\", \"tri3\" or \"tri6\"");
+  EXPECT_EQ(error_of(with("nx = 6", "nx = 6\nnz = 2")),
+            "test.toml:9: mesh.nz applies with type = \"box\" only; remove it");
+  EXPECT_EQ(error_of(with("nx = 6", "nx = 6\nwidth = 2.0")),
+            "test.toml:9: mesh.width applies with type = \"box\" only; remove it");
+  EXPECT_EQ(error_of(box_with("nu = 0.3", "nu = 0.3\nplane_model = \"plane_stress\"")),
+            "test.toml:16: material.plane_model applies with a 2D problem (type = \"rectangle\", "
+            "or \"gmsh\" with a 2D mesh) only; remove it");
+}
+
+TEST(ProblemFile3DErrors, PointsAndVectorsHaveThreeComponents) {
+  EXPECT_EQ(error_of(box_with("p = [0, 0, \"-0.1*z\"]", "p = [0, 0]")),
+            "test.toml: key 'traction[0].p' must have 3 entries (x, y and z components), got 2");
+  EXPECT_EQ(error_of(box_with("f = [0, 0, -0.01]", "f = [0, -0.01]")),
+            "test.toml: key 'body_force.f' must have 3 entries (x, y and z components), got 2");
+  EXPECT_EQ(error_of(box_with("at = [1, 1, 0.5]", "at = [1, 1]")),
+            "test.toml:29: key 'point_load[0].at' must have 3 entries (x, y and z), got 2");
+  EXPECT_EQ(error_of(box_with("force = [0, 0, -0.01]", "force = [0, 0, -0.01, 0]")),
+            "test.toml:30: key 'point_load[0].force' must have 3 entries (x, y and z), got 4");
+  EXPECT_EQ(error_of(box_with("point = [0.0, 0.0, 0.0]", "point = [0.0, 0.0]")),
+            "test.toml:36: key 'contact.point' must have 3 entries (x, y and z), got 2");
+  EXPECT_EQ(error_of(box_with("normal = [0.0, 0.0, 1.0]", "normal = [0, 0, 0]")),
+            "test.toml:37: contact.normal = [0, 0, 0]: expected a non-zero vector pointing from "
+            "the obstacle towards the body");
+  EXPECT_EQ(error_of(replaced(box_with("obstacle = \"plane\"",
+                                       "obstacle = \"disc\"\ncentre = [0, 0]\nradius = 1"),
+                              "point = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n", "")),
+            "test.toml:36: key 'contact.centre' must have 3 entries (x, y and z), got 2");
+  // In 2D, as before: a third component is an error.
+  EXPECT_EQ(error_of(kBase + "[[point_load]]\nat = [1, 1, 0]\nforce = [0, -1]\n"),
+            "test.toml:35: key 'point_load[0].at' must have 2 entries (x and y), got 3");
+}
+
+TEST(ProblemFile3DErrors, Cylinder) {
+  const std::string cylinder =
+      "obstacle = \"cylinder\"\ncentre = [0.5, 0, -2]\naxis = [0, 1, 0]\nradius = 2";
+  const std::string text = replaced(box_with("obstacle = \"plane\"", cylinder),
+                                    "point = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n", "");
+  EXPECT_EQ(parse_problem_string(text, "t.toml").spec.contacts[0].obstacle.shape,
+            ObstacleShape::Cylinder);
+  const auto cylinder_with = [&](const std::string& line, const std::string& replacement) {
+    return replaced(text, line, replacement);
+  };
+  EXPECT_EQ(error_of(cylinder_with("axis = [0, 1, 0]", "axis = [0, 0, 0]")),
+            "test.toml:37: contact.axis = [0, 0, 0]: expected a non-zero vector along the "
+            "cylinder's axis");
+  EXPECT_EQ(error_of(cylinder_with("axis = [0, 1, 0]", "axis = [0, 1]")),
+            "test.toml:37: key 'contact.axis' must have 3 entries (x, y and z), got 2");
+  EXPECT_EQ(error_of(cylinder_with("axis = [0, 1, 0]\n", "")),
+            "test.toml: missing required key 'contact.axis' ([ax, ay, az]: the direction of the "
+            "cylinder's axis)");
+  EXPECT_EQ(error_of(cylinder_with("radius = 2", "radius = 0")),
+            "test.toml:38: key 'contact.radius' = 0.0: expected a positive number");
+  EXPECT_EQ(error_of(cylinder_with("centre = [0.5, 0, -2]", "centre = [0.5, 0]")),
+            "test.toml:36: key 'contact.centre' must have 3 entries (x, y and z), got 2");
+}
+
+TEST(ProblemFile3DErrors, TwoDimensionalKeysAreRefusedIn3D) {
+  EXPECT_EQ(
+      error_of(box_with("p = [0, 0, \"-0.1*z\"]", "p = [0, 0, \"-0.1*z\"]\nx_range = [0, 1]")),
+      "test.toml:28: key 'traction[0].x_range' gives a coordinate range (2D problems only), "
+      "but the mesh is 3D (mesh.type = \"box\"): expected no range (not supported on 3D "
+      "boundary parts yet): make the loaded part a boundary part of its own");
+  EXPECT_EQ(error_of(box_with("z = \"-0.001*(1 + x)\"", "normal = -0.001")),
+            "test.toml:24: key 'displacement[0].normal' gives a normal displacement (2D problems "
+            "only), but the mesh is 3D (mesh.type = \"box\"): expected the components x, y and z "
+            "(a normal displacement is not supported in 3D yet)");
+  EXPECT_EQ(error_of(box_with("components = [\"x\"]", "components = [\"x\", \"w\"]")),
+            "test.toml: key 'clamp[0].components[1]' must be \"x\", \"y\" or \"z\", got 'w'");
+  // And the 3D keys in 2D.
+  EXPECT_EQ(error_of(kBase + "[[displacement]]\nboundary = \"top\"\nz = 0.1\n"),
+            "test.toml:36: key 'displacement[0].z' gives component z (3D problems only), but the "
+            "mesh is 2D (mesh.type = \"rectangle\"): expected x and y only");
 }
 
 }  // namespace

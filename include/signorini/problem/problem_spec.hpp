@@ -81,8 +81,8 @@ struct RegionMaterialSpec {
   IsotropicMaterial material;
 };
 
-/// Where the mesh comes from. Box (3D) is built through the library so far; problem files
-/// refuse it with a message until the 3D problem file arrives.
+/// Where the mesh comes from: the structured rectangle (2D), a Gmsh file (2D or 3D), the
+/// structured box (3D).
 enum class MeshType { Rectangle, Gmsh, Box };
 
 inline constexpr EnumNames<MeshType, 3> kMeshTypeNames{{
@@ -90,6 +90,18 @@ inline constexpr EnumNames<MeshType, 3> kMeshTypeNames{{
     {MeshType::Gmsh, "gmsh"},
     {MeshType::Box, "box"},
 }};
+
+/// The dimension that a key of a problem file implies: a point or vector of 3 numbers, component
+/// z or a cylinder a 3D problem; x_range a 2D one. A file on a Gmsh mesh cannot know the mesh's
+/// dimension before the mesh is read, so its reader records the first key that implies one
+/// (later keys must agree with it), and build_model checks it against the mesh, in one line
+/// naming the key. (With a rectangle or a box the reader checks every key itself.)
+struct ImpliedDimension {
+  int dimension = 0;    ///< 2 or 3; 0: no key implied one
+  std::string key;      ///< "traction[0].p"
+  std::string given;    ///< what the key gives: "3 components"
+  std::string instead;  ///< what a problem of the other dimension expects: "2 components (x, y)"
+};
 
 struct ProblemSpec {
   std::string name = "problem";
@@ -103,10 +115,9 @@ struct ProblemSpec {
   /// The .msh file (or a .geo file, meshed by the gmsh program) for mesh_type = Gmsh; the
   /// problem-file reader makes a relative path relative to the problem file's folder.
   std::string mesh_file;
-  /// False for problems read from files, which describe 2D problems so far: a 3D mesh file is
-  /// then refused when it is read (build_model), not after its model is built. The library
-  /// (box meshes, Gmsh volume meshes) leaves it true.
-  bool three_dimensional_allowed = true;
+  /// What a problem file's keys say the dimension is, for build_model to check against the
+  /// mesh (ImpliedDimension). Empty in specs built in C++.
+  ImpliedDimension implied_dimension;
   ElasticityOptions elasticity;  ///< `material` is that of every cell not in region_materials
   std::vector<RegionMaterialSpec> region_materials;
   int boundary_gauss_points = 2;  ///< Gauss points per boundary facet for tractions

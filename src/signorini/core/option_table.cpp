@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -73,8 +74,8 @@ std::string expected_words(const OptionInfo& o) {
       return choices_words(o.choices, false);
     case OptionKind::Text:
       return "a string";
-    case OptionKind::Pair:
-      return "an array of 2 numbers";
+    case OptionKind::Coordinates:
+      return "an " + o.type_text;
     case OptionKind::Custom:
       break;
   }
@@ -99,8 +100,8 @@ std::string type_words(const OptionInfo& o, bool markdown) {
       return choices_words(o.choices, markdown);
     case OptionKind::Text:
       return "string";
-    case OptionKind::Pair:
-      return "array of 2 numbers";
+    case OptionKind::Coordinates:
+      return o.type_text;
     case OptionKind::Custom:
       break;
   }
@@ -117,6 +118,8 @@ bool in_range(const OptionInfo& o, const OptionValue& value) {
   if (const auto* x = std::get_if<double>(&value)) return o.range.contains(*x);
   if (const auto* i = std::get_if<std::int64_t>(&value))
     return integer_fits(o, *i) && o.range.contains(static_cast<double>(*i));
+  if (const auto* v = std::get_if<std::vector<double>>(&value))
+    return std::all_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); });
   return true;  // "auto", flags, names and text: the reader checks names against the choices
 }
 
@@ -138,8 +141,11 @@ std::string plain_value_text(const OptionValue& value) {
   if (const auto* i = std::get_if<std::int64_t>(&value)) return std::to_string(*i);
   if (const auto* b = std::get_if<bool>(&value)) return *b ? "true" : "false";
   if (const auto* s = std::get_if<std::string>(&value)) return "\"" + *s + "\"";
-  if (const auto* p = std::get_if<std::array<double, 2>>(&value))
-    return fmt::format("[{}, {}]", number_text((*p)[0]), number_text((*p)[1]));
+  if (const auto* v = std::get_if<std::vector<double>>(&value)) {
+    std::string out;
+    for (const double x : *v) out += (out.empty() ? "" : ", ") + number_text(x);
+    return "[" + out + "]";
+  }
   return "\"auto\"";
 }
 

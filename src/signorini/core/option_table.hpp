@@ -34,15 +34,16 @@ enum class OptionKind {
   Choice,        ///< one of OptionInfo::choices (an enumeration's name table)
   Text,          ///< any string
   NumberOrAuto,  ///< a number, or "auto" (a std::optional<double>, empty meaning automatic)
-  Pair,          ///< an array of 2 finite numbers (x and y)
+  Coordinates,   ///< an array of finite numbers, as many as its table says for the struct
+                 ///< (mesh.origin: 2 for a rectangle, 3 for a box)
   Custom,        ///< read by its section's own reader (formulas, names of components): key and
                  ///< doc only, so that the unknown-key check and the docs still know it
 };
 
 /// A value as a problem file spells it: "auto" (std::monostate, NumberOrAuto only), a flag, an
-/// integer, a number, a name or text, a pair.
+/// integer, a number, a name or text, a point or vector (2 numbers in 2D, 3 in 3D).
 using OptionValue =
-    std::variant<std::monostate, bool, std::int64_t, double, std::string, std::array<double, 2>>;
+    std::variant<std::monostate, bool, std::int64_t, double, std::string, std::vector<double>>;
 
 /// The numbers an option accepts: finite, and within an interval whose ends may be open, closed
 /// or absent.
@@ -89,8 +90,11 @@ struct OptionInfo {
   bool required = false;
   /// The docs' unit column: "L" (length), "S" (stress), "S L", "S/L" (problem-format.md, Units).
   std::string unit;
-  /// Custom: the docs' type column ("array of 2 expressions of x, y").
+  /// Custom and Coordinates: the docs' type column ("array of 2 expressions of x, y").
   std::string type_text;
+  /// Coordinates: the names of its entries ("x0", "y0", "z0"), the first as many as it takes, for
+  /// messages.
+  std::vector<std::string> entry_names;
   /// Where the default is not a value of the option: "the whole part", "none".
   std::string default_text;
   /// Other names people write for the key, which spelling distance does not find ("Young" for
@@ -163,6 +167,10 @@ class OptionTable : public OptionTableInfo {
   /// do not apply are neither written to the effective settings nor accepted in a file.
   [[nodiscard]] bool applies(std::size_t i, const S& s) const {
     return !conditions_[i] || conditions_[i](s);
+  }
+  /// Coordinates option i: how many numbers it takes in `s` (mesh.origin: 3 for a box).
+  [[nodiscard]] std::size_t vector_size(std::size_t i, const S& s) const {
+    return sizes_[i] ? sizes_[i](s) : 0;
   }
   /// (key, value) of every option that lives in the struct and applies to `s`, in table order:
   /// what the effective settings, summary.json and spec comparisons are made of.
@@ -269,13 +277,22 @@ class OptionTable : public OptionTableInfo {
         });
   }
 
-  /// Two numbers kept in two fields (mesh.origin = [x0, y0]).
-  template <class Get, class Set>
-  OptionTable& pair(std::string key, Get get, Set set, std::string doc) {
-    return add(
-        info(std::move(key), OptionKind::Pair, std::move(doc)),
-        [get](const S& s) { return OptionValue(std::array<double, 2>(get(s))); },
-        [set](S& s, const OptionValue& v) { set(s, std::get<std::array<double, 2>>(v)); });
+  /// Numbers kept in fields of the struct, as many as `size(s)` says (mesh.origin = [x0, y0] for
+  /// a rectangle, [x0, y0, z0] for a box): `get` returns them, `set` takes exactly that many
+  /// (the reader checks the count first, naming the key). `entry_names` name the entries for
+  /// messages, `type_text` is the docs' type column.
+  template <class Get, class Set, class Size>
+  OptionTable& vector(std::string key, Get get, Set set, Size size,
+                      std::vector<std::string> entry_names, std::string type_text,
+                      std::string doc) {
+    OptionInfo o = info(std::move(key), OptionKind::Coordinates, std::move(doc));
+    o.entry_names = std::move(entry_names);
+    o.type_text = std::move(type_text);
+    add(
+        std::move(o), [get](const S& s) { return OptionValue(std::vector<double>(get(s))); },
+        [set](S& s, const OptionValue& v) { set(s, std::get<std::vector<double>>(v)); });
+    sizes_.back() = [size](const S& s) { return static_cast<std::size_t>(size(s)); };
+    return *this;
   }
 
   /// A key that its section's own reader reads: `type_text` for the docs' type column.
@@ -323,6 +340,7 @@ class OptionTable : public OptionTableInfo {
     getters_.push_back(std::move(get));
     setters_.push_back(std::move(set));
     conditions_.emplace_back();
+    sizes_.emplace_back();
     return *this;
   }
 
@@ -330,7 +348,8 @@ class OptionTable : public OptionTableInfo {
 
   std::vector<Getter> getters_;
   std::vector<Setter> setters_;
-  std::vector<std::function<bool(const S&)>> conditions_;  // empty: always applies
+  std::vector<std::function<bool(const S&)>> conditions_;    // empty: always applies
+  std::vector<std::function<std::size_t(const S&)>> sizes_;  // Coordinates options only
 };
 
 /// Throws InputError naming the first option of `table` whose value in `s` is out of its range,

@@ -26,6 +26,9 @@ void emit_options(TomlEmitter& out, const OptionTable<S>& table, const S& s) {
 }  // namespace
 
 std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts) {
+  // Points and vectors have as many components as the problem has dimensions. On a Gmsh mesh
+  // that is what the file's keys implied; where none did (0), no point or vector is written.
+  const int dim = stated_dimension(spec);
   TomlEmitter out;
   emit_options(out, top_level_options(), spec);
   if (!spec.units.empty()) out.value("units", spec.units);
@@ -45,6 +48,10 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     std::vector<std::string> components;
     if (c.components[0]) components.emplace_back("x");
     if (c.components[1]) components.emplace_back("y");
+    if (c.components[2] && dim == 3) components.emplace_back("z");
+    // Every component of a problem whose dimension the mesh will decide: the default, which
+    // holds z in 3D, unlike ["x", "y"].
+    if (dim == 0 && c.components[0] && c.components[1] && c.components[2]) continue;
     out.value("components", components);
   }
   for (const DisplacementSpec& d : spec.displacements) {
@@ -67,8 +74,8 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   }
   for (const PointLoadSpec& pl : spec.point_loads) {
     out.array_table("point_load");
-    out.value("at", std::vector<double>{pl.at(0), pl.at(1)});
-    out.value("force", std::vector<double>{pl.force(0), pl.force(1)});
+    out.value("at", std::vector<double>(pl.at.data(), pl.at.data() + dim));
+    out.value("force", std::vector<double>(pl.force.data(), pl.force.data() + dim));
     if (!pl.boundary.empty()) out.value("boundary", pl.boundary);
   }
   if (!texts.body_force.empty()) {
@@ -81,7 +88,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
       out.table("contact");
     else
       out.array_table("contact");
-    emit_values(out, contact_values(c, c.description));
+    emit_values(out, contact_values(c, c.description, dim));
   }
   out.table("solver");
   emit_options(out, contact_solver_option_table(), spec.solver);

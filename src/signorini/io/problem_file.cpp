@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -48,15 +49,92 @@ std::string boundary_of(const Reader& r, const toml::table& t, const std::string
                   "name of a boundary part");
 }
 
-// The required pair of numbers `key` of the section at `path` ([x, y], [fx, fy], ...); `what`
-// says what it is, for the message when it is missing.
-Eigen::Vector2d required_pair(const Reader& r, const toml::table& t, const std::string& path,
-                              std::string_view key, const char* what) {
+// What the file says the problem's dimension is. A rectangle is 2D and a box 3D, and every key
+// must agree, checked here with the line. A Gmsh mesh's dimension is known only when
+// build_model reads it, so there the first key that implies one decides
+// (ProblemSpec::implied_dimension), later keys must agree with it, and build_model checks it
+// against the mesh: reading the mesh here too would cost a second read of a large file, or a
+// second run of gmsh on a .geo.
+class Dimension {
+ public:
+  Dimension(const Reader& r, ProblemSpec& spec) : r_(r), spec_(spec) {}
+
+  /// 2 for a rectangle, 3 for a box: how many components a point or vector must have; 0 for a
+  /// Gmsh mesh, which takes 2 or 3, and imply() checks that the keys agree, naming the first.
+  [[nodiscard]] int known() const {
+    return spec_.mesh_type == MeshType::Gmsh ? 0 : stated_dimension(spec_);
+  }
+  /// The dimension as far as the file says it so far (a Gmsh mesh's: what its keys implied).
+  [[nodiscard]] int stated() const { return stated_dimension(spec_); }
+
+  /// `key`, at `n`, gives `given`, which only problems of `dim` dimensions take; a problem of
+  /// the other dimension expects `instead` there.
+  void imply(const toml::node& n, const std::string& key, int dim, const std::string& given,
+             const std::string& instead) const {
+    const std::string says =
+        "key '" + key + "' gives " + given + " (" + std::to_string(dim) + "D problems only)";
+    if (spec_.mesh_type != MeshType::Gmsh) {
+      if (dim != known())
+        r_.fail_at(n.source(), says + ", but the mesh is " + std::to_string(known()) +
+                                   "D (mesh.type = \"" +
+                                   std::string(enum_to_string(kMeshTypeNames, spec_.mesh_type)) +
+                                   "\"): expected " + instead);
+      return;
+    }
+    ImpliedDimension& first = spec_.implied_dimension;
+    if (first.dimension == 0) {
+      first = {dim, key, given, instead};
+      return;
+    }
+    if (first.dimension != dim)
+      r_.fail_at(n.source(), says + ", but " + first.key + " gives " + first.given + " (" +
+                                 std::to_string(first.dimension) + "D problems only): expected " +
+                                 instead);
+  }
+
+  /// The point or vector of `key` at `n`, given as `count` components: 2 or 3 of them imply
+  /// that dimension.
+  void imply_components(const toml::node& n, const std::string& key, std::size_t count) const {
+    imply(n, key, static_cast<int>(count), std::to_string(count) + " components",
+          count == 3 ? "2 components (x, y)" : "3 components (x, y, z)");
+  }
+
+  /// "x and y", "x, y and z", or both possibilities: the names of a point's entries.
+  [[nodiscard]] std::string entries() const {
+    const int d = known();
+    return d == 2 ? "x and y" : d == 3 ? "x, y and z" : "x, y and, in 3D, z";
+  }
+
+ private:
+  const Reader& r_;
+  ProblemSpec& spec_;
+};
+
+// The required point or vector `key` of the section at `path` ([x, y] or [x, y, z], as the
+// problem's dimension says); `what` says what it is, for the message when it is missing. z is 0
+// in 2D.
+Eigen::Vector3d required_point(const Reader& r, const Dimension& dim, const toml::table& t,
+                               const std::string& path, std::string_view key, const char* what) {
   const std::string full = join(path, key);
   const toml::node* n = t.get(key);
   if (n == nullptr) r.missing(full, what);
-  const std::vector<double> xy = r.numbers(*n, full, 2, "x and y");
-  return {xy[0], xy[1]};
+  const std::vector<double> v =
+      r.numbers(*n, full, static_cast<std::size_t>(dim.known()), dim.entries());
+  dim.imply_components(*n, full, v.size());
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < v.size(); ++k) out(static_cast<Eigen::Index>(k)) = v[k];
+  return out;
+}
+
+// The expressions of the vector field `key` (a traction, a body force), one per component of
+// the problem's dimension.
+std::optional<std::vector<std::string>> vector_expressions(const Reader& r, const Dimension& dim,
+                                                           const toml::table& t,
+                                                           const std::string& path,
+                                                           std::string_view key) {
+  auto e = r.expressions(t, path, key, static_cast<std::size_t>(dim.known()));
+  if (e) dim.imply_components(*t.get(key), join(path, key), e->size());
+  return e;
 }
 
 std::string as_text(double x) {
@@ -81,17 +159,30 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   if (t == nullptr)
     r.missing("mesh",
               "a [mesh] section: type = \"rectangle\" with length, height, nx and ny, "
-              "or type = \"gmsh\" with file");
+              "type = \"box\" with length, width, height, nx, ny and nz, or type = \"gmsh\" "
+              "with file");
   r.check_keys(*t, "mesh");
   read_options(r, *t, mesh_options(), spec);
-  if (spec.mesh_type == MeshType::Box)
-    r.fail_at(t->get("type")->source(),
-              "mesh.type = \"box\": 3D problems are not readable from problem files yet (the "
-              "library builds them: ProblemSpec::box); expected \"rectangle\" or \"gmsh\"");
   check_options(r, t, mesh_options(), spec);
+  // mesh.cell takes the names of both structured meshes; each takes its own.
+  if (spec.mesh_type != MeshType::Gmsh && !cell_fits_mesh(spec)) {
+    const bool box = spec.mesh_type == MeshType::Box;
+    const toml::node* cell = t->get("cell");
+    r.fail_at(
+        cell != nullptr ? cell->source() : t->get("type")->source(),
+        "key 'mesh.cell' = \"" +
+            std::string(enum_to_string(kCellTypeNames, box ? spec.box.cell : spec.mesh.cell)) +
+            "\" is a " + (box ? "2D" : "3D") + " cell: with type = \"" +
+            (box ? "box" : "rectangle") + "\" expected " +
+            (box ? enum_choices(kBoxCellNames) : enum_choices(kRectangleCellNames)));
+  }
   // Which keys a type needs (those it has no use for were refused by check_options).
-  if (spec.mesh_type == MeshType::Rectangle) {
-    for (const char* key : {"length", "height", "nx", "ny"})
+  if (spec.mesh_type != MeshType::Gmsh) {
+    const bool box = spec.mesh_type == MeshType::Box;
+    const std::vector<const char*> keys =
+        box ? std::vector<const char*>{"length", "width", "height", "nx", "ny", "nz"}
+            : std::vector<const char*>{"length", "height", "nx", "ny"};
+    for (const char* key : keys)
       if (!t->contains(key))
         r.missing(std::string("mesh.") + key, type_words(*mesh_options().find(key)));
     return;
@@ -103,6 +194,12 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     const std::filesystem::path folder = std::filesystem::path(r.file()).parent_path();
     spec.mesh_file = (folder / file).lexically_normal().string();
   }
+}
+
+// The cell type of a structured mesh, for the warning about locking (a Gmsh mesh's cells are known
+// only when it is read: it is warned about as the rectangle's default, quad4, would be).
+CellType structured_cell(const ProblemSpec& spec) {
+  return spec.mesh_type == MeshType::Box ? spec.box.cell : spec.mesh.cell;
 }
 
 void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec,
@@ -120,13 +217,15 @@ void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec,
   // near the contact come out wrong by a factor that grows without bound (at nu = 0.49 the
   // stress under a contact peak overshoots the contact pressure by some 70 %), which the solver
   // cannot detect. Quadratic elements lock far less (the mesh is read before the material).
-  if (m.nu >= 0.45 && cell_order(spec.mesh.cell) == 1)
-    warnings.push_back(r.file() + ": material.nu = " + as_text(m.nu) +
-                       " >= 0.45: nearly incompressible, and linear elements (" +
-                       std::string(enum_to_string(kCellTypeNames, spec.mesh.cell)) +
-                       ") lock: displacements come out too small and stresses near the contact "
-                       "oscillate; use quadratic ones (mesh.cell = \"quad9\" or \"tri6\") or "
-                       "check against a finer mesh");
+  if (m.nu >= 0.45 && cell_order(structured_cell(spec)) == 1)
+    warnings.push_back(
+        r.file() + ": material.nu = " + as_text(m.nu) +
+        " >= 0.45: nearly incompressible, and linear elements (" +
+        std::string(enum_to_string(kCellTypeNames, structured_cell(spec))) +
+        ") lock: displacements come out too small and stresses near the contact "
+        "oscillate; use quadratic ones (mesh.cell = " +
+        (spec.mesh_type == MeshType::Box ? "\"hex27\" or \"tet10\"" : "\"quad9\" or \"tri6\"") +
+        ") or check against a finer mesh");
 }
 
 void read_fem(const Reader& r, const toml::table& root, ProblemSpec& spec) {
@@ -157,14 +256,15 @@ void read_regions(const Reader& r, const toml::table& root, ProblemSpec& spec,
     for (const RegionMaterialSpec& other : spec.region_materials)
       if (other.region == m.region)
         r.fail(path + ": region '" + m.region + "' has a material already");
-    if (m.material.nu >= 0.45 && cell_order(spec.mesh.cell) == 1)
+    if (m.material.nu >= 0.45 && cell_order(structured_cell(spec)) == 1)
       warnings.push_back(r.file() + ": " + path + ".nu = " + as_text(m.material.nu) +
                          " >= 0.45: nearly incompressible; linear elements lock (see material.nu)");
     spec.region_materials.push_back(std::move(m));
   }
 }
 
-void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+void read_clamps(const Reader& r, const Dimension& dim, const toml::table& root,
+                 ProblemSpec& spec) {
   const auto entries = r.array_of_tables(root, "clamp");
   if (entries.empty() && !root.contains("displacement"))
     r.missing("clamp",
@@ -178,19 +278,32 @@ void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     c.boundary = boundary_of(r, t, path);
     if (const toml::node* n = t.get("components")) {
       const std::string key = join(path, "components");
+      // z in a 2D problem is refused as any other name; on a Gmsh mesh it implies 3D.
+      const bool z_allowed = dim.known() != 2;
+      const std::string names = z_allowed ? "\"x\", \"y\" or \"z\"" : "\"x\" or \"y\"";
       const auto* a = n->as_array();
-      if (a == nullptr) r.wrong_type(key, "an array of component names (\"x\", \"y\")", *n);
-      if (a->empty()) r.fail("key '" + key + "' must list at least one of \"x\", \"y\"");
+      if (a == nullptr)
+        r.wrong_type(key,
+                     std::string("an array of component names (\"x\", \"y\"") +
+                         (z_allowed ? ", \"z\")" : ")"),
+                     *n);
+      if (a->empty())
+        r.fail("key '" + key + "' must list at least one of \"x\", \"y\"" +
+               (z_allowed ? ", \"z\"" : ""));
       c.components = {false, false, false};
       for (std::size_t k = 0; k < a->size(); ++k) {
         const auto* s = a->get(k)->as_string();
-        if (s == nullptr) r.wrong_type(element(key, k), "\"x\" or \"y\"", *a->get(k));
-        if (s->get() == "x")
+        if (s == nullptr) r.wrong_type(element(key, k), names, *a->get(k));
+        if (s->get() == "x") {
           c.components[0] = true;
-        else if (s->get() == "y")
+        } else if (s->get() == "y") {
           c.components[1] = true;
-        else
-          r.fail("key '" + element(key, k) + "' must be \"x\" or \"y\", got '" + s->get() + "'");
+        } else if (s->get() == "z" && z_allowed) {
+          c.components[2] = true;
+          dim.imply(*a->get(k), element(key, k), 3, "component z", "\"x\" and \"y\" only");
+        } else {
+          r.fail("key '" + element(key, k) + "' must be " + names + ", got '" + s->get() + "'");
+        }
       }
     }
     spec.clamps.push_back(std::move(c));
@@ -202,10 +315,13 @@ void read_clamps(const Reader& r, const toml::table& root, ProblemSpec& spec) {
 //   traction[1].p[1] = '1/(x-3)' is infinite at x = (3, 0.5)
 std::string not_finite(const std::string& key, const std::string& formula, double value,
                        const Point& x) {
+  // z is 0 in a 2D problem: leave it out there.
+  const std::string at = x(2) == 0.0 ? fmt::format("({:g}, {:g})", x(0), x(1))
+                                     : fmt::format("({:g}, {:g}, {:g})", x(0), x(1), x(2));
   return fmt::format(
-      "{} = '{}' is {} at x = ({:g}, {:g}): expected finite values everywhere "
+      "{} = '{}' is {} at x = {}: expected finite values everywhere "
       "it is used",
-      key, one_line(formula), std::isnan(value) ? "NaN" : "infinite", x(0), x(1));
+      key, one_line(formula), std::isnan(value) ? "NaN" : "infinite", at);
 }
 
 VectorField finite_vector_field(VectorField f, const std::string& key,
@@ -260,11 +376,15 @@ bool looks_discontinuous(const std::string& formula) {
 }
 
 // x_range = [a, b]: the traction acts where a <= x <= b (exactly integrated, load_assembly.hpp).
-void read_range(const Reader& r, const toml::table& t, const std::string& path,
-                std::string_view key, int axis, CoordinateBox& box) {
+// The assembly cuts edges, not faces: a range takes a 2D problem.
+void read_range(const Reader& r, const Dimension& dim, const toml::table& t,
+                const std::string& path, std::string_view key, int axis, CoordinateBox& box) {
   const toml::node* n = t.get(key);
   if (n == nullptr) return;
   const std::string full = join(path, key);
+  dim.imply(*n, full, 2, "a coordinate range",
+            "no range (not supported on 3D boundary parts yet): make the loaded part a boundary "
+            "part of its own");
   const std::vector<double> v = r.numbers(*n, full, 2, "lower and upper");
   if (!(v[0] < v[1]))
     r.fail_at(n->source(), "key '" + full + "' = [" + as_text(v[0]) + ", " + as_text(v[1]) +
@@ -273,8 +393,8 @@ void read_range(const Reader& r, const toml::table& t, const std::string& path,
   box.upper[static_cast<std::size_t>(axis)] = v[1];
 }
 
-void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
-                    ExpressionTexts& texts, std::vector<std::string>& warnings) {
+void read_tractions(const Reader& r, const Dimension& dim, const toml::table& root,
+                    ProblemSpec& spec, ExpressionTexts& texts, std::vector<std::string>& warnings) {
   const auto entries = r.array_of_tables(root, "traction");
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const toml::table& t = *entries[i];
@@ -282,13 +402,14 @@ void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
     r.check_keys(t, path);
     TractionSpec tr;
     tr.boundary = boundary_of(r, t, path);
-    const auto p = required(r, r.expressions(t, path, "p", 2), join(path, "p"),
-                            "2 expressions of x, y: the traction (force per area)");
+    const auto p = required(r, vector_expressions(r, dim, t, path, "p"), join(path, "p"),
+                            "an expression of x, y, z per component: the traction (force per "
+                            "area)");
     tr.p = finite_vector_field(with_file(r, [&] { return make_vector_field(p, join(path, "p")); }),
                                join(path, "p"), p);
     tr.description = describe(p);
-    read_range(r, t, path, "x_range", 0, tr.region);
-    read_range(r, t, path, "y_range", 1, tr.region);
+    read_range(r, dim, t, path, "x_range", 0, tr.region);
+    read_range(r, dim, t, path, "y_range", 1, tr.region);
     for (std::size_t k = 0; k < p.size(); ++k)
       if (looks_discontinuous(p[k]))
         warnings.push_back(r.file() + ": " + element(join(path, "p"), k) + " = '" + one_line(p[k]) +
@@ -301,8 +422,9 @@ void read_tractions(const Reader& r, const toml::table& root, ProblemSpec& spec,
   }
 }
 
-// [[displacement]] boundary, x and/or y (numbers or formulas), or normal.
-void read_displacements(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+// [[displacement]] boundary, x, y and/or z (numbers or formulas), or normal.
+void read_displacements(const Reader& r, const Dimension& dim, const toml::table& root,
+                        ProblemSpec& spec) {
   const auto entries = r.array_of_tables(root, "displacement");
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const toml::table& t = *entries[i];
@@ -316,18 +438,31 @@ void read_displacements(const Reader& r, const toml::table& root, ProblemSpec& s
       text = *e;
       return scalar_formula(r, join(path, key), text);
     };
+    // Local axes per node (DofMap::set_frame) are 2D so far: a normal displacement takes a 2D
+    // problem, component z a 3D one.
+    if (const toml::node* n = t.get("normal"))
+      dim.imply(*n, join(path, "normal"), 2, "a normal displacement",
+                "the components x, y and z (a normal displacement is not supported in 3D yet)");
+    if (const toml::node* n = t.get("z"))
+      dim.imply(*n, join(path, "z"), 3, "component z", "x and y only");
     d.normal = field("normal", d.normal_text);
     d.values[0] = field("x", d.texts[0]);
     d.values[1] = field("y", d.texts[1]);
-    if (d.normal && (d.values[0] || d.values[1]))
+    d.values[2] = field("z", d.texts[2]);
+    const bool components = d.values[0] || d.values[1] || d.values[2];
+    if (d.normal && components)
       r.fail_at(t.get("normal")->source(),
                 join(path, "normal") +
                     " prescribes the normal component: give either normal or "
                     "the components x and y, not both");
-    if (!d.normal && !d.values[0] && !d.values[1])
+    if (!d.normal && !components)
       r.missing(join(path, "x"),
-                "the displacement to prescribe: x and/or y, or normal "
-                "(numbers or expressions of x, y)");
+                dim.known() == 2   ? "the displacement to prescribe: x and/or y, or normal "
+                                     "(numbers or expressions of x, y)"
+                : dim.known() == 3 ? "the displacement to prescribe: x, y and/or z (numbers or "
+                                     "expressions of x, y, z)"
+                                   : "the displacement to prescribe: x, y and/or z (in 3D), or "
+                                     "normal (numbers or expressions of x, y, z)");
     spec.displacements.push_back(std::move(d));
   }
 }
@@ -349,38 +484,50 @@ void read_pressures(const Reader& r, const toml::table& root, ProblemSpec& spec)
   }
 }
 
-// [[point_load]] at = [x, y], force = [fx, fy], boundary (optional): a force at the nearest node.
-void read_point_loads(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+// [[point_load]] at = [x, y] (or [x, y, z]), force likewise, boundary (optional): a force at
+// the nearest node.
+void read_point_loads(const Reader& r, const Dimension& dim, const toml::table& root,
+                      ProblemSpec& spec) {
   const auto entries = r.array_of_tables(root, "point_load");
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const toml::table& t = *entries[i];
     const std::string path = element("point_load", i);
     r.check_keys(t, path);
     PointLoadSpec pl;
-    pl.at.head<2>() =
-        required_pair(r, t, path, "at", "[x, y]: the point; the load acts at the nearest node");
-    pl.force.head<2>() =
-        required_pair(r, t, path, "force", "[fx, fy]: the force (per unit thickness in 2D)");
+    pl.at =
+        required_point(r, dim, t, path, "at",
+                       "[x, y] ([x, y, z] in 3D): the point; the load acts at the nearest node");
+    pl.force =
+        required_point(r, dim, t, path, "force",
+                       "[fx, fy] ([fx, fy, fz] in 3D): the force (per unit thickness in 2D)");
     pl.boundary = r.string(t, path, "boundary").value_or("");
     spec.point_loads.push_back(std::move(pl));
   }
 }
 
-void read_body_force(const Reader& r, const toml::table& root, ProblemSpec& spec,
-                     ExpressionTexts& texts) {
+void read_body_force(const Reader& r, const Dimension& dim, const toml::table& root,
+                     ProblemSpec& spec, ExpressionTexts& texts) {
   const toml::table* t = r.table(root, "", "body_force");
   if (t == nullptr) return;
   r.check_keys(*t, "body_force");
-  const auto f = required(r, r.expressions(*t, "body_force", "f", 2), "body_force.f",
-                          "2 expressions of x, y: the force per volume");
+  const auto f = required(r, vector_expressions(r, dim, *t, "body_force", "f"), "body_force.f",
+                          "an expression of x, y, z per component: the force per volume");
   spec.body_force = finite_vector_field(
       with_file(r, [&] { return make_vector_field(f, "body_force.f"); }), "body_force.f", f);
   spec.body_force_description = describe(f);
   texts.body_force = f;
 }
 
+// "[0, 0]", "[0, 0, 0]": a vector as the file gave it, for messages.
+std::string vector_text(const Eigen::Vector3d& v, int count) {
+  std::string out;
+  for (int k = 0; k < count; ++k) out += fmt::format("{}{:g}", k > 0 ? ", " : "", v(k));
+  return "[" + out + "]";
+}
+
 // One contact boundary, from the table at `path` ("contact", or "contact[1]" of [[contact]]).
-ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std::string& path) {
+ContactSpec read_contact_entry(const Reader& r, const Dimension& dim, const toml::table* t,
+                               const std::string& path) {
   r.check_keys(*t, path);
   ContactSpec contact;
   contact.boundary = boundary_of(r, *t, path);
@@ -392,41 +539,58 @@ ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std:
                                                 "\": expected " +
                                                 enum_choices(kObstacleShapeNames));
   o.shape = *parsed;
-  // The keys of each shape; those of another shape are refused.
+  // The keys of each shape; a key that only other shapes have is refused, naming them.
   const std::map<ObstacleShape, std::vector<std::string>> keys{
       {ObstacleShape::Gap, {"gap"}},
       {ObstacleShape::Plane, {"point", "normal"}},
-      {ObstacleShape::Disc, {"centre", "radius", "inside"}}};
-  if (o.shape == ObstacleShape::Cylinder)
-    r.fail_at(t->get("obstacle")->source(),
-              join(path, "obstacle") +
-                  " = \"cylinder\": a 3D obstacle, not readable from problem files yet (the "
-                  "library builds it: RigidObstacle); in 2D a disc is a cylinder's section");
-  for (const auto& [other, names] : keys)
-    for (const std::string& key : names)
-      if (other != o.shape && t->contains(key))
-        r.fail_at(t->get(key)->source(),
-                  join(path, key) + " applies with obstacle = \"" +
-                      std::string(enum_to_string(kObstacleShapeNames, other)) +
-                      "\" only; this "
-                      "obstacle is \"" +
-                      shape + "\"");
-  const auto pair = [&](const char* key, const char* what) {
-    return required_pair(r, *t, path, key, what);
+      {ObstacleShape::Disc, {"centre", "radius", "inside"}},
+      {ObstacleShape::Cylinder, {"centre", "axis", "radius", "inside"}}};
+  const auto has = [&](ObstacleShape s, const std::string& key) {
+    const std::vector<std::string>& names = keys.at(s);
+    return std::find(names.begin(), names.end(), key) != names.end();
+  };
+  for (const std::string key : {"gap", "point", "normal", "centre", "axis", "radius", "inside"}) {
+    if (!t->contains(key) || has(o.shape, key)) continue;
+    std::string shapes;
+    for (const auto& [other, names] : keys)
+      if (has(other, key))
+        shapes += std::string(shapes.empty() ? "" : " or ") + "\"" +
+                  std::string(enum_to_string(kObstacleShapeNames, other)) + "\"";
+    r.fail_at(t->get(key)->source(), join(path, key) + " applies with obstacle = " + shapes +
+                                         " only; this obstacle is \"" + shape + "\"");
+  }
+  const auto point = [&](const char* key, const char* what) {
+    return required_point(r, dim, *t, path, key, what);
+  };
+  // A non-zero direction (a plane's normal, a cylinder's axis), any length.
+  const auto direction = [&](const char* key, const Eigen::Vector3d& v, int count,
+                             const char* what) {
+    if (!(v.norm() > 0.0))
+      r.fail_at(t->get(key)->source(), join(path, key) + " = " + vector_text(v, count) +
+                                           ": expected a non-zero vector " + what);
   };
   if (o.shape == ObstacleShape::Plane) {
-    o.point.head<2>() = pair("point", "[x, y]: a point of the plane");
-    o.normal.head<2>() = pair("normal", "[nx, ny]: the plane's normal, towards the body");
-    o.normal(2) = 0.0;
-    if (!(o.normal.norm() > 0.0))
-      r.fail_at(t->get("normal")->source(),
-                join(path, "normal") +
-                    " = [0, 0]: expected a non-zero vector pointing from the obstacle "
-                    "towards the body");
+    o.point = point("point", "[x, y] ([x, y, z] in 3D): a point of the plane");
+    o.normal =
+        point("normal", "[nx, ny] ([nx, ny, nz] in 3D): the plane's normal, towards the body");
+    direction("normal", o.normal, dim.stated(), "pointing from the obstacle towards the body");
     return contact;
   }
-  if (o.shape == ObstacleShape::Disc) {
-    o.centre.head<2>() = pair("centre", "[x, y]: the disc's centre");
+  if (o.shape == ObstacleShape::Disc || o.shape == ObstacleShape::Cylinder) {
+    if (o.shape == ObstacleShape::Cylinder) {
+      // In 2D a disc is the cylinder's section.
+      dim.imply(*t->get("obstacle"), join(path, "obstacle"), 3, "a cylinder",
+                "obstacle = \"disc\" (the cylinder's section)");
+      o.centre = point("centre", "[x, y, z]: a point of the cylinder's axis");
+      const std::string axis = join(path, "axis");
+      const toml::node* n = t->get("axis");
+      if (n == nullptr) r.missing(axis, "[ax, ay, az]: the direction of the cylinder's axis");
+      const std::vector<double> a = r.numbers(*n, axis, 3, "x, y and z");
+      o.axis = Eigen::Vector3d(a[0], a[1], a[2]);
+      direction("axis", o.axis, 3, "along the cylinder's axis");
+    } else {
+      o.centre = point("centre", "[x, y] ([x, y, z] in 3D): the disc's centre");
+    }
     const std::optional<double> radius = r.number(*t, path, "radius");
     if (!radius) r.missing(join(path, "radius"), "a positive number");
     if (!(*radius > 0.0))
@@ -443,14 +607,15 @@ ContactSpec read_contact_entry(const Reader& r, const toml::table* t, const std:
 }
 
 // [contact] (one contact boundary) or [[contact]] (several, each with its obstacle).
-void read_contacts(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+void read_contacts(const Reader& r, const Dimension& dim, const toml::table& root,
+                   ProblemSpec& spec) {
   const toml::node* n = root.get("contact");
   if (n == nullptr)
     r.missing("contact",
               "a [contact] section with the contact boundary (or [[contact]] "
               "sections, one per contact boundary)");
   if (const toml::table* t = n->as_table()) {
-    spec.contacts.push_back(read_contact_entry(r, t, "contact"));
+    spec.contacts.push_back(read_contact_entry(r, dim, t, "contact"));
     return;
   }
   const auto* a = n->as_array();
@@ -460,7 +625,7 @@ void read_contacts(const Reader& r, const toml::table& root, ProblemSpec& spec) 
     const auto* t = a->get(i)->as_table();
     if (t == nullptr) r.wrong_type(element("contact", i), "a table", *a->get(i));
     const std::string path = element("contact", i);
-    spec.contacts.push_back(read_contact_entry(r, t, path));
+    spec.contacts.push_back(read_contact_entry(r, dim, t, path));
     for (std::size_t k = 0; k + 1 < spec.contacts.size(); ++k)
       if (spec.contacts[k].boundary == spec.contacts.back().boundary)
         r.fail(join(path, "boundary") + " = '" + spec.contacts.back().boundary + "' is " +
@@ -489,18 +654,26 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
 // A mesh that cannot fit is refused now rather than after minutes of assembly, or by the
 // out-of-memory killer.
 void check_memory(const Reader& r, const ProblemSpec& spec) {
-  if (spec.mesh_type != MeshType::Rectangle) return;  // a file's size is known when it is read
-  const double p = cell_order(spec.mesh.cell);        // quadratic cells: the lattice of half steps
-  const double nodes =
-      (p * static_cast<double>(spec.mesh.nx) + 1.0) * (p * static_cast<double>(spec.mesh.ny) + 1.0);
+  if (spec.mesh_type == MeshType::Gmsh) return;  // a file's size is known when it is read
+  const bool box = spec.mesh_type == MeshType::Box;
+  // Quadratic cells: the lattice of half steps.
+  const double p = cell_order(box ? spec.box.cell : spec.mesh.cell);
+  const double nx = static_cast<double>(box ? spec.box.nx : spec.mesh.nx);
+  const double ny = static_cast<double>(box ? spec.box.ny : spec.mesh.ny);
+  const double nz = box ? static_cast<double>(spec.box.nz) : 0.0;
+  // The estimate is per node of a 2D mesh; a 3D node costs more, so for a box it is a lower
+  // bound, which is all a refusal needs.
+  const double nodes = (p * nx + 1.0) * (p * ny + 1.0) * (p * nz + 1.0);
   const double need = estimated_memory_bytes(nodes, spec.solver.linear.type);
   const double have = physical_memory_bytes();
   if (have > 0.0 && need > have)
     r.fail(fmt::format(
-        "mesh {}x{} has {:.3g} nodes and needs about {:.3g} GB of memory with the {} solver, "
-        "more than this machine's {:.3g} GB: use a smaller mesh.nx, mesh.ny",
-        spec.mesh.nx, spec.mesh.ny, nodes, need / 1e9,
-        enum_to_string(kLinearSolverTypeNames, spec.solver.linear.type), have / 1e9));
+        "mesh {} has {:.3g} nodes and needs about {:.3g} GB of memory with the {} solver, "
+        "more than this machine's {:.3g} GB: use a smaller {}",
+        box ? fmt::format("{}x{}x{}", spec.box.nx, spec.box.ny, spec.box.nz)
+            : fmt::format("{}x{}", spec.mesh.nx, spec.mesh.ny),
+        nodes, need / 1e9, enum_to_string(kLinearSolverTypeNames, spec.solver.linear.type),
+        have / 1e9, box ? "mesh.nx, mesh.ny, mesh.nz" : "mesh.nx, mesh.ny"));
 }
 
 }  // namespace
@@ -531,20 +704,20 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   LoadedProblem out;
   out.path = name_for_errors;
   ProblemSpec& spec = out.spec;
-  spec.three_dimensional_allowed = false;  // problem files describe 2D problems so far
   ExpressionTexts texts;
   read_top_level(r, root, spec);
   read_mesh(r, root, spec);
   read_material(r, root, spec, out.warnings);
   read_regions(r, root, spec, out.warnings);
   read_fem(r, root, spec);
-  read_clamps(r, root, spec);
-  read_displacements(r, root, spec);
-  read_tractions(r, root, spec, texts, out.warnings);
+  const Dimension dim(r, spec);  // known from the mesh type, or implied by the keys that follow
+  read_clamps(r, dim, root, spec);
+  read_displacements(r, dim, root, spec);
+  read_tractions(r, dim, root, spec, texts, out.warnings);
   read_pressures(r, root, spec);
-  read_point_loads(r, root, spec);
-  read_body_force(r, root, spec, texts);
-  read_contacts(r, root, spec);
+  read_point_loads(r, dim, root, spec);
+  read_body_force(r, dim, root, spec, texts);
+  read_contacts(r, dim, root, spec);
   read_solver(r, root, spec);
   check_memory(r, spec);
   out.effective_toml = effective_toml(spec, texts);

@@ -1,7 +1,10 @@
 #include "signorini/io/problem_schema.hpp"
 
+#include <algorithm>
+
 #include "signorini/contact/contact_solver_option_table.hpp"
 #include "signorini/linalg/linear_solver_option_table.hpp"
+#include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/unit_system.hpp"
 
@@ -12,21 +15,29 @@ namespace {
 using P = ProblemSpec;
 
 // Fields below the top level of ProblemSpec, as projections (one lambda serves the getter on a
-// const spec and the setter alike).
+// const spec and the setter alike). The rectangle and the box share the names of their keys
+// (length, height, nx, ny, cell): the projection takes the field of the mesh type the spec has,
+// which `type`, the first key of [mesh], has set by then.
 constexpr auto mesh_length = [](auto& s) -> auto& {
-  return s.mesh.length;
+  return s.mesh_type == MeshType::Box ? s.box.length : s.mesh.length;
+};
+constexpr auto mesh_width = [](auto& s) -> auto& {
+  return s.box.width;
 };
 constexpr auto mesh_height = [](auto& s) -> auto& {
-  return s.mesh.height;
+  return s.mesh_type == MeshType::Box ? s.box.height : s.mesh.height;
 };
 constexpr auto mesh_nx = [](auto& s) -> auto& {
-  return s.mesh.nx;
+  return s.mesh_type == MeshType::Box ? s.box.nx : s.mesh.nx;
 };
 constexpr auto mesh_ny = [](auto& s) -> auto& {
-  return s.mesh.ny;
+  return s.mesh_type == MeshType::Box ? s.box.ny : s.mesh.ny;
+};
+constexpr auto mesh_nz = [](auto& s) -> auto& {
+  return s.box.nz;
 };
 constexpr auto mesh_cell = [](auto& s) -> auto& {
-  return s.mesh.cell;
+  return s.mesh_type == MeshType::Box ? s.box.cell : s.mesh.cell;
 };
 constexpr auto young_modulus = [](auto& s) -> auto& {
   return s.elasticity.material.E;
@@ -74,54 +85,114 @@ const OptionTable<P>& top_level_options() {
 
 const auto rectangle_mesh = [](const P& s) { return s.mesh_type == MeshType::Rectangle; };
 const auto gmsh_mesh = [](const P& s) { return s.mesh_type == MeshType::Gmsh; };
-constexpr const char* kRectangleWords = "type = \"rectangle\"";
+const auto box_mesh = [](const P& s) { return s.mesh_type == MeshType::Box; };
+const auto structured_mesh = [](const P& s) { return s.mesh_type != MeshType::Gmsh; };
+constexpr const char* kStructuredWords = "type = \"rectangle\" or \"box\"";
+constexpr const char* kBoxWords = "type = \"box\"";
+
+// The cells of both structured meshes, for mesh.cell: the reader then checks that the cell fits
+// the mesh type (cell_fits_mesh()).
+constexpr EnumNames<CellType, 9> kStructuredCellNames{{
+    {CellType::Quad4, "quad4"},
+    {CellType::Quad8, "quad8"},
+    {CellType::Quad9, "quad9"},
+    {CellType::Tri3, "tri3"},
+    {CellType::Tri6, "tri6"},
+    {CellType::Hex8, "hex8"},
+    {CellType::Hex27, "hex27"},
+    {CellType::Tet4, "tet4"},
+    {CellType::Tet10, "tet10"},
+}};
 
 const OptionTable<P>& mesh_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("mesh");
     t.choice("type", &P::mesh_type, kMeshTypeNames,
-             "`rectangle`: the structured mesh of the keys below; `gmsh`: the mesh of `file`; "
-             "`box`, the 3D box, is built through the library only so far (refused here)");
+             "`rectangle`: the structured 2D mesh of the keys below; `gmsh`: the mesh of `file`, "
+             "2D or 3D; `box`: the structured 3D mesh of the keys below");
     t.text("file", &P::mesh_file,
            "type = \"gmsh\": the mesh file, a path relative to the problem file; a Gmsh .msh "
-           "file (formats 4.1 and 2.2, ASCII or binary), or a .geo file that the `gmsh` program "
-           "meshes (2D, with the element order the .geo asks for). Physical curves become "
-           "boundary parts and physical surfaces regions, by name (docs/problem-format.md, Meshes "
-           "from Gmsh)")
+           "file (formats 4.1 and 2.2, ASCII or binary), 2D or 3D, or a .geo file that the "
+           "`gmsh` program meshes (in 2D, with the element order the .geo asks for). Physical "
+           "curves (surfaces in 3D) become boundary parts and physical surfaces (volumes in 3D) "
+           "regions, by name (docs/problem-format.md, Meshes from Gmsh)")
         .default_text("required with type = \"gmsh\"")
         .applies_when(gmsh_mesh, "type = \"gmsh\"");
-    const auto get_origin = [](const P& s) { return std::array<double, 2>{s.mesh.x0, s.mesh.y0}; };
-    const auto set_origin = [](P& s, const std::array<double, 2>& xy) {
-      s.mesh.x0 = xy[0];
-      s.mesh.y0 = xy[1];
+    const auto get_origin = [](const P& s) {
+      if (s.mesh_type == MeshType::Box) return std::vector<double>{s.box.x0, s.box.y0, s.box.z0};
+      return std::vector<double>{s.mesh.x0, s.mesh.y0};
     };
-    t.pair("origin", get_origin, set_origin, "rectangle: lower-left corner (x0, y0)")
+    const auto set_origin = [](P& s, const std::vector<double>& v) {
+      if (s.mesh_type == MeshType::Box && v.size() == 3) {
+        s.box.x0 = v[0];
+        s.box.y0 = v[1];
+        s.box.z0 = v[2];
+      } else if (v.size() == 2) {
+        s.mesh.x0 = v[0];
+        s.mesh.y0 = v[1];
+      }
+    };
+    const auto origin_size = [](const P& s) { return s.mesh_type == MeshType::Box ? 3 : 2; };
+    t.vector("origin", get_origin, set_origin, origin_size, {"x0", "y0", "z0"},
+             "array of 2 numbers (rectangle) or 3 (box)",
+             "rectangle: lower-left corner [x0, y0]; box: the corner with the smallest "
+             "coordinates [x0, y0, z0]")
         .unit("L")
-        .applies_when(rectangle_mesh, kRectangleWords);
-    t.number("length", mesh_length, positive(), "rectangle: extent in x")
+        .default_text("`[0.0, 0.0]` or `[0.0, 0.0, 0.0]`")
+        .applies_when(structured_mesh, kStructuredWords);
+    t.number("length", mesh_length, positive(), "extent in x")
         .unit("L")
-        .default_text("required with type = \"rectangle\"")
-        .applies_when(rectangle_mesh, kRectangleWords);
-    t.number("height", mesh_height, positive(), "rectangle: extent in y")
+        .default_text("required with type = \"rectangle\" or \"box\"")
+        .applies_when(structured_mesh, kStructuredWords);
+    t.number("width", mesh_width, positive(), "box: extent in y")
         .unit("L")
-        .default_text("required with type = \"rectangle\"")
-        .applies_when(rectangle_mesh, kRectangleWords);
-    t.integer("nx", mesh_nx, at_least(1), "rectangle: cells along x")
-        .default_text("required with type = \"rectangle\"")
-        .applies_when(rectangle_mesh, kRectangleWords);
-    t.integer("ny", mesh_ny, at_least(1), "rectangle: cells along y")
-        .default_text("required with type = \"rectangle\"")
-        .applies_when(rectangle_mesh, kRectangleWords);
-    t.choice(
-         "cell", mesh_cell, kRectangleCellNames,
-         "rectangle: the finite element: bilinear (`quad4`, the paper's), serendipity (`quad8`) or "
-         "biquadratic (`quad9`) quadrilaterals, or each square split into two linear (`tri3`) "
-         "or quadratic (`tri6`) triangles. Quadratic elements are far more accurate per "
-         "unknown and lock much less for nu near 0.5; the geometric multigrid needs `quad4`")
-        .applies_when(rectangle_mesh, kRectangleWords);
+        .default_text("required with type = \"box\"")
+        .applies_when(box_mesh, kBoxWords);
+    t.number("height", mesh_height, positive(), "rectangle: extent in y; box: extent in z")
+        .unit("L")
+        .default_text("required with type = \"rectangle\" or \"box\"")
+        .applies_when(structured_mesh, kStructuredWords);
+    t.integer("nx", mesh_nx, at_least(1), "cells along x")
+        .default_text("required with type = \"rectangle\" or \"box\"")
+        .applies_when(structured_mesh, kStructuredWords);
+    t.integer("ny", mesh_ny, at_least(1), "cells along y")
+        .default_text("required with type = \"rectangle\" or \"box\"")
+        .applies_when(structured_mesh, kStructuredWords);
+    t.integer("nz", mesh_nz, at_least(1), "box: cells along z")
+        .default_text("required with type = \"box\"")
+        .applies_when(box_mesh, kBoxWords);
+    t.choice("cell", mesh_cell, kStructuredCellNames,
+             "the finite element. Rectangle: bilinear (`quad4`, the paper's), serendipity "
+             "(`quad8`) or biquadratic (`quad9`) quadrilaterals, or each square split into two "
+             "linear (`tri3`) or quadratic (`tri6`) triangles. Box: trilinear (`hex8`) or "
+             "triquadratic (`hex27`) hexahedra, or each cube split into six linear (`tet4`) or "
+             "quadratic (`tet10`) tetrahedra. Quadratic elements are far more accurate per "
+             "unknown and lock much less for nu near 0.5; the geometric multigrid needs `quad4`")
+        .default_text("`\"quad4\"` (rectangle), `\"hex8\"` (box)")
+        .applies_when(structured_mesh, kStructuredWords);
     return t;
   }();
   return table;
+}
+
+bool cell_fits_mesh(const ProblemSpec& spec) {
+  const auto among = [](const auto& names, CellType cell) {
+    return std::any_of(names.begin(), names.end(), [&](const auto& e) { return e.first == cell; });
+  };
+  return spec.mesh_type == MeshType::Box ? among(kBoxCellNames, spec.box.cell)
+                                         : among(kRectangleCellNames, spec.mesh.cell);
+}
+
+int stated_dimension(const ProblemSpec& spec) {
+  switch (spec.mesh_type) {
+    case MeshType::Rectangle:
+      return 2;
+    case MeshType::Box:
+      return 3;
+    case MeshType::Gmsh:
+      break;
+  }
+  return spec.implied_dimension.dimension;
 }
 
 const OptionTable<P>& material_options() {
@@ -139,9 +210,15 @@ const OptionTable<P>& material_options() {
              "less")
         .required()
         .synonyms({"*poisson", "v", "mu_poisson"});
+    // A plane model means nothing in 3D: refused with a box rather than ignored. A Gmsh mesh's
+    // dimension is known only when it is read (after [material]): a 3D one ignores it, and the
+    // effective settings leave it out where the file's points say 3D.
     t.choice("plane_model", plane_model, kPlaneModelNames,
              "how the 2D problem stands for a 3D body: plane strain (eps_zz = 0, a long body) or "
-             "plane stress (sigma_zz = 0, a thin plate)");
+             "plane stress (sigma_zz = 0, a thin plate). Refused with a box; a 3D Gmsh mesh "
+             "ignores it")
+        .applies_when([](const P& s) { return stated_dimension(s) != 3; },
+                      "a 2D problem (type = \"rectangle\", or \"gmsh\" with a 2D mesh)");
     return t;
   }();
   return table;
@@ -167,8 +244,8 @@ const OptionTable<P>& region_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("region", true);
     t.custom("name", "string",
-             "a region of the mesh: a physical surface of a Gmsh mesh (`signorini check` lists "
-             "them)")
+             "a region of the mesh: a physical surface (a physical volume in 3D) of a Gmsh mesh "
+             "(`signorini check` lists them)")
         .required();
     t.custom("E", "number > 0", "Young's modulus of the region's cells").unit("S").required();
     t.custom("nu", "number in (-1, 0.5)", "Poisson's ratio of the region's cells").required();
@@ -181,12 +258,14 @@ const OptionTable<P>& clamp_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("clamp", true);
     t.custom("boundary", "string",
-             "a boundary part: `left`, `right`, `bottom`, `top` of a rectangle, or a physical "
-             "curve of a Gmsh mesh")
+             "a boundary part: `left`, `right`, `bottom`, `top` of a rectangle, `xmin`, `xmax`, "
+             "`ymin`, `ymax`, `zmin`, `zmax` of a box, or a physical curve (surface in 3D) of a "
+             "Gmsh mesh")
         .required();
-    t.custom("components", "array of `\"x\"`, `\"y\"`",
-             "the displacement components held at 0 (`[\"x\"]`: a roller that slides along y)")
-        .default_text("`[\"x\", \"y\"]`");
+    t.custom("components", "array of `\"x\"`, `\"y\"`, `\"z\"` (3D)",
+             "the displacement components held at 0 (`[\"x\"]`: a roller that slides along y, "
+             "and z in 3D)")
+        .default_text("every component: `[\"x\", \"y\"]`, in 3D `[\"x\", \"y\", \"z\"]`");
     return t;
   }();
   return table;
@@ -198,12 +277,20 @@ const OptionTable<P>& displacement_options() {
     t.custom("boundary", "string",
              "a boundary part whose displacement is given (a clamp with nonzero values)")
         .required();
-    t.custom("x", "number or expression of x, y", "u_x on the part").unit("L").default_text("free");
-    t.custom("y", "number or expression of x, y", "u_y on the part").unit("L").default_text("free");
+    t.custom("x", "number or expression of x, y, z", "u_x on the part")
+        .unit("L")
+        .default_text("free");
+    t.custom("y", "number or expression of x, y, z", "u_y on the part")
+        .unit("L")
+        .default_text("free");
+    t.custom("z", "number or expression of x, y, z", "u_z on the part (3D problems only)")
+        .unit("L")
+        .default_text("free");
     t.custom("normal", "number or expression of x, y",
              "u . n along the part's outward normal n at each node, instead of `x` and `y` (the "
              "tangential component stays free): on a side parallel to x or y the component "
-             "along that axis, elsewhere (inclined and curved parts) in local axes per node")
+             "along that axis, elsewhere (inclined and curved parts) in local axes per node. 2D "
+             "problems only so far")
         .unit("L")
         .default_text("free");
     return t;
@@ -215,7 +302,7 @@ const OptionTable<P>& pressure_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("pressure", true);
     t.custom("boundary", "string", "a boundary part (not a contact boundary)").required();
-    t.custom("p", "number or expression of x, y",
+    t.custom("p", "number or expression of x, y, z",
              "the pressure, normal to the boundary: the traction -p n with n the outward unit "
              "normal at each point (on curved quadratic edges it follows the curve); p > 0 "
              "pushes into the body")
@@ -230,12 +317,13 @@ const OptionTable<P>& traction_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("traction", true);
     t.custom("boundary", "string", "a boundary part (not the contact boundary)").required();
-    t.custom("p", "array of 2 expressions of x, y", "the traction (p_x, p_y)")
+    t.custom("p", "array of 2 (3 in 3D) expressions of x, y, z",
+             "the traction [p_x, p_y] (in 3D [p_x, p_y, p_z])")
         .unit("S")
         .required()
         .synonyms({"load", "pressure", "traction", "force"});
     t.custom("x_range", "array of 2 numbers [lower, upper]",
-             "the traction acts only where lower <= x <= upper")
+             "the traction acts only where lower <= x <= upper (2D problems only so far)")
         .unit("L")
         .default_text("the whole part");
     t.custom("y_range", "array of 2 numbers [lower, upper]", "likewise in y")
@@ -249,10 +337,14 @@ const OptionTable<P>& traction_options() {
 const OptionTable<P>& point_load_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("point_load", true);
-    t.custom("at", "array of 2 numbers", "where the load acts (the nearest node takes it)")
+    t.custom("at", "array of 2 (3 in 3D) numbers",
+             "where the load acts (the nearest node takes it)")
         .unit("L")
         .required();
-    t.custom("force", "array of 2 numbers", "the force (f_x, f_y)").unit("S L").required();
+    t.custom("force", "array of 2 (3 in 3D) numbers",
+             "the force [f_x, f_y] (in 3D [f_x, f_y, f_z]; in 2D per unit thickness)")
+        .unit("S L")
+        .required();
     t.custom("boundary", "string", "look for the nearest node on this boundary part only")
         .default_text("all nodes");
     return t;
@@ -263,8 +355,9 @@ const OptionTable<P>& point_load_options() {
 const OptionTable<P>& body_force_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("body_force");
-    t.custom("f", "array of 2 expressions of x, y",
-             "force per unit volume (f_x, f_y); without the section, f = 0")
+    t.custom("f", "array of 2 (3 in 3D) expressions of x, y, z",
+             "force per unit volume [f_x, f_y] (in 3D [f_x, f_y, f_z]); without the section, "
+             "f = 0")
         .unit("S/L")
         .default_text("required in the section");
     return t;
@@ -276,7 +369,7 @@ const OptionTable<P>& contact_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("contact");
     t.custom("boundary", "string", "a boundary part").required();
-    t.custom("gap", "expression of x, y",
+    t.custom("gap", "expression of x, y, z",
              "initial gap g(x) between body and foundation along the outward normal: g > 0 a "
              "clearance, 0 touching, g < 0 an initial interference (the foundation starts "
              "inside the body and pushes it out: a way to press a body onto an obstacle by a "
@@ -286,26 +379,31 @@ const OptionTable<P>& contact_options() {
         .unit("L")
         .default_text("`\"0\"`")
         .synonyms({"clearance", "initial_gap", "g"});
-    t.custom("obstacle", "`\"gap\"`, `\"plane\"` or `\"disc\"`",
-             "the rigid partner: the foundation of `gap` (the paper's), a half-plane (`point`, "
-             "`normal`) or a disc (`centre`, `radius`, `inside`). For a plane or a disc the gap of "
-             "each contact node is measured exactly, along the body's outward normal there; a "
-             "node whose normal never meets the obstacle gets 10 times the mesh's size")
+    t.custom("obstacle", "`\"gap\"`, `\"plane\"`, `\"disc\"` or `\"cylinder\"` (3D)",
+             "the rigid partner: the foundation of `gap` (the paper's), a half-plane (a "
+             "half-space in 3D: `point`, `normal`), a disc (a ball in 3D: `centre`, `radius`, "
+             "`inside`) or, in 3D, a cylinder (`centre` a point of its axis, `axis`, `radius`, "
+             "`inside`). For these the gap of each contact node is measured exactly, along the "
+             "body's outward normal there; a node whose normal never meets the obstacle gets 10 "
+             "times the mesh's size")
         .default_text("`\"gap\"`");
-    t.custom("point", "array of 2 numbers", "plane: a point of the plane's surface")
+    t.custom("point", "array of 2 (3 in 3D) numbers", "plane: a point of the plane's surface")
         .unit("L")
         .default_text("required with obstacle = \"plane\"");
-    t.custom("normal", "array of 2 numbers",
+    t.custom("normal", "array of 2 (3 in 3D) numbers",
              "plane: its normal, pointing out of the obstacle towards the body (any length)")
         .default_text("required with obstacle = \"plane\"");
-    t.custom("centre", "array of 2 numbers", "disc: its centre")
+    t.custom("centre", "array of 2 (3 in 3D) numbers",
+             "disc: its centre; cylinder: a point of its axis")
         .unit("L")
-        .default_text("required with obstacle = \"disc\"");
-    t.custom("radius", "number > 0", "disc: its radius")
+        .default_text("required with obstacle = \"disc\" or \"cylinder\"");
+    t.custom("axis", "array of 3 numbers", "cylinder: the direction of its axis (any length)")
+        .default_text("required with obstacle = \"cylinder\"");
+    t.custom("radius", "number > 0", "disc, cylinder: the radius")
         .unit("L")
-        .default_text("required with obstacle = \"disc\"");
+        .default_text("required with obstacle = \"disc\" or \"cylinder\"");
     t.custom("inside", "boolean",
-             "disc: true when the body lies inside the disc (a shaft in a bore), false when "
+             "disc, cylinder: true when the body lies inside it (a shaft in a bore), false when "
              "outside (a roller or a punch pressing on it)")
         .default_text("`false`");
     return t;
@@ -332,26 +430,36 @@ const std::vector<const OptionTableInfo*>& problem_schema() {
 }
 
 std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpec& contact,
-                                                                const std::string& gap_text) {
+                                                                const std::string& gap_text,
+                                                                int dim) {
   std::vector<std::pair<std::string, OptionValue>> out{{"boundary", contact.boundary}};
   const RigidObstacle& o = contact.obstacle;
-  const auto xy = [](const Eigen::Vector3d& v) { return std::array<double, 2>{v(0), v(1)}; };
+  // A point or vector of the problem's dimension; a cylinder's axis has 3 whatever it is.
+  const auto coordinates = [](const Eigen::Vector3d& v, int n) {
+    return std::vector<double>(v.data(), v.data() + n);
+  };
+  const std::string shape(enum_to_string(kObstacleShapeNames, o.shape));
   switch (o.shape) {
     case ObstacleShape::Gap:
       out.emplace_back("gap", gap_text);
       break;
     case ObstacleShape::Plane:
-      out.insert(
-          out.end(),
-          {{"obstacle", std::string("plane")}, {"point", xy(o.point)}, {"normal", xy(o.normal)}});
+      out.insert(out.end(), {{"obstacle", shape},
+                             {"point", coordinates(o.point, dim)},
+                             {"normal", coordinates(o.normal, dim)}});
       break;
-    case ObstacleShape::Cylinder:  // 3D, through the library only: its (x, y) here too
     case ObstacleShape::Disc:
-      out.insert(out.end(),
-                 {{"obstacle", std::string(enum_to_string(kObstacleShapeNames, o.shape))},
-                  {"centre", xy(o.centre)},
-                  {"radius", o.radius},
-                  {"inside", o.body_inside}});
+      out.insert(out.end(), {{"obstacle", shape},
+                             {"centre", coordinates(o.centre, dim)},
+                             {"radius", o.radius},
+                             {"inside", o.body_inside}});
+      break;
+    case ObstacleShape::Cylinder:
+      out.insert(out.end(), {{"obstacle", shape},
+                             {"centre", coordinates(o.centre, 3)},
+                             {"axis", coordinates(o.axis, 3)},
+                             {"radius", o.radius},
+                             {"inside", o.body_inside}});
       break;
   }
   return out;

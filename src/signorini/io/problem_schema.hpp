@@ -17,6 +17,12 @@ namespace signorini {
 [[nodiscard]] const OptionTable<ProblemSpec>& top_level_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& mesh_options();
 [[nodiscard]] const OptionTable<ProblemSpec>& material_options();
+/// Whether mesh.cell is a cell of the mesh type (a hexahedron or tetrahedron for a box, a
+/// quadrilateral or triangle for a rectangle): mesh.cell takes the names of both.
+[[nodiscard]] bool cell_fits_mesh(const ProblemSpec& spec);
+/// The dimension of the problem as its file states it: 2 for a rectangle, 3 for a box, for a
+/// Gmsh mesh what its keys imply (0: nothing yet; the mesh decides when it is read).
+[[nodiscard]] int stated_dimension(const ProblemSpec& spec);
 [[nodiscard]] const OptionTable<ProblemSpec>& fem_options();
 // Sections of formulas and lists, read by their own readers (io/problem_file.cpp): their keys and
 // docs are declared here all the same, so that the unknown-key check and the docs know them.
@@ -34,12 +40,12 @@ namespace signorini {
 [[nodiscard]] const std::vector<const OptionTableInfo*>& problem_schema();
 
 /// The keys and values of [contact] as a file gives them: the boundary, then `gap` (the text
-/// `gap_text`) or the obstacle's shape and geometry. The effective settings and summary.json
-/// write these.
+/// `gap_text`) or the obstacle's shape and geometry, points and vectors with `dim` coordinates
+/// (a cylinder's with 3). The effective settings and summary.json write these.
 [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> contact_values(
-    const ContactSpec& contact, const std::string& gap_text);
+    const ContactSpec& contact, const std::string& gap_text, int dim);
 /// The keys and values of one [[displacement]]: the boundary, then `normal` or the components
-/// given (x, y), as texts.
+/// given (x, y, z), as texts.
 [[nodiscard]] std::vector<std::pair<std::string, OptionValue>> displacement_values(
     const DisplacementSpec& displacement);
 /// The keys and values of one [[pressure]]: the boundary and p (its text).

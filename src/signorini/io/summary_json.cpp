@@ -64,7 +64,7 @@ nlohmann::json option_json(const OptionValue& value) {
   if (const auto* i = std::get_if<std::int64_t>(&value)) return *i;
   if (const auto* b = std::get_if<bool>(&value)) return *b;
   if (const auto* s = std::get_if<std::string>(&value)) return *s;
-  if (const auto* p = std::get_if<std::array<double, 2>>(&value)) return {(*p)[0], (*p)[1]};
+  if (const auto* v = std::get_if<std::vector<double>>(&value)) return *v;
   return "auto";  // a NumberOrAuto without a number
 }
 
@@ -186,6 +186,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     json components = json::array();
     if (c.components[0]) components.push_back("x");
     if (c.components[1]) components.push_back("y");
+    if (c.components[2] && dim == 3) components.push_back("z");
     clamps.push_back({{"boundary", c.boundary}, {"components", components}});
   }
   problem["clamp"] = clamps;
@@ -211,7 +212,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   // One contact boundary as the object of [contact], several as the array of [[contact]].
   json contacts = json::array();
   for (const ContactSpec& c : spec.contacts)
-    contacts.push_back(values_json(contact_values(c, c.description)));
+    contacts.push_back(values_json(contact_values(c, c.description, dim)));
   problem["contact"] = contacts.size() == 1 ? contacts[0] : contacts;
   problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
   problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);

@@ -49,8 +49,11 @@ std::string toml_value_text(const OptionValue& value) {
   if (const auto* i = std::get_if<std::int64_t>(&value)) return std::to_string(*i);
   if (const auto* b = std::get_if<bool>(&value)) return *b ? "true" : "false";
   if (const auto* s = std::get_if<std::string>(&value)) return toml_quote(*s);
-  if (const auto* p = std::get_if<std::array<double, 2>>(&value))
-    return fmt::format("[{}, {}]", toml_float((*p)[0]), toml_float((*p)[1]));
+  if (const auto* v = std::get_if<std::vector<double>>(&value)) {
+    std::string items;
+    for (const double x : *v) items += (items.empty() ? "" : ", ") + toml_float(x);
+    return "[" + items + "]";
+  }
   return toml_quote("auto");
 }
 

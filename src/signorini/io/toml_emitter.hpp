@@ -44,7 +44,7 @@ std::string toml_quote(std::string_view text);
 /// exponent ("1.0", "1e-10"), and inf/nan spelt the TOML way.
 std::string toml_float(double number);
 /// An option's value as TOML that reads back to it: "auto" (a NumberOrAuto without a number) is
-/// the string "auto", a pair an array of 2 floats.
+/// the string "auto", a point or vector an array of floats.
 std::string toml_value_text(const OptionValue& value);
 
 }  // namespace signorini

@@ -158,6 +158,15 @@ void Reader::missing(const std::string& key, const std::string& what) const {
   fail("missing required key '" + key + "' (" + what + ")");
 }
 
+void Reader::wrong_size(const std::string& key, const OptionInfo& o, std::size_t size,
+                        std::size_t given, const toml::node& n) const {
+  std::string names;
+  for (std::size_t k = 0; k < size && k < o.entry_names.size(); ++k)
+    names += (k > 0 ? ", " : "") + o.entry_names[k];
+  fail_at(n.source(), "key '" + key + "' must have " + std::to_string(size) + " entries (" + names +
+                          "), got " + std::to_string(given));
+}
+
 void Reader::out_of_range(const std::string& key, const std::string& value,
                           const std::string& expected, const toml::node* n) const {
   const std::string message = "key '" + key + "' = " + value + ": expected " + expected;
@@ -208,6 +217,19 @@ std::optional<std::string> Reader::expression(const toml::table& t, const std::s
   return text;
 }
 
+namespace {
+
+// "2", "3", or "2 or 3" (count 0: a point or vector whose dimension the mesh decides).
+std::string count_words(std::size_t count) {
+  return count == 0 ? std::string("2 or 3") : std::to_string(count);
+}
+
+bool count_fits(std::size_t count, std::size_t size) {
+  return count == 0 ? (size == 2 || size == 3) : size == count;
+}
+
+}  // namespace
+
 std::optional<std::vector<std::string>> Reader::expressions(const toml::table& t,
                                                             const std::string& path,
                                                             std::string_view key,
@@ -217,11 +239,14 @@ std::optional<std::vector<std::string>> Reader::expressions(const toml::table& t
   const std::string full = join(path, key);
   const auto* a = n->as_array();
   const std::string expected =
-      "an array of " + std::to_string(count) + " expressions (strings or numbers)";
+      "an array of " + count_words(count) + " expressions (strings or numbers)";
   if (a == nullptr) wrong_type(full, expected, *n);
-  if (a->size() != count)
-    fail("key '" + full + "' must have " + std::to_string(count) + " entries (x and y " +
-         "components), got " + std::to_string(a->size()));
+  if (!count_fits(count, a->size()))
+    fail("key '" + full + "' must have " + count_words(count) + " entries (" +
+         (count == 2   ? "x and y"
+          : count == 3 ? "x, y and z"
+                       : "x, y and, in 3D, z") +
+         " components), got " + std::to_string(a->size()));
   std::vector<std::string> out;
   for (std::size_t i = 0; i < a->size(); ++i) {
     auto text = expression_text(*a->get(i));
@@ -234,12 +259,12 @@ std::optional<std::vector<std::string>> Reader::expressions(const toml::table& t
 std::vector<double> Reader::numbers(const toml::node& n, const std::string& key, std::size_t count,
                                     const std::string& entries) const {
   const auto* a = n.as_array();
-  if (a == nullptr) wrong_type(key, "an array of " + std::to_string(count) + " numbers", n);
-  if (a->size() != count)
-    fail_at(n.source(), "key '" + key + "' must have " + std::to_string(count) + " entries (" +
+  if (a == nullptr) wrong_type(key, "an array of " + count_words(count) + " numbers", n);
+  if (!count_fits(count, a->size()))
+    fail_at(n.source(), "key '" + key + "' must have " + count_words(count) + " entries (" +
                             entries + "), got " + std::to_string(a->size()));
   std::vector<double> out;
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = 0; i < a->size(); ++i) {
     const toml::node& e = *a->get(i);
     double v = 0.0;
     if (const auto* iv = e.as_integer())
@@ -317,10 +342,10 @@ std::optional<OptionValue> Reader::option(const toml::table& t, const std::strin
         return OptionValue(std::monostate{});
       }
       return *number(t, path, o.key);
-    case OptionKind::Pair: {
-      const std::vector<double> xy = numbers(*n, key, 2, "x and y");
-      return std::array<double, 2>{xy[0], xy[1]};
-    }
+    case OptionKind::Coordinates:
+      // As many as the file gives (2 or 3): read_options() checks the count against the struct
+      // (a box's origin has 3), naming the entries.
+      return numbers(*n, key, 0, "a point or a vector");
     case OptionKind::Custom:
       break;
   }

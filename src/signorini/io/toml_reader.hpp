@@ -56,6 +56,9 @@ class Reader {
   [[noreturn]] void wrong_type(const std::string& key, const std::string& expected,
                                const toml::node& n) const;
   [[noreturn]] void missing(const std::string& key, const std::string& what) const;
+  /// "key 'mesh.origin' must have 3 entries (x0, y0, z0), got 2".
+  [[noreturn]] void wrong_size(const std::string& key, const OptionInfo& o, std::size_t size,
+                               std::size_t given, const toml::node& n) const;
   /// "key 'mesh.nx' = 0: expected an integer >= 1", at the line of `n` if there is one.
   [[noreturn]] void out_of_range(const std::string& key, const std::string& value,
                                  const std::string& expected, const toml::node* n = nullptr) const;
@@ -70,11 +73,13 @@ class Reader {
                                     std::string_view key) const;
   std::optional<std::string> expression(const toml::table& t, const std::string& path,
                                         std::string_view key) const;
+  /// An array of `count` expressions ("traction[0].p"); count 0: 2 or 3 (the components of a
+  /// vector whose dimension the mesh decides).
   std::optional<std::vector<std::string>> expressions(const toml::table& t, const std::string& path,
                                                       std::string_view key,
                                                       std::size_t count) const;
-  /// An array of exactly `count` finite numbers ("mesh.origin", "traction[0].x_range");
-  /// `entries` says what they are, for the message.
+  /// An array of exactly `count` finite numbers ("mesh.origin", "traction[0].x_range"), or of 2
+  /// or 3 with count 0; `entries` says what they are, for the message.
   std::vector<double> numbers(const toml::node& n, const std::string& key, std::size_t count,
                               const std::string& entries) const;
   const toml::table* table(const toml::table& t, const std::string& path,
@@ -114,10 +119,16 @@ void read_options(const Reader& r, const toml::table& t, const OptionTable<S>& t
   for (std::size_t i = 0; i < table.options.size(); ++i) {
     const OptionInfo& o = table.options[i];
     if (!table.setter(i)) continue;
-    if (const std::optional<OptionValue> v = r.option(t, table.path, o))
+    if (const std::optional<OptionValue> v = r.option(t, table.path, o)) {
+      // A point's entries: as many as the struct takes (the options before it, such as
+      // mesh.type, are set already); where the option does not apply, check_options() says so.
+      if (const auto* xs = std::get_if<std::vector<double>>(&*v); xs && table.applies(i, target))
+        if (const std::size_t size = table.vector_size(i, target); xs->size() != size)
+          r.wrong_size(table.full_key(o.key), o, size, xs->size(), *t.get(o.key));
       table.setter(i)(target, *v);
-    else if (o.required)
+    } else if (o.required) {
       r.missing(table.full_key(o.key), type_words(o));
+    }
   }
 }
 

@@ -202,11 +202,14 @@ Model build_model(const ProblemSpec& spec) {
   Mesh mesh = spec.mesh_type == MeshType::Gmsh  ? read_mesh_file(spec.mesh_file)
               : spec.mesh_type == MeshType::Box ? make_box_mesh(spec.box)
                                                 : make_rectangle_mesh(spec.mesh);
-  if (mesh.dim() == 3 && !spec.three_dimensional_allowed)
-    throw InputError("'" + spec.mesh_file +
-                     "' is a 3D mesh (tetrahedra or hexahedra): problem files describe 2D "
-                     "problems so far (3D problems are solved through the library for now); "
-                     "expected a 2D mesh (gmsh -2)");
+  // A problem file on a Gmsh mesh gives points and vectors with as many components as it
+  // chooses; now that the mesh is read, they must match it.
+  if (const ImpliedDimension& d = spec.implied_dimension;
+      d.dimension != 0 && d.dimension != mesh.dim())
+    throw InputError(fmt::format(
+        "{} gives {} ({}D problems only), but the mesh{} is {}D: expected {}", d.key, d.given,
+        d.dimension, spec.mesh_type == MeshType::Gmsh ? " '" + spec.mesh_file + "'" : "",
+        mesh.dim(), d.instead));
   // Materials per region, by the regions' names.
   ElasticityOptions elasticity = spec.elasticity;
   for (const RegionMaterialSpec& m : spec.region_materials) {
