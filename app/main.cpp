@@ -122,6 +122,12 @@ int main(int argc, char** argv) {
       ->type_name("R")
       ->check(kPositive);
   plot_cmd
+      ->add_option("--symmetry", plot.options.symmetry,
+                   "3D: the model is 1/N of the body (symmetry planes held by rollers); Hertz's "
+                   "profile takes N times its contact force (default 1)")
+      ->type_name("N")
+      ->check(CLI::PositiveNumber);
+  plot_cmd
       ->add_option("--format", plot.options.formats,
                    "The formats of the figures: png, svg or pdf, or several separated by commas "
                    "(default: png)")

@@ -136,6 +136,10 @@ PlotRun plot_results(const std::string& outdir, const PlotOptions& options, bool
     arguments.emplace_back("--hertz-radius");
     arguments.push_back(fmt::format("{:.17g}", *options.hertz_radius));
   }
+  if (options.symmetry != 1) {
+    arguments.emplace_back("--symmetry");
+    arguments.push_back(std::to_string(options.symmetry));
+  }
   arguments.emplace_back("--");  // a folder named "-x" is not an option
   arguments.push_back(outdir);
   return run_plot_script(arguments, capture);

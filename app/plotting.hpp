@@ -16,6 +16,8 @@ struct PlotOptions {
   /// 3D: the radius of Hertz's profile drawn beside the pressure; empty: that of a rigid sphere
   /// obstacle, if there is one.
   std::optional<double> hertz_radius;
+  /// 3D: the model is 1/symmetry of the body; Hertz's profile takes that many times its force.
+  int symmetry = 1;
   /// The formats, separated by commas: png, svg, pdf (the script checks them).
   std::string formats = "png";
 };

@@ -1205,7 +1205,8 @@ def figure_pressure_map(summary, contact, units, measure):
     ax.set_ylabel(axis_label(AXIS_NAMES[j], units.length))
     zoomed = False
     if zone is not None:
-        (c0, c1), ((a0, a1), (b0, b1)) = zone
+        _, ((a0, a1), (b0, b1)) = zone
+        c0, c1 = 0.5 * (a0 + a1), 0.5 * (b0 + b1)  # the middle of the zone's extent
         size = max(a1 - a0, b1 - b0, node_spacing(a, b) * 4)
         whole = max(np.ptp(a), np.ptp(b))
         if size < 0.4 * whole:  # a small zone on a large surface: zoomed onto it
@@ -1240,12 +1241,13 @@ def figure_pressure_map(summary, contact, units, measure):
     return fig, describe_limits(ax)
 
 
-def hertz_parameters(summary, radius=None):
+def hertz_parameters(summary, radius=None, symmetry=1):
     """(R, E*, a, p0) of Hertz's contact of a sphere of radius R with a flat elastic body or of
     an elastic sphere with a rigid plane (E* = E / (1 - nu^2), the partner rigid) under the
     computed contact force F: a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2). R is `radius`
     if given, else that of a rigid sphere obstacle (a disc in 3D, the body outside it); None
-    where neither applies (another obstacle, several contact boundaries, no force)."""
+    where neither applies (another obstacle, several contact boundaries, no force). A model of
+    1/`symmetry` of the body (symmetry planes held by rollers) carries 1/symmetry of the force."""
     problem = summary.get("problem", {})
     contact = problem.get("contact")
     material = problem.get("material", {})
@@ -1258,6 +1260,7 @@ def hertz_parameters(summary, radius=None):
     force = summary.get("contact_force")
     if not all(isinstance(v, (int, float)) for v in (radius, E, nu, force)):
         return None
+    force *= symmetry
     if radius <= 0 or E <= 0 or force <= 0 or problem.get("region"):
         return None
     e_star = E / (1.0 - nu * nu)
@@ -1266,7 +1269,7 @@ def hertz_parameters(summary, radius=None):
     return radius, e_star, a, p0
 
 
-def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None):
+def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None, symmetry=1):
     import numpy as np
 
     i, j = surface_plane(contact)
@@ -1278,6 +1281,11 @@ def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None)
     ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
     zone = contact_zone(contact, i, j)
     centre = zone[0] if zone is not None else [float(np.mean(a)), float(np.mean(b))]
+    if zone is not None and symmetry > 1:
+        # A part of the body cut by symmetry planes: the centre of the whole contact zone lies
+        # on them, where the pressure peaks, not at the part's pressure-weighted mean.
+        top = int(np.argmax(p))
+        centre = [float(a[top]), float(b[top])]
     h = node_spacing(a, b)
     # Every node at its distance from the centre, on the side of its first in-plane coordinate
     # (for a round contact zone, the profile folded onto one line).
@@ -1291,15 +1299,16 @@ def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None)
     order = np.argsort(da[line])
     ax.plot(da[line][order], p[line][order] / scale, "o-", color="tab:red", ms=3, lw=1.4,
             label=f"nodes within half a spacing of the line {AXIS_NAMES[j]} = {centre[1]:.4g}")
-    hertz = hertz_parameters(summary, hertz_radius)
+    hertz = hertz_parameters(summary, hertz_radius, symmetry)
     description = ""
     if hertz is not None:
         radius, e_star, ra, p0 = hertz
         s = np.linspace(-ra, ra, 201)
         ax.plot(s, p0 * np.sqrt(np.maximum(1.0 - (s / ra) ** 2, 0.0)) / scale, "--",
                 color="black", lw=1.2,
-                label=f"Hertz, same force (R = {radius:.4g}, E* = {e_star:.4g}): "
-                      f"a = {ra:.4g}, p0 = {p0:.4g}")
+                label=(f"Hertz, same force (R = {radius:.4g}, E* = {e_star:.4g}"
+                       + (f", the model {symmetry} times" if symmetry != 1 else "") + "): "
+                       f"a = {ra:.4g}, p0 = {p0:.4g}"))
         description = f"; hertz: a {ra:.6g}, p0 {p0:.6g}"
     ax.axhline(0.0, color="0.6", lw=0.8)
     ax.set_xlabel(axis_label(f"{AXIS_NAMES[i]} − {centre[0]:.4g} (distance from the centre of "
@@ -1401,7 +1410,7 @@ def draw_and_save(outdir, name, make, written, formats):
     gc.collect()
 
 
-def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz_radius=None):
+def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(None, 1)):
     """Reads the results and draws the figures that `next_figure()` names, until it returns
     None, into temporary files (listed in `written`); returns the names drawn."""
     import_plotting()
@@ -1413,7 +1422,7 @@ def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz_radi
         makers = {
             "contact_pressure_map": lambda: figure_pressure_map(summary, contact, units, measure),
             "contact_pressure": lambda: figure_pressure_profile(summary, contact, units, measure,
-                                                                hertz_radius),
+                                                                *hertz),
             "convergence": lambda: figure_convergence(summary, measure),
         }
         drawn = []
@@ -1465,7 +1474,7 @@ class Helper:
     one at a time, so that a process that is faster (or started sooner) draws more; the helper
     reports the files it wrote, or its error, through another pipe."""
 
-    def __init__(self, outdir, scale, formats, order, hertz_radius=None):
+    def __init__(self, outdir, scale, formats, order, hertz=(None, 1)):
         self.outdir = outdir
         self.formats = formats
         self.order = order
@@ -1479,7 +1488,7 @@ class Helper:
         if self.pid == 0:
             os.close(report_read)
             self.run(queue_read, report_write, outdir, scale, formats, order,
-                     hertz_radius)  # does not return
+                     hertz)  # does not return
         os.close(report_write)
         self.queue = queue_read
         self.report = report_read
@@ -1491,7 +1500,7 @@ class Helper:
         return self.order[index[0]] if index else None
 
     @staticmethod
-    def run(queue, report_end, outdir, scale, formats, order, hertz_radius):
+    def run(queue, report_end, outdir, scale, formats, order, hertz):
         status, written = 0, []
 
         def next_figure():
@@ -1500,7 +1509,7 @@ class Helper:
 
         try:
             drawn = draw(outdir, next_figure, scale, written, formats, warnings=False,
-                         hertz_radius=hertz_radius)
+                         hertz=hertz)
             report = {"drawn": drawn}
         except UsageError as e:
             status, report = 2, {"usage": str(e)}
@@ -1559,7 +1568,7 @@ class Helper:
             pass
 
 
-def save_all(outdir, scale, quiet, formats, hertz_radius=None):
+def save_all(outdir, scale, quiet, formats, hertz=(None, 1)):
     """Every file is written under a temporary name first and renamed at the end, so that a
     failure leaves no half-written picture and keeps the pictures of an earlier run. With two
     cores or more, two processes draw the figures (about half of the time)."""
@@ -1567,16 +1576,14 @@ def save_all(outdir, scale, quiet, formats, hertz_radius=None):
     order = order_of(dimension)
     helper = None
     if cores() >= 2 and hasattr(os, "fork"):
-        helper = Helper(outdir, scale, formats, order, hertz_radius)
+        helper = Helper(outdir, scale, formats, order, hertz)
     written, mine = [], []
     try:
         if helper is None:
             figures = iter(order)
-            draw(outdir, lambda: next(figures, None), scale, written, formats,
-                 hertz_radius=hertz_radius)
+            draw(outdir, lambda: next(figures, None), scale, written, formats, hertz=hertz)
         else:
-            mine = draw(outdir, helper.next_figure, scale, written, formats,
-                        hertz_radius=hertz_radius)
+            mine = draw(outdir, helper.next_figure, scale, written, formats, hertz=hertz)
             waiting, helper = helper, None
             try:
                 theirs = waiting.finish()
@@ -1614,6 +1621,9 @@ def main(argv):
                         help="3D: draw Hertz's pressure profile for a sphere of radius R (the "
                              "body's, pressed onto a rigid plane; default: the radius of a rigid "
                              "sphere obstacle, if there is one)")
+    parser.add_argument("--symmetry", type=int, default=1, metavar="N",
+                        help="3D: the model is 1/N of the body (symmetry planes held by rollers: "
+                             "2, 4 or 8); Hertz's profile takes N times its contact force")
     parser.add_argument("--quiet", action="store_true", help="print nothing but errors")
     parser.add_argument("--check", action="store_true",
                         help="only check that numpy and matplotlib are installed")
@@ -1632,8 +1642,10 @@ def main(argv):
         if args.hertz_radius is not None and not (math.isfinite(args.hertz_radius) and
                                                   args.hertz_radius > 0):
             raise UsageError(f"--hertz-radius {args.hertz_radius}: expected a positive number")
+        if args.symmetry < 1:
+            raise UsageError(f"--symmetry {args.symmetry}: expected a whole number >= 1")
         check_results(args.outdir)
-        save_all(args.outdir, args.scale, args.quiet, formats, args.hertz_radius)
+        save_all(args.outdir, args.scale, args.quiet, formats, (args.hertz_radius, args.symmetry))
     except UsageError as e:
         fail(2, e)
     return 0

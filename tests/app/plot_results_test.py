@@ -258,7 +258,7 @@ class TwoProcessesTest(unittest.TestCase):
         here = os.getpid()
 
         def fake_draw(outdir, next_figure, scale, written, formats, warnings=True,
-                      hertz_radius=None):
+                      hertz=(None, 1)):
             if os.getpid() == here:
                 time.sleep(0.3)
                 if fails == "here":

@@ -460,12 +460,13 @@ TEST(Plot, ThreeDimensionalResultsWithHertzsProfile) {
   EXPECT_NEAR(result.l.maxCoeff(), p0, 0.15 * p0);
 
   const ToolRun other =
-      run_tool(dir, "plot " + quoted(out.string()) + " --format svg --hertz-radius 4");
+      run_tool(dir, "plot " + quoted(out.string()) + " --format svg --hertz-radius 4 --symmetry 2");
   ASSERT_EQ(other.status, 0) << other.err;
+  // Half of a body: twice the force.
   EXPECT_NEAR(hertz_of(testing::read_text(out / "contact_pressure.svg")).first,
-              std::cbrt(3.0 * F * 4.0 / (4.0 * E / (1.0 - nu * nu))), 1e-5 * a);
-  const ToolRun bad = run_tool(dir, "plot " + quoted(out.string()) + " --hertz-radius -1");
-  EXPECT_EQ(bad.status, 2);
+              std::cbrt(3.0 * (2.0 * F) * 4.0 / (4.0 * E / (1.0 - nu * nu))), 1e-5 * a);
+  EXPECT_EQ(run_tool(dir, "plot " + quoted(out.string()) + " --hertz-radius -1").status, 2);
+  EXPECT_EQ(run_tool(dir, "plot " + quoted(out.string()) + " --symmetry 0").status, 2);
 }
 
 }  // namespace
