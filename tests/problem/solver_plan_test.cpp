@@ -46,7 +46,7 @@ TEST(SolverPlan, LargeThreeDimensionalProblemsGoIterative) {
       plan_solver(ContactSolverOptions{}, {3, 20000, kIterativeFromUnknowns3D + 1, 900, 24 * kGB});
   EXPECT_EQ(large.options.linear.type, LinearSolverType::ConjugateGradient);
   EXPECT_EQ(large.options.linear.preconditioner, PreconditionerType::Multigrid);
-  EXPECT_CONTAINS(large.reason, "iterative, CG with multigrid: 3D with 30,001 free unknowns");
+  EXPECT_CONTAINS(large.reason, "iterative, CG with multigrid: 3D with 15,001 free unknowns");
   EXPECT_TRUE(uses_backend_path(large.options));
 }
 
@@ -79,7 +79,7 @@ TEST(SolverPlan, WhatTheUserChoseStays) {
   EXPECT_EQ(plan.reason, "as configured (schur_complement = false)");
 }
 
-// Through build_model: a ball pressed into a block of 35,000 free unknowns is planned onto CG
+// Through build_model: a ball pressed into a block of 35,322 free unknowns is planned onto CG
 // with multigrid (its hierarchy built), and solves to the direct path's answer.
 TEST(SolverPlan, BuildModelPlansAndBuildsTheHierarchy) {
   ProblemSpec spec;

@@ -88,7 +88,7 @@ struct ContactSolverOptions {
   bool schur_complement = true;
   /// Let build_model() choose the path from the problem's size and the machine's memory
   /// (problem/solver_plan.hpp): with the default "cholmod" solver on the CPU, CG with multigrid
-  /// for 3D problems above 30,000 free unknowns or a factor that would not fit, and the sparse
+  /// for 3D problems above 15,000 free unknowns or a factor that would not fit, and the sparse
   /// direct path when the condensed matrix would not fit. false: exactly as configured.
   bool automatic_path = true;
   /// The contact law (contact_law.hpp): null for the paper's frictionless unilateral law. The

@@ -22,10 +22,11 @@ struct ProblemSize {
 };
 
 /// In 3D a sparse Cholesky factor costs more than CG with smoothed-aggregation multigrid from
-/// about this many free unknowns on (hex8 blocks on the 2-core development machine: at 22,500
-/// unknowns 1.4 s against 1.6 s for the whole solve, at 52,000 7.1 s against 3.4 s; the factor's
-/// memory grows faster still: 0.9 GB against 0.2 GB; docs/solvers.md).
-inline constexpr Index kIterativeFromUnknowns3D = 30000;
+/// about this many free unknowns on (hex8 blocks on the 2-core development machine, model and
+/// solve: at 6,900 unknowns 0.32 s against 0.51 s, at 22,500 1.6 s against 0.9 s, at 52,000
+/// 6.5 s against 2.1 s; the factor's memory grows faster still: 0.94 GB against 0.19 GB;
+/// docs/solvers.md).
+inline constexpr Index kIterativeFromUnknowns3D = 15000;
 
 /// Bytes per entry of the condensed path's dense matrices (the Schur complement stored with its
 /// indices, and the Cholesky factor's array).

@@ -65,7 +65,7 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
     t.boolean("automatic_path", &O::automatic_path,
               "choose the solver path from the problem's size and this machine's memory: with "
               "the default `cholmod` solver on the CPU, `cg` with `multigrid` for 3D problems "
-              "above 30,000 free unknowns or a sparse factor that would not fit, and the sparse "
+              "above 15,000 free unknowns or a sparse factor that would not fit, and the sparse "
               "direct path when the condensed matrix would not fit; the summary says which and "
               "why ([solvers.md](solvers.md)). `false`: exactly as configured");
     t.choice("device", &O::device, kDeviceKindNames,

@@ -43,6 +43,19 @@ class ColumnAccumulator {
     pattern_.clear();
   }
 
+  /// Calls f(row, value) for every row touched, in no particular order (a column that is only
+  /// an intermediate needs no sorting), and leaves the accumulator empty.
+  template <class F>
+  void drain(F&& f) {
+    for (const int i : pattern_) {
+      const auto u = static_cast<std::size_t>(i);
+      f(static_cast<Index>(i), values_[u]);
+      values_[u] = 0.0;
+      used_[u] = 0;
+    }
+    pattern_.clear();
+  }
+
  private:
   std::vector<double> values_;
   std::vector<char> used_;
