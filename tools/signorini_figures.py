@@ -1132,6 +1132,12 @@ def surface_plane(contact):
     return i, j
 
 
+def surface_coordinates(contact):
+    """(i, j, a, b): the plane of surface_plane() and the nodes' coordinates in it."""
+    i, j = surface_plane(contact)
+    return i, j, contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]
+
+
 def surface_triangulation(a, b):
     """A Delaunay triangulation of the projected nodes without the triangles that bridge gaps
     (between two contact surfaces, or across a hole): those with an edge over three times the
@@ -1183,8 +1189,7 @@ def node_spacing(a, b):
 def figure_pressure_map(summary, contact, units, measure):
     import numpy as np
 
-    i, j = surface_plane(contact)
-    a, b = contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]
+    i, j, a, b = surface_coordinates(contact)
     p = contact["pressure"]
     k = power_of_ten(p)
     scale = 10.0 ** k
@@ -1272,8 +1277,7 @@ def hertz_parameters(summary, radius=None, symmetry=1):
 def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None, symmetry=1):
     import numpy as np
 
-    i, j = surface_plane(contact)
-    a, b = contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]
+    i, j, a, b = surface_coordinates(contact)
     p = contact["pressure"]
     k = power_of_ten(p)
     scale = 10.0 ** k

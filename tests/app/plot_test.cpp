@@ -16,6 +16,7 @@
 
 #include "app/tool_run.hpp"
 #include "io/expect_contains.hpp"
+#include "problem/ball_on_block.hpp"
 #include "signorini/signorini.hpp"
 
 namespace signorini {
@@ -399,22 +400,10 @@ TEST(Plot, MissingPythonIsExitStatus2) {
 TEST(Plot, ThreeDimensionalResultsWithHertzsProfile) {
   if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
   const testing::TemporaryFolder dir;
-  ProblemSpec spec;
-  spec.name = "ball";
+  ProblemSpec spec = testing::ball_on_block(12, 4e-3);
   spec.units = "m-MPa";
-  spec.mesh_type = MeshType::Box;
-  spec.box.height = 0.5;
-  spec.box.nx = spec.box.ny = 12;
-  spec.box.nz = 4;
-  const double E = 1000.0, nu = 0.3, R = 2.0;
-  spec.elasticity.material = {E, nu};
-  spec.clamps = {{"zmax", {true, true, true}}};
-  ContactSpec ball;
-  ball.boundary = "zmin";
-  ball.obstacle.shape = ObstacleShape::Disc;  // a sphere in 3D
-  ball.obstacle.radius = R;
-  ball.obstacle.centre = Eigen::Vector3d(0.5, 0.5, -R + 4e-3);
-  spec.contacts = {ball};
+  const double E = spec.elasticity.material.E, nu = spec.elasticity.material.nu;
+  const double R = spec.contacts[0].obstacle.radius;
   const Model model = build_model(spec);
   const ContactResult result = solve_contact(model.problem, spec.solver);
   ASSERT_TRUE(result.summary.converged());

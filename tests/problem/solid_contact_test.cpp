@@ -19,6 +19,7 @@
 
 #include "app/tool_run.hpp"
 #include "io/temporary_folder.hpp"
+#include "problem/ball_on_block.hpp"
 #include "problem/each_method.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
@@ -212,20 +213,8 @@ namespace {
 // built on the six rigid-body modes, against the direct (condensed) path, on a ball pressed into
 // a block.
 TEST(SolidContactPaths, IterativeWithAggregationMultigridAgreesWithDirect) {
-  ProblemSpec spec;
-  spec.mesh_type = MeshType::Box;
-  spec.box.nx = 12;  // 3,042 free unknowns: above the 1,000 of the coarsest level
-  spec.box.ny = 12;
-  spec.box.nz = 6;
-  spec.box.height = 0.5;
-  spec.elasticity.material = {1000.0, 0.3};
-  spec.clamps = {{"zmax", {true, true, true}}};
-  ContactSpec ball;
-  ball.boundary = "zmin";
-  ball.obstacle.shape = ObstacleShape::Disc;
-  ball.obstacle.radius = 2.0;
-  ball.obstacle.centre = Eigen::Vector3d(0.5, 0.5, -2.0 + 2e-3);
-  spec.contacts = {ball};
+  // 3,042 free unknowns: above the 1,000 of the coarsest level
+  ProblemSpec spec = testing::ball_on_block(12, 2e-3);
   spec.solver.uzawa_tolerance = 1e-10;
   const ContactResult direct = solve_contact(build_model(spec).problem, spec.solver);
   ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "io/expect_contains.hpp"
+#include "problem/ball_on_block.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
 
@@ -82,19 +83,7 @@ TEST(SolverPlan, WhatTheUserChoseStays) {
 // Through build_model: a ball pressed into a block of 35,322 free unknowns is planned onto CG
 // with multigrid (its hierarchy built), and solves to the direct path's answer.
 TEST(SolverPlan, BuildModelPlansAndBuildsTheHierarchy) {
-  ProblemSpec spec;
-  spec.mesh_type = MeshType::Box;
-  spec.box.height = 0.5;
-  spec.box.nx = spec.box.ny = 28;
-  spec.box.nz = 14;
-  spec.elasticity.material = {1000.0, 0.3};
-  spec.clamps = {{"zmax", {true, true, true}}};
-  ContactSpec ball;
-  ball.boundary = "zmin";
-  ball.obstacle.shape = ObstacleShape::Disc;
-  ball.obstacle.radius = 2.0;
-  ball.obstacle.centre = Eigen::Vector3d(0.5, 0.5, -2.0 + 4e-3);
-  spec.contacts = {ball};
+  ProblemSpec spec = testing::ball_on_block(28, 4e-3);
   spec.solver.uzawa_tolerance = 1e-10;
   const Model model = build_model(spec);
   ASSERT_GT(model.dofs.num_free(), kIterativeFromUnknowns3D);
