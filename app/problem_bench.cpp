@@ -14,8 +14,6 @@
 #include "signorini/core/error.hpp"
 #include "signorini/io/atomic_file.hpp"
 #include "signorini/io/problem_file.hpp"
-#include "signorini/iterative/jacobi_preconditioner.hpp"
-#include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/iterative/pcg.hpp"
 #include "signorini/linalg/iterative_options.hpp"
 #include "signorini/linalg/linear_solver.hpp"
@@ -37,13 +35,8 @@ double linear_solve_seconds(const Model& model, const ContactSolverOptions& solv
     const auto start = std::chrono::steady_clock::now();
     HostBackend backend;
     PenalizedOperator H(backend, A, model.problem.contact.N);  // no weights: H = A
-    std::unique_ptr<Preconditioner> M;
-    if (solver.linear.preconditioner == PreconditionerType::Multigrid)
-      M = std::make_unique<MultigridPreconditioner>(
-          H, A, model.problem.contact.N, model.multigrid.prolongations,
-          multigrid_options(solver.linear), model.multigrid.coarse_operators);
-    else
-      M = std::make_unique<JacobiPreconditioner>(H);
+    const std::unique_ptr<Preconditioner> M =
+        make_preconditioner(H, A, model.problem.contact.N, &model.multigrid, solver.linear);
     Pcg pcg(backend, n);
     const DeviceVector b = to_device(backend, model.problem.b);
     DeviceVector x(backend, n);

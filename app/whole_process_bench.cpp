@@ -19,6 +19,7 @@
 #include "child_process.hpp"
 #include "commands.hpp"
 #include "data_files.hpp"
+#include "signorini/core/digit_groups.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/atomic_file.hpp"
 #include "signorini/io/effective_settings.hpp"
@@ -125,19 +126,6 @@ struct Measured {
 
 std::string mesh_name(const std::pair<Index, Index>& m) {
   return fmt::format("{}x{}", m.first, m.second);
-}
-
-std::string with_thousands(long n) {
-  // Built forwards rather than by std::string::insert, on which g++ 12 warns falsely
-  // (-Wrestrict) once it is inlined.
-  const std::string digits = std::to_string(n);
-  const std::size_t lead = digits[0] == '-' ? 1 : 0;
-  std::string out = digits.substr(0, lead);
-  for (std::size_t i = lead; i < digits.size(); ++i) {
-    if (i > lead && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
 }
 
 void check_exit(const ChildRun& run, const std::string& what, int converged_or_not) {

@@ -1427,27 +1427,22 @@ def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(Non
             "contact_pressure_map": lambda: figure_pressure_map(summary, contact, units, measure),
             "contact_pressure": lambda: figure_pressure_profile(summary, contact, units, measure,
                                                                 *hertz),
-            "convergence": lambda: figure_convergence(summary, measure),
         }
-        drawn = []
-        while (name := next_figure()) is not None:
-            drawn.append(name)
-            draw_and_save(outdir, name, makers[name], written, formats)
-        return drawn
-    # Shared by the figures along the contact boundary.
-    contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
-    contact["parts"] = boundary_parts(contact)
-    contact["intervals"] = [iv for _, rows in contact["parts"]
-                            for iv in contact_intervals(contact["t"][rows],
-                                                        contact["pressure"][rows] > 0)]
-    makers = {
-        "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),
-        "contact_pressure": lambda: figure_pressure(summary, contact, units, measure),
-        "deformed_von_mises": lambda: figure_deformed(
-            summary, read_vtu(os.path.join(outdir, "solution.vtu")), contact, scale, units,
-            measure),
-        "convergence": lambda: figure_convergence(summary, measure),
-    }
+    else:
+        # Shared by the figures along the contact boundary.
+        contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
+        contact["parts"] = boundary_parts(contact)
+        contact["intervals"] = [iv for _, rows in contact["parts"]
+                                for iv in contact_intervals(contact["t"][rows],
+                                                            contact["pressure"][rows] > 0)]
+        makers = {
+            "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),
+            "contact_pressure": lambda: figure_pressure(summary, contact, units, measure),
+            "deformed_von_mises": lambda: figure_deformed(
+                summary, read_vtu(os.path.join(outdir, "solution.vtu")), contact, scale, units,
+                measure),
+        }
+    makers["convergence"] = lambda: figure_convergence(summary, measure)
     drawn = []
     while (name := next_figure()) is not None:
         drawn.append(name)

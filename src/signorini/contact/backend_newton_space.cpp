@@ -39,17 +39,9 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
   ScopedTimer t(timings_, o_.linear.preconditioner == PreconditionerType::Multigrid
                               ? "multigrid setup"
                               : "preconditioner setup");
-  if (o_.linear.preconditioner == PreconditionerType::Multigrid) {
-    static const MultigridHierarchy kSingleLevel;  // no hierarchy: smoothing alone
-    const MultigridHierarchy& levels = multigrid != nullptr ? *multigrid : kSingleLevel;
-    auto mg = std::make_unique<MultigridPreconditioner>(
-        *H_, problem.A, problem.contact.N, levels.prolongations, multigrid_options(o_.linear),
-        levels.coarse_operators);
+  preconditioner_ = make_preconditioner(*H_, problem.A, problem.contact.N, multigrid, o_.linear);
+  if (const auto* mg = dynamic_cast<const MultigridPreconditioner*>(preconditioner_.get()))
     levels_ = mg->level_sizes();
-    preconditioner_ = std::move(mg);
-  } else {
-    preconditioner_ = std::make_unique<JacobiPreconditioner>(*H_);
-  }
   be_.synchronize();
   pcg_ = std::make_unique<Pcg>(be_, n_);
   weights_active_.assign(static_cast<std::size_t>(nc_), false);

@@ -52,13 +52,14 @@ double dual_operator_norm(const ContactProblem& p, LinearSolver& solver) {
   DualOperator T(p, solver);
   IdentityPreconditioner identity;
   const DeviceVector start = to_device(host, v);
+  const auto zero = [] { return NumericalError("classical Uzawa: the dual operator is zero"); };
   double lambda = 0.0;
   try {
     lambda = estimate_largest_eigenvalue(T, identity, start, 30);
   } catch (const NumericalError&) {
-    lambda = 0.0;  // not one step: T vanishes on the start vector
+    throw zero();  // not one step: T vanishes on the start vector
   }
-  if (!(lambda > 0.0)) throw NumericalError("classical Uzawa: the dual operator is zero");
+  if (!(lambda > 0.0)) throw zero();
   return lambda;
 }
 

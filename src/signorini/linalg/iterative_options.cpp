@@ -15,4 +15,16 @@ MultigridOptions multigrid_options(const LinearSolverOptions& options) {
   return o;
 }
 
+std::unique_ptr<Preconditioner> make_preconditioner(PenalizedOperator& H, const SparseMatrix& A,
+                                                    const SparseMatrix& N,
+                                                    const MultigridHierarchy* levels,
+                                                    const LinearSolverOptions& options) {
+  if (options.preconditioner != PreconditionerType::Multigrid)
+    return std::make_unique<JacobiPreconditioner>(H);
+  static const MultigridHierarchy kSingleLevel;  // no hierarchy: smoothing alone
+  const MultigridHierarchy& l = levels != nullptr ? *levels : kSingleLevel;
+  return std::make_unique<MultigridPreconditioner>(H, A, N, l.prolongations,
+                                                   multigrid_options(options), l.coarse_operators);
+}
+
 }  // namespace signorini

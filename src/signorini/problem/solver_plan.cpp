@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "signorini/core/digit_groups.hpp"
+#include "signorini/problem/memory_estimate.hpp"
+
 namespace signorini {
 
 namespace {
@@ -13,19 +16,16 @@ std::string gigabytes(double bytes) {
 }
 
 std::string thousands(Index n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
+  return with_thousands(static_cast<long long>(n));
 }
 
 }  // namespace
 
 double estimated_factor_bytes(const ProblemSize& size) {
-  return size.dimension == 3 ? 25e3 * static_cast<double>(size.free_unknowns)
-                             : 4096.0 * static_cast<double>(size.nodes);
+  // 2D: the peak of a whole solve with CHOLMOD per node (memory_estimate.hpp), factor included.
+  return size.dimension == 3
+             ? 25e3 * static_cast<double>(size.free_unknowns)
+             : estimated_memory_bytes(static_cast<double>(size.nodes), LinearSolverType::Cholmod);
 }
 
 SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& size) {
