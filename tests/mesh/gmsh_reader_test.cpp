@@ -382,6 +382,22 @@ TEST(GmshReader, BoxesMeshedByGmsh) {
       EXPECT_EQ(m.boundary_part("bottom").facets.size(), 4u) << what;
     }
   }
+  // A .geo given as the mesh file is meshed in 3D by the program: the mesh of gmsh -3.
+  const auto same_mesh = [](const Mesh& x, const Mesh& y, const std::string& what) {
+    ASSERT_EQ(x.num_nodes(), y.num_nodes()) << what;
+    ASSERT_EQ(x.num_cells(), y.num_cells()) << what;
+    EXPECT_EQ(x.cell_types(), y.cell_types()) << what;
+    EXPECT_EQ((x.coordinates() - y.coordinates()).cwiseAbs().maxCoeff(), 0.0) << what;
+    for (Index c = 0; c < x.num_cells(); ++c)
+      EXPECT_TRUE(std::equal(x.cell(c).begin(), x.cell(c).end(), y.cell(c).begin())) << what;
+    for (const auto& name : x.boundary_part_names())
+      EXPECT_EQ(y.boundary_part_nodes(name), x.boundary_part_nodes(name)) << what << name;
+  };
+  for (const char* geo : {"tet.geo", "hex.geo"}) {
+    const Mesh from_geo = read_mesh_file(dir / geo);
+    EXPECT_EQ(from_geo.dim(), 3) << geo;
+    same_mesh(from_geo, mesh(geo, "-format msh41", "geo.msh"), geo);
+  }
   // The same second-order tetrahedra from the four formats: the same mesh, node for node and
   // cell for cell.
   const Mesh a = mesh("tet.geo", "-order 2 -format msh41", "a.msh");

@@ -86,6 +86,10 @@ struct ContactSolverOptions {
   /// dense problem (docs/performance.md). The solution is the same; only the cost changes.
   /// Ignored for "cg" (the paper's configuration) and "dense".
   bool schur_complement = true;
+  /// Threads the solver may use; 0: as many as the machine runs at once. Today only the
+  /// condensation uses them: from 100,000 unknowns on, it factorises two parts of the problem at
+  /// once (linalg/schur_complement.hpp). 1: one thread, one factorisation.
+  int threads = 0;
   /// Let build_model() choose the path from the problem's size and the machine's memory
   /// (problem/solver_plan.hpp): with the default "cholmod" solver on the CPU, CG with multigrid
   /// for 3D problems above 15,000 free unknowns or a factor that would not fit, and the sparse

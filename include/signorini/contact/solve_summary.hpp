@@ -86,6 +86,9 @@ struct SolveSummary {
   SolvePath path = SolvePath::CondensedDirect;  ///< how it was solved
   /// Why that path (SolverPlan::reason, set by the caller that planned it); empty: not said.
   std::string path_reason;
+  /// Threads the host solve ran on: 2 when the condensation factorised two parts at once
+  /// (ContactSolverOptions::threads), 1 otherwise (the backend path says its own in `device`).
+  int threads = 1;
   bool warm_started = false;  ///< started from an earlier solution (ContactSolver::warm_start)
   Termination termination = Termination::Converged;
   std::string message;                 ///< one line: why it stopped, with the residuals

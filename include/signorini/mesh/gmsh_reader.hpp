@@ -37,9 +37,10 @@ Mesh read_gmsh_mesh(const std::filesystem::path& file);
 /// The same from the text of a file (`name` for messages).
 Mesh parse_gmsh_mesh(const std::string& content, const std::string& name);
 
-/// A mesh file as [mesh] file names it: a .geo file is meshed in 2D by the `gmsh` program (found
-/// on PATH; a clear InputError where it is not installed or fails) into a temporary .msh, which
-/// is read and removed; any other file is read as a .msh.
+/// A mesh file as [mesh] file names it: a .geo file is meshed by the `gmsh` program (`gmsh -3`:
+/// volumes where the geometry has them, else its surfaces; found on PATH; a clear InputError where
+/// it is not installed or fails) into a temporary .msh, which is read and removed; any other file
+/// is read as a .msh.
 Mesh read_mesh_file(const std::filesystem::path& file);
 
 }  // namespace signorini

@@ -4,7 +4,10 @@
 
 namespace signorini {
 
-CondensedProblem::CondensedProblem(const ContactProblem& full) {
+CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
+  // Two parts need two threads; automatic_parts() also asks whether the problem is large enough.
+  const Index n = full.A.rows();
+  const Index parts = threads == 1 ? 1 : SchurComplement::automatic_parts(n, threads);
   const ContactSet& c = full.contact;
   const Index nc = c.size();
   Vector b_rotated;
@@ -17,13 +20,13 @@ CondensedProblem::CondensedProblem(const ContactProblem& full) {
     b_rotated = rotation_.to_rotated(full.b);
   }
   if (rotation_.identity()) {
-    schur_ = std::make_unique<SchurComplement>(full.A, normal_dofs_);  // no copy of A
+    schur_ = std::make_unique<SchurComplement>(full.A, normal_dofs_, parts);  // no copy of A
   } else {
     SparseMatrix A_rotated = [&] {
       ScopedTimer t(timings_, "condensation rotation");
       return rotate_matrix(full.A, rotation_);
     }();
-    schur_ = std::make_unique<SchurComplement>(std::move(A_rotated), normal_dofs_);
+    schur_ = std::make_unique<SchurComplement>(std::move(A_rotated), normal_dofs_, parts);
   }
   ScopedTimer t(timings_, "condensation setup");
   const auto nm = static_cast<Index>(normal_dofs_.size());

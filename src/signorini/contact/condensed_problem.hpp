@@ -24,7 +24,11 @@ namespace signorini {
 class CondensedProblem {
  public:
   /// Rotates, orders, factorises and condenses; see timings() for the phases.
-  explicit CondensedProblem(const ContactProblem& full);
+  /// `threads`: the solver's thread count (ContactSolverOptions::threads; 0: the machine's),
+  /// which decides whether the factorisation splits in two parts.
+  explicit CondensedProblem(const ContactProblem& full, int threads = 0);
+  /// The parts the factorisation was split in (1 or 2), one thread each.
+  [[nodiscard]] Index parts() const { return schur_->parts(); }
 
   /// The condensed problem: A = S (dense, stored as a sparse matrix), b = g, and a contact set
   /// with the same nodes, normals, weights, gaps and movable flags, whose N has s_j in the column

@@ -153,7 +153,8 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.multigrid = multigrid;
   if (m.path == SolvePath::CondensedDirect) {
     ScopedTimer timer(m.setup_timings, "contact solve");
-    m.condensed = std::make_unique<CondensedProblem>(problem);  // the sparse factorisation
+    m.condensed =
+        std::make_unique<CondensedProblem>(problem, m.options.threads);  // the sparse factorisation
     timer.stop();
     m.setup_timings.merge(m.condensed->timings());
   }
@@ -251,6 +252,7 @@ ContactResult ContactSolver::solve() {
   SolveSummary& s = result.summary;
   s.method = options.method;
   s.path = m.path;
+  s.threads = m.condensed ? static_cast<int>(m.condensed->parts()) : 1;
   s.warm_started = m.start.has_value();
   s.outer_iterations = static_cast<int>(s.steps.size());
   s.r = *options.r;

@@ -62,6 +62,12 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
               "one sparse factorisation (a Schur complement) and iterate on that small dense "
               "problem (docs/solvers.md). Same solution, lower cost. Ignored for `cg` and "
               "`dense`");
+    t.integer("threads", &O::threads, at_least(0),
+              "threads the solver may use; 0: as many as the machine runs at once. Today the "
+              "condensation (`schur_complement`) uses two from 100,000 unknowns on, factorising "
+              "two parts of the problem at once; 1: one factorisation on one thread. The "
+              "solution differs by rounding only")
+        .range_note("(0: automatic)");
     t.boolean("automatic_path", &O::automatic_path,
               "choose the solver path from the problem's size and this machine's memory: with "
               "the default `cholmod` solver on the CPU, `cg` with `multigrid` for 3D problems "

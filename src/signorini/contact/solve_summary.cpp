@@ -30,7 +30,8 @@ std::string SolveSummary::brief_report() const {
       kkt.equilibrium, kkt.penetration, kkt.sign, kkt.complementarity, kkt_tolerance);
   if (method == ContactMethod::UzawaGnm)
     s += fmt::format("  r = {:.4g} ({})\n", r, r_automatic ? "automatic" : "given");
-  s += fmt::format("  path: {}{}\n", enum_to_string(kSolvePathNames, path),
+  s += fmt::format("  path: {}{}{}\n", enum_to_string(kSolvePathNames, path),
+                   threads > 1 ? fmt::format(", {} threads", threads) : "",
                    path_reason.empty() ? "" : " (" + path_reason + ")");
   return s;
 }
