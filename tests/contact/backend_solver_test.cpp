@@ -42,6 +42,35 @@ TEST_P(BackendPath, MultigridCgMatchesTheDirectSolve) {
   EXPECT_LE(linear, 40 * systems) << linear << " CG iterations for " << systems << " GNM steps";
 }
 
+// Inexact Uzawa-GNM (inner_tolerance = adaptive): each Uzawa step minimised to a hundredth of
+// the previous step's dual change, each Newton system to a tenth of that. The same solution as
+// the exact method to the Uzawa tolerance, with far fewer CG iterations.
+TEST_P(BackendPath, AdaptiveInnerToleranceGivesTheSameSolutionWithFewerCgIterations) {
+  const Index nx = GetParam();
+  const auto [p, multigrid] = testing::paper_problem_with_hierarchy(nx);
+  ContactSolverOptions o;
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.preconditioner = PreconditionerType::Multigrid;
+  o.inner_tolerance = InnerTolerance::Fixed;
+  const ContactResult exact = solve_contact(p, o, &multigrid);
+  o.inner_tolerance = InnerTolerance::Adaptive;
+  const ContactResult inexact = solve_contact(p, o, &multigrid);
+  ASSERT_TRUE(exact.summary.converged()) << exact.summary.message;
+  ASSERT_TRUE(inexact.summary.converged()) << inexact.summary.message;
+  EXPECT_LT(testing::relative_difference(inexact.u, exact.u), 1e-8);
+  EXPECT_LT(testing::relative_difference(inexact.l, exact.l), 1e-7);
+  EXPECT_EQ(inexact.summary.num_active, exact.summary.num_active);
+  EXPECT_LT(inexact.summary.kkt.max(), 1e-7);
+  int cg_exact = 0, cg_inexact = 0;
+  for (const OuterStepRecord& s : exact.summary.steps) cg_exact += s.linear_iterations;
+  for (const OuterStepRecord& s : inexact.summary.steps) cg_inexact += s.linear_iterations;
+  EXPECT_LT(2 * cg_inexact, cg_exact) << cg_inexact << " against " << cg_exact;
+  // Auto is the exact method unless build_model plans the iterative path.
+  o.inner_tolerance = InnerTolerance::Auto;
+  const ContactResult automatic = solve_contact(p, o, &multigrid);
+  EXPECT_EQ(automatic.summary.inner_iterations(), exact.summary.inner_iterations());
+}
+
 INSTANTIATE_TEST_SUITE_P(Paper, BackendPath, ::testing::Values(60, 120, 240),
                          [](const auto& param_info) {
                            return std::to_string(param_info.param) + "x" +

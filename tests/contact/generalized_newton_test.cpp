@@ -26,6 +26,8 @@ class ScriptedSpace final : public NewtonSpace {
   [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
   void set_active(const ActiveSet&, double) override { ++refreshes_; }
   NewtonSolveStats solve(const Vector&) override { return next_solve; }
+  double linear_tolerance = -1.0;
+  void set_linear_tolerance(double tolerance) override { linear_tolerance = tolerance; }
   void direction(ModifiedLagrangian::Direction& dir) override {
     dir.residual_dot_d = next_direction.residual_dot_d;
     dir.d_A_d = next_direction.d_A_d;
@@ -39,6 +41,27 @@ class ScriptedSpace final : public NewtonSpace {
   Vector Nx_;
   int refreshes_ = 0;
 };
+
+TEST(GeneralizedNewton, AdaptiveInnerToleranceAsksForATenthOfItsToleranceFromTheLinearSolver) {
+  const ContactProblem& p = testing::paper_model(30).problem;
+  ModifiedLagrangian phi(p, 1e3);
+  ContactSolverOptions o;
+  ScriptedSpace space(p.contact.size());
+  space.next_direction.residual_dot_d = -1.0;
+  space.next_direction.d_A_d = 1.0;
+  space.next_direction.Nd = Vector::Zero(p.contact.size());
+  o.max_gnm_iterations = 1;
+  o.inner_tolerance = InnerTolerance::Adaptive;
+  static_cast<void>(GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1, 1e-4));
+  EXPECT_DOUBLE_EQ(space.linear_tolerance, 1e-5);
+  // Never below the configured CG tolerance; and the exact method uses the configured one.
+  o.linear.cg_tolerance = 1e-3;
+  static_cast<void>(GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1, 1e-4));
+  EXPECT_DOUBLE_EQ(space.linear_tolerance, 1e-3);
+  o.inner_tolerance = InnerTolerance::Fixed;
+  static_cast<void>(GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1, 1e-4));
+  EXPECT_EQ(space.linear_tolerance, 0.0);
+}
 
 TEST(GeneralizedNewton, ArmijoFailureStopsWithTheHalvingsTried) {
   const ContactProblem& p = testing::paper_model(30).problem;

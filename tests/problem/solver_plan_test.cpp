@@ -49,6 +49,14 @@ TEST(SolverPlan, LargeThreeDimensionalProblemsGoIterative) {
   EXPECT_EQ(large.options.linear.preconditioner, PreconditionerType::Multigrid);
   EXPECT_CONTAINS(large.reason, "iterative, CG with multigrid: 3D with 15,001 free unknowns");
   EXPECT_TRUE(uses_backend_path(large.options));
+  // With it, the inexact Uzawa-GNM; the direct paths keep the exact one.
+  EXPECT_EQ(large.options.inner_tolerance, InnerTolerance::Adaptive);
+  EXPECT_FALSE(small.options.adaptive_inner_tolerance());
+  ContactSolverOptions fixed;
+  fixed.inner_tolerance = InnerTolerance::Fixed;
+  EXPECT_EQ(plan_solver(fixed, {3, 20000, kIterativeFromUnknowns3D + 1, 900, 24 * kGB})
+                .options.inner_tolerance,
+            InnerTolerance::Fixed);
 }
 
 TEST(SolverPlan, AFactorThatDoesNotFitGoesIterativeIn2D) {
@@ -91,7 +99,7 @@ TEST(SolverPlan, BuildModelPlansAndBuildsTheHierarchy) {
   EXPECT_FALSE(model.multigrid.prolongations.empty());
   EXPECT_CONTAINS(model.solver_reason, "iterative");
   const ContactResult iterative = solve_contact(model.problem, model.solver, &model.multigrid);
-  ASSERT_TRUE(iterative.summary.converged());
+  ASSERT_TRUE(iterative.summary.converged()) << iterative.summary.brief_report();
   EXPECT_EQ(iterative.summary.path, SolvePath::Backend);
   EXPECT_GT(iterative.summary.num_active, 0);
 

@@ -27,6 +27,15 @@ inline constexpr EnumNames<ContactMethod, 3> kContactMethodNames{{
     {ContactMethod::SemismoothNewton, "semismooth_newton"},
 }};
 
+/// How accurately each Uzawa step is minimised (ContactSolverOptions::inner_tolerance).
+enum class InnerTolerance { Auto, Fixed, Adaptive };
+
+inline constexpr EnumNames<InnerTolerance, 3> kInnerToleranceNames{{
+    {InnerTolerance::Auto, "auto"},
+    {InnerTolerance::Fixed, "fixed"},
+    {InnerTolerance::Adaptive, "adaptive"},
+}};
+
 /// Reported to ContactSolverOptions::observer as the solver goes, for progress logs.
 struct IterationEvent {
   enum class Kind { Inner, Outer };
@@ -90,6 +99,21 @@ struct ContactSolverOptions {
   /// condensation uses them: from 100,000 unknowns on, it factorises two parts of the problem at
   /// once (linalg/schur_complement.hpp). 1: one thread, one factorisation.
   int threads = 0;
+  /// Adaptive: inexact Uzawa-GNM, each Uzawa step minimised only as accurately as its
+  /// multipliers warrant, GNM to 0.01 x the previous step's relative dual change (at least
+  /// 10 x linear.cg_tolerance), and on the iterative (backend) path each Newton system solved by
+  /// CG to a tenth of that. The last steps are solved more tightly than gnm_tolerance; the KKT
+  /// check is unchanged. Fewer CG
+  /// iterations for the same solution to the solver's tolerances; the counts differ from the
+  /// exact method's. Fixed: every step to gnm_tolerance and cg_tolerance (the paper's method).
+  /// Auto: adaptive where build_model plans the iterative path (problem/solver_plan.hpp), fixed
+  /// otherwise.
+  InnerTolerance inner_tolerance = InnerTolerance::Auto;
+
+  /// True when the Uzawa steps are minimised inexactly (inner_tolerance = Adaptive).
+  [[nodiscard]] bool adaptive_inner_tolerance() const {
+    return inner_tolerance == InnerTolerance::Adaptive;
+  }
   /// Let build_model() choose the path from the problem's size and the machine's memory
   /// (problem/solver_plan.hpp): with the default "cholmod" solver on the CPU, CG with multigrid
   /// for 3D problems above 15,000 free unknowns or a factor that would not fit, and the sparse

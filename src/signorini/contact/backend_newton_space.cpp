@@ -68,17 +68,19 @@ NewtonSolveStats BackendNewtonSpace::solve(const Vector& terms) {
   be_.copy(b_, work_);
   H_->apply_contact_transpose(contact_, work_, 1.0);
   be_.copy(x_, x_new_);
+  PcgOptions options = pcg_options(o_.linear, n_);
+  if (linear_tolerance_ > 0.0) options.tolerance = linear_tolerance_;
   PcgResult lin;
   {
     ScopedTimer t(timings_, "linear solve");
-    lin = pcg_->solve(*H_, *preconditioner_, work_, x_new_, pcg_options(o_.linear, n_));
+    lin = pcg_->solve(*H_, *preconditioner_, work_, x_new_, options);
   }
   NewtonSolveStats out;
   out.converged = lin.converged;
   out.iterations = lin.iterations;
   out.residual = lin.residual;
   out.solver = "conjugate gradients";
-  out.tolerance = o_.linear.cg_tolerance;
+  out.tolerance = options.tolerance;
   return out;
 }
 

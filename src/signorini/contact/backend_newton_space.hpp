@@ -30,6 +30,7 @@ class BackendNewtonSpace final : public NewtonSpace {
   [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
   void set_active(const ActiveSet& active, double r) override;
   NewtonSolveStats solve(const Vector& terms) override;
+  void set_linear_tolerance(double tolerance) override { linear_tolerance_ = tolerance; }
   void direction(ModifiedLagrangian::Direction& dir) override;
   void step(double t) override;
   NewtonStepNorms norms(const Vector& contact_forces) override;
@@ -56,6 +57,7 @@ class BackendNewtonSpace final : public NewtonSpace {
   ActiveSet weights_active_;
   Vector Nx_;
   double last_t_ = 1.0;
+  double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance
   int refreshes_ = 0;
 };
 

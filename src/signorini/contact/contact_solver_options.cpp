@@ -68,6 +68,14 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
               "two parts of the problem at once; 1: one factorisation on one thread. The "
               "solution differs by rounding only")
         .range_note("(0: automatic)");
+    t.choice("inner_tolerance", &O::inner_tolerance, kInnerToleranceNames,
+             "how accurately each Uzawa step is minimised. `\"adaptive\"`: inexact Uzawa-GNM, "
+             "each step to 0.01 x the previous step's relative dual change (at least 10 x "
+             "`cg_tolerance`), and with `cg` each Newton system to a tenth of that: fewer CG "
+             "iterations, the same solution to the solver's tolerances, other counts. "
+             "`\"fixed\"`: every step to `gnm_tolerance` and `cg_tolerance` (the paper's "
+             "method). `\"auto\"`: adaptive where `automatic_path` chooses the iterative path, "
+             "fixed otherwise ([solvers.md](solvers.md))");
     t.boolean("automatic_path", &O::automatic_path,
               "choose the solver path from the problem's size and this machine's memory: with "
               "the default `cholmod` solver on the CPU, `cg` with `multigrid` for 3D problems "

@@ -28,6 +28,11 @@ struct GnmResult {
 /// stopping rule, free of units (method.md section 7).
 [[nodiscard]] double relative_gradient(double gradient_norm, double b_norm, double residual_norm);
 
+/// With inner_tolerance = adaptive: the Newton systems are solved to this fraction of the GNM
+/// tolerance of the Uzawa step, which is this fraction of the previous step's dual change.
+inline constexpr double kLinearForcing = 0.1;
+inline constexpr double kInnerForcing = 1e-3;
+
 class GeneralizedNewton {
  public:
   /// `b_norm` = ||b||, the load part of the force scale of relative_gradient(); `weights` the
@@ -36,7 +41,11 @@ class GeneralizedNewton {
 
   /// Minimises Phi (set up in `phi`) starting from the point held by `space`, which holds the
   /// minimiser on return. `outer` is the Uzawa step number, passed to the observer.
-  GnmResult minimize(const ModifiedLagrangian& phi, NewtonSpace& space, int outer) const;
+  /// `tolerance`: the stopping rule's (0: options.gnm_tolerance); with
+  /// inner_tolerance = adaptive the Newton systems are solved to a tenth of it (inexact
+  /// Newton steps, iterative solvers only).
+  GnmResult minimize(const ModifiedLagrangian& phi, NewtonSpace& space, int outer,
+                     double tolerance = 0.0) const;
 
  private:
   const ContactSolverOptions& options_;

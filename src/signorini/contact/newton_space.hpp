@@ -40,6 +40,10 @@ class NewtonSpace {
   /// Solves H(P) x_new = b - N^T terms (17), starting from x_new = x; `terms` are
   /// ModifiedLagrangian::newton_contact_terms(P).
   virtual NewtonSolveStats solve(const Vector& terms) = 0;
+  /// The relative tolerance of the following iterative solves (inexact Newton steps,
+  /// ContactSolverOptions::inner_tolerance = adaptive); 0: the configured one. Direct solvers
+  /// solve exactly and ignore it.
+  virtual void set_linear_tolerance(double /*tolerance*/) {}
   /// d = x_new - x: fills dir's <A x - b, d>, <A d, d> and N d (not z, which the loop sets).
   virtual void direction(ModifiedLagrangian::Direction& dir) = 0;
   /// x += t d, A x - b += t A d, N x updated.

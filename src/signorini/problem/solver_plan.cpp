@@ -46,6 +46,8 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
   const auto go_iterative = [&](const std::string& why) {
     o.linear.type = LinearSolverType::ConjugateGradient;
     o.linear.preconditioner = PreconditionerType::Multigrid;
+    if (o.inner_tolerance == InnerTolerance::Auto)
+      o.inner_tolerance = InnerTolerance::Adaptive;  // inexact Uzawa-GNM: fewer CG iterations
     plan.reason = "iterative, CG with multigrid: " + why;
     return plan;
   };
