@@ -120,6 +120,41 @@ TEST(EigenvalueEstimate, LanczosEstimateIsJustBelowTheLargestEigenvalue) {
   EXPECT_GT(estimate, 0.9 * exact);  // so that 1.1 * estimate covers the spectrum
 }
 
+// After a refresh for an active set, the fine level's lambda_max is the bound
+// max(lambda_A, components of an active normal) instead of a new Lanczos estimate: with oblique
+// normals (0.6, -0.8) on every contact node, it covers D_H^-1 H's spectrum (with the smoother's
+// factor 1.1, as the estimate does) and the V-cycle still preconditions CG as well.
+TEST(MultigridPreconditioner, FineLevelBoundCoversTheSpectrumAfterARefresh) {
+  Fixture f(30);
+  SparseMatrix N = f.model.problem.contact.N;  // x and y entries stored for every movable node
+  for (Index j = 0; j < N.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(N, j); it; ++it) it.valueRef() = j % 2 == 0 ? 0.6 : -0.8;
+  HostBackend be;
+  PenalizedOperator op(be, f.model.problem.A, N);
+  MultigridPreconditioner mg(op, f.model.problem.A, N, f.P, {});
+  const double lambda_A = mg.fine_lambda_max();  // estimated with c = 0
+  op.set_weights(f.c);
+  mg.refresh();
+  EXPECT_EQ(mg.fine_lambda_max(), std::max(lambda_A, 2.0));
+  const SparseMatrix H(f.model.problem.A + SparseMatrix(N.transpose() * f.c.asDiagonal() * N));
+  const Vector s = Vector(H.diagonal()).cwiseSqrt().cwiseInverse();
+  const Matrix scaled = s.asDiagonal() * Matrix(H) * s.asDiagonal();
+  const double exact = Eigen::SelfAdjointEigenSolver<Matrix>(scaled, Eigen::EigenvaluesOnly)
+                           .eigenvalues()
+                           .maxCoeff();
+  EXPECT_GE(1.1 * mg.fine_lambda_max(), exact);
+  // CG with the bounded V-cycle against CHOLMOD.
+  const Vector b = f.model.problem.b;
+  DeviceVector x(be, op.size());
+  Pcg pcg(be, op.size());
+  PcgOptions o;
+  o.tolerance = 1e-10;
+  const PcgResult res = pcg.solve(op, mg, to_device(be, b), x, o);
+  ASSERT_TRUE(res.converged);
+  EXPECT_LT(res.iterations, 30);
+  EXPECT_LT(testing::relative_difference(to_host(x), direct_solution(H, b)), 1e-8);
+}
+
 TEST(MultigridPreconditioner, IsSymmetricPositiveDefinite) {
   Fixture f(60);
   HostBackend be;

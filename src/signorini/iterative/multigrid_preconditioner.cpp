@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/core/error.hpp"
@@ -34,6 +35,10 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   // The current level's matrices: the fine A is used in place (no copy of the largest matrix).
   const SparseMatrix* current = &A;
   SparseMatrix Al, Nl = N;
+  fine_normal_entries_.assign(static_cast<std::size_t>(N.rows()), 0);
+  for (Index j = 0; j < N.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(N, j); it; ++it)
+      if (it.value() != 0.0) ++fine_normal_entries_[static_cast<std::size_t>(it.row())];
   auto first = std::make_unique<Level>();
   first->op = &fine;
   levels_.push_back(std::move(first));
@@ -97,13 +102,37 @@ std::vector<Index> MultigridPreconditioner::level_sizes() const {
   return sizes;
 }
 
+double MultigridPreconditioner::fine_lambda_max() const {
+  return levels_.front()->smoother ? levels_.front()->smoother->lambda_max() : 0.0;
+}
+
 void MultigridPreconditioner::refresh() {
   recorded_.reset();
   const Vector& c = levels_.front()->op->weights();
+  // On the fine level the Lanczos estimate (12 products with H, half of a refresh on a million
+  // unknowns) is replaced by a bound once lambda_A = lambda_max(D_A^-1 A) is known. With
+  // H = A + E, E = sum_j c_j n_j n_j^T in node j's block, and D_H = D_A + diag(E),
+  //   x^T H x / x^T D_H x <= max(x^T A x / x^T D_A x, x^T E x / x^T diag(E) x)
+  // (a mediant), and each rank-one block gives n^T diag(n n^T)^-1 n = its number of nonzero
+  // components. So lambda_max(D_H^-1 H) <= max(lambda_A, the most components of an active n_j):
+  // safe for Chebyshev, and equal to the estimate wherever A's spectrum dominates.
+  double fine_bound = 0.0;
+  if (fine_lambda_without_contact_ > 0.0) {
+    fine_bound = fine_lambda_without_contact_;
+    for (Index j = 0; j < c.size(); ++j)
+      if (c(j) > 0.0)
+        fine_bound = std::max(
+            fine_bound, static_cast<double>(fine_normal_entries_[static_cast<std::size_t>(j)]));
+  }
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];
     if (l > 0) lev.op->set_weights(c);  // the same c on every level: N_l = N P_1 ... P_l
     if (!lev.smoother) continue;
+    if (l == 0 && fine_bound > 0.0) {
+      if (lev.on_host) lev.on_host->set_weights(c);
+      lev.smoother->refresh(fine_bound);
+      continue;
+    }
     if (lev.host_smoother) {
       lev.on_host->set_weights(c);
       lev.host_smoother->refresh();
@@ -113,6 +142,8 @@ void MultigridPreconditioner::refresh() {
     }
   }
   if (!levels_.back()->smoother) factor_coarsest();
+  if (fine_lambda_without_contact_ == 0.0 && levels_.front()->smoother && (c.array() == 0.0).all())
+    fine_lambda_without_contact_ = levels_.front()->smoother->lambda_max();
 }
 
 void MultigridPreconditioner::factor_coarsest() {

@@ -7,7 +7,8 @@
 // interpolation between nested rectangle meshes); the coarse operators are Galerkin products
 // A_l = P_l^T A_{l-1} P_l and N_l = N_{l-1} P_l, formed once. Since P^T (N^T diag(c) N) P =
 // N_l^T diag(c) N_l, a new active set only changes c: the hierarchy stays, and refresh() redoes
-// the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation).
+// the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation); the fine
+// level's eigenvalue is bounded from A's instead of estimated again (refresh()).
 // Smoothing is Chebyshev–Jacobi; the coarsest level is solved by a dense Cholesky factorisation
 // (as its inverse, applied by one dense product on the device).
 
@@ -50,6 +51,9 @@ class MultigridPreconditioner final : public Preconditioner {
 
   /// Unknowns per level, finest first.
   [[nodiscard]] std::vector<Index> level_sizes() const;
+  /// The fine level's lambda_max(D^-1 H) as the smoother uses it: estimated for c = 0, bounded
+  /// after a refresh for another c (refresh()).
+  [[nodiscard]] double fine_lambda_max() const;
   /// The V-cycle as last recorded by apply() (null before the first apply() after a refresh()):
   /// on a GPU, is_graph() tells whether it replays as one CUDA graph.
   [[nodiscard]] const RecordedWork* recorded_cycle() const { return recorded_.get(); }
@@ -65,6 +69,10 @@ class MultigridPreconditioner final : public Preconditioner {
                                    // must outlive them)
   std::vector<std::unique_ptr<Level>> levels_;
   SparseMatrix coarse_A_, coarse_N_;  // host copies of the coarsest level, for its factorisation
+  // The fine level's lambda_max(D^-1 A) without contact (estimated at the first refresh with
+  // c = 0; 0 until then), and per contact row j the number of stored entries of N's row j.
+  double fine_lambda_without_contact_ = 0.0;
+  std::vector<int> fine_normal_entries_;
   std::unique_ptr<DeviceDenseMatrix> coarse_inverse_;
   // The V-cycle as recorded work (a CUDA graph on a GPU) for the last (r, z) pair; dropped by
   // refresh(), which changes the smoothers' coefficients and the coarse inverse.
