@@ -233,6 +233,17 @@ TEST(ThreeDimensionalExamples, GmshMeshOfTheOtherDimensionIsOneLine) {
   EXPECT_EQ(r.err, "signorini: error: " + (dir / "ball.toml").string() +
                        ": contact.point gives 2 components (2D problems only), but the mesh '" +
                        ball + "' is 3D: expected 3 components (x, y, z)\n");
+  // A plane model on a 3D mesh file: refused, not ignored.
+  r = run_tool(dir, "check " + quoted(write("plane.toml",
+                                            "[mesh]\ntype = \"gmsh\"\nfile = \"" + ball +
+                                                "\"\n[material]\nE = 1\nnu = 0.3\nplane_model = "
+                                                "\"plane_stress\"\n[[clamp]]\nboundary = "
+                                                "\"top\"\n[contact]\nboundary = \"contact\"\n")));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "signorini: error: " + (dir / "plane.toml").string() +
+                       ": material.plane_model gives a plane model (2D problems only), but the "
+                       "mesh '" +
+                       ball + "' is 3D: expected no plane_model (a 3D body has none)\n");
   const std::string strip = SIGNORINI_EXAMPLES_DIR "/gmsh/paper.msh";
   r = run_tool(dir, "check " + quoted(write("strip.toml",
                                             "[mesh]\ntype = \"gmsh\"\nfile = \"" + strip +

@@ -711,6 +711,12 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   read_regions(r, root, spec, out.warnings);
   read_fem(r, root, spec);
   const Dimension dim(r, spec);  // known from the mesh type, or implied by the keys that follow
+  // A plane model makes the problem 2D: on a Gmsh mesh build_model checks that against the mesh
+  // (a box has refused it in read_material already).
+  if (const toml::table* m = root["material"].as_table();
+      m != nullptr && m->contains("plane_model") && spec.mesh_type == MeshType::Gmsh)
+    dim.imply(*m->get("plane_model"), "material.plane_model", 2, "a plane model",
+              "no plane_model (a 3D body has none)");
   read_clamps(r, dim, root, spec);
   read_displacements(r, dim, root, spec);
   read_tractions(r, dim, root, spec, texts, out.warnings);

@@ -211,12 +211,11 @@ const OptionTable<P>& material_options() {
         .required()
         .synonyms({"*poisson", "v", "mu_poisson"});
     // A plane model means nothing in 3D: refused with a box rather than ignored. A Gmsh mesh's
-    // dimension is known only when it is read (after [material]): a 3D one ignores it, and the
-    // effective settings leave it out where the file's points say 3D.
+    // dimension is known only when it is read: the key implies 2D (problem_file.cpp), which
+    // build_model checks against the mesh, and later keys must agree with it.
     t.choice("plane_model", plane_model, kPlaneModelNames,
              "how the 2D problem stands for a 3D body: plane strain (eps_zz = 0, a long body) or "
-             "plane stress (sigma_zz = 0, a thin plate). Refused with a box; a 3D Gmsh mesh "
-             "ignores it")
+             "plane stress (sigma_zz = 0, a thin plate). Refused with a box or a 3D Gmsh mesh")
         .applies_when([](const P& s) { return stated_dimension(s) != 3; },
                       "a 2D problem (type = \"rectangle\", or \"gmsh\" with a 2D mesh)");
     return t;
