@@ -99,13 +99,13 @@ struct ContactSolverOptions {
   /// condensation uses them: from 100,000 unknowns on, it factorises two parts of the problem at
   /// once (linalg/schur_complement.hpp). 1: one thread, one factorisation.
   int threads = 0;
-  /// Adaptive: inexact Uzawa-GNM, each Uzawa step minimised only as accurately as its
-  /// multipliers warrant, GNM to 0.01 x the previous step's relative dual change (at least
-  /// 10 x linear.cg_tolerance), and on the iterative (backend) path each Newton system solved by
-  /// CG to a tenth of that. The last steps are solved more tightly than gnm_tolerance; the KKT
-  /// check is unchanged. Fewer CG
-  /// iterations for the same solution to the solver's tolerances; the counts differ from the
-  /// exact method's. Fixed: every step to gnm_tolerance and cg_tolerance (the paper's method).
+  /// Adaptive: inexact Uzawa-GNM, each Uzawa step k minimised only as accurately as its
+  /// multipliers warrant, GNM to tau_k = min(0.001 x the previous step's relative dual change,
+  /// tau_(k-1) / 10) (at least 10 x linear.cg_tolerance), and on the iterative (backend) path each
+  /// Newton system solved by CG to a tenth of that (uzawa_iteration.cpp). The last steps are
+  /// solved more tightly than gnm_tolerance; the KKT check is unchanged. Fewer CG iterations for
+  /// the same solution to the solver's tolerances; the counts differ from the exact method's.
+  /// Fixed: every step to gnm_tolerance and cg_tolerance (the paper's method).
   /// Auto: adaptive where build_model plans the iterative path (problem/solver_plan.hpp), fixed
   /// otherwise.
   InnerTolerance inner_tolerance = InnerTolerance::Auto;

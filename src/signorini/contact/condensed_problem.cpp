@@ -5,9 +5,8 @@
 namespace signorini {
 
 CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
-  // Two parts need two threads; automatic_parts() also asks whether the problem is large enough.
-  const Index n = full.A.rows();
-  const Index parts = threads == 1 ? 1 : SchurComplement::automatic_parts(n, threads);
+  // Two parts when two threads may run and the problem is large enough.
+  const Index parts = SchurComplement::automatic_parts(full.A.rows(), threads);
   const ContactSet& c = full.contact;
   const Index nc = c.size();
   Vector b_rotated;

@@ -70,8 +70,9 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
         .range_note("(0: automatic)");
     t.choice("inner_tolerance", &O::inner_tolerance, kInnerToleranceNames,
              "how accurately each Uzawa step is minimised. `\"adaptive\"`: inexact Uzawa-GNM, "
-             "each step to 0.01 x the previous step's relative dual change (at least 10 x "
-             "`cg_tolerance`), and with `cg` each Newton system to a tenth of that: fewer CG "
+             "step k to min(0.001 x the previous step's relative dual change, a tenth of step "
+             "k-1's tolerance) (at least 10 x `cg_tolerance`), and with `cg` each Newton "
+             "system to a tenth of that: fewer CG "
              "iterations, the same solution to the solver's tolerances, other counts. "
              "`\"fixed\"`: every step to `gnm_tolerance` and `cg_tolerance` (the paper's "
              "method). `\"auto\"`: adaptive where `automatic_path` chooses the iterative path, "

@@ -21,7 +21,7 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
     OuterStepOutcome o;
     phi.set_multipliers(l);
     // Inexact Uzawa (inner_tolerance = adaptive): step (i) only as accurate as the multipliers
-    // it starts from, a hundredth of their last change. Near the end that is tighter than
+    // it starts from, a thousandth of their last change. Near the end that is tighter than
     // gnm_tolerance, so that the error of step (i) stays below the dual change that Uzawa's
     // stopping rule measures (a floor at gnm_tolerance stalled Uzawa at a dual change of
     // 1.6e-10 under a tolerance of 1e-10); never below 10 cg_tolerance, what a Newton system

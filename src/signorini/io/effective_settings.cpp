@@ -1,7 +1,6 @@
 #include "signorini/io/effective_settings.hpp"
 
 #include <cmath>
-#include <vector>
 
 #include "signorini/contact/contact_solver_option_table.hpp"
 #include "signorini/io/problem_schema.hpp"
@@ -36,13 +35,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   out.table("mesh");
   emit_options(out, mesh_options(), spec);
   out.table("material");
-  {
-    // A plane model implies 2D (problem_file.cpp): on a Gmsh mesh whose dimension nothing has
-    // implied, it was not given, and writing the default would make a 3D mesh refuse the file.
-    auto values = material_options().values(spec);
-    if (dim == 0) std::erase_if(values, [](const auto& kv) { return kv.first == "plane_model"; });
-    emit_values(out, values);
-  }
+  emit_options(out, material_options(), spec);
   for (const RegionMaterialSpec& m : spec.region_materials) {
     out.array_table("region");
     emit_values(out, region_values(m));

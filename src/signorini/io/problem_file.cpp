@@ -202,12 +202,18 @@ CellType structured_cell(const ProblemSpec& spec) {
   return spec.mesh_type == MeshType::Box ? spec.box.cell : spec.mesh.cell;
 }
 
-void read_material(const Reader& r, const toml::table& root, ProblemSpec& spec,
-                   std::vector<std::string>& warnings) {
+void read_material(const Reader& r, const Dimension& dim, const toml::table& root,
+                   ProblemSpec& spec, std::vector<std::string>& warnings) {
   const toml::table* t = r.table(root, "", "material");
   if (t == nullptr) r.missing("material", "a [material] section with E and nu");
   r.check_keys(*t, "material");
   read_options(r, *t, material_options(), spec);
+  // A plane model makes a Gmsh problem 2D, like any 2D key: build_model checks that against the
+  // mesh, and the table's condition (a 2D problem) then holds. A box refuses it by that
+  // condition, below.
+  if (spec.mesh_type == MeshType::Gmsh && t->contains("plane_model"))
+    dim.imply(*t->get("plane_model"), "material.plane_model", 2, "a plane model",
+              "no plane_model (a 3D body has none)");
   // The library's own check of a material first: its words ("expected a positive modulus") are
   // the ones the tool has always printed. The table's ranges, which the docs state, hold too.
   const IsotropicMaterial& m = spec.elasticity.material;
@@ -707,16 +713,10 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   ExpressionTexts texts;
   read_top_level(r, root, spec);
   read_mesh(r, root, spec);
-  read_material(r, root, spec, out.warnings);
+  const Dimension dim(r, spec);  // known from the mesh type, or implied by the keys that follow
+  read_material(r, dim, root, spec, out.warnings);
   read_regions(r, root, spec, out.warnings);
   read_fem(r, root, spec);
-  const Dimension dim(r, spec);  // known from the mesh type, or implied by the keys that follow
-  // A plane model makes the problem 2D: on a Gmsh mesh build_model checks that against the mesh
-  // (a box has refused it in read_material already).
-  if (const toml::table* m = root["material"].as_table();
-      m != nullptr && m->contains("plane_model") && spec.mesh_type == MeshType::Gmsh)
-    dim.imply(*m->get("plane_model"), "material.plane_model", 2, "a plane model",
-              "no plane_model (a 3D body has none)");
   read_clamps(r, dim, root, spec);
   read_displacements(r, dim, root, spec);
   read_tractions(r, dim, root, spec, texts, out.warnings);

@@ -212,11 +212,12 @@ const OptionTable<P>& material_options() {
         .synonyms({"*poisson", "v", "mu_poisson"});
     // A plane model means nothing in 3D: refused with a box rather than ignored. A Gmsh mesh's
     // dimension is known only when it is read: the key implies 2D (problem_file.cpp), which
-    // build_model checks against the mesh, and later keys must agree with it.
+    // build_model checks against the mesh. Where nothing implied a dimension the key was not
+    // given, and the effective settings leave its default out.
     t.choice("plane_model", plane_model, kPlaneModelNames,
              "how the 2D problem stands for a 3D body: plane strain (eps_zz = 0, a long body) or "
              "plane stress (sigma_zz = 0, a thin plate). Refused with a box or a 3D Gmsh mesh")
-        .applies_when([](const P& s) { return stated_dimension(s) != 3; },
+        .applies_when([](const P& s) { return stated_dimension(s) == 2; },
                       "a 2D problem (type = \"rectangle\", or \"gmsh\" with a 2D mesh)");
     return t;
   }();

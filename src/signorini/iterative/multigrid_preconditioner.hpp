@@ -70,7 +70,7 @@ class MultigridPreconditioner final : public Preconditioner {
   std::vector<std::unique_ptr<Level>> levels_;
   SparseMatrix coarse_A_, coarse_N_;  // host copies of the coarsest level, for its factorisation
   // The fine level's lambda_max(D^-1 A) without contact (estimated at the first refresh with
-  // c = 0; 0 until then), and per contact row j the number of stored entries of N's row j.
+  // c = 0; 0 until then), and per contact row j the number of nonzero entries of N's row j.
   double fine_lambda_without_contact_ = 0.0;
   std::vector<int> fine_normal_entries_;
   std::unique_ptr<DeviceDenseMatrix> coarse_inverse_;

@@ -164,22 +164,25 @@ SparseMatrix principal_submatrix(const SparseMatrix& A, const std::vector<Index>
 }  // namespace
 
 struct SchurComplement::Impl {
-  std::vector<std::unique_ptr<PartFactor>> parts;  // one: the whole of A; two: see build_parts
-  // Two parts only: B = [separator; C], the separator's unknowns of A, and the dense elimination
-  // of the separator from the interface's Schur complement S_B = [S_ss S_sc; S_cs S_cc]:
-  // S_B = L_B L_B^T with L_B = [L_ss 0; L_cs L_cc] and S = L_cc L_cc^T.
+  std::vector<Index> last;                         // C, in the caller's order
+  std::vector<std::unique_ptr<PartFactor>> parts;  // one: the whole of A; two: build_two_parts
+  Eigen::MatrixXd L_cc;                            // S = L_cc L_cc^T
+  // Two parts only: B = [separator; C], the separator's unknowns of A, and the dense factor of
+  // the interface's Schur complement S_B = L_B L_B^T, L_B = [L_ss 0; L_cs L_cc].
   std::vector<Index> separator;
   Eigen::MatrixXd L_ss, L_cs;
-  struct Forward {          // what a back substitution needs of the forward one (two parts)
-    std::vector<Vector> z;  // per part, L^-1 P [b_I; 0]
-    Vector w_s, g;          // L_ss^-1 r_s, and the condensed load
+  // What a back substitution needs of the forward one: per part z = L^-1 P (its load), the
+  // separator's w_s = L_ss^-1 r_s (two parts), and the condensed load g.
+  struct Forward {
+    std::vector<Vector> z;
+    Vector w_s, g;
   };
-  Forward forward;
+  Forward last_forward;  // of the last condensed_load()
 
-  [[nodiscard]] Forward forward_two_parts(const Vector& b, const std::vector<Index>& last);
-  [[nodiscard]] Vector backward_two_parts(const Forward& fw, const Vector& f,
-                                          const Eigen::MatrixXd& L_cc,
-                                          const std::vector<Index>& last);
+  [[nodiscard]] Index nc() const { return static_cast<Index>(last.size()); }
+  [[nodiscard]] Index ns() const { return static_cast<Index>(separator.size()); }
+  [[nodiscard]] Forward forward(const Vector& b);
+  [[nodiscard]] Vector backward(const Forward& fw, const Vector& f);
 };
 
 Index SchurComplement::automatic_parts(Index unknowns, int threads) {
@@ -189,19 +192,27 @@ Index SchurComplement::automatic_parts(Index unknowns, int threads) {
 }
 
 SchurComplement::SchurComplement(const SparseMatrix& A, const std::vector<Index>& last, Index parts)
-    : impl_(std::make_unique<Impl>()), last_(last) {
+    : impl_(std::make_unique<Impl>()) {
+  impl_->last = last;
   build(A, nullptr, parts);
 }
 
 SchurComplement::SchurComplement(SparseMatrix&& A, const std::vector<Index>& last, Index parts)
-    : impl_(std::make_unique<Impl>()), last_(last) {
+    : impl_(std::make_unique<Impl>()) {
+  impl_->last = last;
   build(A, &A, parts);
 }
 
 void SchurComplement::build(const SparseMatrix& A, SparseMatrix* owned, Index parts) {
   if (parts <= 0) parts = automatic_parts(A.rows());
-  if (parts >= 2 && build_two_parts(A, owned)) return;
-  build_one_part(A, owned);
+  if (parts < 2 || !build_two_parts(A, owned)) build_one_part(A, owned);
+  // S = L_cc L_cc^T, formed once in place, exactly symmetric.
+  ScopedTimer t(timings_, "condensation Schur complement");
+  const Index nc = impl_->nc();
+  S_ = dense_stored_matrix(nc);
+  Eigen::Map<Eigen::MatrixXd> S(S_.valuePtr(), nc, nc);
+  S.noalias() = impl_->L_cc.triangularView<Eigen::Lower>() * impl_->L_cc.transpose();
+  S = S.selfadjointView<Eigen::Lower>();
 }
 
 void SchurComplement::build_one_part(const SparseMatrix& A, SparseMatrix* owned) {
@@ -209,30 +220,22 @@ void SchurComplement::build_one_part(const SparseMatrix& A, SparseMatrix* owned)
   s.parts.clear();
   s.parts.push_back(std::make_unique<PartFactor>());
   PartFactor& f = *s.parts.front();
-  const auto nc = static_cast<Index>(last_.size());
   {
     ScopedTimer t(timings_, "condensation analysis");
     // Interior ordered by AMD on the node graph (fill_reducing_ordering), C last in the caller's
     // order so that S comes out in it.
-    f.analyse(A, owned, last_);
+    f.analyse(A, owned, s.last);
   }
-  {
-    ScopedTimer t(timings_, "condensation factorization");
-    const detail::SerialOpenMpScope serial;
-    f.factorise();
-  }
-  ScopedTimer t(timings_, "condensation Schur complement");
-  L_cc_ = std::move(f.L_bb);
-  S_ = dense_stored_matrix(nc);
-  Eigen::Map<Eigen::MatrixXd> S(S_.valuePtr(), nc, nc);
-  S.noalias() = L_cc_.triangularView<Eigen::Lower>() * L_cc_.transpose();
-  S = S.selfadjointView<Eigen::Lower>();  // exactly symmetric
+  ScopedTimer t(timings_, "condensation factorization");
+  const detail::SerialOpenMpScope serial;
+  f.factorise();
+  s.L_cc = std::move(f.L_bb);
 }
 
 bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned) {
   Impl& s = *impl_;
   const Index n = A.rows();
-  const auto nc = static_cast<Index>(last_.size());
+  const Index nc = s.nc();
   // The interface B: the separator's unknowns (those not in C), then C in the caller's order.
   // position[j]: j's place in B, or -1 for the interior of a part.
   std::vector<Index> position(static_cast<std::size_t>(n), -1);
@@ -240,14 +243,13 @@ bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned
   {
     ScopedTimer t(timings_, "condensation analysis");
     const VertexSeparator split = vertex_separator(A);
-    if (split.part_size[0] == 0 || split.part_size[1] == 0) return false;
-    for (Index k = 0; k < nc; ++k)
-      position[static_cast<std::size_t>(last_[static_cast<std::size_t>(k)])] = -2 - k;
+    std::vector<char> in_c(static_cast<std::size_t>(n), 0);
+    for (const Index j : s.last) in_c[static_cast<std::size_t>(j)] = 1;
     for (Index j = 0; j < n; ++j) {
+      if (in_c[static_cast<std::size_t>(j)] != 0) continue;
       const auto p = split.part[static_cast<std::size_t>(j)];
-      if (position[static_cast<std::size_t>(j)] != -1) continue;  // in C
       if (p == 2) {
-        position[static_cast<std::size_t>(j)] = static_cast<Index>(s.separator.size());
+        position[static_cast<std::size_t>(j)] = s.ns();
         s.separator.push_back(j);
       } else {
         interior[static_cast<std::size_t>(p)].push_back(j);
@@ -257,9 +259,9 @@ bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned
       s.separator.clear();
       return false;
     }
-    const auto ns = static_cast<Index>(s.separator.size());
+    const Index ns = s.ns();
     for (Index k = 0; k < nc; ++k)
-      position[static_cast<std::size_t>(last_[static_cast<std::size_t>(k)])] = ns + k;
+      position[static_cast<std::size_t>(s.last[static_cast<std::size_t>(k)])] = ns + k;
     s.parts.clear();
     s.parts.push_back(std::make_unique<PartFactor>());
     s.parts.push_back(std::make_unique<PartFactor>());
@@ -278,7 +280,7 @@ bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned
       std::vector<Index> unknowns = f.interior;
       for (const Index b : f.boundary_position)
         unknowns.push_back(b < ns ? s.separator[static_cast<std::size_t>(b)]
-                                  : last_[static_cast<std::size_t>(b - ns)]);
+                                  : s.last[static_cast<std::size_t>(b - ns)]);
       std::vector<Index> local_of(static_cast<std::size_t>(n), -1);
       SparseMatrix M = principal_submatrix(A, unknowns, local_of);
       std::vector<Index> last(f.boundary_position.size());
@@ -286,7 +288,7 @@ bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned
       f.analyse(M, &M, last);
     });
   }
-  const auto ns = static_cast<Index>(s.separator.size());
+  const Index ns = s.ns();
   const Index nb = ns + nc;
   // The dense step costs nb^3 / 3 flops; when that is not small beside the parts' factorisations
   // (a long separator: a poor cut, or a 3D body), one factorisation is cheaper.
@@ -302,8 +304,8 @@ bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned
   // Lower triangles only. A_BB is read before A is released.
   Eigen::MatrixXd S_B = Eigen::MatrixXd::Zero(nb, nb);
   for (Index c = 0; c < nb; ++c) {
-    const Index j =
-        c < ns ? s.separator[static_cast<std::size_t>(c)] : last_[static_cast<std::size_t>(c - ns)];
+    const Index j = c < ns ? s.separator[static_cast<std::size_t>(c)]
+                           : s.last[static_cast<std::size_t>(c - ns)];
     for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
       const Index r = position[static_cast<std::size_t>(it.row())];
       if (r >= c) S_B(r, c) = it.value();
@@ -318,8 +320,7 @@ bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned
       f.factorise();
       const std::vector<Index>& b = f.boundary_position;
       Eigen::MatrixXd& u = update[static_cast<std::size_t>(k)];
-      u = Eigen::MatrixXd(S_B(b, b)).triangularView<Eigen::Lower>();
-      u = -u;
+      u = -Eigen::MatrixXd(S_B(b, b).triangularView<Eigen::Lower>());
       u.triangularView<Eigen::Lower>() +=
           f.L_bb.triangularView<Eigen::Lower>() * f.L_bb.transpose();
     });
@@ -340,11 +341,7 @@ bool SchurComplement::build_two_parts(const SparseMatrix& A, SparseMatrix* owned
     throw NumericalError("condensation: the interface's Schur complement is not positive definite");
   s.L_ss = S_B.topLeftCorner(ns, ns).triangularView<Eigen::Lower>();
   s.L_cs = S_B.bottomLeftCorner(nc, ns);
-  L_cc_ = S_B.bottomRightCorner(nc, nc).triangularView<Eigen::Lower>();
-  S_ = dense_stored_matrix(nc);
-  Eigen::Map<Eigen::MatrixXd> S(S_.valuePtr(), nc, nc);
-  S.noalias() = L_cc_.triangularView<Eigen::Lower>() * L_cc_.transpose();
-  S = S.selfadjointView<Eigen::Lower>();  // exactly symmetric
+  s.L_cc = S_B.bottomRightCorner(nc, nc).triangularView<Eigen::Lower>();
   return true;
 }
 
@@ -354,66 +351,58 @@ Index SchurComplement::parts() const {
   return static_cast<Index>(impl_->parts.size());
 }
 
-Vector SchurComplement::condensed_load(const Vector& b) {
-  ScopedTimer t(timings_, "condensation solve");
-  Impl& s = *impl_;
-  const auto nc = static_cast<Index>(last_.size());
-  if (s.parts.size() == 1) {
+SchurComplement::Impl::Forward SchurComplement::Impl::forward(const Vector& b) {
+  Forward out;
+  if (parts.size() == 1) {
     // With z = L^-1 P b, the last rows of L z = P b read L_CI z_I + L_CC z_C = b_C, and
     // L_CI z_I = A_CI A_II^-1 b_I (since L_II z_I = b_I and L_CI = A_CI L_II^-T): g = L_CC z_C.
-    forward_load_ = s.parts.front()->forward(b);
-    return L_cc_.triangularView<Eigen::Lower>() * forward_load_.tail(nc);
+    out.z = {parts.front()->forward(b)};
+    out.g = L_cc.triangularView<Eigen::Lower>() * out.z.front().tail(nc());
+    return out;
   }
-  s.forward = s.forward_two_parts(b, last_);
-  return s.forward.g;
-}
-
-SchurComplement::Impl::Forward SchurComplement::Impl::forward_two_parts(
-    const Vector& b, const std::vector<Index>& last_) {
-  Impl& s = *this;
-  const auto ns = static_cast<Index>(s.separator.size());
-  const auto nc = static_cast<Index>(last_.size());
-  Impl::Forward out;
-  out.z.resize(2);
   // Part k with the load [b_I; 0]: its trailing rows read L_bI z_I + L_bb z_b = 0, so that
   // L_bb z_b = -A_bI A_II^-1 b_I, and the interface load r_B = b_B - sum_k A_Bk A_kk^-1 b_k
   // gathers L_bb z_b from each part.
+  out.z.resize(2);
   on_two_threads([&](int k) {
-    PartFactor& f = *s.parts[static_cast<std::size_t>(k)];
+    PartFactor& f = *parts[static_cast<std::size_t>(k)];
     Vector v = Vector::Zero(f.n);
     for (std::size_t i = 0; i < f.interior.size(); ++i) v(static_cast<Index>(i)) = b(f.interior[i]);
     out.z[static_cast<std::size_t>(k)] = f.forward(v);
   });
-  Vector r(ns + nc);
-  for (Index i = 0; i < ns; ++i) r(i) = b(s.separator[static_cast<std::size_t>(i)]);
-  for (Index i = 0; i < nc; ++i) r(ns + i) = b(last_[static_cast<std::size_t>(i)]);
+  Vector r(ns() + nc());
+  for (Index i = 0; i < ns(); ++i) r(i) = b(separator[static_cast<std::size_t>(i)]);
+  for (Index i = 0; i < nc(); ++i) r(ns() + i) = b(last[static_cast<std::size_t>(i)]);
   for (std::size_t k = 0; k < 2; ++k) {
-    const PartFactor& f = *s.parts[k];
+    const PartFactor& f = *parts[k];
     const Vector y = f.L_bb.triangularView<Eigen::Lower>() * out.z[k].tail(f.nb);
     for (Index i = 0; i < f.nb; ++i) r(f.boundary_position[static_cast<std::size_t>(i)]) += y(i);
   }
   // Forward through L_B: w_s = L_ss^-1 r_s, and g = L_cc w_c = r_c - L_cs w_s.
-  out.w_s = s.L_ss.triangularView<Eigen::Lower>().solve(r.head(ns));
-  out.g = r.tail(nc) - s.L_cs * out.w_s;
+  out.w_s = L_ss.triangularView<Eigen::Lower>().solve(r.head(ns()));
+  out.g = r.tail(nc()) - L_cs * out.w_s;
   return out;
 }
 
-Vector SchurComplement::Impl::backward_two_parts(const Forward& fw, const Vector& f,
-                                                 const Eigen::MatrixXd& L_cc_,
-                                                 const std::vector<Index>& last_) {
-  Impl& s = *this;
-  const auto ns = static_cast<Index>(s.separator.size());
-  const auto nc = static_cast<Index>(last_.size());
-  // x_C = S^-1 (g + f), x_s = L_ss^-T (w_s - L_cs^T x_C); then each part's interior by its back
+Vector SchurComplement::Impl::backward(const Forward& fw, const Vector& f) {
+  // x_C = S^-1 (g + f) = L_cc^-T L_cc^-1 (g + f). With one part the forward substitution of
+  // E_C f touches the trailing block alone, L^-1 P E_C f = [0; L_cc^-1 f]: one back
+  // substitution from z + [0; L_cc^-1 f] gives x.
+  if (parts.size() == 1) {
+    Vector w = fw.z.front();
+    w.tail(nc()) += L_cc.triangularView<Eigen::Lower>().solve(f);
+    return parts.front()->backward(w);
+  }
+  // Two parts: x_s = L_ss^-T (w_s - L_cs^T x_C); then each part's interior by its back
   // substitution with the trailing entries L_bb^T x_b: L_II^T x_I = z_I - L_bI^T x_b.
-  Vector x_B(ns + nc);
-  x_B.tail(nc) = L_cc_.transpose().triangularView<Eigen::Upper>().solve(
-      L_cc_.triangularView<Eigen::Lower>().solve(fw.g + f));
-  x_B.head(ns) = s.L_ss.transpose().triangularView<Eigen::Upper>().solve(
-      fw.w_s - s.L_cs.transpose() * x_B.tail(nc));
-  Vector x(static_cast<Index>(s.parts[0]->interior.size() + s.parts[1]->interior.size()) + ns + nc);
+  Vector x_B(ns() + nc());
+  x_B.tail(nc()) = L_cc.transpose().triangularView<Eigen::Upper>().solve(
+      L_cc.triangularView<Eigen::Lower>().solve(fw.g + f));
+  x_B.head(ns()) = L_ss.transpose().triangularView<Eigen::Upper>().solve(
+      fw.w_s - L_cs.transpose() * x_B.tail(nc()));
+  Vector x(static_cast<Index>(parts[0]->interior.size() + parts[1]->interior.size()) + ns() + nc());
   on_two_threads([&](int k) {
-    PartFactor& p = *s.parts[static_cast<std::size_t>(k)];
+    PartFactor& p = *parts[static_cast<std::size_t>(k)];
     Vector w = fw.z[static_cast<std::size_t>(k)];
     Vector x_b(p.nb);
     for (Index i = 0; i < p.nb; ++i) x_b(i) = x_B(p.boundary_position[static_cast<std::size_t>(i)]);
@@ -422,39 +411,27 @@ Vector SchurComplement::Impl::backward_two_parts(const Forward& fw, const Vector
     for (std::size_t i = 0; i < p.interior.size(); ++i)
       x(p.interior[i]) = xl(static_cast<Index>(i));
   });
-  for (Index i = 0; i < ns; ++i) x(s.separator[static_cast<std::size_t>(i)]) = x_B(i);
-  for (Index i = 0; i < nc; ++i) x(last_[static_cast<std::size_t>(i)]) = x_B(ns + i);
+  for (Index i = 0; i < ns(); ++i) x(separator[static_cast<std::size_t>(i)]) = x_B(i);
+  for (Index i = 0; i < nc(); ++i) x(last[static_cast<std::size_t>(i)]) = x_B(ns() + i);
   return x;
+}
+
+Vector SchurComplement::condensed_load(const Vector& b) {
+  ScopedTimer t(timings_, "condensation solve");
+  impl_->last_forward = impl_->forward(b);
+  return impl_->last_forward.g;
 }
 
 Vector SchurComplement::solve_with_condensed_forces(const Vector& f) const {
   ScopedTimer t(timings_, "condensation solve");
-  Impl& s = *impl_;
-  const auto nc = static_cast<Index>(last_.size());
-  if (s.parts.size() == 2) {
-    if (s.forward.z.empty())
-      throw NumericalError(
-          "SchurComplement: solve_with_condensed_forces() before condensed_load()");
-    return s.backward_two_parts(s.forward, f, L_cc_, last_);
-  }
-  if (forward_load_.size() != s.parts.front()->n)
+  if (impl_->last_forward.z.empty())
     throw NumericalError("SchurComplement: solve_with_condensed_forces() before condensed_load()");
-  Vector w = forward_load_;
-  w.tail(nc) += L_cc_.triangularView<Eigen::Lower>().solve(f);
-  return s.parts.front()->backward(w);
+  return impl_->backward(impl_->last_forward, f);
 }
 
 Vector SchurComplement::solve(const Vector& rhs) const {
   ScopedTimer t(timings_, "condensation solve");
-  Impl& s = *impl_;
-  if (s.parts.size() == 2)
-    return s.backward_two_parts(s.forward_two_parts(rhs, last_),
-                                Vector::Zero(static_cast<Index>(last_.size())), L_cc_, last_);
-  PartFactor& f = *s.parts.front();
-  cholmod_dense bd = detail::dense_view(rhs);
-  const detail::OwnedDense x(cholmod_l_solve(CHOLMOD_A, f.factor, &bd, &f.common), f.common);
-  check_cholmod(f.common, "solve");
-  return Eigen::Map<const Vector>(x.values(), f.n);
+  return impl_->backward(impl_->forward(rhs), Vector::Zero(impl_->nc()));
 }
 
 }  // namespace signorini

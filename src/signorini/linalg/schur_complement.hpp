@@ -67,12 +67,11 @@ class SchurComplement {
   void build_one_part(const SparseMatrix& A, SparseMatrix* owned);
   // false (nothing built, A kept) when A does not split or the split does not pay.
   bool build_two_parts(const SparseMatrix& A, SparseMatrix* owned);
-  struct Impl;  // CHOLMOD's state; freed by its destructor, also when construction throws
+  // CHOLMOD's state, the factors' dense blocks and the last forward substitution; freed by its
+  // destructor, also when construction throws.
+  struct Impl;
   std::unique_ptr<Impl> impl_;
-  Eigen::MatrixXd L_cc_;  // trailing block of the factor: S = L_cc L_cc^T
   SparseMatrix S_;
-  std::vector<Index> last_;
-  Vector forward_load_;  // z = L^-1 P b of the last condensed_load() (one part)
   mutable TimingTable timings_;
 };
 
