@@ -246,5 +246,36 @@ TEST(BenchWholeProcess, PeersRunSideBySideAndAgree) {
   }
 }
 
+// The 3D peer (bench/peers/petsc_snesvi_3d.py) poses examples/box_on_sphere.toml on hex8 cells
+// itself: its energy and active nodes are the tool's on the 8 x 8 x 4 mesh.
+TEST(BenchWholeProcess, ThreeDimensionalPeerSolvesTheSameDiscreteProblem) {
+  if (!petsc4py_available())
+    GTEST_SKIP() << "petsc4py is not importable by /usr/bin/python3 (apt-get install "
+                    "python3-petsc4py)";
+  const testing::TemporaryFolder dir;
+  const fs::path json = dir / "peer3d.json";
+  const std::string script = SIGNORINI_EXAMPLES_DIR "/../bench/peers/petsc_snesvi_3d.py";
+  for (const char* config : {"gamg", "mumps"}) {
+    SCOPED_TRACE(config);
+    const int status = std::system(("/usr/bin/python3 " + quoted(script) + " --n 8 --config " +
+                                    config + " --quiet --json " + quoted(json.string()))
+                                       .c_str());
+    ASSERT_EQ(status, 0);
+    const auto peer = nlohmann::json::parse(read_text(json));
+    EXPECT_EQ(peer["converged"], true);
+    EXPECT_EQ(peer["n_unknowns"], 3 * 9 * 9 * 4);  // the top face eliminated
+    const ToolRun r = run_tool(
+        dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/box_on_sphere.toml") + " -q -o " +
+                 quoted((dir / "box").string()) +
+                 " --set mesh.nx=8 --set mesh.ny=8 --set mesh.nz=4 --set 'mesh.cell=\"hex8\"'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto summary = nlohmann::json::parse(read_text(dir / "box" / "summary.json"));
+    const double reference = summary["energy"].get<double>();
+    EXPECT_LE(std::abs(peer["energy"].get<double>() - reference), 1e-8 * std::abs(reference));
+    EXPECT_EQ(peer["active_nodes"], summary["n_active"]);
+    EXPECT_EQ(peer["n_unknowns"], summary["n_free_dofs"]);
+  }
+}
+
 }  // namespace
 }  // namespace signorini

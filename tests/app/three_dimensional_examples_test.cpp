@@ -128,6 +128,7 @@ ProblemSpec library_spec(const std::string& example) {
   c.obstacle.shape = ObstacleShape::Plane;
   c.obstacle.point = Eigen::Vector3d::Zero();
   c.obstacle.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
+  c.surface_normal = [](const Point& x) { return Eigen::Vector3d(x(0), x(1), x(2) - 1.0); };
   spec.contacts = {c};
   return spec;
 }

@@ -774,6 +774,28 @@ TEST(ProblemFile3D, ExamplesRoundTrip) {
   }
 }
 
+// contact.surface_normal: three formulas in 3D, written back as given, a formula that does not
+// parse refused in one line naming the key, and the dimension it implies checked like any key's.
+TEST(ProblemFile3D, SurfaceNormal) {
+  const LoadedProblem p =
+      read_problem_file(std::string(SIGNORINI_EXAMPLES_DIR) + "/hertz_sphere.toml");
+  ASSERT_TRUE(static_cast<bool>(p.spec.contacts[0].surface_normal));
+  EXPECT_EQ(p.spec.contacts[0].surface_normal(Point(0.5, 0.25, 0.125)),
+            Eigen::Vector3d(0.5, 0.25, 0.125 - 1.0));
+  EXPECT_CONTAINS(p.effective_toml, "surface_normal = [\"x\", \"y\", \"z - 1\"]\n");
+  const std::string box =
+      "[mesh]\ntype = \"box\"\nlength = 1\nwidth = 1\nheight = 1\nnx = 2\nny = 2\nnz = "
+      "2\n[material]\nE = 1\nnu = 0.3\n[[clamp]]\nboundary = "
+      "\"zmax\"\n[contact]\nboundary = \"zmin\"\n";
+  EXPECT_CONTAINS(error_of(box + "surface_normal = [\"0\", \"0\", \"-1 +\"]\n"),
+                  "contact.surface_normal[2]");
+  EXPECT_CONTAINS(error_of(box + "surface_normal = [\"0\", \"-1\"]\n"), "contact.surface_normal");
+  const LoadedProblem flat =
+      parse_problem_string(box + "surface_normal = [\"0\", \"0\", \"-2\"]\n", "box.toml");
+  const Model m = build_model(flat.spec);
+  EXPECT_EQ(m.problem.contact.normals.col(0), Eigen::Vector3d(0.0, 0.0, -1.0));
+}
+
 // A Gmsh volume mesh from a problem file: the keys' three components are checked against the
 // mesh when it is read.
 TEST(ProblemFile3D, GmshVolumeMesh) {

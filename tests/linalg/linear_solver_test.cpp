@@ -2,11 +2,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "signorini/core/error.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
 
 namespace signorini {
 namespace {
+
+double relative_difference(const Vector& a, const Vector& b) {
+  return (a - b).norm() / b.norm();
+}
 
 // 1D Laplacian plus a diagonal shift: SPD, tridiagonal.
 SparseMatrix laplacian(Index n, double shift) {
@@ -99,6 +106,109 @@ TEST(CholmodSolver, ReportsVersionAndFactorSize) {
   s.factorize(A);
   EXPECT_GE(s.factor_nonzeros(), 50.0);
   EXPECT_FALSE(cholmod_version().empty());
+}
+
+// A 7-point Laplacian on an m x m x m grid plus a shift: large enough in flops per entry that
+// CHOLMOD factorises it supernodally, so that an update has to convert the factor.
+SparseMatrix grid_laplacian(int m, double shift) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  auto id = [m](int i, int j, int k) { return (k * m + j) * m + i; };
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        t.emplace_back(id(i, j, k), id(i, j, k), 6.0 + shift);
+        if (i + 1 < m) t.emplace_back(id(i, j, k), id(i + 1, j, k), -1.0);
+        if (j + 1 < m) t.emplace_back(id(i, j, k), id(i, j + 1, k), -1.0);
+        if (k + 1 < m) t.emplace_back(id(i, j, k), id(i, j, k + 1), -1.0);
+        if (i > 0) t.emplace_back(id(i, j, k), id(i - 1, j, k), -1.0);
+        if (j > 0) t.emplace_back(id(i, j, k), id(i, j - 1, k), -1.0);
+        if (k > 0) t.emplace_back(id(i, j, k), id(i, j, k - 1), -1.0);
+      }
+  SparseMatrix A(m * m * m, m * m * m);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  return A;
+}
+
+// Columns with two entries on coupled rows (i, i + 1), as a contact node's normal touches the
+// dofs of one node: C C^T stays inside A's pattern.
+SparseMatrix update_columns(Index n, const std::vector<Index>& first_rows, double value) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (std::size_t c = 0; c < first_rows.size(); ++c) {
+    t.emplace_back(static_cast<int>(first_rows[c]), static_cast<int>(c), value);
+    t.emplace_back(static_cast<int>(first_rows[c] + 1), static_cast<int>(c), -0.5 * value);
+  }
+  SparseMatrix C(n, static_cast<Index>(first_rows.size()));
+  C.setFromTriplets(t.begin(), t.end());
+  return C;
+}
+
+Vector solve_with(CholmodSolver& s, const Vector& b) {
+  Vector x;
+  s.solve(b, x);
+  return x;
+}
+
+// An update and a downdate give the factors of A + C C^T and of A again: the solves agree with
+// fresh factorisations to rounding, and a later factorize() runs from the analysis as before.
+TEST(CholmodSolver, UpdateAndDowndateMatchAFreshFactorisation) {
+  const SparseMatrix A = grid_laplacian(14, 0.05);
+  const Index n = A.rows();
+  const SparseMatrix C = update_columns(n, {3, 700, 1500, 2700}, 2.0);
+  const SparseMatrix AC = SparseMatrix(A + C * SparseMatrix(C.transpose())).pruned();
+  const Vector b = Vector::LinSpaced(n, -1.0, 2.0);
+
+  CholmodSolver fresh;
+  fresh.factorize(AC);
+  const Vector x_updated = solve_with(fresh, b);
+  fresh.factorize(A);
+  const Vector x_plain = solve_with(fresh, b);
+  ASSERT_GT((x_updated - x_plain).norm(), 1e-3 * x_plain.norm());  // the update matters
+
+  CholmodSolver s;
+  s.analyze(A);
+  s.factorize(A);
+  EXPECT_GT(s.last_factorization_seconds(), 0.0);
+  const double conversion = s.predicted_update_seconds(0.0);
+  EXPECT_GT(conversion, 0.0);  // still supernodal: the first update converts
+  ASSERT_TRUE(s.update(C, true));
+  EXPECT_EQ(s.predicted_update_seconds(0.0), 0.0);  // converted now
+  EXPECT_LT(relative_difference(solve_with(s, b), x_updated), 1e-12);
+  ASSERT_TRUE(s.update(C, false));
+  EXPECT_LT(relative_difference(solve_with(s, b), x_plain), 1e-12);
+  s.factorize(AC);  // back to the supernodal factorisation
+  EXPECT_GT(s.predicted_update_seconds(0.0), 0.0);
+  EXPECT_LT(relative_difference(solve_with(s, b), x_updated), 1e-12);
+  EXPECT_GT(s.timings().seconds("linear factor update"), 0.0);
+}
+
+// The cost estimate walks the elimination tree: positive, at most 4 flops per entry of L, and the
+// same for any of a column's rows that lie on one path.
+TEST(CholmodSolver, UpdateFlopsFollowTheEliminationTree) {
+  const SparseMatrix A = grid_laplacian(10, 0.05);
+  CholmodSolver s;
+  EXPECT_THROW((void)s.update_flops({0}), NumericalError);
+  s.factorize(A);
+  EXPECT_EQ(s.update_flops({}), 0.0);
+  double largest = 0.0;
+  for (Index r = 0; r < A.rows(); r += 97) {
+    const double f = s.update_flops({r});
+    EXPECT_GT(f, 0.0);
+    EXPECT_LE(f, 4.0 * s.factor_nonzeros());
+    largest = std::max(largest, f);
+  }
+  EXPECT_LT(largest, 4.0 * s.factor_nonzeros());  // a path, not the whole factor
+}
+
+// A downdate that leaves an indefinite matrix reports it; the next factorize() still works.
+TEST(CholmodSolver, DowndateBelowDefinitenessReturnsFalse) {
+  const SparseMatrix A = grid_laplacian(8, 0.05);
+  CholmodSolver s;
+  s.factorize(A);
+  EXPECT_FALSE(s.update(update_columns(A.rows(), {10}, 10.0), false));
+  s.factorize(A);
+  const Vector b = Vector::Ones(A.rows());
+  EXPECT_LT((A * solve_with(s, b) - b).norm(), 1e-12 * b.norm());
 }
 
 }  // namespace

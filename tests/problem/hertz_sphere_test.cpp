@@ -7,12 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <numbers>
 
 #include "problem/each_method.hpp"
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/core/error.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {
@@ -104,6 +106,64 @@ TEST(HertzSphere, ContactRadiusAndPressureApproachHertzUnderRefinement) {
   EXPECT_LT(errors[1].profile, 0.17);
   EXPECT_LT(errors[1].profile, 0.7 * errors[0].profile);
   EXPECT_LT(errors[1].radius, errors[0].radius);
+}
+
+// The ball's exact normal, (x, y, z - R) / R, given as contact.surface_normal: the contact nodes
+// take it instead of the facets' average (which is off by up to a few degrees on the coarse
+// mesh), the gaps to the plane are measured along it, and Hertz's answer holds as before.
+TEST(HertzSphere, ExactNormalsOfTheBall) {
+  ProblemSpec averaged = ball("hertz_sphere_coarse.msh");
+  ProblemSpec exact = averaged;
+  exact.contacts[0].surface_normal = [](const Point& x) {
+    return Eigen::Vector3d(x(0), x(1), x(2) - kR);
+  };
+  const Model a = build_model(averaged), e = build_model(exact);
+  const ContactSet &ca = a.problem.contact, &ce = e.problem.contact;
+  ASSERT_EQ(ca.size(), ce.size());
+  double largest_angle = 0.0;
+  for (Index j = 0; j < ce.size(); ++j) {
+    const Point x = e.mesh.point(ce.nodes[static_cast<std::size_t>(j)]);
+    const Eigen::Vector3d n = Eigen::Vector3d(x(0), x(1), x(2) - kR).normalized();
+    EXPECT_LT((ce.normals.col(j) - n).norm(), 1e-14);
+    largest_angle = std::max(largest_angle, std::acos(std::min(1.0, ca.normals.col(j).dot(n))));
+  }
+  std::cout << "largest angle between the averaged and the exact normal: " << largest_angle
+            << " rad\n";
+  EXPECT_GT(largest_angle, 1e-3);  // the facets' average is not exact on the curved surface
+
+  const ContactResult ra = solve_contact(a.problem, averaged.solver);
+  const ContactResult re = solve_contact(e.problem, exact.solver);
+  ASSERT_TRUE(re.summary.converged()) << re.summary.message;
+  EXPECT_LT(re.summary.kkt.max(), 1e-8);
+  const HertzErrors ea = hertz_errors(a, ra), ee = hertz_errors(e, re);
+  std::cout << "coarse mesh, averaged normals: radius " << ea.radius << ", peak " << ea.peak
+            << ", rms " << ea.rms << "; exact normals: radius " << ee.radius << ", peak " << ee.peak
+            << ", rms " << ee.rms << "\n";
+  EXPECT_NE(re.summary.contact_force, ra.summary.contact_force);
+  EXPECT_LT(ee.rms, 0.15);
+  EXPECT_LT(ee.radius, 0.05);
+}
+
+// A normal field that vanishes or points into the ball is refused in one line.
+TEST(HertzSphere, SurfaceNormalMustPointOutOfTheBody) {
+  ProblemSpec spec = ball("hertz_sphere_coarse.msh");
+  spec.contacts[0].surface_normal = [](const Point& x) {
+    return Eigen::Vector3d(-x(0), -x(1), kR - x(2));
+  };
+  try {
+    (void)build_model(spec);
+    FAIL() << "an inward normal was accepted";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("contact.surface_normal at x = ("), std::string::npos);
+    EXPECT_NE(std::string(err.what()).find("points into the body"), std::string::npos);
+  }
+  spec.contacts[0].surface_normal = [](const Point&) { return Eigen::Vector3d::Zero(); };
+  try {
+    (void)build_model(spec);
+    FAIL() << "a zero normal was accepted";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("contact.surface_normal is zero"), std::string::npos);
+  }
 }
 
 }  // namespace

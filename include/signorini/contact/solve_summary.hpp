@@ -37,12 +37,13 @@ inline constexpr EnumNames<Termination, 7> kTerminationNames{{
 /// One outer step: a Uzawa step k (uzawa_gnm, classical_uzawa) or one Newton iteration
 /// (semismooth_newton).
 struct OuterStepRecord {
-  int inner_iterations = 0;     ///< GNM iterations (uzawa_gnm); 1 otherwise
-  Index active_set_size = 0;    ///< at the end of the step
-  int armijo_reductions = 0;    ///< Armijo halvings in this step
-  int linear_iterations = 0;    ///< CG iterations in this step (0 with a direct solver)
-  int factorizations = 0;       ///< numeric factorisations in this step
-  int factor_updates = 0;       ///< rank-one factor updates/downdates in this step (dense systems)
+  int inner_iterations = 0;   ///< GNM iterations (uzawa_gnm); 1 otherwise
+  Index active_set_size = 0;  ///< at the end of the step
+  int armijo_reductions = 0;  ///< Armijo halvings in this step
+  int linear_iterations = 0;  ///< CG iterations in this step (0 with a direct solver)
+  int factorizations = 0;     ///< numeric factorisations in this step
+  int factor_updates =
+      0;  ///< rank-one factor updates/downdates in this step (dense and CHOLMOD systems)
   double inner_residual = 0.0;  ///< last GNM residual max(||G||/f, ||dx||/||x||)
   double dual_change = 0.0;     ///< ||l^k - l^{k-1}||_2 / ||l^k||_2 (0 where l^k = l^{k-1} = 0)
 };

@@ -31,9 +31,13 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                             const ScalarField& gap);
 /// The same against a rigid obstacle: g_j is the gap from node j along its normal nu_j
-/// (obstacle_gap); where nu_j never meets the obstacle, 10 times the mesh's extent.
+/// (obstacle_gap); where nu_j never meets the obstacle, 10 times the mesh's extent. With a
+/// `surface_normal` (the body's exact outward normal, any length) the normals are its values at
+/// the nodes instead of the facets' average; InputError where it vanishes or points into the
+/// body (more than 90 degrees from the facets' normal).
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
-                            const RigidObstacle& obstacle);
+                            const RigidObstacle& obstacle,
+                            const VectorField& surface_normal = nullptr);
 
 /// Appends the rows of `more` (a contact set over the same free dofs) to `into`: several
 /// contact boundaries as one contact set, their nodes in order (a node in two parts gets a row in

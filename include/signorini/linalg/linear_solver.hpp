@@ -25,6 +25,15 @@ inline constexpr EnumNames<LinearSolverType, 3> kLinearSolverTypeNames{{
 /// Preconditioner of the conjugate gradients of the iterative path (docs/gpu.md).
 enum class PreconditionerType { Jacobi, Multigrid };
 
+/// When the sparse direct path updates its CHOLMOD factor instead of refactorising.
+enum class FactorUpdates { Auto, Always, Never };
+
+inline constexpr EnumNames<FactorUpdates, 3> kFactorUpdatesNames{{
+    {FactorUpdates::Auto, "auto"},
+    {FactorUpdates::Always, "always"},
+    {FactorUpdates::Never, "never"},
+}};
+
 inline constexpr EnumNames<PreconditionerType, 2> kPreconditionerTypeNames{{
     {PreconditionerType::Jacobi, "jacobi"},
     {PreconditionerType::Multigrid, "multigrid"},
@@ -57,6 +66,10 @@ struct LinearSolverOptions {
   MultigridCoarsening coarsening = MultigridCoarsening::Auto;
   /// Degree of the Chebyshev smoother of the multigrid preconditioner (products with H per sweep).
   int chebyshev_degree = 2;
+  /// "cholmod" on the sparse direct path, when the active set changes: update the factor of the
+  /// Newton matrix by CHOLMOD's rank-k update/downdate instead of refactorising, where that is
+  /// expected to be faster ("auto"), whenever the active set changes ("always"), or never.
+  FactorUpdates factor_updates = FactorUpdates::Auto;
 
   /// The CG iteration limit for n unknowns: cg_max_iterations, or 10 n when that is 0.
   [[nodiscard]] int cg_iteration_limit(Index n) const;

@@ -73,6 +73,11 @@ struct ContactSpec {
   std::string description = "0";
   /// The rigid partner: a gap formula (`gap` above), a half-plane or a disc.
   RigidObstacle obstacle;
+  /// The body's outward normal at a point of the boundary, where its geometry is known (a
+  /// sphere, a cylinder: any length, normalised at each node); empty: the normals averaged from
+  /// the facets (docs/method.md section 3).
+  VectorField surface_normal;
+  std::vector<std::string> surface_normal_text;  ///< as the file gave it
 };
 
 /// A region of the mesh (a Gmsh physical surface, by name) with a material of its own.

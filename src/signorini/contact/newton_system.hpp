@@ -1,8 +1,9 @@
 #pragma once
 // The linear systems of the generalised Newton method (17): H(P) x = rhs with
 // H(P) = A + r sum_{j in P} h_j n_j n_j^T for active sets P. Consecutive active sets usually differ
-// in a few nodes, so a system is refactorised only when P changes, and the dense variant (for the
-// condensed problems) updates its factor by rank-one updates and downdates instead.
+// in a few nodes, so a system is refactorised only when P changes, and both the dense variant (for
+// the condensed problems) and the CHOLMOD one (the sparse direct path) update their factor by
+// rank-one updates and downdates instead where that is cheaper.
 
 #include <memory>
 

@@ -183,10 +183,43 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
   return out;
 }
 
+namespace {
+
+// "(0.5, 0.25, 0)": a point in messages, z left out in 2D.
+std::string point_text(const Mesh& mesh, const Point& x) {
+  std::string out = "(" + std::to_string(x(0)) + ", " + std::to_string(x(1));
+  if (mesh.dim() == 3) out += ", " + std::to_string(x(2));
+  return out + ")";
+}
+
+// The exact normals where the geometry is known (method.md section 3): the facets' average
+// approximates a curved surface's normal to O(h) (O(h^2) at best on a regular mesh), which
+// tilts the gap measured along it and the direction of the contact force; the given field is
+// exact at the nodes. It must point out of the body: within 90 degrees of the facets' normal.
+void set_surface_normals(const Mesh& mesh, const VectorField& field, BoundaryNodes& b) {
+  const int dim = mesh.dim();
+  for (Index j = 0; j < static_cast<Index>(b.nodes.size()); ++j) {
+    const Point x = mesh.point(b.nodes[static_cast<std::size_t>(j)]);
+    const Eigen::VectorXd v = field(x).head(dim);
+    const double length = v.norm();
+    if (!(length > 0.0))
+      throw InputError("contact.surface_normal is zero at x = " + point_text(mesh, x) +
+                       ": expected the body's outward normal there (any length, not zero)");
+    if (!(v.dot(b.normals.col(j)) > 0.0))
+      throw InputError("contact.surface_normal at x = " + point_text(mesh, x) +
+                       " points into the body (more than 90 degrees from the facets' outward "
+                       "normal): expected the outward normal");
+    b.normals.col(j) = v / length;
+  }
+}
+
+}  // namespace
+
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
-                            const RigidObstacle& obstacle) {
+                            const RigidObstacle& obstacle, const VectorField& surface_normal) {
   validate(obstacle);
   BoundaryNodes b = boundary_nodes(mesh, part, "contact.boundary");
+  if (surface_normal) set_surface_normals(mesh, surface_normal, b);
   ContactSet cs;
   cs.nodes = std::move(b.nodes);
   cs.normals = std::move(b.normals);

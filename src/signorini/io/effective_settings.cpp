@@ -89,6 +89,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     else
       out.array_table("contact");
     emit_values(out, contact_values(c, c.description, dim));
+    if (!c.surface_normal_text.empty()) out.value("surface_normal", c.surface_normal_text);
   }
   out.table("solver");
   emit_options(out, contact_solver_option_table(), spec.solver);

@@ -545,6 +545,12 @@ ContactSpec read_contact_entry(const Reader& r, const Dimension& dim, const toml
                                                 "\": expected " +
                                                 enum_choices(kObstacleShapeNames));
   o.shape = *parsed;
+  if (auto normal = vector_expressions(r, dim, *t, path, "surface_normal")) {
+    const std::string key = join(path, "surface_normal");
+    contact.surface_normal = finite_vector_field(
+        with_file(r, [&] { return make_vector_field(*normal, key); }), key, *normal);
+    contact.surface_normal_text = std::move(*normal);
+  }
   // The keys of each shape; a key that only other shapes have is refused, naming them.
   const std::map<ObstacleShape, std::vector<std::string>> keys{
       {ObstacleShape::Gap, {"gap"}},

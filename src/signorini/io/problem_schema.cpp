@@ -402,6 +402,13 @@ const OptionTable<P>& contact_options() {
     t.custom("radius", "number > 0", "disc, cylinder: the radius")
         .unit("L")
         .default_text("required with obstacle = \"disc\" or \"cylinder\"");
+    t.custom("surface_normal", "array of 2 (3 in 3D) expressions of x, y, z",
+             "the body's outward normal on this boundary where its geometry is known, e.g. "
+             "`[\"x\", \"y\", \"z - 1\"]` on a ball of centre (0, 0, 1): its value at each "
+             "contact node (any length) replaces the normal averaged from the facets, which is "
+             "exact on flat faces only. It must point out of the body (within 90 degrees of the "
+             "facets' normal) and not vanish; the gap to an obstacle is measured along it")
+        .default_text("the facets' average");
     t.custom("inside", "boolean",
              "disc, cylinder: true when the body lies inside it (a shaft in a bore), false when "
              "outside (a roller or a punch pressing on it)")

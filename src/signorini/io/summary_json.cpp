@@ -212,8 +212,10 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
   // One contact boundary as the object of [contact], several as the array of [[contact]].
   json contacts = json::array();
-  for (const ContactSpec& c : spec.contacts)
+  for (const ContactSpec& c : spec.contacts) {
     contacts.push_back(values_json(contact_values(c, c.description, dim)));
+    if (!c.surface_normal_text.empty()) contacts.back()["surface_normal"] = c.surface_normal_text;
+  }
   problem["contact"] = contacts.size() == 1 ? contacts[0] : contacts;
   problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
   problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);

@@ -1,5 +1,7 @@
 #include "signorini/linalg/cholmod_solver.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <string>
 
 #include "signorini/linalg/detail/cholmod_matrix.hpp"
@@ -9,12 +11,27 @@ namespace signorini {
 
 using detail::check_cholmod;
 
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
 struct CholmodSolver::Impl {
   detail::CholmodCommon workspace;  // first member: finished last
   cholmod_common& common = workspace.common;
   detail::CholmodUpper upper;  // upper triangle of H, CHOLMOD's own copy (64-bit indices)
   cholmod_factor* factor = nullptr;
-  cholmod_dense* x = nullptr;  // solve2 workspaces, reused between solves
+  cholmod_factor* symbolic = nullptr;  // the analysis, kept: an updated factor is simplicial
+  // Elimination tree of the permuted matrix and the column counts of L, for update_flops();
+  // made from the first factor that is asked (empty until then).
+  std::vector<detail::CholmodInt> parent, column_count, inverse_perm;
+  // What predicted_update_seconds() assumes, measured by the last factorisation, conversion and
+  // update (the starting values were measured on this project's 2-core machine).
+  double factorization_seconds = 0.0;
+  double update_flop_rate = 5e9;                // flops of update_flops() per second
+  double conversion_seconds_per_entry = 25e-9;  // supernodal L L^T to simplicial L D L^T
+  cholmod_dense* x = nullptr;                   // solve2 workspaces, reused between solves
   cholmod_dense* y = nullptr;
   cholmod_dense* e = nullptr;
   Index n = 0;
@@ -29,6 +46,10 @@ struct CholmodSolver::Impl {
     cholmod_l_free_dense(&y, &common);
     cholmod_l_free_dense(&e, &common);
     cholmod_l_free_factor(&factor, &common);
+    cholmod_l_free_factor(&symbolic, &common);
+    parent.clear();
+    column_count.clear();
+    inverse_perm.clear();
     cholmod_l_free_sparse(&upper.matrix, &common);
   }
 };
@@ -52,6 +73,8 @@ void CholmodSolver::analyze(const SparseMatrix& pattern) {
   s.common.postorder = 1;
   s.factor = cholmod_l_analyze_p(s.upper.matrix, perm.data(), nullptr, 0, &s.common);
   check_cholmod(s.common, "analysis");
+  s.symbolic = cholmod_l_copy_factor(s.factor, &s.common);
+  check_cholmod(s.common, "analysis");
 }
 
 void CholmodSolver::factorize(const SparseMatrix& H) {
@@ -64,11 +87,20 @@ void CholmodSolver::factorize(const SparseMatrix& H) {
     throw NumericalError("CHOLMOD: factorize() got a matrix whose pattern differs from analyze()");
   ScopedTimer timer(timings_, "linear factorization");
   s.upper.copy_values(H);
+  if (s.factor->is_super != s.symbolic->is_super) {
+    // Updated since the last factorisation (now simplicial L D L^T): start again from the
+    // analysis so that the supernodal (BLAS-3) factorisation runs.
+    cholmod_l_free_factor(&s.factor, &s.common);
+    s.factor = cholmod_l_copy_factor(s.symbolic, &s.common);
+    check_cholmod(s.common, "factorization");
+  }
+  const auto start = std::chrono::steady_clock::now();
   {
     const detail::SerialOpenMpScope serial;
     cholmod_l_factorize(s.upper.matrix, s.factor, &s.common);
   }
   check_cholmod(s.common, "factorization");
+  s.factorization_seconds = seconds_since(start);
 }
 
 LinearSolveStats CholmodSolver::solve(const Vector& rhs, Vector& x) {
@@ -80,6 +112,133 @@ LinearSolveStats CholmodSolver::solve(const Vector& rhs, Vector& x) {
   check_cholmod(s.common, "solve");
   x = Eigen::Map<const Vector>(static_cast<const double*>(s.x->x), s.n);
   return {};
+}
+
+double CholmodSolver::update_flops(const std::vector<Index>& rows) {
+  Impl& s = *impl_;
+  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
+    throw NumericalError("CHOLMOD: update_flops() before factorize()");
+  if (rows.empty()) return 0.0;
+  const auto n = static_cast<std::size_t>(s.n);
+  if (s.parent.empty()) {
+    // The elimination tree from the factor's structure: within a supernode each column's parent
+    // is the next one, the last column's is the first row below the supernode's diagonal block;
+    // in a simplicial factor a column's parent is its smallest off-diagonal row.
+    const cholmod_factor& L = *s.factor;
+    const auto* perm = static_cast<const detail::CholmodInt*>(L.Perm);
+    const auto* count = static_cast<const detail::CholmodInt*>(L.ColCount);
+    s.parent.assign(n, -1);
+    s.column_count.assign(count, count + n);
+    s.inverse_perm.resize(n);
+    for (std::size_t k = 0; k < n; ++k)
+      s.inverse_perm[static_cast<std::size_t>(perm[k])] = static_cast<detail::CholmodInt>(k);
+    if (L.is_super) {
+      const auto* super = static_cast<const detail::CholmodInt*>(L.super);
+      const auto* pi = static_cast<const detail::CholmodInt*>(L.pi);
+      const auto* ls = static_cast<const detail::CholmodInt*>(L.s);
+      for (std::size_t sn = 0; sn < L.nsuper; ++sn) {
+        const auto k1 = super[sn], k2 = super[sn + 1];
+        for (auto k = k1; k + 1 < k2; ++k) s.parent[static_cast<std::size_t>(k)] = k + 1;
+        const auto below = pi[sn] + (k2 - k1);
+        if (below < pi[sn + 1]) s.parent[static_cast<std::size_t>(k2 - 1)] = ls[below];
+      }
+    } else {
+      const auto* lp = static_cast<const detail::CholmodInt*>(L.p);
+      const auto* li = static_cast<const detail::CholmodInt*>(L.i);
+      const auto* nz = static_cast<const detail::CholmodInt*>(L.nz);
+      for (std::size_t k = 0; k < n; ++k) {
+        detail::CholmodInt first = -1;
+        for (auto q = lp[k] + 1; q < lp[k] + nz[k]; ++q)
+          if (first < 0 || li[q] < first) first = li[q];
+        s.parent[k] = first;
+      }
+    }
+  }
+  detail::CholmodInt k = static_cast<detail::CholmodInt>(n);
+  for (const Index r : rows) k = std::min(k, s.inverse_perm[static_cast<std::size_t>(r)]);
+  double entries = 0.0;
+  for (; k >= 0; k = s.parent[static_cast<std::size_t>(k)])
+    entries += static_cast<double>(s.column_count[static_cast<std::size_t>(k)]);
+  return 4.0 * entries;
+}
+
+double CholmodSolver::predicted_update_seconds(double flops) const {
+  const Impl& s = *impl_;
+  const bool convert = s.factor != nullptr && (s.factor->is_super || s.factor->is_ll);
+  return flops / s.update_flop_rate + (convert ? s.conversion_seconds_per_entry * s.common.lnz : 0);
+}
+
+double CholmodSolver::last_factorization_seconds() const {
+  return impl_->factorization_seconds;
+}
+
+bool CholmodSolver::update(const SparseMatrix& C, bool up) {
+  Impl& s = *impl_;
+  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
+    throw NumericalError("CHOLMOD: update() before factorize()");
+  if (C.rows() != s.n) throw NumericalError("CHOLMOD: update() with a matrix of the wrong size");
+  if (C.cols() == 0) return true;
+  ScopedTimer timer(timings_, "linear factor update");
+  std::vector<Index> rows;
+  double flops = 0.0;
+  for (Index j = 0; j < C.cols(); ++j) {
+    rows.clear();
+    for (SparseMatrix::InnerIterator it(C, j); it; ++it) rows.push_back(it.row());
+    flops += update_flops(rows);  // also makes the inverse permutation
+  }
+  if (s.factor->is_super || s.factor->is_ll) {
+    // CHOLMOD updates simplicial L D L^T factors only. No spare room in the columns (CHOLMOD's
+    // default adds 20 % and 5 entries): updates by the node blocks of H add no fill, and a
+    // column that does need room is moved by CHOLMOD itself.
+    const auto start = std::chrono::steady_clock::now();
+    s.common.grow0 = 1.0;
+    s.common.grow1 = 1.0;
+    s.common.grow2 = 0;
+    cholmod_l_change_factor(CHOLMOD_REAL, 0, 0, 0, 1, s.factor, &s.common);
+    check_cholmod(s.common, "update");
+    s.conversion_seconds_per_entry =
+        seconds_since(start) / std::max(1.0, static_cast<double>(s.common.lnz));
+  }
+  // CHOLMOD takes C's rows in the factor's (permuted) order, sorted within each column.
+  cholmod_sparse* Cp = cholmod_l_allocate_sparse(
+      static_cast<std::size_t>(s.n), static_cast<std::size_t>(C.cols()),
+      static_cast<std::size_t>(C.nonZeros()), 1, 1, 0, CHOLMOD_REAL, &s.common);
+  check_cholmod(s.common, "update");
+  auto* cp = static_cast<detail::CholmodInt*>(Cp->p);
+  auto* ci = static_cast<detail::CholmodInt*>(Cp->i);
+  auto* cx = static_cast<double*>(Cp->x);
+  std::vector<std::pair<detail::CholmodInt, double>> column;
+  detail::CholmodInt pos = 0;
+  for (Index j = 0; j < C.cols(); ++j) {
+    cp[j] = pos;
+    column.clear();
+    for (SparseMatrix::InnerIterator it(C, j); it; ++it)
+      column.emplace_back(s.inverse_perm[static_cast<std::size_t>(it.row())], it.value());
+    std::sort(column.begin(), column.end());
+    for (const auto& [row, value] : column) {
+      ci[pos] = row;
+      cx[pos++] = value;
+    }
+  }
+  cp[C.cols()] = pos;
+  const auto start = std::chrono::steady_clock::now();
+  const int ok = cholmod_l_updown(up ? 1 : 0, Cp, s.factor, &s.common);
+  cholmod_l_free_sparse(&Cp, &s.common);
+  if (s.common.status == CHOLMOD_NOT_POSDEF || ok == 0 || s.factor->minor < s.factor->n)
+    return false;
+  check_cholmod(s.common, "update");
+  if (!up) {
+    // CHOLMOD downdates an L D L^T factor into an indefinite one without a word: a pivot of D
+    // that is not positive means the downdated matrix is not positive definite (in exact
+    // arithmetic H(P) never is; rounding can make it so), and the caller refactorises.
+    const auto* lp = static_cast<const detail::CholmodInt*>(s.factor->p);
+    const auto* lx = static_cast<const double*>(s.factor->x);
+    for (Index j = 0; j < s.n; ++j)
+      if (!(lx[lp[j]] > 0.0)) return false;
+  }
+  const double dt = seconds_since(start);
+  if (dt > 1e-3) s.update_flop_rate = flops / dt;  // shorter ones say more about the clock
+  return true;
 }
 
 double CholmodSolver::factor_nonzeros() const {

@@ -25,6 +25,27 @@ class CholmodSolver final : public LinearSolver {
   /// Nonzeros of the Cholesky factor after the last factorisation (0 before).
   [[nodiscard]] double factor_nonzeros() const;
 
+  /// Estimated flops of a rank-one update or downdate by a column whose nonzeros lie in the
+  /// given rows: about 4 per entry of L on the elimination-tree path from the first of them to
+  /// the root, the columns that the update changes (Davis and Hager's row-modification cost).
+  /// Needs a factorisation; 0 for no rows.
+  [[nodiscard]] double update_flops(const std::vector<Index>& rows);
+
+  /// Replaces the factor of H by that of H + C C^T (up = true) or H - C C^T (down), C an n x k
+  /// sparse matrix in H's own row order, by CHOLMOD's update/downdate (cholmod_updown). The
+  /// first update converts the supernodal L L^T factor to a simplicial L D L^T one (CHOLMOD
+  /// updates only those); the next factorize() starts from the supernodal analysis again.
+  /// Returns false, leaving no usable factor, when a downdate meets a matrix that is not
+  /// numerically positive definite: the caller refactorises.
+  bool update(const SparseMatrix& C, bool up);
+
+  /// Seconds that update() is expected to take for updates of these estimated flops, the
+  /// conversion to L D L^T included where the factor is still supernodal: from the rates of
+  /// this solver's last update and conversion (or this project's machine before any).
+  [[nodiscard]] double predicted_update_seconds(double flops) const;
+  /// Seconds of the last numeric factorisation (0 before any).
+  [[nodiscard]] double last_factorization_seconds() const;
+
  private:
   struct Impl;  // CHOLMOD's state, freed by its destructor
   std::unique_ptr<Impl> impl_;

@@ -33,6 +33,15 @@ const OptionTable<LinearSolverOptions>& linear_solver_option_table() {
               "products with H per smoothing sweep of the `multigrid` preconditioner (2 balances "
               "CG iterations, each with its host synchronisations, against products with the "
               "fine matrix: docs/gpu.md)");
+    t.choice("factor_updates", &O::factor_updates, kFactorUpdatesNames,
+             "`cholmod` on the sparse direct path (`schur_complement = false`), when the active "
+             "set changes: `auto` updates and downdates the factor of the Newton matrix "
+             "(CHOLMOD's `cholmod_updown`, one rank-one term per node that enters or leaves the "
+             "active set) instead of refactorising where that is expected to take less time, from "
+             "the measured times of the last factorisation and update; `always` updates on every "
+             "change (a factorisation after 2,000 updates, or where a downdate fails); `never` "
+             "refactorises. Updating needs the simplicial L D L^T form of the factor, about 1.5 "
+             "times the memory of the supernodal one (docs/solvers.md)");
     return t;
   }();
   return table;

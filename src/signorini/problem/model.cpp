@@ -287,8 +287,8 @@ Model build_model(const ProblemSpec& spec) {
     for (const ContactSpec& c : spec.contacts) {
       RigidObstacle o = c.obstacle;
       if (o.shape == ObstacleShape::Gap) o.gap = c.gap;
-      append_contact_set(problem.contact,
-                         make_contact_set(mesh, mesh.boundary_part(c.boundary), dofs, o));
+      append_contact_set(problem.contact, make_contact_set(mesh, mesh.boundary_part(c.boundary),
+                                                           dofs, o, c.surface_normal));
       contact_boundaries.push_back(c.boundary);
       contact_starts.push_back(problem.contact.size());
     }
