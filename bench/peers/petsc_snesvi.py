@@ -270,14 +270,73 @@ class GamgReduced:
         self.inner.apply(x, y)
 
 
-def main(argv):
-    args, petsc_args = parse_arguments(argv)
-    config = CONFIG_ALIASES.get(args.config, args.config)
-    # A single process: Open MPI then needs no launcher daemon and no network transports, which
-    # saves about half a second of MPI_Init (petsc4py initialises MPI). The caller's settings win.
+def isolate_mpi():
+    """A single process: Open MPI then needs no launcher daemon and no network transports, which
+    saves about half a second of MPI_Init (petsc4py initialises MPI). The caller's settings
+    win."""
     os.environ.setdefault("OMPI_MCA_ess_singleton_isolated", "1")
     os.environ.setdefault("OMPI_MCA_btl", "self")
     os.environ.setdefault("OMPI_MCA_pml", "ob1")
+
+
+def set_options(PETSc, config_options):
+    """COMMON and the configuration's options, each unless the command line gave it; returns the
+    options in effect."""
+    options = PETSc.Options()
+    effective = {}
+    for key, value in list(COMMON.items()) + list(config_options.items()):
+        if not options.hasName(key):
+            options.setValue(key, value)
+        effective[key] = options.getString(key)
+    return effective
+
+
+def make_snes(PETSc, a, b, lower, upper):
+    """SNESVI on F(u) = A u - b under lower <= u <= upper (A constant: the Jacobian is A)."""
+    snes = PETSc.SNES().create(comm=PETSc.COMM_SELF)
+
+    def function(_snes, x, f):
+        a.mult(x, f)
+        f.axpy(-1.0, b)
+
+    def jacobian(_snes, _x, _j, _p):
+        pass  # A is constant; the reduced-space method never changes it
+
+    snes.setFunction(function, a.createVecLeft())
+    snes.setJacobian(jacobian, a, a)
+    snes.setVariableBounds(lower, upper)
+    return snes
+
+
+def energy_of(a, b, u):
+    """J(u) = 1/2 u.Au - b.u."""
+    au = a.createVecLeft()
+    a.mult(u, au)
+    return 0.5 * au.dot(u) - b.dot(u)
+
+
+def outcome(PETSc, snes):
+    """(the converged reason, its name, SNES iterations, KSP iterations); converged: reason > 0."""
+    reason = snes.getConvergedReason()
+    names = {v: k for k, v in vars(PETSc.SNES.ConvergedReason).items() if isinstance(v, int)}
+    return (reason, names.get(reason, str(reason)), snes.getIterationNumber(),
+            snes.getLinearSolveIterations())
+
+
+def write_json(path, result):
+    """The result as JSON at path, written to a temporary name first and renamed."""
+    result["peak_rss_bytes"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as out:
+        json.dump(result, out, indent=2)
+        out.write("\n")
+    os.replace(tmp, path)
+
+
+def main(argv):
+    args, petsc_args = parse_arguments(argv)
+    config = CONFIG_ALIASES.get(args.config, args.config)
+    isolate_mpi()
     hint = "" if sys.executable == "/usr/bin/python3" else \
         " (or run the script with /usr/bin/python3, which has the Debian packages)"
     try:
@@ -295,13 +354,8 @@ def main(argv):
     t_import = time.perf_counter()
 
     nx, ny = args.nx, args.ny
-    options = PETSc.Options()
     description, config_options = CONFIGS[config]
-    effective = {}
-    for key, value in list(COMMON.items()) + list(config_options.items()):
-        if not options.hasName(key):
-            options.setValue(key, value)
-        effective[key] = options.getString(key)
+    effective = set_options(PETSc, config_options)
 
     # Assembly: A on the free dofs, b, the bounds.
     hx, hy = LENGTH / nx, HEIGHT / ny
@@ -324,19 +378,7 @@ def main(argv):
     upper.set(PETSc.INFINITY)
     t_assembly = time.perf_counter()
 
-    snes = PETSc.SNES().create(comm=PETSc.COMM_SELF)
-    residual = a.createVecLeft()
-
-    def function(_snes, x, f):
-        a.mult(x, f)
-        f.axpy(-1.0, b)
-
-    def jacobian(_snes, _x, _j, _p):
-        pass  # A is constant; the reduced-space method never changes it
-
-    snes.setFunction(function, residual)
-    snes.setJacobian(jacobian, a, a)
-    snes.setVariableBounds(lower, upper)
+    snes = make_snes(PETSc, a, b, lower, upper)
     if effective.get("pc_type") == "python":
         node = np.arange(n // 2)
         xy = np.empty(n)  # node coordinates, x and y interleaved like the unknowns
@@ -358,16 +400,11 @@ def main(argv):
     snes.solve(None, u)
     t_solve = time.perf_counter()
 
-    au = a.createVecLeft()
-    a.mult(u, au)
-    energy = 0.5 * au.dot(u) - b.dot(u)
+    energy = energy_of(a, b, u)
     uy_bottom = u.getArray(readonly=True)[1:2 * nx:2]
     active = int(np.count_nonzero(uy_bottom <= 0.0))
-    reason = snes.getConvergedReason()
-    names = {v: k for k, v in vars(PETSc.SNES.ConvergedReason).items() if isinstance(v, int)}
-    reason_name = names.get(reason, str(reason))
+    reason, reason_name, its, lits = outcome(PETSc, snes)
     converged = reason > 0
-    its, lits = snes.getIterationNumber(), snes.getLinearSolveIterations()
     t_end = time.perf_counter()
     seconds = {
         "import": t_import - T_START,  # numpy, petsc4py and MPI_Init
@@ -404,13 +441,8 @@ def main(argv):
             "converged": converged,
             "reason": reason_name,
             "seconds": seconds,
-            "peak_rss_bytes": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024,
         }
-        tmp = args.json + ".tmp"
-        with open(tmp, "w", encoding="utf-8") as out:
-            json.dump(result, out, indent=2)
-            out.write("\n")
-        os.replace(tmp, args.json)
+        write_json(args.json, result)
     return 0 if converged else 3
 
 

@@ -23,13 +23,12 @@ import time
 T_START = time.perf_counter()
 
 import argparse  # noqa: E402
-import json  # noqa: E402
 import os  # noqa: E402
-import resource  # noqa: E402
 import sys  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from petsc_snesvi import COMMON, GamgOnce, fail, reduced_rows  # noqa: E402
+from petsc_snesvi import (GamgOnce, energy_of, fail, isolate_mpi, make_snes,  # noqa: E402
+                          outcome, reduced_rows, set_options, write_json)
 
 YOUNG, POISSON = 1000.0, 0.3
 PUSH = -0.005                      # the top face's displacement along z
@@ -143,9 +142,7 @@ def stiffness_csr(np, n, nz, ke, int_type):
 def main(argv):
     args, petsc_args = parse_arguments(argv)
     config = args.config
-    os.environ.setdefault("OMPI_MCA_ess_singleton_isolated", "1")
-    os.environ.setdefault("OMPI_MCA_btl", "self")
-    os.environ.setdefault("OMPI_MCA_pml", "ob1")
+    isolate_mpi()
     try:
         import numpy as np
         import petsc4py
@@ -159,13 +156,8 @@ def main(argv):
     n, nz = args.n, args.n // 2
     h = 1.0 / n
     m = n + 1
-    options = PETSc.Options()
     description, config_options = CONFIGS[config]
-    effective = {}
-    for key, value in list(COMMON.items()) + list(config_options.items()):
-        if not options.hasName(key):
-            options.setValue(key, value)
-        effective[key] = options.getString(key)
+    effective = set_options(PETSc, config_options)
 
     # A over all nodes; the top layer k = nz is prescribed and eliminated.
     indptr, indices, values = stiffness_csr(np, n, nz, element_stiffness(np, h), PETSc.IntType)
@@ -197,19 +189,7 @@ def main(argv):
     upper.set(PETSc.INFINITY)
     t_assembly = time.perf_counter()
 
-    snes = PETSc.SNES().create(comm=PETSc.COMM_SELF)
-    residual = a.createVecLeft()
-
-    def function(_snes, x, f):
-        a.mult(x, f)
-        f.axpy(-1.0, b)
-
-    def jacobian(_snes, _x, _j, _p):
-        pass  # A is constant
-
-    snes.setFunction(function, residual)
-    snes.setJacobian(jacobian, a, a)
-    snes.setVariableBounds(lower, upper)
+    snes = make_snes(PETSc, a, b, lower, upper)
     node = np.arange(n_free // 3)
     xyz = np.empty((n_free // 3, 3))
     xyz[:, 0] = (node % m) * h
@@ -232,16 +212,11 @@ def main(argv):
     snes.solve(None, u)
     t_solve = time.perf_counter()
 
-    au = a.createVecLeft()
-    a.mult(u, au)
-    energy = 0.5 * au.dot(u) - b.dot(u)
+    energy = energy_of(a, b, u)
     bottom = u.getArray(readonly=True)[2:3 * m * m:3]
     active = int(np.count_nonzero(bottom <= lower.getArray(readonly=True)[2:3 * m * m:3]))
-    reason = snes.getConvergedReason()
-    names = {v: k for k, v in vars(PETSc.SNES.ConvergedReason).items() if isinstance(v, int)}
-    reason_name = names.get(reason, str(reason))
+    reason, reason_name, its, lits = outcome(PETSc, snes)
     converged = reason > 0
-    its, lits = snes.getIterationNumber(), snes.getLinearSolveIterations()
     t_end = time.perf_counter()
     seconds = {
         "import": t_import - T_START,
@@ -268,13 +243,8 @@ def main(argv):
             "n_unknowns": n_free, "n_bounded": m * m, "energy": energy, "active_nodes": active,
             "snes_iterations": its, "ksp_iterations": lits, "converged": converged,
             "reason": reason_name, "seconds": seconds,
-            "peak_rss_bytes": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024,
         }
-        tmp = args.json + ".tmp"
-        with open(tmp, "w", encoding="utf-8") as out:
-            json.dump(result, out, indent=2)
-            out.write("\n")
-        os.replace(tmp, args.json)
+        write_json(args.json, result)
     return 0 if converged else 3
 
 

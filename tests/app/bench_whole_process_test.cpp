@@ -30,6 +30,9 @@ using testing::ToolRun;
 const std::string kPeerScript = SIGNORINI_EXAMPLES_DIR "/../bench/peers/petsc_snesvi.py";
 const std::string kPaper = SIGNORINI_EXAMPLES_DIR "/paper.toml";
 
+constexpr const char* kNoPetsc4py =
+    "petsc4py is not importable by /usr/bin/python3 (apt-get install python3-petsc4py)";
+
 bool petsc4py_available() {
   return std::system("/usr/bin/python3 -c 'import numpy, petsc4py' > /dev/null 2>&1") == 0;
 }
@@ -193,9 +196,7 @@ TEST(BenchWholeProcess, ChildrenGetTheUsersEnvironment) {
 }
 
 TEST(BenchWholeProcess, PeerSolvesTheSameDiscreteProblem) {
-  if (!petsc4py_available())
-    GTEST_SKIP() << "petsc4py is not importable by /usr/bin/python3 (apt-get install "
-                    "python3-petsc4py)";
+  if (!petsc4py_available()) GTEST_SKIP() << kNoPetsc4py;
   const testing::TemporaryFolder dir;
   const fs::path json = dir / "peer.json";
   const int status = std::system(("/usr/bin/python3 " + quoted(kPeerScript) +
@@ -214,9 +215,7 @@ TEST(BenchWholeProcess, PeerSolvesTheSameDiscreteProblem) {
 }
 
 TEST(BenchWholeProcess, PeersRunSideBySideAndAgree) {
-  if (!petsc4py_available())
-    GTEST_SKIP() << "petsc4py is not importable by /usr/bin/python3 (apt-get install "
-                    "python3-petsc4py)";
+  if (!petsc4py_available()) GTEST_SKIP() << kNoPetsc4py;
   const testing::TemporaryFolder dir;
   const fs::path json = dir / "peers.json";
   const ToolRun r =
@@ -249,9 +248,7 @@ TEST(BenchWholeProcess, PeersRunSideBySideAndAgree) {
 // The 3D peer (bench/peers/petsc_snesvi_3d.py) poses examples/box_on_sphere.toml on hex8 cells
 // itself: its energy and active nodes are the tool's on the 8 x 8 x 4 mesh.
 TEST(BenchWholeProcess, ThreeDimensionalPeerSolvesTheSameDiscreteProblem) {
-  if (!petsc4py_available())
-    GTEST_SKIP() << "petsc4py is not importable by /usr/bin/python3 (apt-get install "
-                    "python3-petsc4py)";
+  if (!petsc4py_available()) GTEST_SKIP() << kNoPetsc4py;
   const testing::TemporaryFolder dir;
   const fs::path json = dir / "peer3d.json";
   const std::string script = SIGNORINI_EXAMPLES_DIR "/../bench/peers/petsc_snesvi_3d.py";

@@ -55,16 +55,16 @@ class SparseNewtonSystem final : public NewtonSystem {
     for (std::size_t j = 0; j < active.size(); ++j) {
       if (active[j] == current_[j]) continue;
       (active[j] ? entering : leaving).push_back(static_cast<Index>(j));
-      flops += node_update_flops(static_cast<Index>(j));
+      flops += cholmod_->update_flops(node_rows(static_cast<Index>(j)));
     }
     const std::size_t changed = entering.size() + leaving.size();
     // Update where that is expected to take less time than the factorisation it replaces. The
     // first update after a factorisation also converts the factor (to L D L^T, about 25 ns per
     // entry here, more than a 2D factorisation); that serves the updates that follow as well,
     // so it counts half.
-    const double conversion = cholmod_->predicted_update_seconds(0.0);
     if (updates_since_factorization_ + changed > kMaxUpdates ||
-        (!always_update_ && cholmod_->predicted_update_seconds(flops) - 0.5 * conversion >
+        (!always_update_ && cholmod_->predicted_update_seconds(flops) +
+                                    0.5 * cholmod_->predicted_conversion_seconds() >
                                 cholmod_->last_factorization_seconds()))
       return false;
     if (!cholmod_->update(node_columns(entering), true) ||
@@ -89,16 +89,11 @@ class SparseNewtonSystem final : public NewtonSystem {
     return C;
   }
 
-  // The estimated flops of node j's rank-one term, computed once per node.
-  double node_update_flops(Index j) {
-    if (node_flops_.empty()) node_flops_.assign(static_cast<std::size_t>(Nt_.cols()), -1.0);
-    double& f = node_flops_[static_cast<std::size_t>(j)];
-    if (f < 0.0) {
-      std::vector<Index> rows;
-      for (SparseMatrix::InnerIterator it(Nt_, j); it; ++it) rows.push_back(it.row());
-      f = cholmod_->update_flops(rows);
-    }
-    return f;
+  // The dofs of node j's normal (its rank-one term's rows).
+  std::vector<Index> node_rows(Index j) const {
+    std::vector<Index> rows;
+    for (SparseMatrix::InnerIterator it(Nt_, j); it; ++it) rows.push_back(it.row());
+    return rows;
   }
 
   const ContactProblem& p_;
@@ -111,7 +106,6 @@ class SparseNewtonSystem final : public NewtonSystem {
   ActiveSet current_;
   bool has_factor_ = false;
   std::size_t updates_since_factorization_ = 0;
-  std::vector<double> node_flops_;
 };
 
 class DenseNewtonSystem final : public NewtonSystem {

@@ -241,9 +241,8 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
     nu.head(mesh.dim()) = cs.normals.col(j);
     cs.gaps(j) = obstacle_gap(obstacle, x, nu, far);
     if (!std::isfinite(cs.gaps(j)))
-      throw InputError("contact.gap is not finite at x = (" + std::to_string(x(0)) + ", " +
-                       std::to_string(x(1)) + (mesh.dim() == 3 ? ", " + std::to_string(x(2)) : "") +
-                       "): expected finite values on the contact boundary");
+      throw InputError("contact.gap is not finite at x = " + point_text(mesh, x) +
+                       ": expected finite values on the contact boundary");
     // A prescribed displacement moves the node towards the obstacle by nu . u_D: the constraint
     // (N x)_j <= g_j holds on the free dofs with that part taken off the gap. A node with local
     // axes (DofMap::set_frame, 2D) has its row in them.

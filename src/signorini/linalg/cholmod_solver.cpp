@@ -23,9 +23,11 @@ struct CholmodSolver::Impl {
   detail::CholmodUpper upper;  // upper triangle of H, CHOLMOD's own copy (64-bit indices)
   cholmod_factor* factor = nullptr;
   cholmod_factor* symbolic = nullptr;  // the analysis, kept: an updated factor is simplicial
-  // Elimination tree of the permuted matrix and the column counts of L, for update_flops();
-  // made from the first factor that is asked (empty until then).
-  std::vector<detail::CholmodInt> parent, column_count, inverse_perm;
+  // The elimination tree of the permuted matrix, the entries of L on the path from each column
+  // to the root, and the inverse permutation, for update_flops() and update(): made by tree()
+  // from the first factor that is asked (empty until then; the pattern never changes).
+  std::vector<detail::CholmodInt> parent, inverse_perm;
+  std::vector<double> path_entries;
   // What predicted_update_seconds() assumes, measured by the last factorisation, conversion and
   // update (the starting values were measured on this project's 2-core machine).
   double factorization_seconds = 0.0;
@@ -38,6 +40,8 @@ struct CholmodSolver::Impl {
 
   Impl() = default;
   ~Impl() { release(); }
+
+  void tree();
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
@@ -48,7 +52,7 @@ struct CholmodSolver::Impl {
     cholmod_l_free_factor(&factor, &common);
     cholmod_l_free_factor(&symbolic, &common);
     parent.clear();
-    column_count.clear();
+    path_entries.clear();
     inverse_perm.clear();
     cholmod_l_free_sparse(&upper.matrix, &common);
   }
@@ -114,58 +118,66 @@ LinearSolveStats CholmodSolver::solve(const Vector& rhs, Vector& x) {
   return {};
 }
 
+void CholmodSolver::Impl::tree() {
+  if (!parent.empty()) return;
+  // The elimination tree from the factor's structure: within a supernode each column's parent
+  // is the next one, the last column's is the first row below the supernode's diagonal block;
+  // in a simplicial factor a column's parent is its smallest off-diagonal row.
+  const cholmod_factor& L = *factor;
+  const auto size = static_cast<std::size_t>(n);
+  const auto* perm = static_cast<const detail::CholmodInt*>(L.Perm);
+  const auto* count = static_cast<const detail::CholmodInt*>(L.ColCount);
+  parent.assign(size, -1);
+  inverse_perm.resize(size);
+  for (std::size_t k = 0; k < size; ++k)
+    inverse_perm[static_cast<std::size_t>(perm[k])] = static_cast<detail::CholmodInt>(k);
+  if (L.is_super) {
+    const auto* super = static_cast<const detail::CholmodInt*>(L.super);
+    const auto* pi = static_cast<const detail::CholmodInt*>(L.pi);
+    const auto* ls = static_cast<const detail::CholmodInt*>(L.s);
+    for (std::size_t sn = 0; sn < L.nsuper; ++sn) {
+      const auto k1 = super[sn], k2 = super[sn + 1];
+      for (auto k = k1; k + 1 < k2; ++k) parent[static_cast<std::size_t>(k)] = k + 1;
+      const auto below = pi[sn] + (k2 - k1);
+      if (below < pi[sn + 1]) parent[static_cast<std::size_t>(k2 - 1)] = ls[below];
+    }
+  } else {
+    const auto* lp = static_cast<const detail::CholmodInt*>(L.p);
+    const auto* li = static_cast<const detail::CholmodInt*>(L.i);
+    const auto* nz = static_cast<const detail::CholmodInt*>(L.nz);
+    for (std::size_t k = 0; k < size; ++k) {
+      detail::CholmodInt first = -1;
+      for (auto q = lp[k] + 1; q < lp[k] + nz[k]; ++q)
+        if (first < 0 || li[q] < first) first = li[q];
+      parent[k] = first;
+    }
+  }
+  // A parent comes after its child: one sweep from the root down sums the paths.
+  path_entries.assign(size, 0.0);
+  for (std::size_t k = size; k-- > 0;)
+    path_entries[k] = static_cast<double>(count[k]) +
+                      (parent[k] >= 0 ? path_entries[static_cast<std::size_t>(parent[k])] : 0.0);
+}
+
 double CholmodSolver::update_flops(const std::vector<Index>& rows) {
   Impl& s = *impl_;
   if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
     throw NumericalError("CHOLMOD: update_flops() before factorize()");
   if (rows.empty()) return 0.0;
-  const auto n = static_cast<std::size_t>(s.n);
-  if (s.parent.empty()) {
-    // The elimination tree from the factor's structure: within a supernode each column's parent
-    // is the next one, the last column's is the first row below the supernode's diagonal block;
-    // in a simplicial factor a column's parent is its smallest off-diagonal row.
-    const cholmod_factor& L = *s.factor;
-    const auto* perm = static_cast<const detail::CholmodInt*>(L.Perm);
-    const auto* count = static_cast<const detail::CholmodInt*>(L.ColCount);
-    s.parent.assign(n, -1);
-    s.column_count.assign(count, count + n);
-    s.inverse_perm.resize(n);
-    for (std::size_t k = 0; k < n; ++k)
-      s.inverse_perm[static_cast<std::size_t>(perm[k])] = static_cast<detail::CholmodInt>(k);
-    if (L.is_super) {
-      const auto* super = static_cast<const detail::CholmodInt*>(L.super);
-      const auto* pi = static_cast<const detail::CholmodInt*>(L.pi);
-      const auto* ls = static_cast<const detail::CholmodInt*>(L.s);
-      for (std::size_t sn = 0; sn < L.nsuper; ++sn) {
-        const auto k1 = super[sn], k2 = super[sn + 1];
-        for (auto k = k1; k + 1 < k2; ++k) s.parent[static_cast<std::size_t>(k)] = k + 1;
-        const auto below = pi[sn] + (k2 - k1);
-        if (below < pi[sn + 1]) s.parent[static_cast<std::size_t>(k2 - 1)] = ls[below];
-      }
-    } else {
-      const auto* lp = static_cast<const detail::CholmodInt*>(L.p);
-      const auto* li = static_cast<const detail::CholmodInt*>(L.i);
-      const auto* nz = static_cast<const detail::CholmodInt*>(L.nz);
-      for (std::size_t k = 0; k < n; ++k) {
-        detail::CholmodInt first = -1;
-        for (auto q = lp[k] + 1; q < lp[k] + nz[k]; ++q)
-          if (first < 0 || li[q] < first) first = li[q];
-        s.parent[k] = first;
-      }
-    }
-  }
-  detail::CholmodInt k = static_cast<detail::CholmodInt>(n);
+  s.tree();
+  detail::CholmodInt k = static_cast<detail::CholmodInt>(s.n);
   for (const Index r : rows) k = std::min(k, s.inverse_perm[static_cast<std::size_t>(r)]);
-  double entries = 0.0;
-  for (; k >= 0; k = s.parent[static_cast<std::size_t>(k)])
-    entries += static_cast<double>(s.column_count[static_cast<std::size_t>(k)]);
-  return 4.0 * entries;
+  return 4.0 * s.path_entries[static_cast<std::size_t>(k)];
 }
 
 double CholmodSolver::predicted_update_seconds(double flops) const {
+  return flops / impl_->update_flop_rate;
+}
+
+double CholmodSolver::predicted_conversion_seconds() const {
   const Impl& s = *impl_;
   const bool convert = s.factor != nullptr && (s.factor->is_super || s.factor->is_ll);
-  return flops / s.update_flop_rate + (convert ? s.conversion_seconds_per_entry * s.common.lnz : 0);
+  return convert ? s.conversion_seconds_per_entry * s.common.lnz : 0.0;
 }
 
 double CholmodSolver::last_factorization_seconds() const {
@@ -179,13 +191,7 @@ bool CholmodSolver::update(const SparseMatrix& C, bool up) {
   if (C.rows() != s.n) throw NumericalError("CHOLMOD: update() with a matrix of the wrong size");
   if (C.cols() == 0) return true;
   ScopedTimer timer(timings_, "linear factor update");
-  std::vector<Index> rows;
-  double flops = 0.0;
-  for (Index j = 0; j < C.cols(); ++j) {
-    rows.clear();
-    for (SparseMatrix::InnerIterator it(C, j); it; ++it) rows.push_back(it.row());
-    flops += update_flops(rows);  // also makes the inverse permutation
-  }
+  s.tree();
   if (s.factor->is_super || s.factor->is_ll) {
     // CHOLMOD updates simplicial L D L^T factors only. No spare room in the columns (CHOLMOD's
     // default adds 20 % and 5 entries): updates by the node blocks of H add no fill, and a
@@ -208,6 +214,8 @@ bool CholmodSolver::update(const SparseMatrix& C, bool up) {
   auto* ci = static_cast<detail::CholmodInt*>(Cp->i);
   auto* cx = static_cast<double*>(Cp->x);
   std::vector<std::pair<detail::CholmodInt, double>> column;
+  std::vector<detail::CholmodInt> starts;  // each column's first row: its path starts there
+  double flops = 0.0;
   detail::CholmodInt pos = 0;
   for (Index j = 0; j < C.cols(); ++j) {
     cp[j] = pos;
@@ -219,10 +227,15 @@ bool CholmodSolver::update(const SparseMatrix& C, bool up) {
       ci[pos] = row;
       cx[pos++] = value;
     }
+    if (!column.empty()) {
+      starts.push_back(column.front().first);
+      flops += 4.0 * s.path_entries[static_cast<std::size_t>(column.front().first)];
+    }
   }
   cp[C.cols()] = pos;
   const auto start = std::chrono::steady_clock::now();
   const int ok = cholmod_l_updown(up ? 1 : 0, Cp, s.factor, &s.common);
+  const double dt = seconds_since(start);
   cholmod_l_free_sparse(&Cp, &s.common);
   if (s.common.status == CHOLMOD_NOT_POSDEF || ok == 0 || s.factor->minor < s.factor->n)
     return false;
@@ -230,13 +243,14 @@ bool CholmodSolver::update(const SparseMatrix& C, bool up) {
   if (!up) {
     // CHOLMOD downdates an L D L^T factor into an indefinite one without a word: a pivot of D
     // that is not positive means the downdated matrix is not positive definite (in exact
-    // arithmetic H(P) never is; rounding can make it so), and the caller refactorises.
+    // arithmetic H(P) never is; rounding can make it so), and the caller refactorises. Only
+    // the pivots on the columns' paths changed.
     const auto* lp = static_cast<const detail::CholmodInt*>(s.factor->p);
     const auto* lx = static_cast<const double*>(s.factor->x);
-    for (Index j = 0; j < s.n; ++j)
-      if (!(lx[lp[j]] > 0.0)) return false;
+    for (detail::CholmodInt k : starts)
+      for (; k >= 0; k = s.parent[static_cast<std::size_t>(k)])
+        if (!(lx[lp[k]] > 0.0)) return false;
   }
-  const double dt = seconds_since(start);
   if (dt > 1e-3) s.update_flop_rate = flops / dt;  // shorter ones say more about the clock
   return true;
 }

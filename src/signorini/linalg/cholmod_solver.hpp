@@ -39,10 +39,12 @@ class CholmodSolver final : public LinearSolver {
   /// numerically positive definite: the caller refactorises.
   bool update(const SparseMatrix& C, bool up);
 
-  /// Seconds that update() is expected to take for updates of these estimated flops, the
-  /// conversion to L D L^T included where the factor is still supernodal: from the rates of
-  /// this solver's last update and conversion (or this project's machine before any).
+  /// Seconds that update() is expected to take for updates of these estimated flops, at the
+  /// rate of this solver's last update (or this project's machine's before any).
   [[nodiscard]] double predicted_update_seconds(double flops) const;
+  /// Seconds that the next update() is expected to spend converting the factor to L D L^T: 0
+  /// where it is already, else at the rate of the last conversion (or this machine's).
+  [[nodiscard]] double predicted_conversion_seconds() const;
   /// Seconds of the last numeric factorisation (0 before any).
   [[nodiscard]] double last_factorization_seconds() const;
 

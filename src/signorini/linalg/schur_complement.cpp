@@ -90,22 +90,23 @@ struct PartFactor {
 
   /// z = L^-1 P v.
   [[nodiscard]] Vector forward(const Vector& v) {
-    cholmod_dense vd = detail::dense_view(v);
-    const detail::OwnedDense pv(cholmod_l_solve(CHOLMOD_P, factor, &vd, &common), common);
-    check_cholmod(common, "permutation");
-    const detail::OwnedDense z(cholmod_l_solve(CHOLMOD_L, factor, pv.get(), &common), common);
-    check_cholmod(common, "forward substitution");
-    return Eigen::Map<const Vector>(z.values(), n);
+    return two_solves(v, CHOLMOD_P, "permutation", CHOLMOD_L, "forward substitution");
   }
 
   /// x = P^T L^-T w.
   [[nodiscard]] Vector backward(const Vector& w) {
-    cholmod_dense wd = detail::dense_view(w);
-    const detail::OwnedDense y(cholmod_l_solve(CHOLMOD_Lt, factor, &wd, &common), common);
-    check_cholmod(common, "back substitution");
-    const detail::OwnedDense x(cholmod_l_solve(CHOLMOD_Pt, factor, y.get(), &common), common);
-    check_cholmod(common, "permutation");
-    return Eigen::Map<const Vector>(x.values(), n);
+    return two_solves(w, CHOLMOD_Lt, "back substitution", CHOLMOD_Pt, "permutation");
+  }
+
+  /// CHOLMOD's solve `first`, then `second`, applied to v (the names are for the errors).
+  [[nodiscard]] Vector two_solves(const Vector& v, int first, const char* first_name, int second,
+                                  const char* second_name) {
+    cholmod_dense vd = detail::dense_view(v);
+    const detail::OwnedDense y(cholmod_l_solve(first, factor, &vd, &common), common);
+    check_cholmod(common, first_name);
+    const detail::OwnedDense z(cholmod_l_solve(second, factor, y.get(), &common), common);
+    check_cholmod(common, second_name);
+    return Eigen::Map<const Vector>(z.values(), n);
   }
 };
 
