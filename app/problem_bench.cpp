@@ -34,7 +34,8 @@ double linear_solve_seconds(const Model& model, const ContactSolverOptions& solv
   if (uses_backend_path(solver) && solver.device == DeviceKind::Cpu) {
     const auto start = std::chrono::steady_clock::now();
     HostBackend backend;
-    PenalizedOperator H(backend, A, model.problem.contact.N);  // no weights: H = A
+    // No weights: H = A, held as the contact solve holds it.
+    PenalizedOperator H(backend, A, model.problem.contact.N, stiffness_arrays(A));
     const std::unique_ptr<Preconditioner> M =
         make_preconditioner(H, A, model.problem.contact.N, &model.multigrid, solver.linear);
     Pcg pcg(backend, n);

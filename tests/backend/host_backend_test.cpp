@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace signorini {
 namespace {
@@ -54,6 +55,75 @@ TEST(HostBackend, SparseAndDenseProducts) {
   const auto dD = be.upload(D);
   be.gemv(*dD, to_device(be, x), y);
   EXPECT_LT((to_host(y) - D * x).norm(), 1e-14);
+}
+
+TEST(HostBackend, TransposeFromTheColumnArraysCopiedOrShared) {
+  HostBackend be;
+  SparseMatrix P(4, 3);  // a rectangular "prolongation": its transpose is the restriction
+  P.insert(0, 0) = 1.0;
+  P.insert(1, 0) = 0.5;
+  P.insert(1, 1) = 0.5;
+  P.insert(2, 1) = 1.0;
+  P.insert(3, 2) = -2.0;
+  P.makeCompressed();
+  const Vector r = Vector::LinSpaced(4, 1.0, 4.0);
+  const auto copied = be.upload_transpose(P, HostArrays::Copy);
+  const auto shared = be.upload_transpose(P, HostArrays::Share);
+  EXPECT_EQ(copied->rows(), 3);
+  EXPECT_EQ(shared->cols(), 4);
+  DeviceVector y(be, 3);
+  be.spmv(*copied, to_device(be, r), y);
+  EXPECT_EQ(to_host(y), Vector(P.transpose() * r));
+  be.spmv(*shared, to_device(be, r), y);
+  EXPECT_EQ(to_host(y), Vector(P.transpose() * r));
+  // The shared one multiplies by P's own arrays (no copy): a change of P shows in it at once.
+  P.valuePtr()[0] = 3.0;
+  be.spmv(*shared, to_device(be, r), y);
+  EXPECT_EQ(to_host(y), Vector(P.transpose() * r));
+  be.spmv(*copied, to_device(be, r), y);
+  EXPECT_EQ(to_host(y)(0), 1.0 * r(0) + 0.5 * r(1));
+  // Large enough for the threaded product: a symmetric tridiagonal matrix shared as itself.
+  const Index n = 30000;
+  SparseMatrix T(n, n);
+  std::vector<Eigen::Triplet<double>> t;
+  for (Index i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 2.0 + 1e-4 * static_cast<double>(i));
+    if (i > 0) {
+      t.emplace_back(i, i - 1, -1.0);
+      t.emplace_back(i - 1, i, -1.0);
+    }
+  }
+  T.setFromTriplets(t.begin(), t.end());
+  const Vector x = Vector::LinSpaced(n, -1.0, 1.0).array().cos();
+  const auto dT = be.upload_symmetric(T, HostArrays::Share);
+  DeviceVector ty(be, n);
+  be.spmv(*dT, to_device(be, x), ty);
+  EXPECT_LT((to_host(ty) - T * x).norm(), 1e-13 * (T * x).norm());
+}
+
+TEST(HostBackend, TransposedProductSmallAndThreaded) {
+  HostBackend be;
+  ASSERT_TRUE(be.has_transposed_product());
+  for (const Index cols : {Index{7}, Index{50000}}) {  // below and above the threaded size
+    const Index rows = cols / 3 + 2;
+    std::vector<Eigen::Triplet<double>> t;
+    for (Index i = 0; i < rows; ++i)
+      for (Index k = 0; k < 5; ++k)
+        t.emplace_back(i, (7 * i + 13 * k) % cols,
+                       1.0 + 0.1 * static_cast<double>(k) - 0.01 * static_cast<double>(i));
+    SparseMatrix R(rows, cols);
+    R.setFromTriplets(t.begin(), t.end());
+    const auto dR = be.upload(R);
+    const Vector x = Vector::LinSpaced(rows, -2.0, 3.0);
+    const Vector y0 = Vector::LinSpaced(cols, 1.0, 0.0);
+    DeviceVector y = to_device(be, y0);
+    be.spmv_transpose(*dR, to_device(be, x), y, 0.5, 2.0);
+    const Vector expected = 0.5 * (R.transpose() * x) + 2.0 * y0;
+    EXPECT_LT((to_host(y) - expected).norm(), 1e-13 * expected.norm()) << cols;
+    be.fill(y, std::numeric_limits<double>::quiet_NaN());
+    be.spmv_transpose(*dR, to_device(be, x), y);  // beta = 0 ignores y, NaN or not
+    EXPECT_LT((to_host(y) - R.transpose() * x).norm(), 1e-13 * (R.transpose() * x).norm());
+  }
 }
 
 TEST(HostBackend, ChebyshevUpdateIgnoresStaleDirectionWhenAIsZero) {

@@ -155,7 +155,9 @@ TEST(VtuFile, CellsPointDataAndChecks) {
   EXPECT_THROW(f.add_point_data("flags", std::vector<std::uint8_t>{1}), std::invalid_argument);
   const std::vector<Index> bad = {0, 3};
   EXPECT_THROW(f.add_cell(VtkCellType::Line, bad), std::invalid_argument);
-  const std::string text = f.text();
+  const std::string text = f.take_text();
+  EXPECT_EQ(f.num_points(), 0);  // its arrays were freed as they went into the text
+  EXPECT_EQ(f.num_cells(), 0);
   EXPECT_CONTAINS(text, "Name=\"a&lt;b\"");                     // attribute values stay well-formed
   const testing::VtuContents v = testing::read_vtu_text(text);  // names as written, escaped
   EXPECT_EQ(v.points, 3);

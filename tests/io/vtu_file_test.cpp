@@ -42,7 +42,7 @@ WrittenCells write_box(CellType cell) {
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     file.add_cell(mesh.cell_type(c), mesh.cell(c));
   }
-  return {testing::read_vtu_text(file.text())};
+  return {testing::read_vtu_text(file.take_text())};
 }
 
 TEST(VtuFile, QuadraticTetraInVtksOrder) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <map>
 #include <set>
@@ -17,6 +18,7 @@
 #include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/iterative/pcg.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
+#include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
 
@@ -109,6 +111,35 @@ TEST(SmoothedAggregation, ProlongationsCarryTheRigidBodyModes) {
     EXPECT_LT((Matrix(h.coarse_operators[l]) - reference).norm(), 1e-12 * reference.norm());
   }
   EXPECT_LE(h.coarse_operators.back().rows(), 20);
+}
+
+TEST(SmoothedAggregation, ThreeDimensionalProductsMatchEigens) {
+  // In 3D each aggregate carries six modes, so the prolongation's and the Galerkin product's
+  // columns are formed six at a time (form_column_groups): both against Eigen's own products.
+  BoxMeshOptions box;
+  box.nx = 6;
+  box.ny = 5;
+  box.nz = 4;
+  const Mesh mesh = make_box_mesh(box);
+  ClampSpec bottom;
+  bottom.boundary = "zmin";
+  const DofMap dofs = make_dof_map(mesh, {bottom});
+  ElasticityOptions elasticity;
+  elasticity.material = {1000.0, 0.3};
+  const SparseMatrix A = assemble_stiffness(mesh, dofs, elasticity);
+  SmoothedAggregationOptions o;
+  o.max_coarse_unknowns = 30;
+  const MultigridHierarchy h =
+      smoothed_aggregation_hierarchy(A, rigid_body_modes(mesh, dofs), free_dof_nodes(dofs), o);
+  ASSERT_GE(h.prolongations.size(), 1U);
+  const SparseMatrix& P = h.prolongations[0];
+  EXPECT_EQ(P.cols() % 6, 0);  // six modes per aggregate (none too small to carry them)
+  const SparseMatrix reference = SparseMatrix(SparseMatrix(P.transpose()) * A * P);
+  EXPECT_LT((h.coarse_operators[0] - reference).norm(), 1e-12 * reference.norm());
+  // With the bottom clamped, the coarse operator is symmetric positive definite.
+  const Matrix C(h.coarse_operators[0]);
+  EXPECT_LT((C - C.transpose()).norm(), 1e-12 * C.norm());
+  EXPECT_EQ(Eigen::LLT<Matrix>(C).info(), Eigen::Success);
 }
 
 // H = A + N^T diag(c) N of the paper's benchmark with every contact node active, solved by CG

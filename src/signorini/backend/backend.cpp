@@ -3,6 +3,8 @@
 #include <cmath>
 #include <utility>
 
+#include "signorini/core/error.hpp"
+
 namespace signorini {
 
 DeviceVector::DeviceVector(Backend& backend, Index n)
@@ -48,6 +50,16 @@ class StoredWork final : public RecordedWork {
   bool ran_;
 };
 }  // namespace
+
+std::unique_ptr<DeviceSparseMatrix> Backend::upload_transpose(const SparseMatrix& A,
+                                                              HostArrays /*arrays*/) {
+  return upload(SparseMatrix(A.transpose()));
+}
+
+void Backend::spmv_transpose(const DeviceSparseMatrix& /*A*/, const DeviceVector& /*x*/,
+                             DeviceVector& /*y*/, double /*alpha*/, double /*beta*/) {
+  throw NumericalError(description() + " has no transposed sparse product");
+}
 
 std::unique_ptr<RecordedWork> Backend::call_by_call(std::function<void()> work, std::string reason,
                                                     bool ran) {

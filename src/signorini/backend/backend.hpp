@@ -90,6 +90,10 @@ class RecordedWork {
   [[nodiscard]] virtual bool ran_while_recording() const = 0;
 };
 
+/// What upload_transpose may do with the host matrix's arrays: copy them, or (on a backend that
+/// computes in the host's memory) use them in place.
+enum class HostArrays { Copy, Share };
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -109,13 +113,19 @@ class Backend {
   /// Copies A (any shape) into the backend as CSR. Throws NumericalError if it does not fit.
   [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload(const SparseMatrix& A) = 0;
   [[nodiscard]] virtual std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) = 0;
-  /// upload(A) for a symmetric A: its column-major arrays are then also its CSR arrays, which
-  /// spares a backend the conversion (a second copy of the largest matrix, on the host). Such a
-  /// backend multiplies by A^T, which for a matrix symmetric only up to rounding (a Galerkin
-  /// product P^T A P summed in another order) differs from A x by rounding only.
-  [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
-      const SparseMatrix& A) {
-    return upload(A);
+  /// A^T from A's column-major arrays, which are A^T's CSR arrays: no conversion, and no
+  /// transposed copy on the host (the restriction P^T of a multigrid level). With
+  /// HostArrays::Share a backend that computes in the host's memory keeps a view of A's arrays
+  /// instead of a copy, so the largest matrices exist once: A must then outlive the result,
+  /// unchanged. A GPU copies them either way.
+  [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload_transpose(
+      const SparseMatrix& A, HostArrays arrays = HostArrays::Copy);
+  /// upload(A) for a symmetric A, as upload_transpose(A): the result multiplies by A^T, which for
+  /// a matrix symmetric only up to rounding (a Galerkin product P^T A P summed in another order)
+  /// differs from A x by rounding only.
+  [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
+      const SparseMatrix& A, HostArrays arrays = HostArrays::Copy) {
+    return upload_transpose(A, arrays);
   }
 
   // Kernels. Vectors must belong to this backend and have matching sizes; x and y must differ
@@ -123,6 +133,13 @@ class Backend {
   /// y = alpha A x + beta y
   virtual void spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y,
                     double alpha = 1.0, double beta = 0.0) = 0;
+  /// Whether spmv_transpose runs on this backend. The CPU's does (partial sums per thread), so
+  /// that a multigrid level there keeps one copy of its prolongation P, as P^T's CSR arrays
+  /// shared with the host matrix; a GPU keeps P and P^T and gathers for both products.
+  [[nodiscard]] virtual bool has_transposed_product() const { return false; }
+  /// y = alpha A^T x + beta y, where has_transposed_product(); a NumericalError elsewhere.
+  virtual void spmv_transpose(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y,
+                              double alpha = 1.0, double beta = 0.0);
   /// y = A x (dense)
   virtual void gemv(const DeviceDenseMatrix& A, const DeviceVector& x, DeviceVector& y) = 0;
   [[nodiscard]] virtual double dot(const DeviceVector& x, const DeviceVector& y) = 0;

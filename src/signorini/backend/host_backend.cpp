@@ -5,36 +5,89 @@
 #include <algorithm>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <vector>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
+#include "signorini/backend/node_block_matrix.hpp"
 #include "signorini/core/error.hpp"
 
 namespace signorini {
 
 namespace {
 
+// Signed loop bounds for OpenMP.
+using Loop = std::int64_t;
+
+// Loops run on OpenMP threads from kParallelFrom entries up, plainly below, where even an
+// inactive parallel region costs a call per loop (a tenth of a CG iteration on 60x20).
+constexpr Loop kParallelFrom = 20000;
+
 // Matrices count in bytes_in_use() as on a GPU (CSR arrays), so that the CPU backend predicts the
-// memory a GPU run needs.
+// memory a GPU run needs; a shared matrix counts too, though here it takes no memory of its own.
+// A matrix holds its CSR arrays itself (`owned`), or views the column-major arrays of a caller's
+// matrix as the CSR arrays of its transpose (upload_transpose with HostArrays::Share), or, for a
+// large square copy whose pattern is made of node blocks, holds those instead of CSR arrays
+// (`blocks`: fewer bytes for each product to stream, node_block_matrix.hpp).
 class HostSparseMatrix final : public DeviceSparseMatrix {
  public:
+  using Csr = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  using CsrView = Eigen::Map<const Csr>;
+
+  /// A copy of A in CSR form.
   HostSparseMatrix(const SparseMatrix& A, std::size_t& in_use, std::size_t& peak)
-      : DeviceSparseMatrix(A.rows(), A.cols(), A.nonZeros()), csr(A), in_use_(in_use) {
-    csr.makeCompressed();
-    bytes_ = static_cast<std::size_t>(csr.rows() + 1) * sizeof(int) +
-             static_cast<std::size_t>(csr.nonZeros()) * (sizeof(int) + sizeof(double));
-    in_use_ += bytes_;
-    peak = std::max(peak, in_use_);
+      : DeviceSparseMatrix(A.rows(), A.cols(), A.nonZeros()), owned(A), in_use_(in_use) {
+    owned.makeCompressed();
+    point_at_owned();
+    count(peak);
+  }
+  /// A^T, from the compressed A's column-major arrays: shared, or copied as they are.
+  HostSparseMatrix(const SparseMatrix& A, HostArrays arrays, std::size_t& in_use, std::size_t& peak)
+      : DeviceSparseMatrix(A.cols(), A.rows(), A.nonZeros()), in_use_(in_use) {
+    const CsrView transpose(A.cols(), A.rows(), A.nonZeros(), A.outerIndexPtr(), A.innerIndexPtr(),
+                            A.valuePtr());
+    if (arrays == HostArrays::Share) {
+      outer = A.outerIndexPtr();
+      inner = A.innerIndexPtr();
+      values = A.valuePtr();
+    } else {
+      if (A.rows() == A.cols() && A.rows() >= kParallelFrom)
+        blocks =
+            NodeBlockMatrix::from_csr(A.cols(), A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr());
+      if (!blocks) {
+        owned = transpose;
+        point_at_owned();
+      }
+    }
+    count(peak);
   }
   ~HostSparseMatrix() override { in_use_ -= bytes_; }
   HostSparseMatrix(const HostSparseMatrix&) = delete;
   HostSparseMatrix& operator=(const HostSparseMatrix&) = delete;
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> csr;
+
+  [[nodiscard]] CsrView view() const { return {rows(), cols(), nonzeros(), outer, inner, values}; }
+
+  const int* outer = nullptr;
+  const int* inner = nullptr;
+  const double* values = nullptr;
+  std::optional<NodeBlockMatrix> blocks;  // instead of the CSR arrays, where set
 
  private:
+  void point_at_owned() {
+    outer = owned.outerIndexPtr();
+    inner = owned.innerIndexPtr();
+    values = owned.valuePtr();
+  }
+  void count(std::size_t& peak) {
+    bytes_ = static_cast<std::size_t>(rows() + 1) * sizeof(int) +
+             static_cast<std::size_t>(nonzeros()) * (sizeof(int) + sizeof(double));
+    in_use_ += bytes_;
+    peak = std::max(peak, in_use_);
+  }
+  Csr owned;
   std::size_t& in_use_;
   std::size_t bytes_ = 0;
 };
@@ -57,13 +110,7 @@ class HostDenseMatrix final : public DeviceDenseMatrix {
   std::size_t bytes_ = 0;
 };
 
-// Signed loop bounds for OpenMP.
-using Loop = std::int64_t;
-
-// Runs f(i) for i in [0, n): on OpenMP threads from kParallelFrom entries up, plainly below, where
-// even an inactive parallel region costs a call per loop (a tenth of a CG iteration on 60x20).
-constexpr Loop kParallelFrom = 20000;
-
+// Runs f(i) for i in [0, n), on threads from kParallelFrom up.
 template <class F>
 void for_each_index(Loop n, const F& f) {
   if (n >= kParallelFrom) {
@@ -117,20 +164,31 @@ std::unique_ptr<DeviceSparseMatrix> HostBackend::upload(const SparseMatrix& A) {
   return std::make_unique<HostSparseMatrix>(A, in_use_, peak_);
 }
 
+std::unique_ptr<DeviceSparseMatrix> HostBackend::upload_transpose(const SparseMatrix& A,
+                                                                  HostArrays arrays) {
+  if (!A.isCompressed()) return upload(SparseMatrix(A.transpose()));
+  return std::make_unique<HostSparseMatrix>(A, arrays, in_use_, peak_);
+}
+
 std::unique_ptr<DeviceDenseMatrix> HostBackend::upload(const Matrix& A) {
   return std::make_unique<HostDenseMatrix>(A, in_use_, peak_);
 }
 
 void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y,
                        double alpha, double beta) {
-  const auto& m = static_cast<const HostSparseMatrix&>(A).csr;
-  const int* outer = m.outerIndexPtr();
-  const int* inner = m.innerIndexPtr();
-  const double* v = m.valuePtr();
+  const auto& h = static_cast<const HostSparseMatrix&>(A);
+  if (h.blocks) {
+    h.blocks->multiply(x.data(), y.data(), alpha, beta, h.rows() >= kParallelFrom);
+    return;
+  }
+  const int* outer = h.outer;
+  const int* inner = h.inner;
+  const double* v = h.values;
   const double* xs = x.data();
   double* ys = y.data();
-  const Loop rows = m.rows();
+  const Loop rows = h.rows();
   if (rows < kParallelFrom) {  // Eigen's own product, vectorised
+    const HostSparseMatrix::CsrView m = h.view();
     Eigen::Map<const Vector> xm(xs, x.size());
     Eigen::Map<Vector> ym(ys, y.size());
     if (beta == 0.0)
@@ -148,6 +206,58 @@ void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, Devic
     for_each_index(rows, [&](Loop i) { ys[i] = row(i); });
   else
     for_each_index(rows, [&](Loop i) { ys[i] = row(i) + beta * ys[i]; });
+}
+
+void HostBackend::spmv_transpose(const DeviceSparseMatrix& A, const DeviceVector& x,
+                                 DeviceVector& y, double alpha, double beta) {
+  // Row i of A scatters alpha x_i A(i, :) into y: the rows of A are the columns of A^T, so each
+  // thread sums its share of the rows into a y of its own, and the partial sums are added after.
+  const auto& h = static_cast<const HostSparseMatrix&>(A);
+  if (h.blocks) {
+    h.blocks->multiply_transpose(x.data(), y.data(), alpha, beta);
+    return;
+  }
+  const int* outer = h.outer;
+  const int* inner = h.inner;
+  const double* v = h.values;
+  const double* xs = x.data();
+  double* ys = y.data();
+  const Loop rows = h.rows();
+  const Loop cols = h.cols();
+  int threads = 1;
+#ifdef _OPENMP
+  threads = omp_get_max_threads();
+#endif
+  if (cols < kParallelFrom || threads == 1) {
+    for (Loop j = 0; j < cols; ++j) ys[j] = beta == 0.0 ? 0.0 : beta * ys[j];
+    for (Loop i = 0; i < rows; ++i) {
+      const double a = alpha * xs[i];
+      for (int k = outer[i]; k < outer[i + 1]; ++k) ys[inner[k]] += v[k] * a;
+    }
+    return;
+  }
+  partial_sums_.resize(static_cast<std::size_t>(threads) * static_cast<std::size_t>(cols));
+  double* parts = partial_sums_.data();
+#pragma omp parallel num_threads(threads)
+  {
+    int t = 0;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+#endif
+    double* part = parts + static_cast<std::ptrdiff_t>(t) * cols;
+    std::fill(part, part + cols, 0.0);
+#pragma omp for schedule(static)
+    for (Loop i = 0; i < rows; ++i) {
+      const double a = alpha * xs[i];
+      for (int k = outer[i]; k < outer[i + 1]; ++k) part[inner[k]] += v[k] * a;
+    }
+#pragma omp for schedule(static)
+    for (Loop j = 0; j < cols; ++j) {
+      double s = beta == 0.0 ? 0.0 : beta * ys[j];
+      for (int p = 0; p < threads; ++p) s += parts[static_cast<std::ptrdiff_t>(p) * cols + j];
+      ys[j] = s;
+    }
+  }
 }
 
 void HostBackend::gemv(const DeviceDenseMatrix& A, const DeviceVector& x, DeviceVector& y) {

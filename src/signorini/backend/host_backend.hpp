@@ -4,6 +4,7 @@
 // reference the CUDA backend is compared with.
 
 #include <unordered_map>
+#include <vector>
 
 #include "signorini/backend/backend.hpp"
 
@@ -23,9 +24,14 @@ class HostBackend final : public Backend {
 
   [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload(const SparseMatrix& A) override;
   [[nodiscard]] std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) override;
+  [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_transpose(const SparseMatrix& A,
+                                                                     HostArrays arrays) override;
 
   void spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y, double alpha = 1.0,
             double beta = 0.0) override;
+  [[nodiscard]] bool has_transposed_product() const override { return true; }
+  void spmv_transpose(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y,
+                      double alpha = 1.0, double beta = 0.0) override;
   void gemv(const DeviceDenseMatrix& A, const DeviceVector& x, DeviceVector& y) override;
   [[nodiscard]] double dot(const DeviceVector& x, const DeviceVector& y) override;
   void axpby(double a, const DeviceVector& x, double b, DeviceVector& y) override;
@@ -42,6 +48,7 @@ class HostBackend final : public Backend {
   std::size_t in_use_ = 0;
   std::size_t peak_ = 0;
   std::unordered_map<const double*, std::size_t> sizes_;  // bytes of each allocation
+  std::vector<double> partial_sums_;  // spmv_transpose: one y per thread, kept between calls
 };
 
 }  // namespace signorini

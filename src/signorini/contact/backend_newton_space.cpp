@@ -21,7 +21,10 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
       nc_(problem.contact.size()) {
   {
     ScopedTimer t(timings_, "device upload");
-    H_ = std::make_unique<PenalizedOperator>(be_, problem.A, problem.contact.N);
+    // The problem outlives this space, so the stiffness (the largest matrix of the solve) may be
+    // multiplied in place where a faster copy would not fit (stiffness_arrays).
+    H_ = std::make_unique<PenalizedOperator>(be_, problem.A, problem.contact.N,
+                                             stiffness_arrays(problem.A));
     b_ = to_device(be_, problem.b);
     x_ = to_device(be_, x0);
     x_new_ = DeviceVector(be_, n_);

@@ -36,4 +36,18 @@ double physical_memory_bytes() {
   return static_cast<double>(pages) * static_cast<double>(page_size);
 }
 
+double available_memory_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string line;
+  while (std::getline(meminfo, line)) {
+    if (line.rfind("MemAvailable:", 0) == 0) {
+      std::istringstream in(line.substr(13));
+      double kib = 0.0;
+      in >> kib;
+      return kib * 1024.0;
+    }
+  }
+  return 0.0;
+}
+
 }  // namespace signorini

@@ -1,7 +1,7 @@
 #pragma once
 // Peak resident memory of this process, resettable so that a benchmark can measure one case at a
 // time (Linux: VmHWM in /proc/self/status, reset by writing 5 to /proc/self/clear_refs), and the
-// physical memory of the machine.
+// physical and the available memory of the machine.
 
 namespace signorini {
 
@@ -12,5 +12,8 @@ double peak_resident_bytes();
 bool reset_peak_resident();
 /// Physical memory of this machine in bytes, or 0 if unknown.
 double physical_memory_bytes();
+/// Memory the system could give this process now without swapping (Linux: MemAvailable in
+/// /proc/meminfo), in bytes, or 0 if unknown.
+double available_memory_bytes();
 
 }  // namespace signorini

@@ -53,8 +53,8 @@ namespace {
 template <int Dim>
 SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& options) {
   const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices<Dim>(mesh, options);
-  const SparsityPattern pattern(mesh, dofs);
-  SparseMatrix A = pattern.zero_matrix();
+  SparsityPattern pattern(mesh, dofs);
+  SparseMatrix A = pattern.take_zero_matrix();
   double* values = A.valuePtr();
   // Cells of the type of the previous one that are its translates (all of them on a structured
   // mesh) share its element matrix: compare the node coordinates relative to the first node.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 
 #include "signorini/core/error.hpp"
 
@@ -10,45 +12,57 @@ namespace signorini {
 SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(dofs) {
   const Index n = mesh.num_nodes();
   const int dim = dofs.dim();
-  // Node adjacency through cells, as sorted unique lists.
-  std::vector<std::vector<Index>> adj(static_cast<std::size_t>(n));
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const auto nodes = mesh.cell(c);
-    for (const Index a : nodes)
-      for (const Index b : nodes) adj[static_cast<std::size_t>(a)].push_back(b);
+  // The cells of each node (CSR), then each node's neighbours through them as a sorted unique
+  // list: a few numbers per node at a time, where lists of every cell pair would hold the
+  // square of the cell size per node (512 bytes per hex8 node) all at once.
+  std::vector<Index> cell_start(static_cast<std::size_t>(n + 1), 0);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    for (const Index a : mesh.cell(c)) ++cell_start[static_cast<std::size_t>(a + 1)];
+  for (Index m = 0; m < n; ++m)
+    cell_start[static_cast<std::size_t>(m + 1)] += cell_start[static_cast<std::size_t>(m)];
+  std::vector<Index> cells_of(static_cast<std::size_t>(cell_start.back()));
+  {
+    std::vector<Index> next(cell_start.begin(), cell_start.end() - 1);
+    for (Index c = 0; c < mesh.num_cells(); ++c)
+      for (const Index a : mesh.cell(c))
+        cells_of[static_cast<std::size_t>(next[static_cast<std::size_t>(a)]++)] = c;
   }
   neighbor_start_.assign(static_cast<std::size_t>(n + 1), 0);
+  std::vector<Index> list;
   for (Index m = 0; m < n; ++m) {
-    auto& list = adj[static_cast<std::size_t>(m)];
+    list.clear();
+    for (Index s = cell_start[static_cast<std::size_t>(m)];
+         s < cell_start[static_cast<std::size_t>(m + 1)]; ++s)
+      for (const Index b : mesh.cell(cells_of[static_cast<std::size_t>(s)])) list.push_back(b);
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
-    neighbor_start_[static_cast<std::size_t>(m + 1)] =
-        neighbor_start_[static_cast<std::size_t>(m)] + static_cast<Index>(list.size());
-  }
-  neighbors_.reserve(static_cast<std::size_t>(neighbor_start_.back()));
-  row_offset_.reserve(neighbors_.capacity());
-  for (Index m = 0; m < n; ++m) {
     Index rows = 0;
-    for (const Index b : adj[static_cast<std::size_t>(m)]) {
-      neighbors_.push_back(b);
-      row_offset_.push_back(rows);
+    for (const Index b : list) {
+      neighbors_.push_back(static_cast<int>(b));
+      row_offset_.push_back(static_cast<int>(rows));
       for (int k = 0; k < dim; ++k) rows += dofs.free_index(b, k) >= 0 ? 1 : 0;
     }
-    adj[static_cast<std::size_t>(m)].clear();
-    adj[static_cast<std::size_t>(m)].shrink_to_fit();
+    neighbor_start_[static_cast<std::size_t>(m + 1)] = static_cast<Index>(neighbors_.size());
   }
+  std::vector<Index>().swap(cells_of);
+  neighbors_.shrink_to_fit();
+  row_offset_.shrink_to_fit();
   // Columns: the free dofs in order; the rows of column (m, k) are the free dofs of m's
-  // neighbours, already sorted since free numbers follow (node, component).
+  // neighbours, already sorted since free numbers follow (node, component). Counted first, so
+  // that the row numbers go straight into the matrix (no second copy of them).
   const Index nf = dofs.num_free();
   outer_.assign(static_cast<std::size_t>(nf + 1), 0);
-  Index nnz = 0;
-  for (Index m = 0; m < n; ++m) {
-    const Index s0 = neighbor_start_[static_cast<std::size_t>(m)];
-    const Index s1 = neighbor_start_[static_cast<std::size_t>(m + 1)];
+  const auto rows_of = [&](Index m) {
     Index rows = 0;
-    for (Index s = s0; s < s1; ++s)
+    for (Index s = neighbor_start_[static_cast<std::size_t>(m)];
+         s < neighbor_start_[static_cast<std::size_t>(m + 1)]; ++s)
       for (int k = 0; k < dim; ++k)
         rows += dofs.free_index(neighbors_[static_cast<std::size_t>(s)], k) >= 0 ? 1 : 0;
+    return rows;
+  };
+  Index nnz = 0;
+  for (Index m = 0; m < n; ++m) {
+    const Index rows = rows_of(m);
     for (int k = 0; k < dim; ++k) {
       const Index col = dofs.free_index(m, k);
       if (col < 0) continue;
@@ -56,31 +70,44 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(d
       if (nnz > std::numeric_limits<int>::max())
         throw InputError("mesh too large: the stiffness matrix would have more than 2^31 entries");
       outer_[static_cast<std::size_t>(col + 1)] = static_cast<int>(nnz);
-      for (Index s = s0; s < s1; ++s)
-        for (int kk = 0; kk < dim; ++kk) {
-          const Index row = dofs.free_index(neighbors_[static_cast<std::size_t>(s)], kk);
-          if (row >= 0) inner_.push_back(static_cast<int>(row));
-        }
     }
   }
+  matrix_.resize(nf, nf);
+  matrix_.resizeNonZeros(nnz);  // compressed storage, filled directly
+  std::copy(outer_.begin(), outer_.end(), matrix_.outerIndexPtr());
+  // Filled in parallel over the nodes (each writes its own columns): the first touch of the
+  // largest arrays of a model, which on a virtual machine costs more than the writing itself.
+  int* inner = matrix_.innerIndexPtr();
+  double* values = matrix_.valuePtr();
+#pragma omp parallel for schedule(static)
+  for (Index m = 0; m < n; ++m)
+    for (int k = 0; k < dim; ++k) {
+      const Index col = dofs.free_index(m, k);
+      if (col < 0) continue;
+      const Index first = outer_[static_cast<std::size_t>(col)];
+      Index pos = first;
+      for (Index s = neighbor_start_[static_cast<std::size_t>(m)];
+           s < neighbor_start_[static_cast<std::size_t>(m + 1)]; ++s)
+        for (int kk = 0; kk < dim; ++kk) {
+          const Index row = dofs.free_index(neighbors_[static_cast<std::size_t>(s)], kk);
+          if (row >= 0) inner[pos++] = static_cast<int>(row);
+        }
+      std::fill(values + first, values + pos, 0.0);
+    }
 }
 
-SparseMatrix SparsityPattern::zero_matrix() const {
-  const auto nf = static_cast<Index>(outer_.size()) - 1;
-  const auto nnz = static_cast<Index>(inner_.size());
-  SparseMatrix A(nf, nf);
-  A.resizeNonZeros(nnz);  // compressed storage, filled directly
-  std::copy(outer_.begin(), outer_.end(), A.outerIndexPtr());
-  std::copy(inner_.begin(), inner_.end(), A.innerIndexPtr());
-  std::fill(A.valuePtr(), A.valuePtr() + nnz, 0.0);
-  return A;
+SparseMatrix SparsityPattern::take_zero_matrix() {
+  if (taken_) throw std::logic_error("SparsityPattern::take_zero_matrix called twice");
+  taken_ = true;
+  return std::move(matrix_);
 }
 
 void SparsityPattern::block_positions(Index node_a, Index node_b, Index* out) const {
   const int dim = dofs_.dim();
   const Index s0 = neighbor_start_[static_cast<std::size_t>(node_b)];
   const Index s1 = neighbor_start_[static_cast<std::size_t>(node_b + 1)];
-  const auto it = std::lower_bound(neighbors_.begin() + s0, neighbors_.begin() + s1, node_a);
+  const auto it =
+      std::lower_bound(neighbors_.begin() + s0, neighbors_.begin() + s1, static_cast<int>(node_a));
   const Index base = row_offset_[static_cast<std::size_t>(it - neighbors_.begin())];
   Index within = 0;
   for (int ka = 0; ka < dim; ++ka) {

@@ -15,8 +15,9 @@ class SparsityPattern {
  public:
   SparsityPattern(const Mesh& mesh, const DofMap& dofs);
 
-  /// A compressed matrix with this pattern and zero values.
-  [[nodiscard]] SparseMatrix zero_matrix() const;
+  /// The compressed matrix with this pattern and zero values, handed over once (the pattern
+  /// keeps what block_positions needs, not a second copy of the row numbers).
+  [[nodiscard]] SparseMatrix take_zero_matrix();
   /// The positions of the whole dim x dim block coupling node_a (rows) and node_b (columns):
   /// out[ka * dim + kb], -1 for clamped components.
   void block_positions(Index node_a, Index node_b, Index* out) const;
@@ -24,10 +25,11 @@ class SparsityPattern {
  private:
   const DofMap& dofs_;
   std::vector<Index> neighbor_start_;  // CSR over nodes: neighbours (sorted), incl. the node
-  std::vector<Index> neighbors_;
-  std::vector<Index> row_offset_;  // per neighbour entry: rows before it in the column
-  std::vector<int> outer_;         // column pointers over free dofs
-  std::vector<int> inner_;
+  std::vector<int> neighbors_;
+  std::vector<int> row_offset_;  // per neighbour entry: rows before it in the column
+  std::vector<int> outer_;       // column pointers over free dofs
+  SparseMatrix matrix_;          // until take_zero_matrix()
+  bool taken_ = false;
 };
 
 }  // namespace signorini

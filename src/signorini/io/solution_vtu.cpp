@@ -65,7 +65,7 @@ std::string solution_vtu(const ContactResult& result, const Model& model) {
   vtu.add_point_data("gap", 1, gap);
   vtu.add_point_data("contact_active", active);
   vtu.add_point_data("contact_boundary", on_boundary);
-  return vtu.text();
+  return vtu.take_text();
 }
 
 std::string contact_vtu(const ContactResult& result, const Model& model) {
@@ -141,7 +141,7 @@ std::string contact_vtu(const ContactResult& result, const Model& model) {
   vtu.add_point_data("gap", 1, gap);
   vtu.add_point_data("deformed_gap", 1, deformed_gap);
   vtu.add_point_data("contact_active", active);
-  return vtu.text();
+  return vtu.take_text();
 }
 
 }  // namespace signorini

@@ -5,7 +5,10 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 namespace signorini {
 
@@ -165,24 +168,38 @@ void VtuFile::add_cell_data(const std::string& name, const std::vector<std::int3
   cell_data_.push_back({name, "Int32", 1, {}, bytes_of(values.data(), values.size())});
 }
 
-std::string VtuFile::text() const {
+std::string VtuFile::take_text() {
+  // Two steps, so that the file is built in one string of its final size: the XML header first
+  // (the offsets need only the sizes), then the arrays appended to it, each freed once copied.
+  // The largest output (solution.vtu of a 10^7-unknown mesh, 0.7 GB) then never exists twice
+  // (docs/performance.md, "Ten million unknowns").
+  struct Block {
+    const char* data;
+    std::size_t size;
+    std::function<void()> free;
+  };
+  std::vector<Block> blocks;
   std::string xml;
-  std::string appended;
-  // Each array in the appended block is its byte count (UInt64) followed by its bytes; `offset`
-  // counts from the byte after the '_' that opens the block.
+  std::uint64_t appended = 0;  // bytes of the appended block so far, from the byte after '_'
   const auto data_array = [&](const std::string& indent, const std::string& name,
                               const std::string& type, int components,
-                              const std::vector<std::string>& component_names,
-                              const std::string& bytes) {
+                              const std::vector<std::string>& component_names, Block block) {
     xml += fmt::format("{}<DataArray type=\"{}\"", indent, type);
     if (!name.empty()) xml += fmt::format(" Name=\"{}\"", xml_escaped(name));
     xml += fmt::format(" NumberOfComponents=\"{}\"", components);
     for (std::size_t i = 0; i < component_names.size(); ++i)
       xml += fmt::format(" ComponentName{}=\"{}\"", i, xml_escaped(component_names[i]));
-    xml += fmt::format(" format=\"appended\" offset=\"{}\"/>\n", appended.size());
-    const std::uint64_t size = bytes.size();
-    appended += bytes_of(&size, 1);
-    appended += bytes;
+    xml += fmt::format(" format=\"appended\" offset=\"{}\"/>\n", appended);
+    appended += sizeof(std::uint64_t) + block.size;
+    blocks.push_back(std::move(block));
+  };
+  const auto of_string = [&](std::string& bytes) {
+    return Block{bytes.data(), bytes.size(), [&bytes] { std::string().swap(bytes); }};
+  };
+  const auto of_vector = [&](auto& values) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    return Block{reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T),
+                 [&values] { std::decay_t<decltype(values)>().swap(values); }};
   };
 
   const char* byte_order =
@@ -196,30 +213,37 @@ std::string VtuFile::text() const {
   xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", num_points_,
                      types_.size());
   xml += "      <PointData>\n";
-  for (const Array& a : point_data_)
-    data_array("        ", a.name, a.type, a.components, a.component_names, a.bytes);
+  for (Array& a : point_data_)
+    data_array("        ", a.name, a.type, a.components, a.component_names, of_string(a.bytes));
   xml += "      </PointData>\n";
   if (!cell_data_.empty()) {
     xml += "      <CellData>\n";
-    for (const Array& a : cell_data_)
-      data_array("        ", a.name, a.type, a.components, a.component_names, a.bytes);
+    for (Array& a : cell_data_)
+      data_array("        ", a.name, a.type, a.components, a.component_names, of_string(a.bytes));
     xml += "      </CellData>\n";
   }
   xml += "      <Points>\n";
-  data_array("        ", "Points", "Float64", 3, {}, point_bytes_);
+  data_array("        ", "Points", "Float64", 3, {}, of_string(point_bytes_));
   xml += "      </Points>\n";
   xml += "      <Cells>\n";
-  data_array("        ", "connectivity", "Int64", 1, {},
-             bytes_of(connectivity_.data(), connectivity_.size()));
-  data_array("        ", "offsets", "Int64", 1, {}, bytes_of(offsets_.data(), offsets_.size()));
-  data_array("        ", "types", "UInt8", 1, {}, bytes_of(types_.data(), types_.size()));
+  data_array("        ", "connectivity", "Int64", 1, {}, of_vector(connectivity_));
+  data_array("        ", "offsets", "Int64", 1, {}, of_vector(offsets_));
+  data_array("        ", "types", "UInt8", 1, {}, of_vector(types_));
   xml += "      </Cells>\n";
   xml += "    </Piece>\n";
   xml += "  </UnstructuredGrid>\n";
   // meshio drops everything after the last newline of the block, so the data ends with one.
   xml += "  <AppendedData encoding=\"raw\">\n   _";
-  xml += appended;
-  xml += "\n  </AppendedData>\n</VTKFile>\n";
+  const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
+  xml.reserve(xml.size() + appended + tail.size());
+  for (Block& b : blocks) {
+    const std::uint64_t size = b.size;
+    xml.append(reinterpret_cast<const char*>(&size), sizeof size);
+    if (b.size > 0) xml.append(b.data, b.size);
+    b.free();
+  }
+  xml += tail;
+  *this = VtuFile(Eigen::MatrixXd::Zero(3, 0));
   return xml;
 }
 

@@ -59,8 +59,9 @@ class VtuFile {
   [[nodiscard]] Index num_points() const { return num_points_; }
   [[nodiscard]] Index num_cells() const { return static_cast<Index>(types_.size()); }
 
-  /// The whole file.
-  [[nodiscard]] std::string text() const;
+  /// The whole file. Each array is freed once copied into it, so that the data is never held
+  /// twice; this is left an empty file of no points.
+  [[nodiscard]] std::string take_text();
 
  private:
   struct Array {

@@ -10,33 +10,57 @@ namespace signorini {
 SparseMatrix galerkin_product(const SparseMatrix& A, const SparseMatrix& P) {
   if (A.rows() != A.cols() || P.rows() != A.rows())
     throw NumericalError("galerkin_product: A must be square with as many rows as P");
-  const Index m = P.cols();
   // Rows of P (its columns are P's CSC storage).
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int> Pr(P);
-  std::vector<std::vector<int>> col_rows(static_cast<std::size_t>(m));
-  std::vector<std::vector<double>> col_values(static_cast<std::size_t>(m));
-  const std::int64_t columns = m;
-
-#pragma omp parallel
-  {
-    // Column J in two steps: (A P)(:, J) = sum over fine i in column J of P of p_iJ A(:, i),
-    // gathered first, then P^T times it, by the rows of P. Done at once, as a triple loop, the
-    // rows of P would be walked again for every pair (i, k): in 3D, with the six rigid-body
-    // modes in P, some twenty times the work (docs/performance.md).
-    ColumnAccumulator fine(A.rows());
-    ColumnAccumulator coarse(m);
-#pragma omp for schedule(dynamic, 256)
-    for (std::int64_t J = 0; J < columns; ++J) {
-      for (SparseMatrix::InnerIterator pi(P, static_cast<Index>(J)); pi; ++pi)
-        for (SparseMatrix::InnerIterator ak(A, pi.row()); ak; ++ak)
-          fine.add(ak.row(), pi.value() * ak.value());
-      fine.drain([&](Index k, double w) {
-        for (decltype(Pr)::InnerIterator pk(Pr, k); pk; ++pk) coarse.add(pk.col(), w * pk.value());
+  const int* p_outer = P.outerIndexPtr();
+  const int* p_inner = P.innerIndexPtr();
+  const double* p_values = P.valuePtr();
+  // A group of columns J of P with the same rows (an aggregate's) in two steps: (A P)(:, J) =
+  // sum over the fine i in the group's rows of p_iJ A(:, i), gathered first in a fine
+  // accumulator of the thread's own, then P^T times it, by the rows of P. Done at once, as a
+  // triple loop, the rows of P would be walked again for every pair (i, k): in 3D, with the six
+  // rigid-body modes in P, some twenty times the work (docs/performance.md). Each index of A and
+  // of P is read once for the whole group.
+  const auto make_group = [&] {
+    return [&, fine = GroupAccumulator(A.rows())](Index J0, int width,
+                                                  GroupAccumulator& coarse) mutable {
+      const bool counting = coarse.counting();
+      fine.start(width, counting);
+      with_group_width(width, [&](auto fixed) {
+        constexpr int W = decltype(fixed)::value;
+        const int w = W > 0 ? W : width;
+        double p[kMaxColumnGroup];
+        const int length = p_outer[J0 + 1] - p_outer[J0];
+        for (int k = 0; k < length; ++k) {
+          const Index i = p_inner[p_outer[J0] + k];
+          if (counting) {
+            for (SparseMatrix::InnerIterator a(A, i); a; ++a) fine.row(a.row());
+            continue;
+          }
+          for (int c = 0; c < w; ++c) p[c] = p_values[p_outer[J0 + c] + k];
+          for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
+            double* f = fine.row(a.row());
+            const double value = a.value();
+            for (int c = 0; c < w; ++c) f[c] += value * p[c];
+          }
+        }
+        fine.for_each([&](Index k, const double* f) {
+          if (counting) {
+            for (decltype(Pr)::InnerIterator pk(Pr, k); pk; ++pk) coarse.row(pk.col());
+            return;
+          }
+          double fk[kMaxColumnGroup];
+          for (int c = 0; c < w; ++c) fk[c] = f[c];
+          for (decltype(Pr)::InnerIterator pk(Pr, k); pk; ++pk) {
+            double* v = coarse.row(pk.col());
+            const double value = pk.value();
+            for (int c = 0; c < w; ++c) v[c] += value * fk[c];
+          }
+        });
       });
-      coarse.flush(col_rows[static_cast<std::size_t>(J)], col_values[static_cast<std::size_t>(J)]);
-    }
-  }
-  return assemble_columns(m, col_rows, col_values);
+    };
+  };
+  return form_column_groups(P.cols(), P.cols(), same_row_groups(P), make_group);
 }
 
 }  // namespace signorini

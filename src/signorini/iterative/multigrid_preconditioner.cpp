@@ -12,10 +12,13 @@
 namespace signorini {
 
 struct MultigridPreconditioner::Level {
+  SparseMatrix A;                            // the Galerkin product, where formed here
   std::unique_ptr<PenalizedOperator> owned;  // coarse levels own their operator
   PenalizedOperator* op = nullptr;
   std::unique_ptr<ChebyshevSmoother> smoother;
-  std::unique_ptr<DeviceSparseMatrix> P, Pt;         // to this level from the next coarser one
+  // To this level from the next coarser one: P^T always (P's CSC arrays, shared on the CPU), P
+  // only where the backend has no transposed product (a GPU).
+  std::unique_ptr<DeviceSparseMatrix> P, Pt;
   DeviceVector b, x, r;                              // right-hand side, correction, residual
   std::unique_ptr<PenalizedOperator> on_host;        // host copy for the eigenvalue estimate
   std::unique_ptr<ChebyshevSmoother> host_smoother;  // its smoother: only estimates
@@ -33,8 +36,12 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     throw NumericalError(fmt::format("multigrid: {} coarse operators for {} prolongations",
                                      coarse_operators.size(), prolongations.size()));
   // The current level's matrices: the fine A is used in place (no copy of the largest matrix).
+  // On the CPU each coarse level's matrix is copied (in node blocks) where memory allows, and
+  // multiplied in place otherwise (stiffness_arrays), and each restriction is multiplied in place
+  // (HostArrays::Share): the hierarchy's matrices, or the ones formed here, which their Level
+  // keeps.
   const SparseMatrix* current = &A;
-  SparseMatrix Al, Nl = N;
+  SparseMatrix Nl = N;
   fine_normal_entries_.assign(static_cast<std::size_t>(N.rows()), 0);
   for (Index j = 0; j < N.outerSize(); ++j)
     for (SparseMatrix::InnerIterator it(N, j); it; ++it)
@@ -48,9 +55,10 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
                                        levels_.size(), P.rows(), current->rows()));
     // Galerkin coarse operators (the hierarchy of docs/gpu.md), unless given.
     const std::size_t index = levels_.size() - 1;
+    auto level = std::make_unique<Level>();
     if (coarse_operators.empty()) {
-      Al = galerkin_product(*current, P);
-      current = &Al;
+      level->A = galerkin_product(*current, P);
+      current = &level->A;
     } else {
       current = &coarse_operators[index];
       if (current->rows() != P.cols())
@@ -59,14 +67,14 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     }
     Nl = Nl * P;
     Level& finer = *levels_.back();
-    finer.P = backend_.upload(P);
-    finer.Pt = backend_.upload(SparseMatrix(P.transpose()));
-    auto level = std::make_unique<Level>();
-    level->owned = std::make_unique<PenalizedOperator>(backend_, *current, Nl);
+    finer.Pt = backend_.upload_transpose(P, HostArrays::Share);  // P's CSC arrays: P^T's CSR
+    if (!backend_.has_transposed_product()) finer.P = backend_.upload(P);
+    level->owned =
+        std::make_unique<PenalizedOperator>(backend_, *current, Nl, stiffness_arrays(*current));
     level->op = level->owned.get();
     if (current->rows() < options_.host_estimate_below) {
       if (!host_) host_ = std::make_unique<HostBackend>();
-      level->on_host = std::make_unique<PenalizedOperator>(*host_, *current, Nl);
+      level->on_host = std::make_unique<PenalizedOperator>(*host_, *current, Nl, HostArrays::Share);
     }
     levels_.push_back(std::move(level));
   }
@@ -185,11 +193,14 @@ void MultigridPreconditioner::cycle(std::size_t l, const DeviceVector& b, Device
   Level& next = *levels_[l + 1];
   lev.smoother->smooth(b, x, true);  // pre-smoothing from x = 0
   lev.op->apply(x, lev.r);
-  backend_.axpby(1.0, b, -1.0, lev.r);         // r = b - H x
-  backend_.spmv(*lev.Pt, lev.r, next.b);       // restriction P^T r
-  cycle(l + 1, next.b, next.x);                // coarse correction
-  backend_.spmv(*lev.P, next.x, x, 1.0, 1.0);  // x += P e
-  lev.smoother->smooth(b, x, false);           // post-smoothing (same polynomial: symmetric cycle)
+  backend_.axpby(1.0, b, -1.0, lev.r);    // r = b - H x
+  backend_.spmv(*lev.Pt, lev.r, next.b);  // restriction P^T r
+  cycle(l + 1, next.b, next.x);           // coarse correction
+  if (lev.P)
+    backend_.spmv(*lev.P, next.x, x, 1.0, 1.0);  // x += P e
+  else
+    backend_.spmv_transpose(*lev.Pt, next.x, x, 1.0, 1.0);
+  lev.smoother->smooth(b, x, false);  // post-smoothing (same polynomial: symmetric cycle)
 }
 
 }  // namespace signorini

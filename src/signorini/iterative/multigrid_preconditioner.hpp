@@ -38,7 +38,8 @@ class MultigridPreconditioner final : public Preconditioner {
   /// `fine` is H on the finest level (it must outlive this object); A and N are its host
   /// matrices, `prolongations[l]` maps level l+1 to level l. `coarse_operators[l]`, if given
   /// (non-empty), is the matrix of level l+1, already formed (smoothed aggregation forms them);
-  /// otherwise the Galerkin products are formed here.
+  /// otherwise the Galerkin products are formed here. A, the prolongations and the coarse
+  /// operators must outlive this object: on the CPU they are multiplied in place, not copied.
   MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A, const SparseMatrix& N,
                           const std::vector<SparseMatrix>& prolongations, MultigridOptions options,
                           const std::vector<SparseMatrix>& coarse_operators = {});

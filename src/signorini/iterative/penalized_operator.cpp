@@ -1,14 +1,21 @@
 #include "signorini/iterative/penalized_operator.hpp"
 
 #include "signorini/core/error.hpp"
+#include "signorini/core/peak_memory.hpp"
 
 namespace signorini {
 
-PenalizedOperator::PenalizedOperator(Backend& backend, const SparseMatrix& A, const SparseMatrix& N)
+HostArrays stiffness_arrays(const SparseMatrix& A) {
+  const double copy_bytes = 12.0 * static_cast<double>(A.nonZeros());  // at most, as CSR
+  return copy_bytes <= 0.5 * available_memory_bytes() ? HostArrays::Copy : HostArrays::Share;
+}
+
+PenalizedOperator::PenalizedOperator(Backend& backend, const SparseMatrix& A, const SparseMatrix& N,
+                                     HostArrays arrays)
     : backend_(backend), n_(A.rows()), nc_(N.rows()) {
   if (A.cols() != n_ || N.cols() != n_)
     throw NumericalError("penalized operator: sizes of A and N do not match");
-  A_ = backend.upload_symmetric(A);
+  A_ = backend.upload_symmetric(A, arrays);
   N_ = backend.upload(N);
   const SparseMatrix Nt = N.transpose();
   Nt_ = backend.upload(Nt);

@@ -90,30 +90,42 @@ double jacobi_spectral_radius(const SparseMatrix& A) {
   return estimate_largest_eigenvalue(op, jacobi, start, ChebyshevOptions{}.lanczos_steps);
 }
 
-// P = (I - omega D^{-1} A) T, column by column with a dense accumulator, in parallel over the
-// columns (Eigen's general sparse product takes ten times longer, on one thread).
+// P = (I - omega D^{-1} A) T, in parallel over groups of columns (Eigen's general sparse product
+// takes ten times longer, on one thread): the columns of one aggregate have the same rows in T,
+// so they are formed together, each entry of A read once for all of them.
 SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T, double omega) {
-  const Index n = A.rows();
-  const Index m = T.cols();
   const Vector scale = -omega * A.diagonal().cwiseInverse();
-  std::vector<std::vector<int>> col_rows(static_cast<std::size_t>(m));
-  std::vector<std::vector<double>> col_values(static_cast<std::size_t>(m));
-  const std::int64_t columns = m;
-#pragma omp parallel
-  {
-    ColumnAccumulator accumulator(n);
-#pragma omp for schedule(dynamic, 256)
-    for (std::int64_t J = 0; J < columns; ++J) {
-      for (SparseMatrix::InnerIterator t(T, static_cast<Index>(J)); t; ++t) {
-        accumulator.add(t.row(), t.value());
-        for (SparseMatrix::InnerIterator a(A, t.row()); a; ++a)
-          accumulator.add(a.row(), scale[a.row()] * a.value() * t.value());
-      }
-      accumulator.flush(col_rows[static_cast<std::size_t>(J)],
-                        col_values[static_cast<std::size_t>(J)]);
-    }
-  }
-  return assemble_columns(n, col_rows, col_values);
+  const int* t_outer = T.outerIndexPtr();
+  const int* t_inner = T.innerIndexPtr();
+  const double* t_values = T.valuePtr();
+  const auto make_group = [&] {
+    return [&](Index J0, int width, GroupAccumulator& out) {
+      const bool counting = out.counting();
+      with_group_width(width, [&](auto fixed) {
+        constexpr int W = decltype(fixed)::value;
+        const int w = W > 0 ? W : width;
+        double t[kMaxColumnGroup];
+        const int length = t_outer[J0 + 1] - t_outer[J0];
+        for (int k = 0; k < length; ++k) {
+          const Index i = t_inner[t_outer[J0] + k];
+          if (counting) {
+            out.row(i);
+            for (SparseMatrix::InnerIterator a(A, i); a; ++a) out.row(a.row());
+            continue;
+          }
+          for (int c = 0; c < w; ++c) t[c] = t_values[t_outer[J0 + c] + k];
+          double* own = out.row(i);
+          for (int c = 0; c < w; ++c) own[c] += t[c];
+          for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
+            const double s = scale[a.row()] * a.value();
+            double* v = out.row(a.row());
+            for (int c = 0; c < w; ++c) v[c] += s * t[c];
+          }
+        }
+      });
+    };
+  };
+  return form_column_groups(A.rows(), T.cols(), same_row_groups(T), make_group);
 }
 
 struct Tentative {

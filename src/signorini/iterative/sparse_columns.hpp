@@ -1,70 +1,206 @@
 #pragma once
-// Sparse matrix products formed one result column at a time (Gustavson's algorithm), as the
-// multigrid set-up does them in parallel over the columns: a dense accumulator that remembers
-// which rows it touched, and the assembly of the finished columns into one CSC matrix.
+// Sparse matrix products formed a group of result columns at a time (Gustavson's algorithm, as
+// the multigrid set-up does them, in parallel over the groups): the columns of one aggregate
+// (the six rigid-body modes on its nodes in 3D) share their rows, so they are formed together,
+// each index of the operands read once for the whole group instead of once per column. A group
+// accumulator keeps, for each row it touched, one value per column of the group;
+// form_column_groups writes the groups straight into one CSC matrix.
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
+#include "signorini/core/error.hpp"
 #include "signorini/core/types.hpp"
 
 namespace signorini {
 
-/// One thread's accumulator for columns of length n.
-class ColumnAccumulator {
+/// The most columns formed together (the callers keep a group's values on the stack).
+inline constexpr int kMaxColumnGroup = 8;
+
+/// One thread's accumulator for a group of columns of length n that share their rows: the rows
+/// touched get local slots, so its work space grows with the rows touched, not with the group.
+class GroupAccumulator {
  public:
-  explicit ColumnAccumulator(Index n)
-      : values_(static_cast<std::size_t>(n), 0.0), used_(static_cast<std::size_t>(n), 0) {}
+  explicit GroupAccumulator(Index n) : slot_(static_cast<std::size_t>(n), -1) {}
 
-  void add(Index i, double v) {
-    const auto u = static_cast<std::size_t>(i);
-    if (!used_[u]) {
-      used_[u] = 1;
-      pattern_.push_back(static_cast<int>(i));
-    }
-    values_[u] += v;
+  /// Starts an empty group of `width` columns. `counting`: only the rows touched matter (the
+  /// first pass of form_column_groups), so a caller may skip the arithmetic.
+  void start(int width, bool counting = false) {
+    clear();
+    width_ = width;
+    counting_ = counting;
+  }
+  [[nodiscard]] int width() const { return width_; }
+  [[nodiscard]] bool counting() const { return counting_; }
+
+  /// The group's values in row i (zeros when first touched); valid until the next call.
+  double* row(Index i) {
+    int s = slot_[static_cast<std::size_t>(i)];
+    if (s < 0) [[unlikely]]
+      s = add_row(i);
+    return values_.data() + static_cast<std::ptrdiff_t>(s) * width_;
   }
 
-  /// Appends the column's nonzeros (exact zeros dropped) in row order to `rows` and `values`,
-  /// and leaves the accumulator empty for the next column.
-  void flush(std::vector<int>& rows, std::vector<double>& values) {
-    std::sort(pattern_.begin(), pattern_.end());
-    rows.reserve(rows.size() + pattern_.size());
-    values.reserve(values.size() + pattern_.size());
-    for (const int i : pattern_) {
-      const auto u = static_cast<std::size_t>(i);
-      if (values_[u] != 0.0) {
-        rows.push_back(i);
-        values.push_back(values_[u]);
-      }
-      values_[u] = 0.0;
-      used_[u] = 0;
-    }
-    pattern_.clear();
-  }
+  /// The number of rows touched.
+  [[nodiscard]] Index touched() const { return static_cast<Index>(rows_.size()); }
 
-  /// Calls f(row, value) for every row touched, in no particular order (a column that is only
-  /// an intermediate needs no sorting), and leaves the accumulator empty.
+  /// Calls f(row, values) for every row touched, in no particular order.
   template <class F>
-  void drain(F&& f) {
-    for (const int i : pattern_) {
-      const auto u = static_cast<std::size_t>(i);
-      f(static_cast<Index>(i), values_[u]);
-      values_[u] = 0.0;
-      used_[u] = 0;
+  void for_each(F&& f) const {
+    for (std::size_t s = 0; s < rows_.size(); ++s)
+      f(static_cast<Index>(rows_[s]), values_.data() + static_cast<std::ptrdiff_t>(s) * width_);
+  }
+
+  /// Writes column c of the group (rows sorted, exact zeros kept) to rows[c] and values[c].
+  void write(int* const* rows, double* const* values) {
+    order_.resize(rows_.size());
+    std::iota(order_.begin(), order_.end(), 0);
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+      return rows_[static_cast<std::size_t>(a)] < rows_[static_cast<std::size_t>(b)];
+    });
+    for (std::size_t t = 0; t < order_.size(); ++t) {
+      const auto s = static_cast<std::size_t>(order_[t]);
+      for (int c = 0; c < width_; ++c) {
+        rows[c][t] = rows_[s];
+        values[c][t] = values_[s * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c)];
+      }
     }
-    pattern_.clear();
+  }
+
+  /// Forgets the group (the work space stays for the next).
+  void clear() {
+    for (const int i : rows_) slot_[static_cast<std::size_t>(i)] = -1;
+    rows_.clear();
   }
 
  private:
+  // A slot for row i, its values zero; the values' storage grows by doubling and is kept.
+  int add_row(Index i) {
+    const auto s = static_cast<int>(rows_.size());
+    slot_[static_cast<std::size_t>(i)] = s;
+    rows_.push_back(static_cast<int>(i));
+    const auto first = static_cast<std::size_t>(s) * static_cast<std::size_t>(width_);
+    const std::size_t need = first + static_cast<std::size_t>(width_);
+    if (values_.size() < need) values_.resize(std::max(need, 2 * values_.size()));
+    std::fill(values_.begin() + static_cast<std::ptrdiff_t>(first),
+              values_.begin() + static_cast<std::ptrdiff_t>(need), 0.0);
+    return s;
+  }
+
+  std::vector<int> slot_;  // per row: its slot, -1 if untouched
+  std::vector<int> rows_;  // per slot: the row
   std::vector<double> values_;
-  std::vector<char> used_;
-  std::vector<int> pattern_;
+  std::vector<int> order_;
+  int width_ = 1;
+  bool counting_ = false;
 };
 
-/// The rows x columns.size() CSC matrix whose column J has the sorted rows column_rows[J] with
-/// the values column_values[J].
-SparseMatrix assemble_columns(Index rows, const std::vector<std::vector<int>>& column_rows,
-                              const std::vector<std::vector<double>>& column_values);
+/// Calls f(std::integral_constant<int, W>{}) with W = width for the widths of 2D and 3D
+/// aggregates (3 and 6 modes), so that the loops over a group's columns unroll, and with W = 0
+/// (meaning: any width, `width` at run time) otherwise.
+template <class F>
+void with_group_width(int width, F&& f) {
+  if (width == 6)
+    f(std::integral_constant<int, 6>{});
+  else if (width == 3)
+    f(std::integral_constant<int, 3>{});
+  else
+    f(std::integral_constant<int, 0>{});
+}
+
+/// The starts of the runs of consecutive columns of the compressed M with the same rows, each
+/// run cut after kMaxColumnGroup columns; the last entry is M.cols().
+inline std::vector<Index> same_row_groups(const SparseMatrix& M) {
+  const int* outer = M.outerIndexPtr();
+  const int* inner = M.innerIndexPtr();
+  const auto same = [&](Index a, Index b) {
+    return outer[a + 1] - outer[a] == outer[b + 1] - outer[b] &&
+           std::equal(inner + outer[a], inner + outer[a + 1], inner + outer[b]);
+  };
+  std::vector<Index> start;
+  for (Index J = 0; J < M.cols(); ++J)
+    if (start.empty() || J - start.back() >= kMaxColumnGroup || !same(start.back(), J))
+      start.push_back(J);
+  start.push_back(M.cols());
+  return start;
+}
+
+/// The rows x cols matrix whose columns J0 .. J0 + g - 1 (a group: `groups` holds their starts,
+/// then cols) are what group(J0, g, accumulator) adds to an accumulator started with width g,
+/// where `group = make_group()` is made once per thread (so that it may keep work space of its
+/// own). Formed in parallel over the groups in two passes: the first counts each group's rows
+/// (the accumulator is then counting(), and `group` may leave out the arithmetic), the second
+/// writes them straight into the result, so that no column is ever held twice (the
+/// peak memory of a multigrid set-up is the result, not twice it). Exact zeros are kept.
+template <class MakeGroup>
+SparseMatrix form_column_groups(Index rows, Index cols, const std::vector<Index>& groups,
+                                const MakeGroup& make_group) {
+  if (groups.empty() || groups.back() != cols)
+    throw std::logic_error("form_column_groups: the groups must end at the last column");
+  const auto count_of_groups = static_cast<std::int64_t>(groups.size()) - 1;
+  std::vector<Index> count(static_cast<std::size_t>(count_of_groups), 0);
+  const auto width_of = [&](std::int64_t G) {
+    return static_cast<int>(groups[static_cast<std::size_t>(G) + 1] -
+                            groups[static_cast<std::size_t>(G)]);
+  };
+#pragma omp parallel
+  {
+    GroupAccumulator accumulator(rows);
+    auto group = make_group();
+#pragma omp for schedule(dynamic, 64)
+    for (std::int64_t G = 0; G < count_of_groups; ++G) {
+      accumulator.start(width_of(G), true);
+      group(groups[static_cast<std::size_t>(G)], width_of(G), accumulator);
+      count[static_cast<std::size_t>(G)] = accumulator.touched();
+    }
+  }
+  SparseMatrix M(rows, cols);
+  int* outer = M.outerIndexPtr();
+  Index nonzeros = 0;
+  for (std::int64_t G = 0; G < count_of_groups; ++G)
+    for (Index J = groups[static_cast<std::size_t>(G)]; J < groups[static_cast<std::size_t>(G) + 1];
+         ++J) {
+      outer[J] = static_cast<int>(nonzeros);
+      nonzeros += count[static_cast<std::size_t>(G)];
+      if (nonzeros > std::numeric_limits<int>::max())
+        throw NumericalError("a multigrid operator would have more than 2^31 entries");
+    }
+  outer[cols] = static_cast<int>(nonzeros);
+  M.resizeNonZeros(nonzeros);
+  int* inner = M.innerIndexPtr();
+  double* values = M.valuePtr();
+  bool mismatch = false;
+#pragma omp parallel
+  {
+    GroupAccumulator accumulator(rows);
+    auto group = make_group();
+    int* row_out[kMaxColumnGroup];
+    double* value_out[kMaxColumnGroup];
+#pragma omp for schedule(dynamic, 64) reduction(|| : mismatch)
+    for (std::int64_t G = 0; G < count_of_groups; ++G) {
+      const Index J0 = groups[static_cast<std::size_t>(G)];
+      const int width = width_of(G);
+      accumulator.start(width);
+      group(J0, width, accumulator);
+      if (accumulator.touched() != count[static_cast<std::size_t>(G)]) {
+        mismatch = true;  // the room counted for it is not its size: written nowhere
+        continue;
+      }
+      for (int c = 0; c < width; ++c) {
+        row_out[c] = inner + outer[J0 + c];
+        value_out[c] = values + outer[J0 + c];
+      }
+      accumulator.write(row_out, value_out);
+    }
+  }
+  if (mismatch)
+    throw std::logic_error("form_column_groups: a group touched other rows in its second pass");
+  return M;
+}
 
 }  // namespace signorini

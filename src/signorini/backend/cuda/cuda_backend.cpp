@@ -163,8 +163,8 @@ class CudaBackend final : public Backend {
 
   [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload(const SparseMatrix& A) override;
   [[nodiscard]] std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) override;
-  [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
-      const SparseMatrix& A) override;
+  [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_transpose(const SparseMatrix& A,
+                                                                     HostArrays arrays) override;
 
   void spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y, double alpha,
             double beta) override;
@@ -379,10 +379,11 @@ std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload(const SparseMatrix& A) {
                     csr.innerIndexPtr(), csr.valuePtr());
 }
 
-std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload_symmetric(const SparseMatrix& A) {
-  if (!A.isCompressed() || A.rows() != A.cols()) return upload(A);
-  // A = A^T: the CSC arrays of A are the CSR arrays of A.
-  return upload_csr(A.rows(), A.cols(), A.nonZeros(), A.outerIndexPtr(), A.innerIndexPtr(),
+std::unique_ptr<DeviceSparseMatrix> CudaBackend::upload_transpose(const SparseMatrix& A,
+                                                                  HostArrays /*arrays*/) {
+  if (!A.isCompressed()) return upload(SparseMatrix(A.transpose()));
+  // The CSC arrays of A are the CSR arrays of A^T; device memory holds its own copy always.
+  return upload_csr(A.cols(), A.rows(), A.nonZeros(), A.outerIndexPtr(), A.innerIndexPtr(),
                     A.valuePtr());
 }
 
