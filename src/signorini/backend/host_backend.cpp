@@ -25,6 +25,10 @@ using Loop = std::int64_t;
 // Loops run on OpenMP threads from kParallelFrom entries up, plainly below, where even an
 // inactive parallel region costs a call per loop (a tenth of a CG iteration on 60x20).
 constexpr Loop kParallelFrom = 20000;
+// A sparse product does some hundred operations a row, so it is worth threads from far fewer
+// rows: from this many stored entries (a coarse multigrid level of a few thousand unknowns in
+// 3D, which ran on one thread through Eigen's product before).
+constexpr Index kParallelProductFrom = 200000;
 
 // Matrices count in bytes_in_use() as on a GPU (CSR arrays), so that the CPU backend predicts the
 // memory a GPU run needs; a shared matrix counts too, though here it takes no memory of its own.
@@ -54,7 +58,7 @@ class HostSparseMatrix final : public DeviceSparseMatrix {
       inner = A.innerIndexPtr();
       values = A.valuePtr();
     } else {
-      if (A.rows() == A.cols() && A.rows() >= kParallelFrom)
+      if (A.rows() == A.cols() && A.nonZeros() >= kParallelProductFrom)
         blocks =
             NodeBlockMatrix::from_csr(A.cols(), A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr());
       if (!blocks) {
@@ -178,7 +182,7 @@ void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, Devic
                        double alpha, double beta) {
   const auto& h = static_cast<const HostSparseMatrix&>(A);
   if (h.blocks) {
-    h.blocks->multiply(x.data(), y.data(), alpha, beta, h.rows() >= kParallelFrom);
+    h.blocks->multiply(x.data(), y.data(), alpha, beta, h.nonzeros() >= kParallelProductFrom);
     return;
   }
   const int* outer = h.outer;
@@ -187,7 +191,7 @@ void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, Devic
   const double* xs = x.data();
   double* ys = y.data();
   const Loop rows = h.rows();
-  if (rows < kParallelFrom) {  // Eigen's own product, vectorised
+  if (h.nonzeros() < kParallelProductFrom) {  // Eigen's own product, vectorised
     const HostSparseMatrix::CsrView m = h.view();
     Eigen::Map<const Vector> xm(xs, x.size());
     Eigen::Map<Vector> ym(ys, y.size());
@@ -202,10 +206,13 @@ void HostBackend::spmv(const DeviceSparseMatrix& A, const DeviceVector& x, Devic
     for (int k = outer[i]; k < outer[i + 1]; ++k) s += v[k] * xs[inner[k]];
     return alpha * s;
   };
-  if (beta == 0.0)
-    for_each_index(rows, [&](Loop i) { ys[i] = row(i); });
-  else
-    for_each_index(rows, [&](Loop i) { ys[i] = row(i) + beta * ys[i]; });
+  if (beta == 0.0) {
+#pragma omp parallel for schedule(static)
+    for (Loop i = 0; i < rows; ++i) ys[i] = row(i);
+  } else {
+#pragma omp parallel for schedule(static)
+    for (Loop i = 0; i < rows; ++i) ys[i] = row(i) + beta * ys[i];
+  }
 }
 
 void HostBackend::spmv_transpose(const DeviceSparseMatrix& A, const DeviceVector& x,
@@ -228,7 +235,7 @@ void HostBackend::spmv_transpose(const DeviceSparseMatrix& A, const DeviceVector
 #ifdef _OPENMP
   threads = omp_get_max_threads();
 #endif
-  if (cols < kParallelFrom || threads == 1) {
+  if (h.nonzeros() < kParallelProductFrom || threads == 1) {
     for (Loop j = 0; j < cols; ++j) ys[j] = beta == 0.0 ? 0.0 : beta * ys[j];
     for (Loop i = 0; i < rows; ++i) {
       const double a = alpha * xs[i];
