@@ -142,6 +142,31 @@ TEST(SmoothedAggregation, ThreeDimensionalProductsMatchEigens) {
   EXPECT_EQ(Eigen::LLT<Matrix>(C).info(), Eigen::Success);
 }
 
+TEST(SmoothedAggregation, TheHierarchysEstimateServesTheFineSmoother) {
+  // The damping of the first prolongation needs lambda_max(D^-1 A) of the fine level, the fine
+  // Chebyshev smoother the same number: given it, the multigrid skips its own Lanczos steps and
+  // builds the same V-cycle (the two products sum in other orders: rounding apart).
+  const ProblemSpec spec = paper_benchmark(48, 16);
+  const Model model = build_model(spec);
+  const SparseMatrix& A = model.problem.A;
+  const SparseMatrix& N = model.problem.contact.N;
+  const MultigridHierarchy h = smoothed_aggregation_hierarchy(
+      A, rigid_body_modes(model.mesh, model.dofs), free_dof_nodes(model.dofs));
+  ASSERT_GT(h.fine_jacobi_radius, 1.0);
+  HostBackend be;
+  PenalizedOperator op(be, A, N);
+  MultigridOptions estimated, given;
+  given.fine_lambda_max = h.fine_jacobi_radius;
+  MultigridPreconditioner a(op, A, N, h.prolongations, estimated, h.coarse_operators);
+  MultigridPreconditioner b(op, A, N, h.prolongations, given, h.coarse_operators);
+  EXPECT_NEAR(a.fine_lambda_max(), b.fine_lambda_max(), 1e-12 * a.fine_lambda_max());
+  const Vector r = Vector::LinSpaced(op.size(), -1.0, 1.0).array().sin();
+  DeviceVector za(be, op.size()), zb(be, op.size());
+  a.apply(to_device(be, r), za);
+  b.apply(to_device(be, r), zb);
+  EXPECT_LT((to_host(za) - to_host(zb)).norm(), 1e-10 * to_host(za).norm());
+}
+
 // H = A + N^T diag(c) N of the paper's benchmark with every contact node active, solved by CG
 // with an aggregation V-cycle.
 struct Solved {

@@ -99,6 +99,8 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
       if (lev.on_host) lev.host_smoother = std::make_unique<ChebyshevSmoother>(*lev.on_host, o);
     }
   }
+  if (options_.fine_lambda_max > 0.0 && levels_.front()->smoother)
+    fine_lambda_without_contact_ = options_.fine_lambda_max;
   refresh();
 }
 

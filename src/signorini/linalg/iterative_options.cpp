@@ -23,8 +23,9 @@ std::unique_ptr<Preconditioner> make_preconditioner(PenalizedOperator& H, const 
     return std::make_unique<JacobiPreconditioner>(H);
   static const MultigridHierarchy kSingleLevel;  // no hierarchy: smoothing alone
   const MultigridHierarchy& l = levels != nullptr ? *levels : kSingleLevel;
-  return std::make_unique<MultigridPreconditioner>(H, A, N, l.prolongations,
-                                                   multigrid_options(options), l.coarse_operators);
+  MultigridOptions o = multigrid_options(options);
+  o.fine_lambda_max = l.fine_jacobi_radius;  // the hierarchy's estimate for the same A and D
+  return std::make_unique<MultigridPreconditioner>(H, A, N, l.prolongations, o, l.coarse_operators);
 }
 
 }  // namespace signorini
