@@ -333,6 +333,53 @@ def write_json(path, result):
     os.replace(tmp, path)
 
 
+def solve_from_zero(np, PETSc, snes, a, config, effective, xyz, reduced_pc):
+    """Installs the python preconditioner where the configuration asks for one (`gamg`: GAMG set
+    up once on the full matrix, with the node coordinates `xyz`, one row per node; otherwise
+    reduced_pc(), GAMG on each reduced matrix), then solves from u = 0. Returns u and the times
+    before and after the solve."""
+    if effective.get("pc_type") == "python":
+        pc = snes.getKSP().getPC()
+        pc.setType("python")
+        if config == "gamg":
+            # The vector keeps the array it wraps alive.
+            coordinates = PETSc.Vec().createWithArray(np.ascontiguousarray(xyz).ravel(),
+                                                      comm=PETSc.COMM_SELF)
+            coordinates.setBlockSize(xyz.shape[1])
+            pc.setPythonContext(GamgOnce(PETSc, snes, a, coordinates))
+        else:
+            pc.setPythonContext(reduced_pc())
+    snes.setFromOptions()
+    u = a.createVecLeft()
+    u.set(0.0)
+    t_setup = time.perf_counter()
+    snes.solve(None, u)
+    return u, t_setup, time.perf_counter()
+
+
+def phase_seconds(t_start, t_import, t_assembly, t_setup, t_solve, t_end):
+    """The phases of a run from the script's first line; the interpreter's own start-up comes on
+    top."""
+    return {
+        "import": t_import - t_start,  # numpy, petsc4py and MPI_Init
+        "assembly": t_assembly - t_import,
+        "setup": t_setup - t_assembly,
+        "solve": t_solve - t_setup,
+        "post": t_end - t_solve,
+        "total": t_end - t_start,
+    }
+
+
+def print_outcome(config, effective, description, energy, active, bounded, snes_outcome,
+                  seconds):
+    reason, reason_name, its, lits = snes_outcome
+    print(f"config {config}: {effective['snes_type']}, {description}")
+    print(f"J(u) = {energy:.11e}")
+    print(f"active contact nodes: {active} of {bounded}")
+    print(f"SNES iterations: {its}, KSP iterations: {lits}, {reason_name} ({reason})")
+    print("seconds: " + ", ".join(f"{k} {v:.3f}" for k, v in seconds.items()))
+
+
 def main(argv):
     args, petsc_args = parse_arguments(argv)
     config = CONFIG_ALIASES.get(args.config, args.config)
@@ -379,49 +426,25 @@ def main(argv):
     t_assembly = time.perf_counter()
 
     snes = make_snes(PETSc, a, b, lower, upper)
-    if effective.get("pc_type") == "python":
-        node = np.arange(n // 2)
-        xy = np.empty(n)  # node coordinates, x and y interleaved like the unknowns
-        xy[0::2] = (node % nx + 1) * hx
-        xy[1::2] = (node // nx) * hy
-        pc = snes.getKSP().getPC()
-        pc.setType("python")
-        if config == "gamg":
-            coordinates = PETSc.Vec().createWithArray(xy, comm=PETSc.COMM_SELF)
-            coordinates.setBlockSize(2)
-            pc.setPythonContext(GamgOnce(PETSc, snes, a, coordinates))
-        else:
-            pc.setPythonContext(GamgReduced(np, PETSc, snes, a, xy))
-    snes.setFromOptions()
-    u = a.createVecLeft()
-    u.set(0.0)
-    t_setup = time.perf_counter()
-
-    snes.solve(None, u)
-    t_solve = time.perf_counter()
+    node = np.arange(n // 2)
+    xy = np.empty(n)  # node coordinates, x and y interleaved like the unknowns
+    xy[0::2] = (node % nx + 1) * hx
+    xy[1::2] = (node // nx) * hy
+    u, t_setup, t_solve = solve_from_zero(np, PETSc, snes, a, config, effective,
+                                          xy.reshape(-1, 2),
+                                          lambda: GamgReduced(np, PETSc, snes, a, xy))
 
     energy = energy_of(a, b, u)
     uy_bottom = u.getArray(readonly=True)[1:2 * nx:2]
     active = int(np.count_nonzero(uy_bottom <= 0.0))
-    reason, reason_name, its, lits = outcome(PETSc, snes)
+    snes_outcome = outcome(PETSc, snes)
+    reason, reason_name, its, lits = snes_outcome
     converged = reason > 0
-    t_end = time.perf_counter()
-    seconds = {
-        "import": t_import - T_START,  # numpy, petsc4py and MPI_Init
-        "assembly": t_assembly - t_import,
-        "setup": t_setup - t_assembly,
-        "solve": t_solve - t_setup,
-        "post": t_end - t_solve,
-        "total": t_end - T_START,  # the interpreter's own start-up comes on top
-    }
+    seconds = phase_seconds(T_START, t_import, t_assembly, t_setup, t_solve, time.perf_counter())
     if not args.quiet:
         print(f"petsc_snesvi: mesh {nx}x{ny}, {n} unknowns (left edge eliminated), {nx} bounded "
               f"(bottom u_y >= 0); PETSc {'.'.join(map(str, PETSc.Sys.getVersion()))}")
-        print(f"config {config}: {effective['snes_type']}, {description}")
-        print(f"J(u) = {energy:.11e}")
-        print(f"active contact nodes: {active} of {nx}")
-        print(f"SNES iterations: {its}, KSP iterations: {lits}, {reason_name} ({reason})")
-        print("seconds: " + ", ".join(f"{k} {v:.3f}" for k, v in seconds.items()))
+        print_outcome(config, effective, description, energy, active, nx, snes_outcome, seconds)
     if args.json:
         result = {
             "peer": "petsc_snesvi",

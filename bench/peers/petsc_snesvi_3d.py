@@ -27,8 +27,9 @@ import os  # noqa: E402
 import sys  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from petsc_snesvi import (GamgOnce, energy_of, fail, isolate_mpi, make_snes,  # noqa: E402
-                          outcome, reduced_rows, set_options, write_json)
+from petsc_snesvi import (energy_of, fail, isolate_mpi, make_snes, outcome,  # noqa: E402
+                          phase_seconds, print_outcome, reduced_rows, set_options,
+                          solve_from_zero, write_json)
 
 YOUNG, POISSON = 1000.0, 0.3
 PUSH = -0.005                      # the top face's displacement along z
@@ -195,46 +196,22 @@ def main(argv):
     xyz[:, 0] = (node % m) * h
     xyz[:, 1] = (node // m % m) * h
     xyz[:, 2] = (node // (m * m)) * h
-    if effective.get("pc_type") == "python":
-        pc = snes.getKSP().getPC()
-        pc.setType("python")
-        if config == "gamg":
-            coordinates = PETSc.Vec().createWithArray(xyz.ravel(), comm=PETSc.COMM_SELF)
-            coordinates.setBlockSize(3)
-            pc.setPythonContext(GamgOnce(PETSc, snes, a, coordinates))
-        else:
-            pc.setPythonContext(GamgReduced3d(np, PETSc, snes, a, xyz))
-    snes.setFromOptions()
-    u = a.createVecLeft()
-    u.set(0.0)
-    t_setup = time.perf_counter()
-
-    snes.solve(None, u)
-    t_solve = time.perf_counter()
+    u, t_setup, t_solve = solve_from_zero(np, PETSc, snes, a, config, effective, xyz,
+                                          lambda: GamgReduced3d(np, PETSc, snes, a, xyz))
 
     energy = energy_of(a, b, u)
     bottom = u.getArray(readonly=True)[2:3 * m * m:3]
     active = int(np.count_nonzero(bottom <= lower.getArray(readonly=True)[2:3 * m * m:3]))
-    reason, reason_name, its, lits = outcome(PETSc, snes)
+    snes_outcome = outcome(PETSc, snes)
+    reason, reason_name, its, lits = snes_outcome
     converged = reason > 0
-    t_end = time.perf_counter()
-    seconds = {
-        "import": t_import - T_START,
-        "assembly": t_assembly - t_import,
-        "setup": t_setup - t_assembly,
-        "solve": t_solve - t_setup,
-        "post": t_end - t_solve,
-        "total": t_end - T_START,
-    }
+    seconds = phase_seconds(T_START, t_import, t_assembly, t_setup, t_solve, time.perf_counter())
     if not args.quiet:
         print(f"petsc_snesvi_3d: mesh {n}x{n}x{nz}, {n_free} unknowns (top face eliminated), "
               f"{m * m} bounded (bottom u_z >= -gap); PETSc "
               f"{'.'.join(map(str, PETSc.Sys.getVersion()))}")
-        print(f"config {config}: {effective['snes_type']}, {description}")
-        print(f"J(u) = {energy:.11e}")
-        print(f"active contact nodes: {active} of {m * m}")
-        print(f"SNES iterations: {its}, KSP iterations: {lits}, {reason_name} ({reason})")
-        print("seconds: " + ", ".join(f"{k} {v:.3f}" for k, v in seconds.items()))
+        print_outcome(config, effective, description, energy, active, m * m, snes_outcome,
+                      seconds)
     if args.json:
         result = {
             "peer": "petsc_snesvi_3d", "mesh": f"{n}x{n}x{nz}", "n": n, "config": config,

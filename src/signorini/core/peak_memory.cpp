@@ -8,18 +8,27 @@
 
 namespace signorini {
 
-double peak_resident_bytes() {
-  std::ifstream status("/proc/self/status");
+namespace {
+
+// The number after `key` on its line of a /proc file ("VmHWM:   123 kB"), in KiB; 0 if absent.
+double kib_field(const char* file, const std::string& key) {
+  std::ifstream in(file);
   std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) {
-      std::istringstream in(line.substr(6));
+  while (std::getline(in, line)) {
+    if (line.rfind(key, 0) == 0) {
+      std::istringstream value(line.substr(key.size()));
       double kib = 0.0;
-      in >> kib;
-      return kib * 1024.0;
+      value >> kib;
+      return kib;
     }
   }
   return 0.0;
+}
+
+}  // namespace
+
+double peak_resident_bytes() {
+  return kib_field("/proc/self/status", "VmHWM:") * 1024.0;
 }
 
 bool reset_peak_resident() {
@@ -37,17 +46,7 @@ double physical_memory_bytes() {
 }
 
 double available_memory_bytes() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string line;
-  while (std::getline(meminfo, line)) {
-    if (line.rfind("MemAvailable:", 0) == 0) {
-      std::istringstream in(line.substr(13));
-      double kib = 0.0;
-      in >> kib;
-      return kib * 1024.0;
-    }
-  }
-  return 0.0;
+  return kib_field("/proc/meminfo", "MemAvailable:") * 1024.0;
 }
 
 }  // namespace signorini
