@@ -170,12 +170,75 @@ TEST(BackendPathOptions, RefusesWhatItCannotRun) {
         << e.what();
   }
   o.linear.type = LinearSolverType::ConjugateGradient;
-  o.method = ContactMethod::SemismoothNewton;
+  o.method = ContactMethod::ClassicalUzawa;
   EXPECT_THROW(validate(o), InputError);
+  o.method = ContactMethod::SemismoothNewton;  // projected CG (projected_active_set_solver.hpp)
+  EXPECT_NO_THROW(validate(o));
   o.method = ContactMethod::UzawaGnm;
   EXPECT_NO_THROW(validate(o));
   o.linear.chebyshev_degree = 0;
   EXPECT_THROW(validate(o), InputError);
+}
+
+// Semismooth Newton on the backend path: each Newton step by projected CG with the geometric
+// multigrid of the penalised Newton matrix. The same active sets as with the sparse
+// factorisation, step by step, and the same solution to the CG tolerance.
+TEST(BackendPathSemismoothNewton, MatchesTheSparseDirectSteps) {
+  const auto [p, multigrid] = testing::paper_problem_with_hierarchy(120);
+  ContactSolverOptions o;
+  o.method = ContactMethod::SemismoothNewton;
+  o.schur_complement = false;
+  const ContactResult direct = solve_contact(p, o);
+  ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.preconditioner = PreconditionerType::Multigrid;
+  ASSERT_TRUE(uses_backend_path(o));
+  const ContactResult it = solve_contact(p, o, &multigrid);
+  ASSERT_TRUE(it.summary.converged()) << it.summary.message;
+  ASSERT_EQ(it.summary.steps.size(), direct.summary.steps.size());
+  for (std::size_t k = 0; k < it.summary.steps.size(); ++k)
+    EXPECT_EQ(it.summary.steps[k].active_set_size, direct.summary.steps[k].active_set_size) << k;
+  EXPECT_EQ(it.summary.num_active, direct.summary.num_active);
+  EXPECT_LT(testing::relative_difference(it.u, direct.u), 1e-10);
+  EXPECT_LT(testing::relative_difference(it.l, direct.l), 1e-9);
+  EXPECT_LT(it.summary.kkt.max(), 1e-11);
+  EXPECT_EQ(it.summary.multigrid_levels.front(), p.A.rows());
+  // A warm start from the answer: one Newton step, whose active set repeats.
+  ContactSolver warm(p, o, &multigrid);
+  warm.warm_start(it);
+  const ContactResult again = warm.solve();
+  ASSERT_TRUE(again.summary.converged()) << again.summary.message;
+  EXPECT_EQ(again.summary.steps.size(), 1U);
+  EXPECT_LT(testing::relative_difference(again.u, it.u), 1e-10);
+}
+
+// The projection onto the constraints is local only where each dof is in one contact row.
+TEST(BackendPathSemismoothNewton, RefusesContactRowsThatShareADof) {
+  const auto [problem, multigrid] = testing::paper_problem_with_hierarchy(60);
+  ContactProblem p = problem;
+  SparseMatrix& N = p.contact.N;
+  ASSERT_GE(N.rows(), 2);
+  // The first dof with a nonzero entry (N stores the normals' zeros too), given to another row.
+  Index row = -1, dof = -1;
+  for (Index k = 0; k < N.outerSize() && dof < 0; ++k)
+    for (SparseMatrix::InnerIterator it(N, k); it; ++it)
+      if (it.value() != 0.0) {
+        row = it.row();
+        dof = k;
+      }
+  ASSERT_GE(dof, 0);
+  N.coeffRef(row == 0 ? 1 : 0, dof) = 0.5;
+  ContactSolverOptions o;
+  o.method = ContactMethod::SemismoothNewton;
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.preconditioner = PreconditionerType::Multigrid;
+  try {
+    (void)solve_contact(p, o, &multigrid);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("share a degree of freedom"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(BackendPathMultigrid, WithoutHierarchyStillConvergesToTheSameSolution) {

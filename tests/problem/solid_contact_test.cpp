@@ -235,11 +235,86 @@ TEST(SolidContactPaths, IterativeWithAggregationMultigridAgreesWithDirect) {
   EXPECT_GT(iterations, 0);
 }
 
+// Semismooth Newton on the iterative path (projected CG with the multigrid of the penalised
+// Newton matrix) against semismooth Newton with a sparse factorisation: the same active sets in
+// the same order (each Newton step is solved exactly by either), the same u and l, and the KKT
+// conditions of the active set exactly; and against Uzawa-GNM on the same path.
+TEST(SolidContactPaths, SemismoothNewtonOnTheIterativePathAgreesWithDirect) {
+  ProblemSpec spec = testing::ball_on_block(12, 2e-3);
+  spec.solver.method = ContactMethod::SemismoothNewton;
+  spec.solver.schur_complement = false;
+  const ContactResult direct = solve_contact(build_model(spec).problem, spec.solver);
+  ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;
+
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  const Model model = build_model(spec);
+  ASSERT_FALSE(model.multigrid.prolongations.empty());
+  const ContactResult cg = solve_contact(model.problem, spec.solver, &model.multigrid);
+  ASSERT_TRUE(cg.summary.converged()) << cg.summary.message;
+  EXPECT_EQ(cg.summary.path, SolvePath::Backend);
+  EXPECT_FALSE(cg.summary.multigrid_levels.empty());
+  ASSERT_EQ(cg.summary.steps.size(), direct.summary.steps.size());
+  int iterations = 0;  // none in the first step: no load, no active node, x = 0 solves it
+  for (std::size_t k = 0; k < cg.summary.steps.size(); ++k) {
+    EXPECT_EQ(cg.summary.steps[k].active_set_size, direct.summary.steps[k].active_set_size) << k;
+    iterations += cg.summary.steps[k].linear_iterations;
+  }
+  EXPECT_GT(iterations, 0);
+  EXPECT_GT(cg.summary.num_active, 0);
+  EXPECT_EQ(cg.summary.num_active, direct.summary.num_active);
+  EXPECT_LT((cg.u - direct.u).norm(), 1e-10 * direct.u.norm());
+  EXPECT_LT((cg.l - direct.l).norm(), 1e-9 * direct.l.norm());
+  EXPECT_LT(cg.summary.kkt.equilibrium, 1e-11);
+  EXPECT_LT(cg.summary.kkt.penetration, 1e-11);
+  EXPECT_EQ(cg.summary.kkt.sign, 0.0);
+
+  spec.solver.method = ContactMethod::UzawaGnm;
+  spec.solver.uzawa_tolerance = 1e-10;
+  const ContactResult gnm = solve_contact(model.problem, spec.solver, &model.multigrid);
+  ASSERT_TRUE(gnm.summary.converged()) << gnm.summary.message;
+  EXPECT_LT((gnm.u - cg.u).norm(), 1e-8 * cg.u.norm());
+  EXPECT_LT((gnm.l - cg.l).norm(), 1e-7 * cg.l.norm());
+}
+
 }  // namespace
 }  // namespace signorini
 
 namespace signorini {
 namespace {
+
+// Inexact semismooth Newton steps (inner_tolerance = adaptive, as the tool plans the iterative
+// path): loose steps until the active set repeats, then exact ones. The same answer as exact
+// steps, and on a mesh where CG needs more than a few iterations (22,500 unknowns), fewer of them.
+TEST(SolidContactPaths, InexactSemismoothNewtonStepsGiveTheExactAnswer) {
+  ProblemSpec spec = testing::ball_on_block(24, 2e-3);
+  spec.solver.method = ContactMethod::SemismoothNewton;
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  spec.solver.inner_tolerance = InnerTolerance::Fixed;
+  const Model model = build_model(spec);
+  const auto cg_iterations = [](const ContactResult& r) {
+    int n = 0;
+    for (const auto& step : r.summary.steps) n += step.linear_iterations;
+    return n;
+  };
+  const ContactResult exact = solve_contact(model.problem, spec.solver, &model.multigrid);
+  ASSERT_TRUE(exact.summary.converged()) << exact.summary.message;
+  spec.solver.inner_tolerance = InnerTolerance::Adaptive;
+  const ContactResult inexact = solve_contact(model.problem, spec.solver, &model.multigrid);
+  ASSERT_TRUE(inexact.summary.converged()) << inexact.summary.message;
+  EXPECT_GT(inexact.summary.num_active, 0);
+  EXPECT_EQ(inexact.summary.num_active, exact.summary.num_active);
+  EXPECT_LT((inexact.u - exact.u).norm(), 1e-10 * exact.u.norm());
+  EXPECT_LT((inexact.l - exact.l).norm(), 1e-9 * exact.l.norm());
+  EXPECT_LT(inexact.summary.kkt.equilibrium, 1e-11);
+  EXPECT_EQ(inexact.summary.kkt.complementarity, 0.0);
+  EXPECT_LT(cg_iterations(inexact), cg_iterations(exact));
+  // The last two steps have the same active set: a loose step, then the exact one.
+  const auto& steps = inexact.summary.steps;
+  ASSERT_GE(steps.size(), 2U);
+  EXPECT_EQ(steps[steps.size() - 1].active_set_size, steps[steps.size() - 2].active_set_size);
+}
 
 // The result files of a 3D solve: contact.csv with three coordinates, the normal displacement and
 // the tangential displacement vector; contact.vtu with the contact faces; solution.vtu with the

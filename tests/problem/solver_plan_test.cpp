@@ -59,6 +59,21 @@ TEST(SolverPlan, LargeThreeDimensionalProblemsGoIterative) {
             InnerTolerance::Fixed);
 }
 
+TEST(SolverPlan, EachMethodGoesWhereItRuns) {
+  // Semismooth Newton runs on the iterative path too (projected CG); classical Uzawa needs the
+  // factor of A, so it stays direct.
+  const ProblemSize large{3, 20000, kIterativeFromUnknowns3D + 1, 900, 24 * kGB};
+  ContactSolverOptions ssn;
+  ssn.method = ContactMethod::SemismoothNewton;
+  EXPECT_TRUE(uses_backend_path(plan_solver(ssn, large).options));
+  EXPECT_NO_THROW(validate(plan_solver(ssn, large).options));
+  ContactSolverOptions classical;
+  classical.method = ContactMethod::ClassicalUzawa;
+  const SolverPlan plan = plan_solver(classical, large);
+  EXPECT_EQ(plan.options.linear.type, LinearSolverType::Cholmod);
+  EXPECT_NO_THROW(validate(plan.options));
+}
+
 TEST(SolverPlan, AFactorThatDoesNotFitGoesIterativeIn2D) {
   // 4 KB per node: 4 million nodes, 16 GB, more than half of 24 GB.
   const SolverPlan plan =

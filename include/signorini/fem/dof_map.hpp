@@ -1,8 +1,9 @@
 #pragma once
 // Numbering of the displacement unknowns. Dof (node, component) of the full vector is
 // node * dim + component; clamped dofs (u = 0 on Gamma_D, method.md section 1) are eliminated, and
-// the remaining "free" dofs are numbered consecutively in the same order, so that the reduced
-// stiffness is SPD whenever Gamma_D holds the body (paper, after (14)).
+// the remaining "free" dofs are numbered consecutively, node by node (in the nodes' order, or in
+// a given order of the nodes), so that the reduced stiffness is SPD whenever Gamma_D holds the
+// body (paper, after (14)).
 //
 // A node may have local axes (a frame, 2D only): its components are then those along the frame's
 // columns, so that the normal component of a node on a curved boundary can be held alone
@@ -37,9 +38,16 @@ class DofMap {
   /// Marks a component as prescribed, u = value (a clamp with nonzero data). Call before
   /// finalize().
   void prescribe(Index node, int component, double value);
-  /// Numbers the free dofs. Further clamp() calls are errors.
-  void finalize();
+  /// Numbers the free dofs, node by node in the order of the nodes (or of `node_order`, a
+  /// permutation of the nodes: e.g. one that keeps neighbours close in memory,
+  /// fem/node_ordering.hpp). Further clamp() calls are errors.
+  void finalize(const std::vector<Index>& node_order = {});
 
+  /// The node's place in the numbering of the free dofs (the node itself without a node order):
+  /// a node's free dofs come after those of every node of lower place.
+  [[nodiscard]] Index node_place(Index node) const {
+    return place_.empty() ? node : place_[static_cast<std::size_t>(node)];
+  }
   [[nodiscard]] int dim() const { return dim_; }
   [[nodiscard]] Index num_nodes() const { return num_nodes_; }
   [[nodiscard]] Index num_dofs() const { return num_nodes_ * dim_; }
@@ -75,6 +83,7 @@ class DofMap {
   Index num_free_ = 0;
   bool finalized_ = false;
   std::vector<Index> free_;    // per full dof: free number, or -1 (clamped)
+  std::vector<Index> place_;   // per node: its place in the node order; empty: the node
   Vector values_;              // per full dof: the prescribed value; empty while all are 0
   std::vector<int> frame_of_;  // per node: index into frames_, or -1; empty: none
   std::vector<Eigen::Matrix2d> frames_;  // local axes as columns

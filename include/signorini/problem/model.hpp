@@ -67,9 +67,11 @@ Model build_model(const ProblemSpec& spec);
 
 /// Builds the dof numbering for a mesh, clamps and prescribed displacements (exposed for tests
 /// and other drivers). Clamps win over displacements at a dof both hold; among the displacements
-/// the first entry wins.
+/// the first entry wins. The free dofs are numbered node by node in `node_order` (empty: the
+/// mesh's; build_model numbers the nodes of a Gmsh mesh in Z-order, fem/node_ordering.hpp).
 DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
-                    const std::vector<DisplacementSpec>& displacements = {});
+                    const std::vector<DisplacementSpec>& displacements = {},
+                    const std::vector<Index>& node_order = {});
 
 /// Throws InputError naming the rigid motions that the clamps leave free (fem/free_rigid_motions).
 void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "signorini/backend/backend.hpp"
+#include "signorini/contact/backend_newton_matrix.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/newton_space.hpp"
 #include "signorini/core/timing_table.hpp"
@@ -39,19 +40,18 @@ class BackendNewtonSpace final : public NewtonSpace {
   /// x, downloaded.
   [[nodiscard]] Vector solution() const { return to_host(x_); }
   /// Unknowns per multigrid level (empty with Jacobi).
-  [[nodiscard]] const std::vector<Index>& levels() const { return levels_; }
+  [[nodiscard]] const std::vector<Index>& levels() const { return newton_.levels; }
 
  private:
   Vector contact_values_of(const DeviceVector& v);
+  PenalizedOperator& H() { return *newton_.H; }
 
   const ContactProblem& p_;
   const ContactSolverOptions& o_;
   Backend& be_;
   TimingTable& timings_;
   Index n_, nc_;
-  std::unique_ptr<PenalizedOperator> H_;
-  std::unique_ptr<Preconditioner> preconditioner_;
-  std::vector<Index> levels_;
+  BackendNewtonMatrix newton_;
   std::unique_ptr<Pcg> pcg_;
   DeviceVector b_, x_, x_new_, residual_, d_, Ad_, work_, contact_;
   ActiveSet weights_active_;

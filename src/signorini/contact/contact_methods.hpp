@@ -37,5 +37,11 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options,
                                       const MethodStart& start = {});
+/// semismooth_newton on a backend (projected CG, projected_active_set_solver.hpp), used when
+/// uses_backend_path(options).
+ContactResult solve_semismooth_newton_on_backend(const ContactProblem& problem,
+                                                 const ContactSolverOptions& options,
+                                                 const MethodStart& start = {},
+                                                 const MultigridHierarchy* multigrid = nullptr);
 
 }  // namespace signorini

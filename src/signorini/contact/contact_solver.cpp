@@ -216,7 +216,9 @@ ContactResult ContactSolver::solve() {
     ScopedTimer timer(solve_time, "contact solve");
     switch (m.path) {
       case SolvePath::Backend:
-        result = solve_uzawa_gnm_on_backend(problem, options, start, m.multigrid);
+        result = options.method == ContactMethod::SemismoothNewton
+                     ? solve_semismooth_newton_on_backend(problem, options, start, m.multigrid)
+                     : solve_uzawa_gnm_on_backend(problem, options, start, m.multigrid);
         break;
       case SolvePath::CondensedDirect: {
         ContactSolverOptions reduced_options = options;

@@ -18,8 +18,9 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
     t.choice("method", &O::method, kContactMethodNames,
              "`uzawa_gnm`: the paper's Uzawa method on the modified Lagrangian with generalised "
              "Newton steps; `classical_uzawa`: Uzawa on the ordinary Lagrangian (the baseline the "
-             "paper improves on, slow); `semismooth_newton`: primal-dual active set method on the "
-             "KKT system");
+             "paper improves on, slow; direct solvers only); `semismooth_newton`: primal-dual "
+             "active set method on the KKT system, on every path (on the iterative one by "
+             "projected conjugate gradients: [solvers.md](solvers.md))");
     t.number_or_auto(
         "r", &O::r, positive(),
         "augmentation parameter of the modified Lagrangian (a stress per length). The solution "
@@ -73,7 +74,9 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
              "step k to min(0.001 x the previous step's relative dual change, a tenth of step "
              "k-1's tolerance) (at least 10 x `cg_tolerance`), and with `cg` each Newton "
              "system to a tenth of that: fewer CG "
-             "iterations, the same solution to the solver's tolerances, other counts. "
+             "iterations, the same solution to the solver's tolerances, other counts; "
+             "`semismooth_newton` on the iterative path solves its Newton steps to 1e-6 until "
+             "the active set repeats, then to `cg_tolerance`. "
              "`\"fixed\"`: every step to `gnm_tolerance` and `cg_tolerance` (the paper's "
              "method). `\"auto\"`: adaptive where `automatic_path` chooses the iterative path, "
              "fixed otherwise ([solvers.md](solvers.md))");
@@ -120,12 +123,13 @@ void validate(const ContactSolverOptions& o) {
         "solver.method = \"semismooth_newton\" solves the unilateral contact law only, not "
         "\"{}\"; use \"uzawa_gnm\"",
         contact_law(o).name()));
-  if (backend_path && o.method != ContactMethod::UzawaGnm)
-    throw InputError(fmt::format("solver.method = \"{}\": the {} runs only \"uzawa_gnm\"",
-                                 enum_to_string(kContactMethodNames, o.method),
-                                 o.device == DeviceKind::Cuda
-                                     ? "GPU solver (solver.device = \"cuda\")"
-                                     : "multigrid preconditioner"));
+  if (backend_path && o.method == ContactMethod::ClassicalUzawa)
+    throw InputError(
+        fmt::format("solver.method = \"{}\": the {} runs \"uzawa_gnm\" and "
+                    "\"semismooth_newton\" only",
+                    enum_to_string(kContactMethodNames, o.method),
+                    o.device == DeviceKind::Cuda ? "GPU solver (solver.device = \"cuda\")"
+                                                 : "multigrid preconditioner"));
 }
 
 double automatic_r(const ContactProblem& p, double factor) {

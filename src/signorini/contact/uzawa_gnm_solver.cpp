@@ -5,7 +5,6 @@
 
 #include <memory>
 
-#include "signorini/backend/make_backend.hpp"
 #include "signorini/contact/backend_newton_space.hpp"
 #include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/host_newton_space.hpp"
@@ -33,11 +32,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   ContactResult out;
   SolveSummary& s = out.summary;
   TimingTable timings;
-  std::unique_ptr<Backend> backend;
-  {
-    ScopedTimer t(timings, "device setup");
-    backend = make_backend(options.device);
-  }
+  const std::unique_ptr<Backend> backend = make_timed_backend(options, timings);
   BackendNewtonSpace space(problem, options, multigrid, *backend, timings,
                            start.displacement(problem.A.rows()));
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
@@ -46,10 +41,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
     ScopedTimer t(timings, "device download");
     out.u = space.solution();
   }
-  s.device = backend->description();
-  s.device_peak_bytes = backend->peak_bytes();
-  s.multigrid_levels = space.levels();
-  s.multigrid_hierarchy = multigrid != nullptr ? multigrid->kind : HierarchyKind::None;
+  record_backend(s, *backend, space.levels(), multigrid);
   s.timings = std::move(timings);
   return out;
 }

@@ -61,9 +61,25 @@ Vector DofMap::prescribed_values() const {
   return full;
 }
 
-void DofMap::finalize() {
+void DofMap::finalize(const std::vector<Index>& node_order) {
   Index next = 0;
-  for (auto& f : free_) f = (f < 0) ? -1 : next++;
+  if (node_order.empty()) {
+    for (auto& f : free_) f = (f < 0) ? -1 : next++;
+  } else {
+    if (static_cast<Index>(node_order.size()) != num_nodes_)
+      throw std::logic_error("DofMap::finalize: the node order is not one of the nodes");
+    place_.assign(static_cast<std::size_t>(num_nodes_), -1);
+    Index place = 0;
+    for (const Index node : node_order) {
+      if (node < 0 || node >= num_nodes_ || place_[static_cast<std::size_t>(node)] >= 0)
+        throw std::logic_error("DofMap::finalize: the node order is not a permutation");
+      place_[static_cast<std::size_t>(node)] = place++;
+      for (int k = 0; k < dim_; ++k) {
+        Index& f = free_[static_cast<std::size_t>(node * dim_ + k)];
+        f = (f < 0) ? -1 : next++;
+      }
+    }
+  }
   num_free_ = next;
   finalized_ = true;
 }

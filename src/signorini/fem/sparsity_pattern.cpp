@@ -34,7 +34,9 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(d
     for (Index s = cell_start[static_cast<std::size_t>(m)];
          s < cell_start[static_cast<std::size_t>(m + 1)]; ++s)
       for (const Index b : mesh.cell(cells_of[static_cast<std::size_t>(s)])) list.push_back(b);
-    std::sort(list.begin(), list.end());
+    // In the order of the free dofs (the nodes' places in the numbering, DofMap::node_place).
+    std::sort(list.begin(), list.end(),
+              [&](Index a, Index b) { return dofs.node_place(a) < dofs.node_place(b); });
     list.erase(std::unique(list.begin(), list.end()), list.end());
     Index rows = 0;
     for (const Index b : list) {
@@ -48,7 +50,8 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(d
   neighbors_.shrink_to_fit();
   row_offset_.shrink_to_fit();
   // Columns: the free dofs in order; the rows of column (m, k) are the free dofs of m's
-  // neighbours, already sorted since free numbers follow (node, component). Counted first, so
+  // neighbours, already sorted since the neighbours are in the numbering's order and a node's
+  // free numbers follow its components. Counted first, so
   // that the row numbers go straight into the matrix (no second copy of them).
   const Index nf = dofs.num_free();
   outer_.assign(static_cast<std::size_t>(nf + 1), 0);
@@ -60,18 +63,24 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(d
         rows += dofs.free_index(neighbors_[static_cast<std::size_t>(s)], k) >= 0 ? 1 : 0;
     return rows;
   };
-  Index nnz = 0;
+  // Each column's count, then their running sum (the columns are not in node order where the
+  // numbering follows a node order).
+  std::vector<Index> count(static_cast<std::size_t>(nf), 0);
   for (Index m = 0; m < n; ++m) {
     const Index rows = rows_of(m);
     for (int k = 0; k < dim; ++k) {
       const Index col = dofs.free_index(m, k);
-      if (col < 0) continue;
-      nnz += rows;
-      if (nnz > std::numeric_limits<int>::max())
-        throw InputError("mesh too large: the stiffness matrix would have more than 2^31 entries");
-      outer_[static_cast<std::size_t>(col + 1)] = static_cast<int>(nnz);
+      if (col >= 0) count[static_cast<std::size_t>(col)] = rows;
     }
   }
+  Index nnz = 0;
+  for (Index col = 0; col < nf; ++col) {
+    nnz += count[static_cast<std::size_t>(col)];
+    if (nnz > std::numeric_limits<int>::max())
+      throw InputError("mesh too large: the stiffness matrix would have more than 2^31 entries");
+    outer_[static_cast<std::size_t>(col + 1)] = static_cast<int>(nnz);
+  }
+  std::vector<Index>().swap(count);
   matrix_.resize(nf, nf);
   matrix_.resizeNonZeros(nnz);  // compressed storage, filled directly
   std::copy(outer_.begin(), outer_.end(), matrix_.outerIndexPtr());
@@ -106,8 +115,10 @@ void SparsityPattern::block_positions(Index node_a, Index node_b, Index* out) co
   const int dim = dofs_.dim();
   const Index s0 = neighbor_start_[static_cast<std::size_t>(node_b)];
   const Index s1 = neighbor_start_[static_cast<std::size_t>(node_b + 1)];
+  const Index place = dofs_.node_place(node_a);
   const auto it =
-      std::lower_bound(neighbors_.begin() + s0, neighbors_.begin() + s1, static_cast<int>(node_a));
+      std::lower_bound(neighbors_.begin() + s0, neighbors_.begin() + s1, place,
+                       [&](int neighbour, Index p) { return dofs_.node_place(neighbour) < p; });
   const Index base = row_offset_[static_cast<std::size_t>(it - neighbors_.begin())];
   Index within = 0;
   for (int ka = 0; ka < dim; ++ka) {

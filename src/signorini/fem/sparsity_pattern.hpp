@@ -24,7 +24,8 @@ class SparsityPattern {
 
  private:
   const DofMap& dofs_;
-  std::vector<Index> neighbor_start_;  // CSR over nodes: neighbours (sorted), incl. the node
+  std::vector<Index> neighbor_start_;  // CSR over nodes: neighbours (in the numbering's order),
+                                       // incl. the node
   std::vector<int> neighbors_;
   std::vector<int> row_offset_;  // per neighbour entry: rows before it in the column
   std::vector<int> outer_;       // column pointers over free dofs

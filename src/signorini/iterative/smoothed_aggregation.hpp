@@ -34,7 +34,10 @@ struct SmoothedAggregationOptions {
 /// triangles stored). `near_null_space` is n x k (k >= 1); `node_of_unknown[i]` is the node of
 /// unknown i, nodes numbered from 0 and the unknowns of a node consecutive. The coarse operators
 /// are formed (kind Aggregation); an empty hierarchy (kind None) if A already has at most
-/// max_coarse_unknowns unknowns.
+/// max_coarse_unknowns unknowns. The nodes are aggregated in the order of their numbers, whatever
+/// the order of the unknowns (which a renumbering for locality may have changed: the aggregates
+/// stay those of the mesh's own order), and the coarse unknowns follow the order of the fine
+/// ones.
 MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix near_null_space,
                                                   std::vector<Index> node_of_unknown,
                                                   const SmoothedAggregationOptions& options = {});
@@ -42,8 +45,10 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
 /// The aggregation step alone (exposed for tests): the aggregate of every node of the node graph
 /// given by the CSR-like arrays (neighbours of node a are adjacency[offsets[a] .. offsets[a+1]),
 /// strong couplings only, without a itself). Every node gets an aggregate; the numbers are
-/// 0 .. count-1.
+/// 0 .. count-1, in the order the aggregates were formed. The nodes are visited in `order` (a
+/// permutation of 0 .. m-1; empty: 0, 1, ...).
 std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
-                                   const std::vector<Index>& adjacency);
+                                   const std::vector<Index>& adjacency,
+                                   const std::vector<Index>& order = {});
 
 }  // namespace signorini

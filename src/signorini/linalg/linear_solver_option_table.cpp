@@ -21,7 +21,7 @@ const OptionTable<LinearSolverOptions>& linear_solver_option_table() {
              "Chebyshev–Jacobi smoothing, whose iteration count hardly grows with the mesh (about "
              "8 CG iterations per Newton system at 1e-13 on every Table 1 mesh). `multigrid` runs "
              "on the backend path ([gpu.md](gpu.md)), on the CPU or the GPU, with "
-             "`method = \"uzawa_gnm\"` only");
+             "`method = \"uzawa_gnm\"` or `\"semismooth_newton\"`");
     t.choice("coarsening", &O::coarsening, kMultigridCoarseningNames,
              "how `multigrid` builds its coarse levels: `geometric` halves the rectangle mesh "
              "down to at most 2,000 unknowns (nx and ny must stay even until then; an error "

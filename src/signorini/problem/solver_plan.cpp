@@ -41,6 +41,9 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
     return as_configured(fmt::format("linear.type = \"{}\"",
                                      enum_to_string(kLinearSolverTypeNames, given.linear.type)));
 
+  // Classical Uzawa needs one factorisation of A (thousands of steps, each a pair of triangular
+  // solves): it has no iterative path.
+  const bool iterative_allowed = given.method != ContactMethod::ClassicalUzawa;
   const double factor = estimated_factor_bytes(size);
   const bool memory_known = size.memory_bytes > 0.0;
   const auto go_iterative = [&](const std::string& why) {
@@ -51,11 +54,11 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
     plan.reason = "iterative, CG with multigrid: " + why;
     return plan;
   };
-  if (size.dimension == 3 && size.free_unknowns > kIterativeFromUnknowns3D)
+  if (iterative_allowed && size.dimension == 3 && size.free_unknowns > kIterativeFromUnknowns3D)
     return go_iterative(
         fmt::format("3D with {} free unknowns, above {}, where a sparse factorisation costs more",
                     thousands(size.free_unknowns), thousands(kIterativeFromUnknowns3D)));
-  if (memory_known && factor > 0.5 * size.memory_bytes)
+  if (iterative_allowed && memory_known && factor > 0.5 * size.memory_bytes)
     return go_iterative(
         fmt::format("a sparse factor of about {} would exceed half of the {} of "
                     "this machine",
