@@ -1,6 +1,6 @@
 // Unknowns numbered along the Z-order curve (fem/node_ordering.hpp, DofMap::finalize with a node
 // order): the order itself, the numbering, the stiffness assembled in it (the same matrix,
-// permuted), and the smoothed-aggregation hierarchy built on it (the same aggregates: the
+// permuted), and the smoothed-aggregation hierarchy built on it (levels of the same sizes: the
 // aggregation follows the nodes' own numbers, not the unknowns' order).
 
 #include "signorini/fem/node_ordering.hpp"
@@ -125,7 +125,7 @@ TEST(ZOrderAssembly, TheStiffnessIsTheSameMatrixPermuted) {
   }
 }
 
-TEST(ZOrderAssembly, SmoothedAggregationFormsTheSameCoarseSpaces) {
+TEST(ZOrderAssembly, SmoothedAggregationFormsLevelsOfTheSameSizes) {
   // Aggregated in the nodes' own order whatever the unknowns' order: the same level sizes, and
   // coarse operators with nearly the same spectra. Not the same to rounding: the damping of the
   // smoothed prolongation comes from a Lanczos estimate of rho(D^-1 A) whose start vector is

@@ -15,12 +15,13 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
   using O = ContactSolverOptions;
   static const OptionTable<O> table = [] {
     OptionTable<O> t("solver");
-    t.choice("method", &O::method, kContactMethodNames,
-             "`uzawa_gnm`: the paper's Uzawa method on the modified Lagrangian with generalised "
-             "Newton steps; `classical_uzawa`: Uzawa on the ordinary Lagrangian (the baseline the "
-             "paper improves on, slow; direct solvers only); `semismooth_newton`: primal-dual "
-             "active set method on the KKT system, on every path (on the iterative one by "
-             "projected conjugate gradients: [solvers.md](solvers.md))");
+    t.choice(
+        "method", &O::method, kContactMethodNames,
+        "`uzawa_gnm`: the paper's Uzawa method on the modified Lagrangian with generalised "
+        "Newton steps; `classical_uzawa`: Uzawa on the ordinary Lagrangian (the baseline the "
+        "paper improves on, slow; not with `multigrid` or a GPU); `semismooth_newton`: primal-dual "
+        "active set method on the KKT system, on every path (on the iterative one by "
+        "projected conjugate gradients: [solvers.md](solvers.md))");
     t.number_or_auto(
         "r", &O::r, positive(),
         "augmentation parameter of the modified Lagrangian (a stress per length). The solution "
