@@ -174,6 +174,26 @@ TEST(MultigridPreconditioner, IsSymmetricPositiveDefinite) {
   EXPECT_GT(y.dot(to_host(my)), 0.0);
 }
 
+// A level small enough to be the dense coarsest one, alone: the preconditioner is then the exact
+// solve H^-1 r (on the CPU by the Cholesky factor's triangular solves), after a refresh for a
+// new active set too.
+TEST(MultigridPreconditioner, TheCoarsestLevelIsSolvedExactly) {
+  Fixture f(30);  // 30 x 10: 620 unknowns, below the dense limit
+  HostBackend be;
+  PenalizedOperator op(be, f.model.problem.A, f.model.problem.contact.N);
+  MultigridPreconditioner mg(op, f.model.problem.A, f.model.problem.contact.N, {}, {});
+  ASSERT_EQ(mg.level_sizes().size(), 1U);
+  const Vector r = f.model.problem.b + Vector::LinSpaced(op.size(), -1.0, 1.0);
+  DeviceVector z(be, op.size());
+  mg.apply(to_device(be, r), z);
+  EXPECT_LT(testing::relative_difference(to_host(z), direct_solution(f.model.problem.A, r)),
+            1e-10);  // both direct, in different orders of rounding
+  op.set_weights(f.c);
+  mg.refresh();
+  mg.apply(to_device(be, r), z);
+  EXPECT_LT(testing::relative_difference(to_host(z), direct_solution(f.hessian(), r)), 1e-10);
+}
+
 TEST(MultigridPreconditioner, HostEstimatesOfSmallLevelsChangeNothing) {
   Fixture f(120);
   HostBackend be;

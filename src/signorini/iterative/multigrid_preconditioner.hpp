@@ -10,8 +10,10 @@
 // the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation); the fine
 // level's eigenvalue is bounded from A's instead of estimated again (refresh()).
 // Smoothing is Chebyshev–Jacobi; the coarsest level is solved by a dense Cholesky factorisation
-// (as its inverse, applied by one dense product on the device).
+// (on a GPU as its inverse, applied by one dense product on the device; on the CPU by the
+// factor's triangular solves).
 
+#include <Eigen/Cholesky>
 #include <memory>
 #include <vector>
 
@@ -67,6 +69,7 @@ class MultigridPreconditioner final : public Preconditioner {
   struct Level;
   void cycle(std::size_t l, const DeviceVector& b, DeviceVector& x);
   void factor_coarsest();
+  void coarse_solve(const DeviceVector& b, DeviceVector& x);
 
   Backend& backend_;
   MultigridOptions options_;
@@ -78,7 +81,11 @@ class MultigridPreconditioner final : public Preconditioner {
   // c = 0; 0 until then), and per contact row j the number of nonzero entries of N's row j.
   double fine_lambda_without_contact_ = 0.0;
   std::vector<int> fine_normal_entries_;
+  // The coarsest level's solve: on a GPU its explicit inverse, applied by one dense product; on
+  // the CPU its Cholesky factor, applied by two triangular solves (as fast for one vector, and
+  // the inverse cost twice the factorisation again at every refresh).
   std::unique_ptr<DeviceDenseMatrix> coarse_inverse_;
+  std::unique_ptr<Eigen::LLT<Matrix>> coarse_factor_;
   // The V-cycle as recorded work (a CUDA graph on a GPU) for the last (r, z) pair; dropped by
   // refresh(), which changes the smoothers' coefficients and the coarse inverse.
   std::unique_ptr<RecordedWork> recorded_;
