@@ -63,24 +63,22 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(d
         rows += dofs.free_index(neighbors_[static_cast<std::size_t>(s)], k) >= 0 ? 1 : 0;
     return rows;
   };
-  // Each column's count, then their running sum (the columns are not in node order where the
-  // numbering follows a node order).
-  std::vector<Index> count(static_cast<std::size_t>(nf), 0);
+  // Each column's count in outer_[col + 1], then their running sum in place (the columns are not
+  // in node order where the numbering follows a node order).
   for (Index m = 0; m < n; ++m) {
     const Index rows = rows_of(m);
     for (int k = 0; k < dim; ++k) {
       const Index col = dofs.free_index(m, k);
-      if (col >= 0) count[static_cast<std::size_t>(col)] = rows;
+      if (col >= 0) outer_[static_cast<std::size_t>(col + 1)] = static_cast<int>(rows);
     }
   }
   Index nnz = 0;
   for (Index col = 0; col < nf; ++col) {
-    nnz += count[static_cast<std::size_t>(col)];
+    nnz += outer_[static_cast<std::size_t>(col + 1)];
     if (nnz > std::numeric_limits<int>::max())
       throw InputError("mesh too large: the stiffness matrix would have more than 2^31 entries");
     outer_[static_cast<std::size_t>(col + 1)] = static_cast<int>(nnz);
   }
-  std::vector<Index>().swap(count);
   matrix_.resize(nf, nf);
   matrix_.resizeNonZeros(nnz);  // compressed storage, filled directly
   std::copy(outer_.begin(), outer_.end(), matrix_.outerIndexPtr());

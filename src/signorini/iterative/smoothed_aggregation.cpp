@@ -186,12 +186,11 @@ Tentative tentative_prolongation(const Matrix& B, const std::vector<Index>& star
 }  // namespace
 
 std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
-                                   const std::vector<Index>& adjacency,
-                                   const std::vector<Index>& order) {
+                                   const std::vector<Index>& adjacency, std::vector<Index> order) {
   const auto m = static_cast<Index>(offsets.size()) - 1;
   if (!order.empty() && static_cast<Index>(order.size()) != m)
     throw NumericalError(fmt::format("aggregation: an order of {} nodes for {}", order.size(), m));
-  std::vector<Index> visit = order;
+  std::vector<Index> visit = std::move(order);
   if (visit.empty()) {
     visit.resize(static_cast<std::size_t>(m));
     std::iota(visit.begin(), visit.end(), Index{0});
@@ -287,7 +286,7 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
         std::sort(adjacency.begin() + offsets[static_cast<std::size_t>(a)],
                   adjacency.begin() + offsets[static_cast<std::size_t>(a) + 1], before);
     }
-    std::vector<Index> aggregate = aggregate_nodes(offsets, adjacency, order);
+    std::vector<Index> aggregate = aggregate_nodes(offsets, adjacency, std::move(order));
     // The aggregates numbered by their first node in the level's own order, so that the coarse
     // unknowns keep the fine ones' locality; their formation order becomes the next level's.
     std::vector<Index> number(aggregate.size(), -1);

@@ -49,6 +49,6 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
 /// permutation of 0 .. m-1; empty: 0, 1, ...).
 std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
                                    const std::vector<Index>& adjacency,
-                                   const std::vector<Index>& order = {});
+                                   std::vector<Index> order = {});
 
 }  // namespace signorini
