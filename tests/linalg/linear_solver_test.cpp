@@ -181,6 +181,68 @@ TEST(CholmodSolver, UpdateAndDowndateMatchAFreshFactorisation) {
   EXPECT_GT(s.timings().seconds("linear factor update"), 0.0);
 }
 
+// A with the rows and columns of `fixed` replaced by the identity's.
+SparseMatrix with_identity_rows(const SparseMatrix& A, const std::vector<Index>& fixed) {
+  std::vector<bool> is_fixed(static_cast<std::size_t>(A.rows()), false);
+  for (const Index i : fixed) is_fixed[static_cast<std::size_t>(i)] = true;
+  SparseMatrix K = A;
+  for (Index col = 0; col < K.cols(); ++col)
+    for (SparseMatrix::InnerIterator it(K, col); it; ++it)
+      if (is_fixed[static_cast<std::size_t>(it.row())] || is_fixed[static_cast<std::size_t>(col)])
+        it.valueRef() = it.row() == col ? 1.0 : 0.0;
+  return K;
+}
+
+// Column k of A without the rows in `fixed` (the diagonal kept).
+std::vector<std::pair<Index, double>> column_without(const SparseMatrix& A, Index k,
+                                                     const std::vector<Index>& fixed) {
+  std::vector<std::pair<Index, double>> column;
+  for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+    if (it.row() == k || std::find(fixed.begin(), fixed.end(), it.row()) == fixed.end())
+      column.emplace_back(it.row(), it.value());
+  return column;
+}
+
+// Row deletions and additions give the factors of A with some rows and columns made the
+// identity's and of A again: the solves agree with fresh factorisations of those matrices.
+TEST(CholmodSolver, RowDeletionsAndAdditionsMatchAFreshFactorisation) {
+  const SparseMatrix A = grid_laplacian(14, 0.05);
+  const Index n = A.rows();
+  const Vector b = Vector::LinSpaced(n, -1.0, 2.0);
+  const std::vector<Index> rows = {5, 700, 701, 2000};  // 700 and 701 are coupled
+  const auto fresh_solve = [&](const SparseMatrix& K) {
+    CholmodSolver fresh;
+    fresh.factorize(K);
+    return solve_with(fresh, b);
+  };
+
+  CholmodSolver s;
+  EXPECT_THROW((void)s.delete_row(0), NumericalError);
+  s.factorize(A);
+  const Vector x_plain = solve_with(s, b);
+  for (const Index k : rows) ASSERT_TRUE(s.delete_row(k));
+  EXPECT_EQ(s.predicted_conversion_seconds(), 0.0);  // converted to L D L^T
+  const Vector x_fixed = solve_with(s, b);
+  EXPECT_LT(relative_difference(x_fixed, fresh_solve(with_identity_rows(A, rows))), 1e-12);
+  for (const Index k : rows) EXPECT_EQ(x_fixed(k), b(k));        // the identity's rows: x_k = b_k
+  ASSERT_GT((x_fixed - x_plain).norm(), 1e-3 * x_plain.norm());  // the deletions matter
+
+  // Row 700 back, 701 still fixed: its entry must stay out of the new column.
+  ASSERT_TRUE(s.add_row(700, column_without(A, 700, {5, 701, 2000})));
+  EXPECT_LT(
+      relative_difference(solve_with(s, b), fresh_solve(with_identity_rows(A, {5, 701, 2000}))),
+      1e-12);
+  for (const Index k : {Index{5}, Index{701}, Index{2000}}) {
+    std::vector<Index> still;
+    for (const Index r : {Index{5}, Index{701}, Index{2000}})
+      if (r > k) still.push_back(r);
+    ASSERT_TRUE(s.add_row(k, column_without(A, k, still)));
+  }
+  EXPECT_LT(relative_difference(solve_with(s, b), x_plain), 1e-12);
+  EXPECT_GT(s.row_modification_flops(700), 0.0);
+  EXPECT_GT(s.timings().seconds("linear factor update"), 0.0);
+}
+
 // The cost estimate walks the elimination tree: positive, at most 4 flops per entry of L, and the
 // same for any of a column's rows that lie on one path.
 TEST(CholmodSolver, UpdateFlopsFollowTheEliminationTree) {

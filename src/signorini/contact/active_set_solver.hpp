@@ -23,6 +23,8 @@ class ActiveSetSolver {
   [[nodiscard]] virtual Vector displacement() const = 0;
   /// Factorisations (or preconditioner set-ups) that the last solve() made.
   [[nodiscard]] virtual int last_factorizations() const { return 1; }
+  /// Unknowns whose rows the last solve() modified in the factor instead of refactorising.
+  [[nodiscard]] virtual int last_factor_updates() const { return 0; }
   /// Whether the steps are solved iteratively, to a tolerance that set_tolerance() may loosen.
   [[nodiscard]] virtual bool iterative() const { return false; }
   /// The relative tolerance of the next solves (0: the solver's own, cg_tolerance).

@@ -29,6 +29,7 @@
 #include "signorini/contact/outer_iteration.hpp"
 #include "signorini/contact/projected_active_set_solver.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/linalg/cholmod_solver.hpp"
 #include "signorini/linalg/dense_storage.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 
@@ -48,8 +49,12 @@ class RotatedEliminationSolver final : public ActiveSetSolver {
     br_ = rotation_.to_rotated(p.b);
     K_ = Ar_;
     y_ = Vector::Zero(p.A.rows());
+    fixed_.assign(static_cast<std::size_t>(p.A.rows()), false);
     solver_ = make_linear_solver(linear);
     solver_->analyze(Ar_);
+    if (linear.factor_updates != FactorUpdates::Never)
+      cholmod_ = dynamic_cast<CholmodSolver*>(solver_.get());
+    always_update_ = linear.factor_updates == FactorUpdates::Always;
   }
 
   LinearSolveStats solve(const ActiveSet& S, Vector& l, Vector& gap_residual) override {
@@ -63,17 +68,27 @@ class RotatedEliminationSolver final : public ActiveSetSolver {
         fixed[static_cast<std::size_t>(a)] = true;
         y_fixed(a) = c.gaps(j) / rotation_.scale(j);
       }
-    for (Index col = 0; col < n; ++col)
-      for (int k = K_.outerIndexPtr()[col]; k < K_.outerIndexPtr()[col + 1]; ++k) {
-        const Index row = K_.innerIndexPtr()[k];
-        const bool cut =
-            fixed[static_cast<std::size_t>(row)] || fixed[static_cast<std::size_t>(col)];
-        K_.valuePtr()[k] = !cut ? Ar_.valuePtr()[k] : (row == col ? Ar_.valuePtr()[k] : 0.0);
-      }
+    // K: A_r with the rows and columns of the fixed unknowns replaced by their diagonal, from
+    // the last factor by row modifications where that is expected to be faster (the sparse
+    // direct path's rule, newton_system.cpp), else factorised.
+    factorized_ = updated_ = 0;
+    if (!(has_factor_ && (fixed == fixed_ || (cholmod_ != nullptr && modify_to(fixed))))) {
+      for (Index col = 0; col < n; ++col)
+        for (int k = K_.outerIndexPtr()[col]; k < K_.outerIndexPtr()[col + 1]; ++k) {
+          const Index row = K_.innerIndexPtr()[k];
+          const bool cut =
+              fixed[static_cast<std::size_t>(row)] || fixed[static_cast<std::size_t>(col)];
+          K_.valuePtr()[k] = !cut ? Ar_.valuePtr()[k] : (row == col ? Ar_.valuePtr()[k] : 0.0);
+        }
+      solver_->factorize(K_);
+      factorized_ = 1;
+      modifications_since_factorization_ = 0;
+    }
+    fixed_ = fixed;
+    has_factor_ = true;
     Vector rhs = br_ - Ar_ * y_fixed;
     for (Index i = 0; i < n; ++i)
       if (fixed[static_cast<std::size_t>(i)]) rhs(i) = Ar_.coeff(i, i) * y_fixed(i);
-    solver_->factorize(K_);
     const LinearSolveStats st = solver_->solve(rhs, y_);
     timings_ = solver_->timings();
     // Multipliers from the reactions: (A_r y)_{a_j} + s_j h_j l_j = (b_r)_{a_j} on S.
@@ -90,13 +105,70 @@ class RotatedEliminationSolver final : public ActiveSetSolver {
     return st;
   }
   [[nodiscard]] Vector displacement() const override { return rotation_.from_rotated(y_); }
+  [[nodiscard]] int last_factorizations() const override { return factorized_; }
+  [[nodiscard]] int last_factor_updates() const override { return updated_; }
 
  private:
+  // Modifications accumulate rounding: refactorise after this many since the last
+  // factorisation, however cheap they are (as the Newton systems of newton_system.cpp).
+  static constexpr std::size_t kMaxModifications = 2000;
+
+  // From the factor of K(F) to that of K(F'), F the fixed unknowns: an unknown that becomes
+  // fixed has its row and column deleted (the identity's) and then added back as its diagonal
+  // alone; one that becomes free has the diagonal deleted and its column of A_r added, without
+  // the rows still fixed (Davis and Hager's row modifications, CholmodSolver::delete_row and
+  // add_row). So K is the matrix that a factorisation would have been given. False where a
+  // factorisation is expected to be faster, or a modification failed (the caller refactorises).
+  bool modify_to(const std::vector<bool>& fixed) {
+    std::vector<Index> changed;
+    double flops = 0.0;
+    for (std::size_t i = 0; i < fixed.size(); ++i)
+      if (fixed[i] != fixed_[i]) {
+        changed.push_back(static_cast<Index>(i));
+        flops += 2.0 * cholmod_->row_modification_flops(static_cast<Index>(i));
+      }
+    if (changed.empty()) return true;
+    // The rule of the sparse direct path's Newton systems (newton_system.cpp): modify where that
+    // is expected to take less time than the factorisation it replaces, the conversion of the
+    // factor to L D L^T counted half.
+    if (modifications_since_factorization_ + changed.size() > kMaxModifications ||
+        (!always_update_ && cholmod_->predicted_update_seconds(flops) +
+                                    0.5 * cholmod_->predicted_conversion_seconds() >
+                                cholmod_->last_factorization_seconds()))
+      return false;
+    std::vector<bool> now = fixed_;  // the unknowns whose row is the diagonal's, as it goes
+    std::vector<std::pair<Index, double>> column;
+    for (const Index i : changed) {
+      const auto k = static_cast<std::size_t>(i);
+      if (!cholmod_->delete_row(i)) return false;
+      column.clear();
+      if (fixed[k]) {
+        column.emplace_back(i, Ar_.coeff(i, i));
+      } else {
+        // Column i of A_r is its row (symmetry); the rows still fixed stay decoupled.
+        for (SparseMatrix::InnerIterator it(Ar_, i); it; ++it)
+          if (it.row() == i || !now[static_cast<std::size_t>(it.row())])
+            column.emplace_back(it.row(), it.value());
+      }
+      now[k] = fixed[k];
+      if (!cholmod_->add_row(i, column)) return false;
+    }
+    updated_ = static_cast<int>(changed.size());
+    modifications_since_factorization_ += changed.size();
+    return true;
+  }
+
   const ContactProblem& p_;
   NormalRotation rotation_;
   SparseMatrix Ar_, K_;
   Vector br_, y_;
   std::unique_ptr<LinearSolver> solver_;
+  CholmodSolver* cholmod_ = nullptr;  // solver_, where it can modify its factor
+  bool always_update_ = false;        // factor_updates = "always"
+  std::vector<bool> fixed_;           // the fixed unknowns of the current factor
+  bool has_factor_ = false;
+  int factorized_ = 0, updated_ = 0;  // by the last solve
+  std::size_t modifications_since_factorization_ = 0;
 };
 
 class DelassusSolver final : public ActiveSetSolver {
@@ -210,6 +282,7 @@ void run_semismooth_newton(const ContactProblem& problem, const ContactSolverOpt
     const LinearSolveStats st = solver.solve(active, o.l, gap_residual);
     rec.inner_iterations = 1;
     rec.factorizations = solver.last_factorizations();
+    rec.factor_updates = solver.last_factor_updates();
     rec.linear_iterations = st.iterations;
     if (!st.converged) {
       o.l.resize(0);  // not a step: l^(k-1) stays

@@ -42,6 +42,14 @@ struct CholmodSolver::Impl {
   ~Impl() { release(); }
 
   void tree();
+  void to_ldl();
+  [[nodiscard]] bool pivots_positive() const;
+  // A row modification is a rank-two change along the path from its (permuted) column: twice
+  // update_flops() of that column, which sets the rate of the estimates that follow.
+  void measured_row_modification(detail::CholmodInt k, double seconds) {
+    if (seconds > 1e-3)
+      update_flop_rate = 8.0 * path_entries[static_cast<std::size_t>(k)] / seconds;
+  }
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
@@ -170,6 +178,10 @@ double CholmodSolver::update_flops(const std::vector<Index>& rows) {
   return 4.0 * s.path_entries[static_cast<std::size_t>(k)];
 }
 
+double CholmodSolver::row_modification_flops(Index k) {
+  return 2.0 * update_flops({k});
+}
+
 double CholmodSolver::predicted_update_seconds(double flops) const {
   return flops / impl_->update_flop_rate;
 }
@@ -184,6 +196,83 @@ double CholmodSolver::last_factorization_seconds() const {
   return impl_->factorization_seconds;
 }
 
+void CholmodSolver::Impl::to_ldl() {
+  if (!factor->is_super && !factor->is_ll) return;
+  // CHOLMOD modifies simplicial L D L^T factors only. No spare room in the columns (CHOLMOD's
+  // default adds 20 % and 5 entries): updates by the node blocks of H add no fill, and a
+  // column that does need room is moved by CHOLMOD itself.
+  const auto start = std::chrono::steady_clock::now();
+  common.grow0 = 1.0;
+  common.grow1 = 1.0;
+  common.grow2 = 0;
+  cholmod_l_change_factor(CHOLMOD_REAL, 0, 0, 0, 1, factor, &common);
+  check_cholmod(common, "update");
+  conversion_seconds_per_entry =
+      seconds_since(start) / std::max(1.0, static_cast<double>(common.lnz));
+}
+
+// Every pivot of the L D L^T factor positive: CHOLMOD's modifications can leave a factor
+// indefinite without a word where rounding makes the modified matrix so (in exact arithmetic it
+// is positive definite), which no later solve would notice.
+bool CholmodSolver::Impl::pivots_positive() const {
+  const auto* lp = static_cast<const detail::CholmodInt*>(factor->p);
+  const auto* lx = static_cast<const double*>(factor->x);
+  for (Index k = 0; k < n; ++k)
+    if (!(lx[lp[k]] > 0.0)) return false;
+  return true;
+}
+
+bool CholmodSolver::delete_row(Index k) {
+  Impl& s = *impl_;
+  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
+    throw NumericalError("CHOLMOD: delete_row() before factorize()");
+  if (k < 0 || k >= s.n) throw NumericalError("CHOLMOD: delete_row() of a row out of range");
+  ScopedTimer timer(timings_, "linear factor update");
+  s.tree();
+  s.to_ldl();
+  const auto kp = s.inverse_perm[static_cast<std::size_t>(k)];
+  const auto start = std::chrono::steady_clock::now();
+  const int ok = cholmod_l_rowdel(static_cast<std::size_t>(kp), nullptr, s.factor, &s.common);
+  s.measured_row_modification(kp, seconds_since(start));
+  return ok != 0 && s.common.status >= CHOLMOD_OK && s.pivots_positive();
+}
+
+bool CholmodSolver::add_row(Index k, const std::vector<std::pair<Index, double>>& column) {
+  Impl& s = *impl_;
+  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
+    throw NumericalError("CHOLMOD: add_row() before factorize()");
+  if (k < 0 || k >= s.n) throw NumericalError("CHOLMOD: add_row() of a row out of range");
+  ScopedTimer timer(timings_, "linear factor update");
+  s.tree();
+  s.to_ldl();
+  // The column in the factor's (permuted) order, sorted, as an n x 1 CHOLMOD matrix.
+  std::vector<std::pair<detail::CholmodInt, double>> permuted;
+  permuted.reserve(column.size());
+  for (const auto& [row, value] : column) {
+    if (row < 0 || row >= s.n) throw NumericalError("CHOLMOD: add_row() with a row out of range");
+    permuted.emplace_back(s.inverse_perm[static_cast<std::size_t>(row)], value);
+  }
+  std::sort(permuted.begin(), permuted.end());
+  cholmod_sparse* R = cholmod_l_allocate_sparse(static_cast<std::size_t>(s.n), 1, permuted.size(),
+                                                1, 1, 0, CHOLMOD_REAL, &s.common);
+  check_cholmod(s.common, "update");
+  auto* rp = static_cast<detail::CholmodInt*>(R->p);
+  auto* ri = static_cast<detail::CholmodInt*>(R->i);
+  auto* rx = static_cast<double*>(R->x);
+  rp[0] = 0;
+  rp[1] = static_cast<detail::CholmodInt>(permuted.size());
+  for (std::size_t q = 0; q < permuted.size(); ++q) {
+    ri[q] = permuted[q].first;
+    rx[q] = permuted[q].second;
+  }
+  const auto kp = s.inverse_perm[static_cast<std::size_t>(k)];
+  const auto start = std::chrono::steady_clock::now();
+  const int ok = cholmod_l_rowadd(static_cast<std::size_t>(kp), R, s.factor, &s.common);
+  s.measured_row_modification(kp, seconds_since(start));
+  cholmod_l_free_sparse(&R, &s.common);
+  return ok != 0 && s.common.status >= CHOLMOD_OK && s.pivots_positive();
+}
+
 bool CholmodSolver::update(const SparseMatrix& C, bool up) {
   Impl& s = *impl_;
   if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
@@ -192,19 +281,7 @@ bool CholmodSolver::update(const SparseMatrix& C, bool up) {
   if (C.cols() == 0) return true;
   ScopedTimer timer(timings_, "linear factor update");
   s.tree();
-  if (s.factor->is_super || s.factor->is_ll) {
-    // CHOLMOD updates simplicial L D L^T factors only. No spare room in the columns (CHOLMOD's
-    // default adds 20 % and 5 entries): updates by the node blocks of H add no fill, and a
-    // column that does need room is moved by CHOLMOD itself.
-    const auto start = std::chrono::steady_clock::now();
-    s.common.grow0 = 1.0;
-    s.common.grow1 = 1.0;
-    s.common.grow2 = 0;
-    cholmod_l_change_factor(CHOLMOD_REAL, 0, 0, 0, 1, s.factor, &s.common);
-    check_cholmod(s.common, "update");
-    s.conversion_seconds_per_entry =
-        seconds_since(start) / std::max(1.0, static_cast<double>(s.common.lnz));
-  }
+  s.to_ldl();
   // CHOLMOD takes C's rows in the factor's (permuted) order, sorted within each column.
   cholmod_sparse* Cp = cholmod_l_allocate_sparse(
       static_cast<std::size_t>(s.n), static_cast<std::size_t>(C.cols()),

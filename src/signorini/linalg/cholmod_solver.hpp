@@ -4,6 +4,7 @@
 // analyze() and reused by every factorize() of a matrix with that pattern.
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "signorini/linalg/linear_solver.hpp"
@@ -38,6 +39,22 @@ class CholmodSolver final : public LinearSolver {
   /// Returns false, leaving no usable factor, when a downdate meets a matrix that is not
   /// numerically positive definite: the caller refactorises.
   bool update(const SparseMatrix& C, bool up);
+
+  /// Replaces the factor of H by that of H with row and column k set to the identity's (the
+  /// unknown k fixed: H x = b then gives x_k = b_k and couples it to nothing), by CHOLMOD's row
+  /// deletion (cholmod_rowdel, a rank-two modification; Davis and Hager's row modifications).
+  /// Converts the factor to L D L^T as update() does. Returns false, leaving no usable factor,
+  /// where the factor becomes indefinite (then the caller refactorises).
+  bool delete_row(Index k);
+  /// The reverse of delete_row(): row and column k of the factored matrix must be the
+  /// identity's; they become `column` (the entries (i, H_ik) of the new column k, in H's own
+  /// order, the diagonal included; rows that are the identity's must have no entry), by
+  /// cholmod_rowadd. Returns false as update() does.
+  bool add_row(Index k, const std::vector<std::pair<Index, double>>& column);
+
+  /// Estimated flops of delete_row(k) or add_row(k, ...): a rank-two change, twice
+  /// update_flops({k}).
+  [[nodiscard]] double row_modification_flops(Index k);
 
   /// Seconds that update() is expected to take for updates of these estimated flops, at the
   /// rate of this solver's last update (or this project's machine's before any).
