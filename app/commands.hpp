@@ -67,6 +67,10 @@ struct BenchArguments {
 /// `signorini bench`: the paper's benchmark on several meshes and solver configurations.
 int run_bench(const BenchArguments& args);
 
+/// The whole tool: parses the command line, runs the command, returns the exit status (errors
+/// are one line on stderr). main.cpp and mpi_main.cpp call it.
+int run_tool(int argc, char** argv);
+
 /// `signorini solve`: returns kSuccess or kNotConverged; throws InputError or NumericalError.
 int run_solve(const SolveArguments& args);
 

@@ -14,6 +14,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/io/result_writer.hpp"
 #include "signorini/io/summary_json.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/problem/resultants.hpp"
 #include "timing_report.hpp"
 
@@ -52,12 +53,17 @@ int failed_plot(Progress& progress, const PlotRun& run) {
 }
 
 int solve(const SolveArguments& args, LogFormat format) {
+  // On several MPI ranks (docs/distributed.md) every rank reads the problem and builds the model
+  // and takes part in the solve; rank 0 alone reports and writes (the others' stdout goes
+  // nowhere: mpi_main.cpp).
+  const DistributedEngine* engine = distributed_engine();
+  const bool root = engine == nullptr || engine->rank() == 0;
   LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
   ProblemSpec& spec = loaded.spec;
-  print_warnings(loaded);
+  if (root) print_warnings(loaded);
 
   Progress::Options options;
-  options.quiet = args.quiet;
+  options.quiet = args.quiet || !root;
   options.format = format;
   options.terminal = format == LogFormat::Text && Progress::is_terminal(stdout);
   Progress progress(spec.solver.method, options);
@@ -91,7 +97,19 @@ int solve(const SolveArguments& args, LogFormat format) {
                    {"n_contact_nodes", model.problem.contact.size()}});
   // Before the solve, so that an unusable -o fails in a second and not after a long run. The
   // files themselves are written only once the solve is over.
-  create_output_folder(args.output_dir);
+  // Rank 0 makes it, and every rank learns whether that failed, so that none waits for the
+  // others in the solve.
+  std::string folder_error;
+  if (root) {
+    try {
+      create_output_folder(args.output_dir);
+    } catch (const InputError& e) {
+      folder_error = e.what();
+    }
+  }
+  if (engine != nullptr && engine->any(!folder_error.empty()))
+    throw InputError(root ? folder_error : "the output folder (rank 0 says why)");
+  if (!folder_error.empty()) throw InputError(folder_error);
 
   progress.phase("contact solve");
   ContactSolverOptions solver = model.solver;  // the path planned from the problem's size
@@ -112,6 +130,7 @@ int solve(const SolveArguments& args, LogFormat format) {
         event);
   }
 
+  if (!root) return summary.converged() ? kSuccess : kNotConverged;
   progress.phase("writing the results");
   write_results(args.output_dir, result, model, spec, resultants);
   progress.report(fmt::format("results: {}\n", listed(args.output_dir, kResultFiles)),

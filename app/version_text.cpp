@@ -39,6 +39,14 @@ std::string version_text() {
                        g.multiprocessors);
     if (cuda.gpus.empty()) s += fmt::format("    no usable GPU: {}\n", cuda.problem);
   }
+  // The distributed engine lives in signorini-mpi (docs/distributed.md); this program says
+  // whether the build made it, and which PETSc.
+#ifdef SIGNORINI_PETSC_VERSION
+  s += fmt::format("  PETSc: {} (signorini-mpi; mpirun -n N signorini solve ...)\n",
+                   SIGNORINI_PETSC_VERSION);
+#else
+  s += "  PETSc: not built\n";
+#endif
   return s;
 }
 

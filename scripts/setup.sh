@@ -15,6 +15,9 @@ packages=(
   # The gmsh program (never linked: GPL) meshes a .geo given as [mesh] file, and a test checks
   # that it does; the .msh files of the examples and tests are committed, made by it.
   gmsh
+  # PETSc with Open MPI (and hypre, MUMPS, PT-Scotch): the distributed engine and signorini-mpi
+  # (docs/distributed.md), and the PETSc peer of the benchmarks (python3-petsc4py).
+  petsc-dev python3-petsc4py
 )
 
 missing=()

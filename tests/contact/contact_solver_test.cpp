@@ -32,6 +32,9 @@ ContactSolverOptions options_for(SolvePath path) {
       o.linear.preconditioner = PreconditionerType::Multigrid;
       o.linear.cg_tolerance = 1e-14;
       break;
+    case SolvePath::Distributed:  // needs a PETSc engine: tests/petsc/
+      o.distributed = DistributedMode::Petsc;
+      break;
   }
   return o;
 }

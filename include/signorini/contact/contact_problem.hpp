@@ -12,6 +12,12 @@ struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
   Vector b;        ///< load vector
   ContactSet contact;
+  /// Optional aids for a distributed solve (docs/distributed.md), empty unless build_model plans
+  /// one: the near-null space of A for algebraic multigrid (the rigid-body modes on the free
+  /// dofs, n x 3 in 2D, n x 6 in 3D), and the mesh node of each free dof, so that the dofs of a
+  /// node stay on one rank.
+  Matrix near_null_space = {};
+  std::vector<Index> node_of_unknown = {};
 };
 
 }  // namespace signorini

@@ -36,6 +36,16 @@ inline constexpr EnumNames<InnerTolerance, 3> kInnerToleranceNames{{
     {InnerTolerance::Adaptive, "adaptive"},
 }};
 
+/// Whether the solve runs distributed over MPI ranks through PETSc
+/// (ContactSolverOptions::distributed, docs/distributed.md).
+enum class DistributedMode { Auto, Petsc, Off };
+
+inline constexpr EnumNames<DistributedMode, 3> kDistributedModeNames{{
+    {DistributedMode::Auto, "auto"},
+    {DistributedMode::Petsc, "petsc"},
+    {DistributedMode::Off, "off"},
+}};
+
 /// Reported to ContactSolverOptions::observer as the solver goes, for progress logs.
 struct IterationEvent {
   enum class Kind { Inner, Outer };
@@ -119,6 +129,14 @@ struct ContactSolverOptions {
   /// for 3D problems above 15,000 free unknowns or a factor that would not fit, and the sparse
   /// direct path when the condensed matrix would not fit. false: exactly as configured.
   bool automatic_path = true;
+  /// Auto: the PETSc path (docs/distributed.md) where the tool runs on more than one MPI rank
+  /// (a build with PETSc, started by mpirun), the serial paths otherwise. Petsc: the PETSc path
+  /// even on one rank (an InputError where no PETSc engine is registered). Off: never (an
+  /// InputError on more than one rank).
+  DistributedMode distributed = DistributedMode::Auto;
+  /// Options for PETSc's database on the PETSc path ("-ksp_monitor -pc_gamg_threshold 0.02"):
+  /// they apply to the Newton systems' KSP after signorini's own choices, for experts.
+  std::string petsc_options;
   /// The contact law (contact_law.hpp): null for the paper's frictionless unilateral law. The
   /// Uzawa-GNM and classical Uzawa methods take any law; semismooth Newton only the unilateral
   /// one. Not owned; it must outlive the solve.

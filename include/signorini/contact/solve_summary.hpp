@@ -73,13 +73,17 @@ enum class SolvePath {
   Iterative,
   /// Vectors and PCG on a backend (the CPU backend or a GPU, docs/gpu.md).
   Backend,
+  /// Distributed over MPI ranks: PETSc matrices, vectors and Krylov solvers
+  /// (docs/distributed.md).
+  Distributed,
 };
 
-inline constexpr EnumNames<SolvePath, 4> kSolvePathNames{{
+inline constexpr EnumNames<SolvePath, 5> kSolvePathNames{{
     {SolvePath::CondensedDirect, "condensed_direct"},
     {SolvePath::SparseDirect, "sparse_direct"},
     {SolvePath::Iterative, "iterative"},
     {SolvePath::Backend, "backend"},
+    {SolvePath::Distributed, "distributed"},
 }};
 
 struct SolveSummary {
@@ -90,6 +94,8 @@ struct SolveSummary {
   /// Threads the host solve ran on: 2 when the condensation factorised two parts at once
   /// (ContactSolverOptions::threads), 1 otherwise (the backend path says its own in `device`).
   int threads = 1;
+  /// MPI ranks that took part in the solve (1 unless the path is distributed).
+  int ranks = 1;
   bool warm_started = false;  ///< started from an earlier solution (ContactSolver::warm_start)
   Termination termination = Termination::Converged;
   std::string message;                 ///< one line: why it stopped, with the residuals

@@ -29,6 +29,13 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
 /// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
 /// uses_backend_path(options).
 /// `multigrid`: the levels when the preconditioner is multigrid (null otherwise).
+/// Uzawa-GNM on the registered distributed engine (parallel/distributed_engine.hpp): the same
+/// loop, its vectors and Newton systems PETSc's, spread over the MPI ranks; u gathered on every
+/// rank.
+ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
+                                          const ContactSolverOptions& options,
+                                          const MethodStart& start);
+
 ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
                                          const ContactSolverOptions& options,
                                          const MethodStart& start = {},

@@ -14,6 +14,7 @@
 #include "signorini/contact/kkt_residuals.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -125,6 +126,7 @@ struct ContactSolver::Impl {
 namespace {
 
 SolvePath choose_path(const ContactSolverOptions& o) {
+  if (distributed_path(o)) return SolvePath::Distributed;
   if (uses_backend_path(o)) return SolvePath::Backend;
   if (o.schur_complement && o.linear.type == LinearSolverType::Cholmod)
     return SolvePath::CondensedDirect;
@@ -150,6 +152,11 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
   m.path = choose_path(m.options);
+  if (m.path == SolvePath::Distributed && m.options.method != ContactMethod::UzawaGnm)
+    throw InputError(
+        fmt::format("solver.method = \"{}\": the distributed path runs \"uzawa_gnm\" only so far "
+                    "(docs/distributed.md)",
+                    enum_to_string(kContactMethodNames, m.options.method)));
   m.multigrid = multigrid;
   if (m.path == SolvePath::CondensedDirect) {
     ScopedTimer timer(m.setup_timings, "contact solve");
@@ -215,6 +222,9 @@ ContactResult ContactSolver::solve() {
     TimingTable solve_time;
     ScopedTimer timer(solve_time, "contact solve");
     switch (m.path) {
+      case SolvePath::Distributed:
+        result = solve_uzawa_gnm_distributed(problem, options, start);
+        break;
       case SolvePath::Backend:
         result = options.method == ContactMethod::SemismoothNewton
                      ? solve_semismooth_newton_on_backend(problem, options, start, m.multigrid)

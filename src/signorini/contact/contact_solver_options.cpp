@@ -87,6 +87,15 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
               "above 15,000 free unknowns or a sparse factor that would not fit, and the sparse "
               "direct path when the condensed matrix would not fit; the summary says which and "
               "why ([solvers.md](solvers.md)). `false`: exactly as configured");
+    t.choice("distributed", &O::distributed, kDistributedModeNames,
+             "`\"auto\"`: solve through PETSc on every MPI rank when the tool runs on more than "
+             "one (`mpirun -n N signorini solve ...`), serially otherwise; `\"petsc\"`: the "
+             "PETSc path even on one rank; `\"off\"`: never (an error under mpirun with more "
+             "than one rank). Needs a build with PETSc ([distributed.md](distributed.md))");
+    t.text("petsc_options", &O::petsc_options,
+           "options for PETSc's database on the PETSc path, applied to the Newton systems' "
+           "solver after signorini's own (`\"-ksp_monitor -pc_gamg_threshold 0.02\"`); empty: "
+           "none");
     t.choice("device", &O::device, kDeviceKindNames,
              "where the solve runs; `\"cuda\"`: the whole Uzawa–GNM loop on an NVIDIA GPU, with "
              "`[solver.linear] type = \"cg\"` ([gpu.md](gpu.md))");

@@ -102,6 +102,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   j["path"] = std::string(enum_to_string(kSolvePathNames, summary.path));
   if (!summary.path_reason.empty()) j["path_reason"] = summary.path_reason;
   j["threads"] = summary.threads;
+  j["ranks"] = summary.ranks;
   j["warm_started"] = summary.warm_started;
   j["M"] = summary.lagrangian;
   j["energy"] = summary.energy;

@@ -12,8 +12,10 @@
 #include "signorini/fem/free_rigid_motions.hpp"
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/node_ordering.hpp"
+#include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
 #include "signorini/problem/solver_plan.hpp"
 
@@ -309,8 +311,13 @@ Model build_model(const ProblemSpec& spec) {
                                            problem.contact.size(), physical_memory_bytes()});
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = plan.options.linear;
-  if (linear.type == LinearSolverType::ConjugateGradient &&
-      linear.preconditioner == PreconditionerType::Multigrid) {
+  if (distributed_path(plan.options)) {
+    // PETSc's algebraic multigrid builds its own levels from the rigid-body modes, and the
+    // partition keeps each node's dofs on one rank (docs/distributed.md).
+    problem.near_null_space = rigid_body_modes(mesh, dofs);
+    problem.node_of_unknown = free_dof_nodes(dofs);
+  } else if (linear.type == LinearSolverType::ConjugateGradient &&
+             linear.preconditioner == PreconditionerType::Multigrid) {
     ScopedTimer t(timings, "multigrid hierarchy");
     // (The plan changes neither the coarsening nor the smoother, which the hierarchy reads from
     // the spec.)

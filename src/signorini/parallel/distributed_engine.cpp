@@ -1,0 +1,44 @@
+#include "signorini/parallel/distributed_engine.hpp"
+
+#include <fmt/format.h>
+
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+namespace {
+DistributedEngine* registered = nullptr;
+}  // namespace
+
+DistributedEngine* distributed_engine() {
+  return registered;
+}
+
+void set_distributed_engine(DistributedEngine* engine) {
+  registered = engine;
+}
+
+bool distributed_path(const ContactSolverOptions& options) {
+  const DistributedEngine* engine = registered;
+  switch (options.distributed) {
+    case DistributedMode::Petsc:
+      if (engine == nullptr)
+        throw InputError(
+            "solver.distributed = \"petsc\": this program has no PETSc engine; run signorini "
+            "from a build with PETSc (the tool re-runs itself as signorini-mpi under mpirun; "
+            "docs/distributed.md)");
+      return true;
+    case DistributedMode::Off:
+      if (engine != nullptr && engine->size() > 1)
+        throw InputError(fmt::format(
+            "solver.distributed = \"off\" on {} MPI ranks: each rank would solve the whole "
+            "problem alone; run without mpirun, or remove solver.distributed",
+            engine->size()));
+      return false;
+    case DistributedMode::Auto:
+      break;
+  }
+  return engine != nullptr && engine->size() > 1;
+}
+
+}  // namespace signorini

@@ -1,0 +1,59 @@
+#pragma once
+// The seam between the serial library and a distributed one (docs/distributed.md). The library
+// itself passes no messages: a build with PETSc adds the engine of src/signorini/petsc/ (the
+// signorini_petsc library, linked by the signorini-mpi tool and its tests), which registers
+// itself here once MPI and PETSc are initialised. The solver asks distributed_engine() whether
+// to take the distributed path; the one Uzawa-GNM loop (uzawa_iteration.cpp,
+// generalized_newton.cpp) then runs on the engine's NewtonSpace, whose vectors and matrices are
+// PETSc's, spread over the ranks. Every rank runs the loop on the same replicated contact-node
+// values (n_c numbers) and the same global reductions, so every rank takes the same decisions.
+
+#include <memory>
+#include <string>
+
+#include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/contact_solver_options.hpp"
+#include "signorini/contact/newton_space.hpp"
+#include "signorini/core/timing_table.hpp"
+
+namespace signorini {
+
+/// A NewtonSpace whose vectors are distributed; the solution can be gathered on every rank.
+class DistributedNewtonSpace : public NewtonSpace {
+ public:
+  /// x on every rank, in the problem's numbering of the free dofs.
+  [[nodiscard]] virtual Vector gathered_solution() = 0;
+  /// How the Newton systems are solved ("CG with GAMG (6 rigid-body modes)").
+  [[nodiscard]] virtual std::string linear_solver_description() const = 0;
+};
+
+class DistributedEngine {
+ public:
+  virtual ~DistributedEngine() = default;
+  [[nodiscard]] virtual int rank() const = 0;
+  [[nodiscard]] virtual int size() const = 0;
+  /// "PETSc 3.18.5 on 2 MPI ranks".
+  [[nodiscard]] virtual std::string description() const = 0;
+  /// The Newton space of `problem` (which every rank holds whole; each keeps only its rows of
+  /// A), starting at x0 (timed in `timings`).
+  [[nodiscard]] virtual std::unique_ptr<DistributedNewtonSpace> newton_space(
+      const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
+      TimingTable& timings) = 0;
+  /// True on every rank when `flag` is true on any (a collective call).
+  [[nodiscard]] virtual bool any(bool flag) const = 0;
+  /// Ends every rank's process with this exit status (a collective abort: a rank that fails
+  /// alone stops the others).
+  [[noreturn]] virtual void abort(int status) const = 0;
+};
+
+/// The registered engine, or null (a serial build or tool).
+[[nodiscard]] DistributedEngine* distributed_engine();
+/// Registers (or, with null, removes) the engine; not owned, it must outlive its use.
+void set_distributed_engine(DistributedEngine* engine);
+
+/// Whether a solve with these options takes the distributed path: `distributed` = "petsc", or
+/// "auto" with an engine of more than one rank. Throws InputError for "petsc" without an engine
+/// and for "off" on more than one rank.
+[[nodiscard]] bool distributed_path(const ContactSolverOptions& options);
+
+}  // namespace signorini

@@ -1,0 +1,34 @@
+#pragma once
+// The distributed engine of a build with PETSc (parallel/distributed_engine.hpp,
+// docs/distributed.md): initialises MPI and PETSc, registers itself for the solver, and finalises
+// them when it goes. One per process, made by the main() of signorini-mpi and of the MPI tests.
+
+#include "signorini/parallel/distributed_engine.hpp"
+
+namespace signorini {
+
+class PetscEngine final : public DistributedEngine {
+ public:
+  /// PetscInitialize (MPI_Init through it) without the command line: PETSc's own options come
+  /// from solver.petsc_options or the PETSC_OPTIONS variable. Registers the engine.
+  PetscEngine();
+  /// Unregisters and finalises PETSc and MPI.
+  ~PetscEngine() override;
+  PetscEngine(const PetscEngine&) = delete;
+  PetscEngine& operator=(const PetscEngine&) = delete;
+
+  [[nodiscard]] int rank() const override { return rank_; }
+  [[nodiscard]] int size() const override { return size_; }
+  [[nodiscard]] std::string description() const override;
+  [[nodiscard]] std::unique_ptr<DistributedNewtonSpace> newton_space(
+      const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
+      TimingTable& timings) override;
+  [[nodiscard]] bool any(bool flag) const override;
+  [[noreturn]] void abort(int status) const override;
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+}  // namespace signorini

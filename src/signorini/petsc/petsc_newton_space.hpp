@@ -1,0 +1,75 @@
+#pragma once
+// The GNM vectors and Newton systems of Uzawa-GNM on PETSc objects spread over the MPI ranks
+// (docs/distributed.md): A and H(P) = A + r N^T diag(h on P) N as MPIAIJ matrices, each rank
+// owning one contiguous range of rows (row_partition.hpp); x, A x - b and the Newton direction as
+// MPI vectors; the Newton systems solved by a KSP (CG with GAMG on the rigid-body modes, CG with
+// Jacobi, or MUMPS's distributed Cholesky factorisation, from the same options as the serial
+// paths). The contact-node values (N x, N d: n_c numbers) are summed over the ranks, so that
+// every rank holds them all and runs the same loop; dot products and norms are PETSc's global
+// reductions.
+
+#include <petscksp.h>
+
+#include <vector>
+
+#include "signorini/parallel/distributed_engine.hpp"
+
+namespace signorini {
+
+class PetscNewtonSpace final : public DistributedNewtonSpace {
+ public:
+  /// Takes this rank's rows of problem.A and problem.b, starts at x0 (every rank holds the whole
+  /// problem and x0), sets the KSP up (timed in `timings`).
+  PetscNewtonSpace(const ContactProblem& problem, const ContactSolverOptions& options,
+                   const Vector& x0, TimingTable& timings, MPI_Comm comm);
+  ~PetscNewtonSpace() override;
+  PetscNewtonSpace(const PetscNewtonSpace&) = delete;
+  PetscNewtonSpace& operator=(const PetscNewtonSpace&) = delete;
+
+  [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
+  void set_active(const ActiveSet& active, double r) override;
+  NewtonSolveStats solve(const Vector& terms) override;
+  void set_linear_tolerance(double tolerance) override { linear_tolerance_ = tolerance; }
+  void direction(ModifiedLagrangian::Direction& dir) override;
+  void step(double t) override;
+  NewtonStepNorms norms(const Vector& contact_forces) override;
+  [[nodiscard]] int factorizations() const override { return refreshes_; }
+
+  [[nodiscard]] Vector gathered_solution() override;
+  [[nodiscard]] std::string linear_solver_description() const override { return description_; }
+
+  /// The first row of each rank's range, and the number of rows (ranks + 1 numbers).
+  [[nodiscard]] const std::vector<Index>& row_starts() const { return starts_; }
+
+ private:
+  struct ContactRow {
+    Index j;                     // contact node
+    std::vector<PetscInt> dofs;  // global rows of its dofs (all on this rank)
+    std::vector<double> normal;  // its row of N on them
+  };
+  Vector contact_values_of(Vec v);
+  void add_contact_transpose(const Vector& values, Vec v);  // v += N^T values
+  void set_up_solver();
+
+  const ContactProblem& p_;
+  const ContactSolverOptions& o_;
+  TimingTable& timings_;
+  MPI_Comm comm_;
+  Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;
+  std::vector<Index> starts_;
+  std::vector<ContactRow> rows_;  // the contact rows whose dofs this rank owns
+  Mat A_ = nullptr, H_ = nullptr;
+  Vec b_ = nullptr, x_ = nullptr, x_new_ = nullptr, residual_ = nullptr, d_ = nullptr,
+      Ad_ = nullptr, work_ = nullptr;
+  KSP ksp_ = nullptr;
+  bool direct_ = false;
+  std::string description_;
+  ActiveSet active_;
+  bool has_active_ = false;
+  Vector Nx_;
+  double last_t_ = 1.0;
+  double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance
+  int refreshes_ = 0;
+};
+
+}  // namespace signorini

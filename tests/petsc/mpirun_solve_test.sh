@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# The tool under mpirun (docs/distributed.md): `mpirun -n 2 signorini solve` on the paper's
+# problem and on the 3D example gives the serial answer (the same Uzawa steps, energies to 1e-10,
+# contact pressures and displacements to 1e-8), written once by rank 0; bad input stops every
+# rank with one message, exit status 2, and leaves earlier results as they were.
+#   mpirun_solve_test.sh SIGNORINI MPIRUN EXAMPLES_DIR
+set -euo pipefail
+tool=$1
+mpirun=$2
+examples=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+run_mpi() { "$mpirun" --allow-run-as-root --oversubscribe -n 2 "$tool" "$@"; }
+
+compare() {  # serial folder, distributed folder
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import csv, json, sys
+serial, mpi = (json.load(open(f"{d}/summary.json")) for d in sys.argv[1:3])
+assert mpi["path"] == "distributed", mpi["path"]
+assert mpi["ranks"] == 2, mpi["ranks"]
+assert serial["ranks"] == 1, serial["ranks"]
+assert mpi["converged"] and serial["converged"]
+assert mpi["uzawa_iterations"] == serial["uzawa_iterations"], (mpi["uzawa_iterations"], serial["uzawa_iterations"])
+rel = abs(mpi["energy"] - serial["energy"]) / abs(serial["energy"])
+assert rel < 1e-10, f"energies differ by {rel:.2e}"
+def rows(d):
+    with open(f"{d}/contact.csv") as f:
+        return list(csv.DictReader(f))
+a, b = rows(sys.argv[1]), rows(sys.argv[2])
+assert len(a) == len(b) and len(a) > 0
+for key in ("pressure", "u_n"):
+    scale = max(abs(float(r[key])) for r in a)
+    worst = max(abs(float(r[key]) - float(s[key])) for r, s in zip(a, b))
+    assert worst <= 1e-8 * scale, f"{key} differs by {worst:.2e} of {scale:.2e}"
+print(f"ok: {mpi['uzawa_iterations']} Uzawa steps, energies within {rel:.1e}; {mpi['device']}")
+PY
+}
+
+"$tool" solve "$examples/paper.toml" -q -o "$tmp/paper_serial" --set mesh.nx=120 --set mesh.ny=40
+run_mpi solve "$examples/paper.toml" -q -o "$tmp/paper_mpi" --set mesh.nx=120 --set mesh.ny=40
+compare "$tmp/paper_serial" "$tmp/paper_mpi"
+
+"$tool" solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_serial"
+run_mpi solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi"
+compare "$tmp/box_serial" "$tmp/box_mpi"
+
+# Bad input: one message from rank 0, status 2, the earlier results untouched.
+before=$(md5sum "$tmp/paper_mpi/summary.json")
+status=0
+run_mpi solve "$examples/paper.toml" -q -o "$tmp/paper_mpi" --set material.E=-1 \
+  2> "$tmp/stderr" || status=$?
+[ "$status" -eq 2 ] || { echo "bad input: exit status $status, expected 2"; cat "$tmp/stderr"; exit 1; }
+lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
+[ "$lines" -eq 1 ] || { echo "bad input: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }
+grep -q "material.E" "$tmp/stderr" || { echo "the message does not name the key"; cat "$tmp/stderr"; exit 1; }
+[ "$before" = "$(md5sum "$tmp/paper_mpi/summary.json")" ] || { echo "earlier results changed"; exit 1; }
+echo "ok: bad input under mpirun"
+
+# An output folder that rank 0 cannot make: every rank stops before the solve, one message.
+status=0
+run_mpi solve "$examples/paper.toml" -q -o /proc/no-such-folder 2> "$tmp/stderr" || status=$?
+[ "$status" -eq 2 ] || { echo "unusable -o: exit status $status, expected 2"; cat "$tmp/stderr"; exit 1; }
+lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
+[ "$lines" -eq 1 ] || { echo "unusable -o: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }
+echo "ok: unusable output folder under mpirun"
