@@ -130,11 +130,17 @@ int solve(const SolveArguments& args, LogFormat format) {
         event);
   }
 
-  if (!root) return summary.converged() ? kSuccess : kNotConverged;
+  // (Every rank of a distributed solve writes its piece of solution.pvtu: write_results.)
   progress.phase("writing the results");
   write_results(args.output_dir, result, model, spec, resultants);
-  progress.report(fmt::format("results: {}\n", listed(args.output_dir, kResultFiles)),
-                  {{"event", "results"}, {"files", paths(args.output_dir, kResultFiles)}});
+  if (!root) return summary.converged() ? kSuccess : kNotConverged;
+  std::vector<std::string> files = kResultFiles;
+  if (summary.path == SolvePath::Distributed) {
+    files.emplace_back("solution.pvtu");  // and its pieces solution_<rank>.vtu
+    for (int r = 0; r < summary.ranks; ++r) files.push_back(fmt::format("solution_{}.vtu", r));
+  }
+  progress.report(fmt::format("results: {}\n", listed(args.output_dir, files)),
+                  {{"event", "results"}, {"files", paths(args.output_dir, files)}});
 
   if (!summary.converged()) {
     progress.suspend();

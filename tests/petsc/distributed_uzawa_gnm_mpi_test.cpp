@@ -104,10 +104,10 @@ TEST(DistributedUzawaGnm, PaperProblemWithJacobiMatchesTheSerialSolve) {
   expect_same_solve(distributed, serial);
 }
 
-TEST(DistributedUzawaGnm, OtherMethodsAreRefusedWithAMessage) {
+TEST(DistributedUzawaGnm, ClassicalUzawaIsRefusedWithAMessage) {
   ContactSolverOptions o;
   o.distributed = DistributedMode::Petsc;
-  o.method = ContactMethod::SemismoothNewton;
+  o.method = ContactMethod::ClassicalUzawa;
   try {
     (void)solve_contact(testing::paper_model(30).problem, o);
     FAIL() << "expected an InputError";

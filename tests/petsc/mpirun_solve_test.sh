@@ -40,9 +40,38 @@ PY
 run_mpi solve "$examples/paper.toml" -q -o "$tmp/paper_mpi" --set mesh.nx=120 --set mesh.ny=40
 compare "$tmp/paper_serial" "$tmp/paper_mpi"
 
+ssn=(--set mesh.nx=60 --set mesh.ny=20 --set solver.method='"semismooth_newton"')
+"$tool" solve "$examples/paper.toml" -q -o "$tmp/ssn_serial" "${ssn[@]}"
+run_mpi solve "$examples/paper.toml" -q -o "$tmp/ssn_mpi" "${ssn[@]}"
+compare "$tmp/ssn_serial" "$tmp/ssn_mpi"
+
 "$tool" solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_serial"
 run_mpi solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi"
 compare "$tmp/box_serial" "$tmp/box_mpi"
+
+# solution.pvtu: one piece per rank, the pieces' cells those of solution.vtu, each piece's
+# displacements those of solution.vtu at the same points (meshio, an independent reader).
+/usr/bin/python3 - "$tmp/box_mpi" <<'PY'
+import re, sys
+import meshio
+out = sys.argv[1]
+pvtu = open(f"{out}/solution.pvtu").read()
+pieces = re.findall(r'<Piece Source="([^"]+)"/>', pvtu)
+assert pieces == ["solution_0.vtu", "solution_1.vtu"], pieces
+whole = meshio.read(f"{out}/solution.vtu")
+at = {tuple(p): i for i, p in enumerate(whole.points.round(12))}
+cells = 0
+for name in pieces:
+    piece = meshio.read(f"{out}/{name}")
+    cells += sum(len(c.data) for c in piece.cells)
+    for k, p in enumerate(piece.points.round(12)):
+        i = at[tuple(p)]
+        for field in ("displacement", "contact_pressure", "von_mises"):
+            a, b = piece.point_data[field][k], whole.point_data[field][i]
+            assert (a == b).all(), (name, field, a, b)
+assert cells == sum(len(c.data) for c in whole.cells), cells
+print(f"ok: solution.pvtu, {len(pieces)} pieces, {cells} cells")
+PY
 
 # Bad input: one message from rank 0, status 2, the earlier results untouched.
 before=$(md5sum "$tmp/paper_mpi/summary.json")

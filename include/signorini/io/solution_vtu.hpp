@@ -4,6 +4,7 @@
 // contact boundary Gamma_K alone as line cells.
 
 #include <string>
+#include <vector>
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
@@ -23,6 +24,13 @@ namespace signorini {
 /// The last four are 0 off the contact boundary (never NaN), which contact_boundary tells apart.
 /// 2D only (throws InputError otherwise).
 std::string solution_vtu(const ContactResult& result, const Model& model);
+
+/// One piece of solution.vtu for a distributed run (docs/distributed.md): the given cells and the
+/// nodes they use, with the same arrays; `pvtu`, when not null, receives the solution.pvtu that
+/// names `pieces` (file names beside it).
+std::string solution_vtu_piece(const ContactResult& result, const Model& model,
+                               const std::vector<Index>& cells,
+                               const std::vector<std::string>& pieces, std::string* pvtu);
 
 /// contact.vtu: the contact nodes in the order of contact.csv, its facets as line cells, and the
 /// point data displacement, normal (nu_j, 3 components), normal_displacement (u . nu),

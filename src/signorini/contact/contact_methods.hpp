@@ -46,6 +46,12 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const MethodStart& start = {});
 /// semismooth_newton on a backend (projected CG, projected_active_set_solver.hpp), used when
 /// uses_backend_path(options).
+/// Semismooth Newton on the registered distributed engine: the same loop, its Newton steps
+/// solved by PETSc with the active normal displacements eliminated; u gathered on every rank.
+ContactResult solve_semismooth_newton_distributed(const ContactProblem& problem,
+                                                  const ContactSolverOptions& options,
+                                                  const MethodStart& start);
+
 ContactResult solve_semismooth_newton_on_backend(const ContactProblem& problem,
                                                  const ContactSolverOptions& options,
                                                  const MethodStart& start = {},

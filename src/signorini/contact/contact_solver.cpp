@@ -152,11 +152,10 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
   m.path = choose_path(m.options);
-  if (m.path == SolvePath::Distributed && m.options.method != ContactMethod::UzawaGnm)
+  if (m.path == SolvePath::Distributed && m.options.method == ContactMethod::ClassicalUzawa)
     throw InputError(
-        fmt::format("solver.method = \"{}\": the distributed path runs \"uzawa_gnm\" only so far "
-                    "(docs/distributed.md)",
-                    enum_to_string(kContactMethodNames, m.options.method)));
+        "solver.method = \"classical_uzawa\": the distributed path runs \"uzawa_gnm\" and "
+        "\"semismooth_newton\" (docs/distributed.md)");
   m.multigrid = multigrid;
   if (m.path == SolvePath::CondensedDirect) {
     ScopedTimer timer(m.setup_timings, "contact solve");
@@ -223,7 +222,9 @@ ContactResult ContactSolver::solve() {
     ScopedTimer timer(solve_time, "contact solve");
     switch (m.path) {
       case SolvePath::Distributed:
-        result = solve_uzawa_gnm_distributed(problem, options, start);
+        result = options.method == ContactMethod::SemismoothNewton
+                     ? solve_semismooth_newton_distributed(problem, options, start)
+                     : solve_uzawa_gnm_distributed(problem, options, start);
         break;
       case SolvePath::Backend:
         result = options.method == ContactMethod::SemismoothNewton

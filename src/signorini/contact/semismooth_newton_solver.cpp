@@ -32,6 +32,7 @@
 #include "signorini/linalg/cholmod_solver.hpp"
 #include "signorini/linalg/dense_storage.hpp"
 #include "signorini/linalg/linear_solver.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -363,6 +364,22 @@ ContactResult solve_semismooth_newton_on_backend(const ContactProblem& problem,
                                   multigrid, *backend, start.displacement(problem.A.rows()));
   run_semismooth_newton(problem, options, start.multipliers(problem.contact.size()), solver, out);
   record_backend(out.summary, *backend, solver.levels(), multigrid);
+  out.summary.timings.merge(timings);
+  return out;
+}
+
+ContactResult solve_semismooth_newton_distributed(const ContactProblem& problem,
+                                                  const ContactSolverOptions& options,
+                                                  const MethodStart& start) {
+  DistributedEngine* engine = distributed_engine();
+  if (engine == nullptr) throw InputError("the distributed path needs a PETSc engine");
+  ContactResult out;
+  TimingTable timings;
+  const std::unique_ptr<DistributedActiveSetSolver> solver =
+      engine->active_set_solver(problem, options, start.displacement(problem.A.rows()), timings);
+  run_semismooth_newton(problem, options, start.multipliers(problem.contact.size()), *solver, out);
+  out.summary.device = engine->description() + ", " + solver->linear_solver_description();
+  out.summary.ranks = engine->size();
   out.summary.timings.merge(timings);
   return out;
 }

@@ -106,12 +106,27 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 
 void write_files_atomically(
     const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
-  std::vector<std::unique_ptr<TemporaryFile>> temporaries;
-  temporaries.reserve(files.size());
-  for (const auto& [path, contents] : files) temporaries.push_back(write_temporary(path, contents));
+  StagedFiles staged;
+  for (const auto& [path, contents] : files) staged.add(path, contents);
+  staged.commit();
+}
+
+struct StagedFiles::Impl {
+  std::vector<std::pair<std::filesystem::path, std::unique_ptr<TemporaryFile>>> files;
+};
+
+StagedFiles::StagedFiles() : impl_(std::make_unique<Impl>()) {}
+StagedFiles::~StagedFiles() = default;
+
+void StagedFiles::add(const std::filesystem::path& path, const std::string& contents) {
+  impl_->files.emplace_back(path, write_temporary(path, contents));
+}
+
+void StagedFiles::commit() {
   // Only renames are left, which fail only if the folder changed under us since the temporaries
   // were created in it.
-  for (std::size_t i = 0; i < files.size(); ++i) rename_into_place(*temporaries[i], files[i].first);
+  for (auto& [path, tmp] : impl_->files) rename_into_place(*tmp, path);
+  impl_->files.clear();
 }
 
 }  // namespace signorini

@@ -5,6 +5,7 @@
 // results of an earlier run.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,5 +22,23 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 /// write_file_atomically.
 void write_files_atomically(
     const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+/// The two halves of write_files_atomically, for writers that must agree before any file is
+/// replaced (the ranks of a distributed run, docs/distributed.md): add() writes and flushes a
+/// temporary file (throwing as write_file_atomically), commit() renames them all; the
+/// temporaries not committed are removed when the object goes.
+class StagedFiles {
+ public:
+  StagedFiles();
+  ~StagedFiles();
+  StagedFiles(const StagedFiles&) = delete;
+  StagedFiles& operator=(const StagedFiles&) = delete;
+  void add(const std::filesystem::path& path, const std::string& contents);
+  void commit();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace signorini

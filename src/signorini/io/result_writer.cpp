@@ -1,10 +1,15 @@
 #include "signorini/io/result_writer.hpp"
 
+#include <fmt/format.h>
+
 #include "signorini/core/error.hpp"
+#include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/io/atomic_file.hpp"
 #include "signorini/io/contact_csv.hpp"
 #include "signorini/io/solution_vtu.hpp"
 #include "signorini/io/summary_json.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/parallel/row_partition.hpp"
 
 namespace signorini {
 
@@ -23,9 +28,84 @@ void write_results(const std::filesystem::path& outdir, const ContactResult& res
   write_results(outdir, result, model, spec, compute_resultants(model, result.u, result.l));
 }
 
+namespace {
+
+// The cells whose piece of solution.pvtu rank `rank` of `ranks` writes: those whose first node
+// with a free dof lies in the rank's range of the distributed solve (parallel/row_partition.hpp);
+// a cell with no free dof goes to rank 0.
+std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
+  const ContactProblem& p = model.problem;
+  const Index n = p.A.rows();
+  const std::vector<Index> starts = row_partition(n, ranks, p.node_of_unknown, p.contact.N);
+  const std::vector<Index> node_of = free_dof_nodes(model.dofs);
+  std::vector<int> owner(static_cast<std::size_t>(model.mesh.num_nodes()), -1);
+  int r = 0;
+  for (Index i = 0; i < n; ++i) {
+    while (i >= starts[static_cast<std::size_t>(r) + 1]) ++r;
+    const auto node = static_cast<std::size_t>(node_of[static_cast<std::size_t>(i)]);
+    if (owner[node] < 0) owner[node] = r;
+  }
+  std::vector<Index> cells;
+  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    int cell_owner = 0;
+    for (const Index k : model.mesh.cell(c))
+      if (owner[static_cast<std::size_t>(k)] >= 0) {
+        cell_owner = owner[static_cast<std::size_t>(k)];
+        break;
+      }
+    if (cell_owner == rank) cells.push_back(c);
+  }
+  return cells;
+}
+
+// A distributed run (docs/distributed.md): rank 0 writes summary.json, contact.csv, contact.vtu,
+// solution.vtu (whole, while every rank holds the whole model) and solution.pvtu; every rank
+// writes its piece solution_<rank>.vtu. Every rank stages its files first and the renames
+// follow only when all have, so that a failure on any rank leaves the earlier results whole.
+void write_distributed(const std::filesystem::path& outdir, const ContactResult& result,
+                       const Model& model, const ProblemSpec& spec, const Resultants& resultants,
+                       const DistributedEngine& engine) {
+  const int rank = engine.rank(), ranks = engine.size();
+  std::vector<std::string> pieces;
+  for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("solution_{}.vtu", r));
+  StagedFiles staged;
+  std::string error;
+  try {
+    std::string pvtu;
+    staged.add(outdir / pieces[static_cast<std::size_t>(rank)],
+               solution_vtu_piece(result, model, cells_of_rank(model, rank, ranks), pieces,
+                                  rank == 0 ? &pvtu : nullptr));
+    if (rank == 0) {
+      staged.add(outdir / "solution.pvtu", pvtu);
+      staged.add(outdir / "summary.json",
+                 summary_to_json(result, model, spec, resultants).dump(2) + "\n");
+      staged.add(outdir / "contact.csv", contact_csv(result, model));
+      staged.add(outdir / "solution.vtu", solution_vtu(result, model));
+      staged.add(outdir / "contact.vtu", contact_vtu(result, model));
+    }
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  if (engine.any(!error.empty())) {
+    if (!error.empty()) throw InputError(error);
+    throw InputError(fmt::format(
+        "another MPI rank could not write its piece of the results in '{}'; nothing was "
+        "replaced",
+        outdir.string()));
+  }
+  staged.commit();
+}
+
+}  // namespace
+
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec, const Resultants& resultants) {
   create_output_folder(outdir);
+  if (const DistributedEngine* engine = distributed_engine();
+      engine != nullptr && result.summary.path == SolvePath::Distributed) {
+    write_distributed(outdir, result, model, spec, resultants, *engine);
+    return;
+  }
   // Every content is made before any file is touched, and the files are replaced together: an
   // error leaves the results of an earlier run as they were, never a mix of old and new.
   std::vector<std::pair<std::filesystem::path, std::string>> files;

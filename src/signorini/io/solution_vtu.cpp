@@ -10,44 +10,77 @@ namespace signorini {
 
 namespace {
 
-// (u_x, u_y, u_z) per node (u_z = 0 in 2D), from the full node-major displacement.
-std::vector<double> displacement_xyz(const Vector& u_full, Index num_nodes, int dim) {
-  std::vector<double> out(static_cast<std::size_t>(3 * num_nodes), 0.0);
-  for (Index n = 0; n < num_nodes; ++n)
-    for (int k = 0; k < dim; ++k) out[static_cast<std::size_t>(3 * n + k)] = u_full(dim * n + k);
-  return out;
-}
-
 std::uint8_t flag(bool b) {
   return b ? std::uint8_t{1} : std::uint8_t{0};
 }
 
 }  // namespace
 
-std::string solution_vtu(const ContactResult& result, const Model& model) {
+namespace {
+
+// solution.vtu's content for the given cells (all: null), with the nodes that they use,
+// renumbered in increasing order (all nodes when all cells).
+VtuFile solution_file(const ContactResult& result, const Model& model,
+                      const std::vector<Index>* cells) {
   const Mesh& mesh = model.mesh;
   const Index n = mesh.num_nodes();
   const Vector u = model.dofs.expand(result.u);  // clamped dofs are 0
 
-  VtuFile vtu(mesh.coordinates());
-  std::vector<std::int32_t> region(static_cast<std::size_t>(mesh.num_cells()));
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    vtu.add_cell(mesh.cell_type(c), mesh.cell(c));
-    region[static_cast<std::size_t>(c)] = mesh.cell_region(c);
+  // The nodes of the piece and their numbers in it (-1: not in it).
+  std::vector<Index> point_of(static_cast<std::size_t>(n), -1);
+  std::vector<Index> nodes;
+  if (cells == nullptr) {
+    nodes.resize(static_cast<std::size_t>(n));
+    for (Index k = 0; k < n; ++k)
+      nodes[static_cast<std::size_t>(k)] = point_of[static_cast<std::size_t>(k)] = k;
+  } else {
+    std::vector<bool> used(static_cast<std::size_t>(n), false);
+    for (const Index c : *cells)
+      for (const Index k : mesh.cell(c)) used[static_cast<std::size_t>(k)] = true;
+    for (Index k = 0; k < n; ++k)
+      if (used[static_cast<std::size_t>(k)]) {
+        point_of[static_cast<std::size_t>(k)] = static_cast<Index>(nodes.size());
+        nodes.push_back(k);
+      }
+  }
+  const auto m = static_cast<Index>(nodes.size());
+  Eigen::MatrixXd points(mesh.dim(), m);
+  for (Index p = 0; p < m; ++p)
+    points.col(p) = mesh.coordinates().col(nodes[static_cast<std::size_t>(p)]);
+
+  VtuFile vtu(points);
+  const Index num_cells = cells == nullptr ? mesh.num_cells() : static_cast<Index>(cells->size());
+  std::vector<std::int32_t> region(static_cast<std::size_t>(num_cells));
+  std::vector<Index> renumbered;
+  for (Index i = 0; i < num_cells; ++i) {
+    const Index c = cells == nullptr ? i : (*cells)[static_cast<std::size_t>(i)];
+    renumbered.clear();
+    for (const Index k : mesh.cell(c)) renumbered.push_back(point_of[static_cast<std::size_t>(k)]);
+    vtu.add_cell(mesh.cell_type(c), renumbered);
+    region[static_cast<std::size_t>(i)] = mesh.cell_region(c);
   }
   // The region of each cell: its index in the mesh's region names (0: "", cells in no named
   // region; Gmsh's physical surfaces from 1 on, in the order of their tags).
   vtu.add_cell_data("region", region);
 
-  vtu.add_point_data("displacement", 3, displacement_xyz(u, n, mesh.dim()), {"X", "Y", "Z"});
+  const auto per_point = [&](int components, const auto& value_of) {
+    std::vector<double> out(static_cast<std::size_t>(components * m));
+    for (Index p = 0; p < m; ++p)
+      for (int i = 0; i < components; ++i)
+        out[static_cast<std::size_t>(components * p + i)] =
+            value_of(nodes[static_cast<std::size_t>(p)], i);
+    return out;
+  };
+  const int dim = mesh.dim();
+  vtu.add_point_data("displacement", 3,
+                     per_point(3, [&](Index k, int i) { return i < dim ? u(dim * k + i) : 0.0; }),
+                     {"X", "Y", "Z"});
 
-  const NodalStress stress = nodal_stress(mesh, model.elasticity, u);
-  std::vector<double> tensor(static_cast<std::size_t>(6 * n));  // YZ, XZ are 0 in 2D
-  for (Index k = 0; k < n; ++k)
-    for (int i = 0; i < 6; ++i) tensor[static_cast<std::size_t>(6 * k + i)] = stress.sigma(i, k);
-  vtu.add_point_data("stress", 6, tensor, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+  const NodalStress stress = nodal_stress(mesh, model.elasticity, u);  // YZ, XZ are 0 in 2D
+  vtu.add_point_data("stress", 6, per_point(6, [&](Index k, int i) { return stress.sigma(i, k); }),
+                     {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
   vtu.add_point_data("von_mises", 1,
-                     std::vector<double>(stress.von_mises.data(), stress.von_mises.data() + n));
+                     per_point(1, [&](Index k, int) { return stress.von_mises(k); }));
 
   const ContactSet& c = model.problem.contact;
   std::vector<double> pressure(static_cast<std::size_t>(n), 0.0);
@@ -61,10 +94,34 @@ std::string solution_vtu(const ContactResult& result, const Model& model) {
     active[node] = flag(result.l(j) > 0.0);  // as SolveSummary::num_active counts them
     on_boundary[node] = 1;
   }
-  vtu.add_point_data("contact_pressure", 1, pressure);
-  vtu.add_point_data("gap", 1, gap);
-  vtu.add_point_data("contact_active", active);
-  vtu.add_point_data("contact_boundary", on_boundary);
+  const auto bytes = [&](const std::vector<std::uint8_t>& all) {
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(m));
+    for (Index p = 0; p < m; ++p)
+      out[static_cast<std::size_t>(p)] =
+          all[static_cast<std::size_t>(nodes[static_cast<std::size_t>(p)])];
+    return out;
+  };
+  vtu.add_point_data("contact_pressure", 1, per_point(1, [&](Index k, int) {
+                       return pressure[static_cast<std::size_t>(k)];
+                     }));
+  vtu.add_point_data("gap", 1,
+                     per_point(1, [&](Index k, int) { return gap[static_cast<std::size_t>(k)]; }));
+  vtu.add_point_data("contact_active", bytes(active));
+  vtu.add_point_data("contact_boundary", bytes(on_boundary));
+  return vtu;
+}
+
+}  // namespace
+
+std::string solution_vtu(const ContactResult& result, const Model& model) {
+  return solution_file(result, model, nullptr).take_text();
+}
+
+std::string solution_vtu_piece(const ContactResult& result, const Model& model,
+                               const std::vector<Index>& cells,
+                               const std::vector<std::string>& pieces, std::string* pvtu) {
+  VtuFile vtu = solution_file(result, model, &cells);
+  if (pvtu != nullptr) *pvtu = vtu.parallel_text(pieces);
   return vtu.take_text();
 }
 

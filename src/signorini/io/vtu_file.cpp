@@ -168,6 +168,40 @@ void VtuFile::add_cell_data(const std::string& name, const std::vector<std::int3
   cell_data_.push_back({name, "Int32", 1, {}, bytes_of(values.data(), values.size())});
 }
 
+std::string VtuFile::parallel_text(const std::vector<std::string>& pieces) const {
+  const auto array = [](const std::string& indent, const Array& a) {
+    std::string line =
+        fmt::format("{}<PDataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"", indent,
+                    a.type, xml_escaped(a.name), a.components);
+    for (std::size_t i = 0; i < a.component_names.size(); ++i)
+      line += fmt::format(" ComponentName{}=\"{}\"", i, xml_escaped(a.component_names[i]));
+    return line + "/>\n";
+  };
+  const char* byte_order =
+      std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+  std::string xml = "<?xml version=\"1.0\"?>\n";
+  xml += fmt::format(
+      "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
+      "header_type=\"UInt64\">\n",
+      byte_order);
+  xml += "  <PUnstructuredGrid GhostLevel=\"0\">\n";
+  xml += "    <PPointData>\n";
+  for (const Array& a : point_data_) xml += array("      ", a);
+  xml += "    </PPointData>\n";
+  if (!cell_data_.empty()) {
+    xml += "    <PCellData>\n";
+    for (const Array& a : cell_data_) xml += array("      ", a);
+    xml += "    </PCellData>\n";
+  }
+  xml +=
+      "    <PPoints>\n      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
+      "    </PPoints>\n";
+  for (const std::string& piece : pieces)
+    xml += fmt::format("    <Piece Source=\"{}\"/>\n", xml_escaped(piece));
+  xml += "  </PUnstructuredGrid>\n</VTKFile>\n";
+  return xml;
+}
+
 std::string VtuFile::take_text() {
   // Two steps, so that the file is built in one string of its final size: the XML header first
   // (the offsets need only the sizes), then the arrays appended to it, each freed once copied.

@@ -59,6 +59,11 @@ class VtuFile {
   [[nodiscard]] Index num_points() const { return num_points_; }
   [[nodiscard]] Index num_cells() const { return static_cast<Index>(types_.size()); }
 
+  /// The .pvtu file (PUnstructuredGrid) of a data set split into pieces like this one: the
+  /// same arrays, and `pieces` as the pieces' file names (relative to the .pvtu). Call before
+  /// take_text().
+  [[nodiscard]] std::string parallel_text(const std::vector<std::string>& pieces) const;
+
   /// The whole file. Each array is freed once copied into it, so that the data is never held
   /// twice; this is left an empty file of no points.
   [[nodiscard]] std::string take_text();

@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "signorini/contact/active_set_solver.hpp"
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/newton_space.hpp"
@@ -27,6 +28,13 @@ class DistributedNewtonSpace : public NewtonSpace {
   [[nodiscard]] virtual std::string linear_solver_description() const = 0;
 };
 
+/// The Newton steps of semismooth Newton (active_set_solver.hpp) on distributed objects.
+class DistributedActiveSetSolver : public ActiveSetSolver {
+ public:
+  /// How the steps are solved ("KSP cg with PC gamg (6 rigid-body modes)").
+  [[nodiscard]] virtual std::string linear_solver_description() const = 0;
+};
+
 class DistributedEngine {
  public:
   virtual ~DistributedEngine() = default;
@@ -37,6 +45,11 @@ class DistributedEngine {
   /// The Newton space of `problem` (which every rank holds whole; each keeps only its rows of
   /// A), starting at x0 (timed in `timings`).
   [[nodiscard]] virtual std::unique_ptr<DistributedNewtonSpace> newton_space(
+      const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
+      TimingTable& timings) = 0;
+  /// The Newton steps of semismooth Newton on `problem` (held whole by every rank), starting at
+  /// x0; displacement() gathers x on every rank.
+  [[nodiscard]] virtual std::unique_ptr<DistributedActiveSetSolver> active_set_solver(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) = 0;
   /// True on every rank when `flag` is true on any (a collective call).

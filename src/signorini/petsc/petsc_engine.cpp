@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "signorini/core/error.hpp"
+#include "signorini/petsc/petsc_active_set_solver.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 #include "signorini/petsc/petsc_newton_space.hpp"
 
@@ -36,6 +37,12 @@ std::unique_ptr<DistributedNewtonSpace> PetscEngine::newton_space(
     const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
     TimingTable& timings) {
   return std::make_unique<PetscNewtonSpace>(problem, options, x0, timings, PETSC_COMM_WORLD);
+}
+
+std::unique_ptr<DistributedActiveSetSolver> PetscEngine::active_set_solver(
+    const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
+    TimingTable& timings) {
+  return std::make_unique<PetscActiveSetSolver>(problem, options, x0, timings, PETSC_COMM_WORLD);
 }
 
 bool PetscEngine::any(bool flag) const {

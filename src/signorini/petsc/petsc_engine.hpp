@@ -23,6 +23,9 @@ class PetscEngine final : public DistributedEngine {
   [[nodiscard]] std::unique_ptr<DistributedNewtonSpace> newton_space(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) override;
+  [[nodiscard]] std::unique_ptr<DistributedActiveSetSolver> active_set_solver(
+      const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
+      TimingTable& timings) override;
   [[nodiscard]] bool any(bool flag) const override;
   [[noreturn]] void abort(int status) const override;
 

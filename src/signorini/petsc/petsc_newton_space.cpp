@@ -6,47 +6,13 @@
 #include <cmath>
 
 #include "signorini/core/error.hpp"
+#include "signorini/parallel/row_partition.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
-#include "signorini/petsc/row_partition.hpp"
 
 namespace signorini {
 
 using petsc::check;
-
-namespace {
-
-// The columns of the near-null space on this rank's rows, made orthonormal (MatNullSpaceCreate
-// wants them so) by modified Gram-Schmidt with global dot products; a mode that is (nearly) a
-// combination of the others, as a rotation about an axis on which every free dof is held, is
-// dropped.
-std::vector<Vec> near_null_vectors(const Matrix& modes, Index lo, Index hi, Vec like) {
-  std::vector<Vec> out;
-  for (Index k = 0; k < modes.cols(); ++k) {
-    Vec v = nullptr;
-    check(VecDuplicate(like, &v), "near-null space");
-    PetscScalar* a = nullptr;
-    check(VecGetArray(v, &a), "near-null space");
-    for (Index i = lo; i < hi; ++i) a[i - lo] = modes(i, k);
-    check(VecRestoreArray(v, &a), "near-null space");
-    PetscReal before = 0.0, after = 0.0;
-    check(VecNorm(v, NORM_2, &before), "near-null space");
-    for (Vec u : out) {
-      PetscScalar dot = 0.0;
-      check(VecDot(v, u, &dot), "near-null space");
-      check(VecAXPY(v, -dot, u), "near-null space");
-    }
-    check(VecNorm(v, NORM_2, &after), "near-null space");
-    if (!(after > 1e-10 * before)) {
-      check(VecDestroy(&v), "near-null space");
-      continue;
-    }
-    check(VecScale(v, 1.0 / after), "near-null space");
-    out.push_back(v);
-  }
-  return out;
-}
-
-}  // namespace
 
 PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
                                    const ContactSolverOptions& options, const Vector& x0,
@@ -61,28 +27,8 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   starts_ = row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
   lo_ = starts_[static_cast<std::size_t>(rank)];
   hi_ = starts_[static_cast<std::size_t>(rank) + 1];
-  const auto m = static_cast<PetscInt>(hi_ - lo_);
 
-  // This rank's rows of A in CSR form: row i of the symmetric A is its column i, which the
-  // column-major A holds with sorted row numbers.
-  const SparseMatrix& A = problem.A;
-  std::vector<PetscInt> ia(static_cast<std::size_t>(m) + 1, 0), ja;
-  std::vector<PetscScalar> va;
-  ja.reserve(static_cast<std::size_t>(A.outerIndexPtr()[hi_] - A.outerIndexPtr()[lo_]));
-  va.reserve(ja.capacity());
-  for (Index i = lo_; i < hi_; ++i) {
-    for (SparseMatrix::InnerIterator it(A, i); it; ++it) {
-      ja.push_back(static_cast<PetscInt>(it.row()));
-      va.push_back(it.value());
-    }
-    ia[static_cast<std::size_t>(i - lo_) + 1] = static_cast<PetscInt>(ja.size());
-  }
-  const auto N = static_cast<PetscInt>(n_);
-  check(MatCreateMPIAIJWithArrays(comm_, m, m, N, N, ia.data(), ja.data(), va.data(), &A_),
-        "the stiffness matrix");
-  check(MatSetOption(A_, MAT_SYMMETRIC, PETSC_TRUE), "the stiffness matrix");
-  check(MatSetOption(A_, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "the stiffness matrix");
-  check(MatSetOption(A_, MAT_SPD, PETSC_TRUE), "the stiffness matrix");
+  A_ = petsc::distributed_rows(problem.A, lo_, hi_, comm_);
   check(MatDuplicate(A_, MAT_COPY_VALUES, &H_), "the Newton matrix");
   check(MatSetOption(H_, MAT_SYMMETRIC, PETSC_TRUE), "the Newton matrix");
   check(MatSetOption(H_, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "the Newton matrix");
@@ -90,13 +36,8 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
 
   check(MatCreateVecs(A_, &x_, &b_), "vectors");
   for (Vec* v : {&x_new_, &residual_, &d_, &Ad_, &work_}) check(VecDuplicate(x_, v), "vectors");
-  PetscScalar* a = nullptr;
-  check(VecGetArray(b_, &a), "vectors");
-  for (Index i = lo_; i < hi_; ++i) a[i - lo_] = problem.b(i);
-  check(VecRestoreArray(b_, &a), "vectors");
-  check(VecGetArray(x_, &a), "vectors");
-  for (Index i = lo_; i < hi_; ++i) a[i - lo_] = x0(i);
-  check(VecRestoreArray(x_, &a), "vectors");
+  petsc::set_local(b_, problem.b, lo_, hi_);
+  petsc::set_local(x_, x0, lo_, hi_);
   check(MatMult(A_, x_, residual_), "A x");  // A x - b at x0
   check(VecAXPY(residual_, -1.0, b_), "A x - b");
 
@@ -123,62 +64,12 @@ PetscNewtonSpace::~PetscNewtonSpace() {
   MatDestroy(&A_);
 }
 
-// The KSP from the serial options (docs/distributed.md): "cg" with "multigrid" -> CG with PETSc's
-// smoothed-aggregation GAMG on the rigid-body modes; "cg" with "jacobi" -> CG with Jacobi; a
-// direct solver ("cholmod", "dense") -> MUMPS's distributed Cholesky factorisation. Then
-// solver.petsc_options, which may change any of it.
 void PetscNewtonSpace::set_up_solver() {
   check(KSPCreate(comm_, &ksp_), "KSP");
-  check(KSPSetOperators(ksp_, H_, H_), "KSP");
-  PC pc = nullptr;
-  check(KSPGetPC(ksp_, &pc), "KSP");
-  std::size_t modes = 0;
-  if (o_.linear.type == LinearSolverType::ConjugateGradient) {
-    check(KSPSetType(ksp_, KSPCG), "KSP");
-    // ||b - H x|| / ||b||, as the serial PCG measures it (not the preconditioned norm).
-    check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSP");
-    check(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE), "KSP");
-    if (o_.linear.preconditioner == PreconditionerType::Multigrid) {
-      check(PCSetType(pc, PCGAMG), "GAMG");
-      // A new active set changes H only on the contact nodes' blocks: the levels' prolongators
-      // are kept and only the Galerkin products redone, as the serial refresh does.
-      check(PCGAMGSetReuseInterpolation(pc, PETSC_TRUE), "GAMG");
-      // The smoothers' Chebyshev bounds estimated anew at each set-up: by default GAMG takes
-      // them from its first smoothed-aggregation estimate, that of A, which the penalty of a new
-      // active set exceeds, and the smoother diverges (CG stops with DIVERGED_INDEFINITE_PC).
-      check(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE), "GAMG");
-      if (p_.near_null_space.rows() == n_) {
-        std::vector<Vec> vecs = near_null_vectors(p_.near_null_space, lo_, hi_, x_);
-        MatNullSpace space = nullptr;
-        check(MatNullSpaceCreate(comm_, PETSC_FALSE, static_cast<PetscInt>(vecs.size()),
-                                 vecs.data(), &space),
-              "near-null space");
-        check(MatSetNearNullSpace(H_, space), "near-null space");
-        check(MatNullSpaceDestroy(&space), "near-null space");
-        modes = vecs.size();
-        for (Vec& v : vecs) check(VecDestroy(&v), "near-null space");
-      }
-    } else {
-      check(PCSetType(pc, PCJACOBI), "Jacobi");
-    }
-  } else {
-    direct_ = true;
-    check(KSPSetType(ksp_, KSPPREONLY), "KSP");
-    check(PCSetType(pc, PCCHOLESKY), "Cholesky");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
-  }
-  if (!o_.petsc_options.empty())
-    check(PetscOptionsInsertString(nullptr, o_.petsc_options.c_str()),
-          fmt::format("solver.petsc_options = \"{}\"", o_.petsc_options).c_str());
-  check(KSPSetFromOptions(ksp_), "KSP options");
-  KSPType ksp_type = nullptr;
-  PCType pc_type = nullptr;
-  check(KSPGetType(ksp_, &ksp_type), "KSP");
-  check(PCGetType(pc, &pc_type), "KSP");
-  description_ = fmt::format("KSP {} with PC {}", ksp_type != nullptr ? ksp_type : "?",
-                             pc_type != nullptr ? pc_type : "?");
-  if (direct_) description_ += " (MUMPS)";
-  if (modes > 0) description_ += fmt::format(" ({} rigid-body modes)", modes);
+  const petsc::KspChoice choice =
+      petsc::configure_ksp(ksp_, H_, o_, p_.near_null_space, lo_, hi_, true);
+  direct_ = choice.direct;
+  description_ = choice.description;
 }
 
 // H(P) = A + sum_{j in P} r h_j n_j n_j^T (17): A's values again, then each active node's block
@@ -214,31 +105,19 @@ NewtonSolveStats PetscNewtonSpace::solve(const Vector& terms) {
   add_contact_transpose(-terms, work_);
   check(VecCopy(x_, x_new_), "the initial guess");
   const double tolerance = linear_tolerance_ > 0.0 ? linear_tolerance_ : o_.linear.cg_tolerance;
-  NewtonSolveStats out;
-  if (!direct_) {
-    check(KSPSetTolerances(ksp_, tolerance, 0.0, PETSC_DEFAULT,
-                           static_cast<PetscInt>(o_.linear.cg_iteration_limit(n_))),
-          "KSP tolerances");
-    out.tolerance = tolerance;
-  }
-  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
-  PetscInt its = 0;
-  PetscReal rnorm = 0.0, bnorm = 0.0;
+  if (!direct_) petsc::set_ksp_tolerance(ksp_, o_, tolerance, n_);
   {
     ScopedTimer t(timings_, "linear solve");
     check(KSPSolve(ksp_, work_, x_new_), "KSPSolve");
   }
-  check(KSPGetConvergedReason(ksp_, &reason), "KSP");
-  check(KSPGetIterationNumber(ksp_, &its), "KSP");
-  out.iterations = direct_ ? 0 : static_cast<int>(its);
-  out.converged = reason > 0;
-  if (!direct_) {
-    check(KSPGetResidualNorm(ksp_, &rnorm), "KSP");
-    check(VecNorm(work_, NORM_2, &bnorm), "KSP");
-    out.residual = bnorm > 0.0 ? rnorm / bnorm : rnorm;
-  }
+  const petsc::KspOutcome k = petsc::ksp_outcome(ksp_, work_, direct_);
+  NewtonSolveStats out;
+  out.converged = k.converged;
+  out.iterations = k.iterations;
+  out.residual = k.residual;
+  out.tolerance = direct_ ? 0.0 : tolerance;
   out.solver = direct_ ? "MUMPS" : "PETSc CG";
-  if (!out.converged) out.solver += fmt::format(" ({})", KSPConvergedReasons[reason]);
+  if (!out.converged) out.solver += " (" + k.reason + ")";
   return out;
 }
 
@@ -273,18 +152,7 @@ NewtonStepNorms PetscNewtonSpace::norms(const Vector& contact_forces) {
 }
 
 Vector PetscNewtonSpace::gathered_solution() {
-  VecScatter scatter = nullptr;
-  Vec all = nullptr;
-  check(VecScatterCreateToAll(x_, &scatter, &all), "gathering u");
-  check(VecScatterBegin(scatter, x_, all, INSERT_VALUES, SCATTER_FORWARD), "gathering u");
-  check(VecScatterEnd(scatter, x_, all, INSERT_VALUES, SCATTER_FORWARD), "gathering u");
-  const PetscScalar* a = nullptr;
-  check(VecGetArrayRead(all, &a), "gathering u");
-  Vector u = Eigen::Map<const Vector>(a, n_);
-  check(VecRestoreArrayRead(all, &a), "gathering u");
-  VecScatterDestroy(&scatter);
-  VecDestroy(&all);
-  return u;
+  return petsc::gather(x_);
 }
 
 // (N v)_j for every contact node on every rank: each rank its own rows, summed over the ranks

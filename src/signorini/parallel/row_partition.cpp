@@ -1,4 +1,4 @@
-#include "signorini/petsc/row_partition.hpp"
+#include "signorini/parallel/row_partition.hpp"
 
 #include <fmt/format.h>
 

@@ -1,9 +1,10 @@
-// The partition of the free dofs over the ranks (src/signorini/petsc/row_partition.hpp).
+// The partition of the free dofs over the ranks (src/signorini/parallel/row_partition.hpp).
+
+#include "signorini/parallel/row_partition.hpp"
 
 #include <gtest/gtest.h>
 
 #include "signorini/core/error.hpp"
-#include "signorini/petsc/row_partition.hpp"
 
 namespace signorini {
 namespace {

@@ -1,0 +1,136 @@
+#include "signorini/petsc/petsc_active_set_solver.hpp"
+
+#include "signorini/parallel/row_partition.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
+#include "signorini/petsc/petsc_check.hpp"
+
+namespace signorini {
+
+using petsc::check;
+
+PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
+                                           const ContactSolverOptions& options, const Vector& x0,
+                                           TimingTable& timings, MPI_Comm comm)
+    : p_(problem),
+      o_(options),
+      external_timings_(timings),
+      comm_(comm),
+      rotation_(make_normal_rotation(problem.contact, problem.A.rows())) {
+  ScopedTimer timer(external_timings_, "distributed set-up");
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm_, &rank);
+  MPI_Comm_size(comm_, &size);
+  n_ = problem.A.rows();
+  nc_ = problem.contact.size();
+  // The rotation mixes only the dofs of one node, which row_partition keeps on one rank.
+  const std::vector<Index> starts =
+      row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
+  lo_ = starts[static_cast<std::size_t>(rank)];
+  hi_ = starts[static_cast<std::size_t>(rank) + 1];
+  for (Index j = 0; j < nc_; ++j) {
+    const Index a = rotation_.normal_dof[static_cast<std::size_t>(j)];
+    if (a >= lo_ && a < hi_) owned_.push_back(j);
+  }
+  Ar_ = petsc::distributed_rows(rotate_matrix(problem.A, rotation_), lo_, hi_, comm_);
+  check(MatDuplicate(Ar_, MAT_COPY_VALUES, &K_), "the Newton matrix");
+  // MatZeroRowsColumns keeps K's pattern, so every step's matrix has A_r's.
+  check(MatSetOption(K_, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE), "the Newton matrix");
+  check(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE), "the Newton matrix");
+  check(MatSetOption(K_, MAT_SPD, PETSC_TRUE), "the Newton matrix");
+  check(MatCreateVecs(Ar_, &y_, &br_), "vectors");
+  for (Vec* v : {&rhs_, &fixed_values_, &reaction_}) check(VecDuplicate(y_, v), "vectors");
+  petsc::set_local(br_, rotation_.to_rotated(problem.b), lo_, hi_);
+  petsc::set_local(y_, rotation_.to_rotated(x0), lo_, hi_);
+  check(MatGetDiagonal(Ar_, reaction_), "the diagonal");
+  PetscScalar sum = 0.0;
+  check(VecSum(reaction_, &sum), "the diagonal");
+  if (n_ > 0 && sum > 0.0) diagonal_ = sum / static_cast<double>(n_);
+  // The rigid-body modes in the rotated unknowns, for GAMG.
+  Matrix modes;
+  if (problem.near_null_space.rows() == n_) {
+    modes.resize(n_, problem.near_null_space.cols());
+    for (Index k = 0; k < modes.cols(); ++k)
+      modes.col(k) = rotation_.to_rotated(problem.near_null_space.col(k));
+  }
+  check(KSPCreate(comm_, &ksp_), "KSP");
+  const petsc::KspChoice choice = petsc::configure_ksp(ksp_, K_, o_, modes, lo_, hi_, false);
+  direct_ = choice.direct;
+  description_ = choice.description;
+}
+
+PetscActiveSetSolver::~PetscActiveSetSolver() {
+  KSPDestroy(&ksp_);
+  for (Vec* v : {&br_, &y_, &rhs_, &fixed_values_, &reaction_}) VecDestroy(v);
+  MatDestroy(&K_);
+  MatDestroy(&Ar_);
+}
+
+LinearSolveStats PetscActiveSetSolver::solve(const ActiveSet& S, Vector& l, Vector& gap_residual) {
+  const ContactSet& c = p_.contact;
+  // K: A_r with the rows and columns of the fixed unknowns a_j (j in S) replaced by the
+  // diagonal, and the right-hand side b_r - A_r y_fixed with y_fixed on those rows
+  // (MatZeroRowsColumns does both); y starts from the last step with the fixed values in.
+  std::vector<PetscInt> rows;
+  PetscScalar* fixed = nullptr;
+  PetscScalar* y = nullptr;
+  check(VecSet(fixed_values_, 0.0), "the fixed values");
+  check(VecGetArray(fixed_values_, &fixed), "the fixed values");
+  check(VecGetArray(y_, &y), "the fixed values");
+  for (const Index j : owned_) {
+    if (!S[static_cast<std::size_t>(j)]) continue;
+    const Index a = rotation_.normal_dof[static_cast<std::size_t>(j)];
+    rows.push_back(static_cast<PetscInt>(a));
+    fixed[a - lo_] = c.gaps(j) / rotation_.scale(j);
+    y[a - lo_] = fixed[a - lo_];
+  }
+  check(VecRestoreArray(y_, &y), "the fixed values");
+  check(VecRestoreArray(fixed_values_, &fixed), "the fixed values");
+  check(MatCopy(Ar_, K_, SAME_NONZERO_PATTERN), "the Newton matrix");
+  check(VecCopy(br_, rhs_), "the right-hand side");
+  check(MatZeroRowsColumns(K_, static_cast<PetscInt>(rows.size()), rows.data(), diagonal_,
+                           fixed_values_, rhs_),
+        "fixing the active normal displacements");
+  check(KSPSetOperators(ksp_, K_, K_), "KSP");
+  const double tolerance = tolerance_ > 0.0 ? tolerance_ : o_.linear.cg_tolerance;
+  if (!direct_) petsc::set_ksp_tolerance(ksp_, o_, tolerance, n_);
+  {
+    ScopedTimer t(timings_, "linear solve");
+    check(KSPSolve(ksp_, rhs_, y_), "KSPSolve");
+  }
+  const petsc::KspOutcome k = petsc::ksp_outcome(ksp_, rhs_, direct_);
+  // Multipliers from the reactions: (A_r y)_{a_j} + s_j h_j l_j = (b_r)_{a_j} on S; each rank
+  // its own nodes, summed over the ranks (the others add exact zeros).
+  check(MatMult(Ar_, y_, reaction_), "the reactions");
+  check(VecAYPX(reaction_, -1.0, br_), "the reactions");  // b_r - A_r y
+  l = Vector::Zero(nc_);
+  gap_residual = Vector::Zero(nc_);
+  const PetscScalar* r = nullptr;
+  const PetscScalar* yy = nullptr;
+  check(VecGetArrayRead(reaction_, &r), "the reactions");
+  check(VecGetArrayRead(y_, &yy), "the reactions");
+  for (const Index j : owned_) {
+    if (!c.movable[static_cast<std::size_t>(j)]) continue;
+    const Index a = rotation_.normal_dof[static_cast<std::size_t>(j)];
+    const double s = rotation_.scale(j);
+    if (S[static_cast<std::size_t>(j)]) l(j) = r[a - lo_] / (s * c.weights(j));
+    gap_residual(j) = s * yy[a - lo_] - c.gaps(j);
+  }
+  check(VecRestoreArrayRead(y_, &yy), "the reactions");
+  check(VecRestoreArrayRead(reaction_, &r), "the reactions");
+  if (nc_ > 0) {
+    MPI_Allreduce(MPI_IN_PLACE, l.data(), static_cast<int>(nc_), MPI_DOUBLE, MPI_SUM, comm_);
+    MPI_Allreduce(MPI_IN_PLACE, gap_residual.data(), static_cast<int>(nc_), MPI_DOUBLE, MPI_SUM,
+                  comm_);
+  }
+  LinearSolveStats st;
+  st.converged = k.converged;
+  st.iterations = k.iterations;
+  st.residual = k.residual;
+  return st;
+}
+
+Vector PetscActiveSetSolver::displacement() const {
+  return rotation_.from_rotated(petsc::gather(y_));
+}
+
+}  // namespace signorini

@@ -1,0 +1,179 @@
+#include "signorini/petsc/petsc_algebra.hpp"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+#include "signorini/core/error.hpp"
+#include "signorini/petsc/petsc_check.hpp"
+
+namespace signorini::petsc {
+
+Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm) {
+  const auto m = static_cast<PetscInt>(hi - lo);
+  std::vector<PetscInt> ia(static_cast<std::size_t>(m) + 1, 0), ja;
+  std::vector<PetscScalar> va;
+  ja.reserve(static_cast<std::size_t>(A.outerIndexPtr()[hi] - A.outerIndexPtr()[lo]));
+  va.reserve(ja.capacity());
+  for (Index i = lo; i < hi; ++i) {
+    for (SparseMatrix::InnerIterator it(A, i); it; ++it) {
+      ja.push_back(static_cast<PetscInt>(it.row()));
+      va.push_back(it.value());
+    }
+    ia[static_cast<std::size_t>(i - lo) + 1] = static_cast<PetscInt>(ja.size());
+  }
+  const auto n = static_cast<PetscInt>(A.rows());
+  Mat M = nullptr;
+  check(MatCreateMPIAIJWithArrays(comm, m, m, n, n, ia.data(), ja.data(), va.data(), &M),
+        "a distributed matrix");
+  check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "a distributed matrix");
+  check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "a distributed matrix");
+  check(MatSetOption(M, MAT_SPD, PETSC_TRUE), "a distributed matrix");
+  return M;
+}
+
+void set_local(Vec v, const Vector& whole, Index lo, Index hi) {
+  PetscScalar* a = nullptr;
+  check(VecGetArray(v, &a), "a distributed vector");
+  for (Index i = lo; i < hi; ++i) a[i - lo] = whole(i);
+  check(VecRestoreArray(v, &a), "a distributed vector");
+}
+
+Vector gather(Vec v) {
+  VecScatter scatter = nullptr;
+  Vec all = nullptr;
+  check(VecScatterCreateToAll(v, &scatter, &all), "gathering a vector");
+  check(VecScatterBegin(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD), "gathering a vector");
+  check(VecScatterEnd(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD), "gathering a vector");
+  PetscInt n = 0;
+  check(VecGetSize(all, &n), "gathering a vector");
+  const PetscScalar* a = nullptr;
+  check(VecGetArrayRead(all, &a), "gathering a vector");
+  Vector whole = Eigen::Map<const Vector>(a, n);
+  check(VecRestoreArrayRead(all, &a), "gathering a vector");
+  VecScatterDestroy(&scatter);
+  VecDestroy(&all);
+  return whole;
+}
+
+namespace {
+
+// The columns of the near-null space on this rank's rows, made orthonormal (MatNullSpaceCreate
+// wants them so) by modified Gram-Schmidt with global dot products; a mode that is (nearly) a
+// combination of the others, as a rotation about an axis on which every free dof is held, is
+// dropped.
+std::vector<Vec> near_null_vectors(const Matrix& modes, Index lo, Index hi, Mat like) {
+  std::vector<Vec> out;
+  for (Index k = 0; k < modes.cols(); ++k) {
+    Vec v = nullptr;
+    check(MatCreateVecs(like, &v, nullptr), "near-null space");
+    set_local(v, modes.col(k), lo, hi);
+    PetscReal before = 0.0, after = 0.0;
+    check(VecNorm(v, NORM_2, &before), "near-null space");
+    for (Vec u : out) {
+      PetscScalar dot = 0.0;
+      check(VecDot(v, u, &dot), "near-null space");
+      check(VecAXPY(v, -dot, u), "near-null space");
+    }
+    check(VecNorm(v, NORM_2, &after), "near-null space");
+    if (!(after > 1e-10 * before)) {
+      check(VecDestroy(&v), "near-null space");
+      continue;
+    }
+    check(VecScale(v, 1.0 / after), "near-null space");
+    out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace
+
+KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
+                        const Matrix& near_null_space, Index lo, Index hi,
+                        bool reuse_interpolation) {
+  KspChoice choice;
+  check(KSPSetOperators(ksp, H, H), "KSP");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp, &pc), "KSP");
+  std::size_t modes = 0;
+  if (o.linear.type == LinearSolverType::ConjugateGradient) {
+    check(KSPSetType(ksp, KSPCG), "KSP");
+    // ||b - H x|| / ||b||, as the serial PCG measures it (not the preconditioned norm).
+    check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSP");
+    check(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE), "KSP");
+    if (o.linear.preconditioner == PreconditionerType::Multigrid) {
+      check(PCSetType(pc, PCGAMG), "GAMG");
+      // A new active set changes H only on the contact nodes' blocks: the levels' prolongators
+      // can be kept and only the Galerkin products redone, as the serial refresh does.
+      check(PCGAMGSetReuseInterpolation(pc, reuse_interpolation ? PETSC_TRUE : PETSC_FALSE),
+            "GAMG");
+      // The smoothers' Chebyshev bounds estimated anew at each set-up: by default GAMG takes
+      // them from its first smoothed-aggregation estimate, that of A, which the penalty of a new
+      // active set exceeds, and the smoother diverges (CG stops with DIVERGED_INDEFINITE_PC).
+      check(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE), "GAMG");
+      if (near_null_space.rows() > 0) {
+        PetscInt rows = 0;
+        check(MatGetSize(H, &rows, nullptr), "near-null space");
+        if (near_null_space.rows() != rows)
+          throw NumericalError(fmt::format("PETSc: a near-null space of {} rows for {} unknowns",
+                                           near_null_space.rows(), rows));
+        std::vector<Vec> vecs = near_null_vectors(near_null_space, lo, hi, H);
+        MatNullSpace space = nullptr;
+        MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(H));
+        check(MatNullSpaceCreate(comm, PETSC_FALSE, static_cast<PetscInt>(vecs.size()), vecs.data(),
+                                 &space),
+              "near-null space");
+        check(MatSetNearNullSpace(H, space), "near-null space");
+        check(MatNullSpaceDestroy(&space), "near-null space");
+        modes = vecs.size();
+        for (Vec& v : vecs) check(VecDestroy(&v), "near-null space");
+      }
+    } else {
+      check(PCSetType(pc, PCJACOBI), "Jacobi");
+    }
+  } else {
+    choice.direct = true;
+    check(KSPSetType(ksp, KSPPREONLY), "KSP");
+    check(PCSetType(pc, PCCHOLESKY), "Cholesky");
+    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
+  }
+  if (!o.petsc_options.empty())
+    check(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()),
+          fmt::format("solver.petsc_options = \"{}\"", o.petsc_options).c_str());
+  check(KSPSetFromOptions(ksp), "KSP options");
+  KSPType ksp_type = nullptr;
+  PCType pc_type = nullptr;
+  check(KSPGetType(ksp, &ksp_type), "KSP");
+  check(PCGetType(pc, &pc_type), "KSP");
+  choice.description = fmt::format("KSP {} with PC {}", ksp_type != nullptr ? ksp_type : "?",
+                                   pc_type != nullptr ? pc_type : "?");
+  if (choice.direct) choice.description += " (MUMPS)";
+  if (modes > 0) choice.description += fmt::format(" ({} rigid-body modes)", modes);
+  return choice;
+}
+
+KspOutcome ksp_outcome(KSP ksp, Vec rhs, bool direct) {
+  KspOutcome out;
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  check(KSPGetConvergedReason(ksp, &reason), "KSP");
+  out.converged = reason > 0;
+  out.reason = KSPConvergedReasons[reason];
+  if (!direct) {
+    PetscInt its = 0;
+    PetscReal rnorm = 0.0, bnorm = 0.0;
+    check(KSPGetIterationNumber(ksp, &its), "KSP");
+    check(KSPGetResidualNorm(ksp, &rnorm), "KSP");
+    check(VecNorm(rhs, NORM_2, &bnorm), "KSP");
+    out.iterations = static_cast<int>(its);
+    out.residual = bnorm > 0.0 ? rnorm / bnorm : rnorm;
+  }
+  return out;
+}
+
+void set_ksp_tolerance(KSP ksp, const ContactSolverOptions& o, double tolerance, Index n) {
+  check(KSPSetTolerances(ksp, tolerance, 0.0, PETSC_DEFAULT,
+                         static_cast<PetscInt>(o.linear.cg_iteration_limit(n))),
+        "KSP tolerances");
+}
+
+}  // namespace signorini::petsc

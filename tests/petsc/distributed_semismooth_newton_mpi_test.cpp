@@ -1,0 +1,78 @@
+// Semismooth Newton on the PETSc engine (src/signorini/petsc/petsc_active_set_solver.hpp), run
+// on 1, 2 and 4 ranks: the same active sets step by step as the serial solver, and u and l to
+// 1e-8, with MUMPS and with CG and GAMG; and the two methods agree on the distributed path.
+
+#include <gtest/gtest.h>
+
+#include "../problem/ball_on_block.hpp"
+#include "../test_problems.hpp"
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini {
+namespace {
+
+using testing::relative_difference;
+
+ContactResult serial_solve(const ContactProblem& problem, ContactSolverOptions o) {
+  DistributedEngine* engine = distributed_engine();
+  set_distributed_engine(nullptr);
+  o.distributed = DistributedMode::Auto;
+  ContactResult r = solve_contact(problem, o);
+  set_distributed_engine(engine);
+  return r;
+}
+
+void expect_same_steps(const ContactResult& distributed, const ContactResult& serial) {
+  ASSERT_TRUE(distributed.summary.converged()) << distributed.summary.message;
+  ASSERT_TRUE(serial.summary.converged()) << serial.summary.message;
+  EXPECT_EQ(distributed.summary.path, SolvePath::Distributed);
+  EXPECT_EQ(distributed.summary.ranks, distributed_engine()->size());
+  ASSERT_EQ(distributed.summary.steps.size(), serial.summary.steps.size());
+  for (std::size_t k = 0; k < serial.summary.steps.size(); ++k)
+    EXPECT_EQ(distributed.summary.steps[k].active_set_size, serial.summary.steps[k].active_set_size)
+        << "Newton step " << k + 1;
+  EXPECT_LT(relative_difference(distributed.u, serial.u), 1e-8);
+  EXPECT_LT(relative_difference(distributed.l, serial.l), 1e-8);
+  EXPECT_LT(distributed.summary.kkt.max(), 1e-8);
+}
+
+TEST(DistributedSemismoothNewton, PaperProblemWithMumpsTakesTheSerialSteps) {
+  const ContactProblem& problem = testing::paper_model(60).problem;
+  ContactSolverOptions o;
+  o.method = ContactMethod::SemismoothNewton;
+  o.schur_complement = false;  // the serial sparse path: the same elimination
+  o.distributed = DistributedMode::Petsc;
+  const ContactResult distributed = solve_contact(problem, o);
+  expect_same_steps(distributed, serial_solve(problem, o));
+  EXPECT_NE(distributed.summary.device.find("MUMPS"), std::string::npos);
+
+  // Uzawa-GNM on the same path reaches the same solution.
+  ContactSolverOptions gnm = o;
+  gnm.method = ContactMethod::UzawaGnm;
+  gnm.uzawa_tolerance = 1e-12;
+  const ContactResult uzawa = solve_contact(problem, gnm);
+  ASSERT_TRUE(uzawa.summary.converged()) << uzawa.summary.message;
+  EXPECT_LT(relative_difference(uzawa.u, distributed.u), 1e-8);
+}
+
+TEST(DistributedSemismoothNewton, BallOnBlockWithGamgTakesTheSerialSteps) {
+  ProblemSpec spec = testing::ball_on_block(8, 6e-3);
+  spec.solver.automatic_path = false;
+  spec.solver.method = ContactMethod::SemismoothNewton;
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  spec.solver.inner_tolerance = InnerTolerance::Fixed;
+  spec.solver.distributed = DistributedMode::Petsc;
+  const Model model = build_model(spec);
+  const ContactResult distributed = solve_contact(model.problem, model.solver);
+  ContactSolverOptions direct = model.solver;  // the serial steps by sparse elimination
+  direct.linear.type = LinearSolverType::Cholmod;
+  direct.schur_complement = false;
+  expect_same_steps(distributed, serial_solve(model.problem, direct));
+  EXPECT_NE(distributed.summary.device.find("gamg"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace signorini
