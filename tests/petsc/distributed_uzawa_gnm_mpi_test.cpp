@@ -91,6 +91,25 @@ TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
   EXPECT_GT(cg, 0);
 }
 
+// CG with hypre's BoomerAMG (solver.petsc_multigrid = "hypre") on the same 3D problem.
+TEST(DistributedUzawaGnm, BallOnBlockWithHypreMatchesTheSerialSolve) {
+  ProblemSpec spec = testing::ball_on_block(6, 6e-3);
+  spec.solver.automatic_path = false;
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  spec.solver.inner_tolerance = InnerTolerance::Fixed;
+  spec.solver.uzawa_tolerance = 1e-10;
+  spec.solver.distributed = DistributedMode::Petsc;
+  spec.solver.petsc_multigrid = PetscMultigrid::Hypre;
+  const Model model = build_model(spec);
+  const ContactResult distributed = solve_contact(model.problem, model.solver);
+  ContactSolverOptions direct = model.solver;
+  direct.linear.type = LinearSolverType::Cholmod;
+  expect_same_solve(distributed, serial_solve(model.problem, direct));
+  EXPECT_NE(distributed.summary.device.find("PC hypre"), std::string::npos)
+      << distributed.summary.device;
+}
+
 // CG with Jacobi, the paper's own configuration, on the paper's problem.
 TEST(DistributedUzawaGnm, PaperProblemWithJacobiMatchesTheSerialSolve) {
   const ContactProblem& problem = testing::paper_model(30).problem;

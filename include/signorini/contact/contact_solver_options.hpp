@@ -46,6 +46,14 @@ inline constexpr EnumNames<DistributedMode, 3> kDistributedModeNames{{
     {DistributedMode::Off, "off"},
 }};
 
+/// The algebraic multigrid of the distributed path (ContactSolverOptions::petsc_multigrid).
+enum class PetscMultigrid { Gamg, Hypre };
+
+inline constexpr EnumNames<PetscMultigrid, 2> kPetscMultigridNames{{
+    {PetscMultigrid::Gamg, "gamg"},
+    {PetscMultigrid::Hypre, "hypre"},
+}};
+
 /// Reported to ContactSolverOptions::observer as the solver goes, for progress logs.
 struct IterationEvent {
   enum class Kind { Inner, Outer };
@@ -137,6 +145,9 @@ struct ContactSolverOptions {
   /// Options for PETSc's database on the PETSc path ("-ksp_monitor -pc_gamg_threshold 0.02"):
   /// they apply to the Newton systems' KSP after signorini's own choices, for experts.
   std::string petsc_options;
+  /// The multigrid of linear.preconditioner = "multigrid" on the distributed path: PETSc's GAMG
+  /// (smoothed aggregation on the rigid-body modes) or hypre's BoomerAMG.
+  PetscMultigrid petsc_multigrid = PetscMultigrid::Gamg;
   /// The contact law (contact_law.hpp): null for the paper's frictionless unilateral law. The
   /// Uzawa-GNM and classical Uzawa methods take any law; semismooth Newton only the unilateral
   /// one. Not owned; it must outlive the solve.

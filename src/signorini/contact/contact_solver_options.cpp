@@ -96,6 +96,11 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
            "options for PETSc's database on the PETSc path, applied to the Newton systems' "
            "solver after signorini's own (`\"-ksp_monitor -pc_gamg_threshold 0.02\"`); empty: "
            "none");
+    t.choice("petsc_multigrid", &O::petsc_multigrid, kPetscMultigridNames,
+             "on the distributed path, the multigrid of `[solver.linear] preconditioner = "
+             "\"multigrid\"`: `\"gamg\"`, PETSc's smoothed aggregation on the rigid-body "
+             "modes; `\"hypre\"`, hypre's BoomerAMG (classical AMG, without the modes: slower "
+             "on elastic bodies) ([distributed.md](distributed.md))");
     t.choice("device", &O::device, kDeviceKindNames,
              "where the solve runs; `\"cuda\"`: the whole Uzawa–GNM loop on an NVIDIA GPU, with "
              "`[solver.linear] type = \"cg\"` ([gpu.md](gpu.md))");

@@ -101,7 +101,11 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
     // ||b - H x|| / ||b||, as the serial PCG measures it (not the preconditioned norm).
     check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSP");
     check(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE), "KSP");
-    if (o.linear.preconditioner == PreconditionerType::Multigrid) {
+    if (o.linear.preconditioner == PreconditionerType::Multigrid &&
+        o.petsc_multigrid == PetscMultigrid::Hypre) {
+      check(PCSetType(pc, PCHYPRE), "hypre");
+      check(PCHYPRESetType(pc, "boomeramg"), "hypre");
+    } else if (o.linear.preconditioner == PreconditionerType::Multigrid) {
       check(PCSetType(pc, PCGAMG), "GAMG");
       // A new active set changes H only on the contact nodes' blocks: the levels' prolongators
       // can be kept and only the Galerkin products redone, as the serial refresh does.
@@ -148,7 +152,9 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
   choice.description = fmt::format("KSP {} with PC {}", ksp_type != nullptr ? ksp_type : "?",
                                    pc_type != nullptr ? pc_type : "?");
   if (choice.direct) choice.description += " (MUMPS)";
-  if (modes > 0) choice.description += fmt::format(" ({} rigid-body modes)", modes);
+  // (The modes only where the PC in the end is GAMG: petsc_options may have changed it.)
+  if (modes > 0 && pc_type != nullptr && std::string(pc_type) == PCGAMG)
+    choice.description += fmt::format(" ({} rigid-body modes)", modes);
   return choice;
 }
 
