@@ -1,28 +1,19 @@
 // Semismooth Newton on the PETSc engine (src/signorini/petsc/petsc_active_set_solver.hpp), run
-// on 1, 2 and 4 ranks: the same active sets step by step as the serial solver, and u and l to
-// 1e-8, with MUMPS and with CG and GAMG; and the two methods agree on the distributed path.
+// on 1, 2 and 4 ranks on the partitioned model: the same active sets step by step as the serial
+// solver, and u and l to 1e-8, with MUMPS and with CG and GAMG; and the two methods agree on the
+// distributed path.
 
 #include <gtest/gtest.h>
 
 #include "../problem/ball_on_block.hpp"
 #include "../test_problems.hpp"
-#include "signorini/contact/contact_solver.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
-#include "signorini/problem/model.hpp"
+#include "mpi_test_problems.hpp"
+#include "signorini/problem/problem_spec.hpp"
 
 namespace signorini {
 namespace {
 
 using testing::relative_difference;
-
-ContactResult serial_solve(const ContactProblem& problem, ContactSolverOptions o) {
-  DistributedEngine* engine = distributed_engine();
-  set_distributed_engine(nullptr);
-  o.distributed = DistributedMode::Auto;
-  ContactResult r = solve_contact(problem, o);
-  set_distributed_engine(engine);
-  return r;
-}
 
 void expect_same_steps(const ContactResult& distributed, const ContactResult& serial) {
   ASSERT_TRUE(distributed.summary.converged()) << distributed.summary.message;
@@ -39,20 +30,20 @@ void expect_same_steps(const ContactResult& distributed, const ContactResult& se
 }
 
 TEST(DistributedSemismoothNewton, PaperProblemWithMumpsTakesTheSerialSteps) {
-  const ContactProblem& problem = testing::paper_model(60).problem;
+  const ProblemSpec spec = paper_benchmark(60, 20);
   ContactSolverOptions o;
   o.method = ContactMethod::SemismoothNewton;
   o.schur_complement = false;  // the serial sparse path: the same elimination
-  o.distributed = DistributedMode::Petsc;
-  const ContactResult distributed = solve_contact(problem, o);
-  expect_same_steps(distributed, serial_solve(problem, o));
+  const Model model = testing::distributed_model(spec);
+  const ContactResult distributed = testing::distributed_solve(model, o);
+  expect_same_steps(distributed, testing::serial_solve(testing::serial_model(spec), o));
   EXPECT_NE(distributed.summary.device.find("MUMPS"), std::string::npos);
 
   // Uzawa-GNM on the same path reaches the same solution.
   ContactSolverOptions gnm = o;
   gnm.method = ContactMethod::UzawaGnm;
   gnm.uzawa_tolerance = 1e-12;
-  const ContactResult uzawa = solve_contact(problem, gnm);
+  const ContactResult uzawa = testing::distributed_solve(model, gnm);
   ASSERT_TRUE(uzawa.summary.converged()) << uzawa.summary.message;
   EXPECT_LT(relative_difference(uzawa.u, distributed.u), 1e-8);
 }
@@ -64,13 +55,13 @@ TEST(DistributedSemismoothNewton, BallOnBlockWithGamgTakesTheSerialSteps) {
   spec.solver.linear.type = LinearSolverType::ConjugateGradient;
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
   spec.solver.inner_tolerance = InnerTolerance::Fixed;
-  spec.solver.distributed = DistributedMode::Petsc;
-  const Model model = build_model(spec);
-  const ContactResult distributed = solve_contact(model.problem, model.solver);
-  ContactSolverOptions direct = model.solver;  // the serial steps by sparse elimination
+  const Model model = testing::distributed_model(spec);
+  const ContactResult distributed = testing::distributed_solve(model, model.solver);
+  const Model serial_model = testing::serial_model(spec);
+  ContactSolverOptions direct = serial_model.solver;  // the serial steps by sparse elimination
   direct.linear.type = LinearSolverType::Cholmod;
   direct.schur_complement = false;
-  expect_same_steps(distributed, serial_solve(model.problem, direct));
+  expect_same_steps(distributed, testing::serial_solve(serial_model, direct));
   EXPECT_NE(distributed.summary.device.find("gamg"), std::string::npos);
 }
 

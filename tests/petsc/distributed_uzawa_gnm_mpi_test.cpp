@@ -1,32 +1,21 @@
 // Uzawa-GNM on the PETSc engine (src/signorini/petsc/, docs/distributed.md), run on 1, 2 and 4
-// ranks: the same Uzawa steps as the serial solver on every rank, and u and l to 1e-8 (the
-// distributed issue's check), with each of the KSP configurations that the options choose.
+// ranks: on the partitioned model (each rank its part of A), the same Uzawa steps as the serial
+// solver on every rank, and u and l to 1e-8 (the distributed issue's check), with each of the
+// KSP configurations that the options choose.
 
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
 #include "../problem/ball_on_block.hpp"
 #include "../test_problems.hpp"
-#include "signorini/contact/contact_solver.hpp"
+#include "mpi_test_problems.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
-#include "signorini/problem/model.hpp"
+#include "signorini/problem/problem_spec.hpp"
 
 namespace signorini {
 namespace {
 
 using testing::relative_difference;
-
-// The serial solve on this rank alone: without the engine the solver takes a serial path.
-ContactResult serial_solve(const ContactProblem& problem, ContactSolverOptions o,
-                           const MultigridHierarchy* multigrid = nullptr) {
-  DistributedEngine* engine = distributed_engine();
-  set_distributed_engine(nullptr);
-  o.distributed = DistributedMode::Auto;
-  ContactResult r = solve_contact(problem, o, multigrid);
-  set_distributed_engine(engine);
-  return r;
-}
 
 void expect_same_solve(const ContactResult& distributed, const ContactResult& serial) {
   ASSERT_TRUE(distributed.summary.converged()) << distributed.summary.message;
@@ -37,17 +26,53 @@ void expect_same_solve(const ContactResult& distributed, const ContactResult& se
   EXPECT_LT(relative_difference(distributed.u, serial.u), 1e-8);
   EXPECT_LT(relative_difference(distributed.l, serial.l), 1e-8);
   EXPECT_LT(distributed.summary.kkt.max(), 1e-8);
+  // The energy and the KKT residuals of the partitioned problem are sums over the ranks.
+  EXPECT_LT(std::abs(distributed.summary.energy - serial.summary.energy),
+            1e-10 * std::abs(serial.summary.energy));
+}
+
+// The partitioned model: each rank holds the columns of its own unknowns only, and they add up
+// to the serial A.
+TEST(DistributedModel, EachRankAssemblesItsOwnColumns) {
+  const ProblemSpec spec = paper_benchmark(30, 10);
+  const Model part = testing::distributed_model(spec);
+  const Model whole = testing::serial_model(spec);
+  ASSERT_TRUE(part.problem.partitioned());
+  const DistributedEngine& engine = *distributed_engine();
+  ASSERT_EQ(part.problem.row_starts.size(), static_cast<std::size_t>(engine.size()) + 1);
+  const Index lo = part.problem.row_starts[static_cast<std::size_t>(engine.rank())];
+  const Index hi = part.problem.row_starts[static_cast<std::size_t>(engine.rank()) + 1];
+  const SparseMatrix& A = part.problem.A;
+  for (Index col = 0; col < A.cols(); ++col) {
+    const Index entries = A.outerIndexPtr()[col + 1] - A.outerIndexPtr()[col];
+    if (col < lo || col >= hi) {
+      EXPECT_EQ(entries, 0) << "column " << col;
+    } else {
+      const SparseMatrix difference =
+          SparseMatrix(A.col(col)) - SparseMatrix(whole.problem.A.col(col));
+      EXPECT_LE(difference.norm(), 1e-12 * whole.problem.A.norm()) << "column " << col;
+    }
+  }
+  const Vector u = Vector::LinSpaced(A.rows(), -1.0, 1.0);
+  EXPECT_LT(relative_difference(stiffness_product(part.problem, u), whole.problem.A * u), 1e-14);
+  EXPECT_NEAR(automatic_r(part.problem, 10.0), automatic_r(whole.problem, 10.0),
+              1e-12 * automatic_r(whole.problem, 10.0));
+  // A partitioned problem is the distributed path's only.
+  ContactSolverOptions serial;
+  serial.distributed = DistributedMode::Off;
+  if (engine.size() == 1) {
+    EXPECT_THROW((void)solve_contact(part.problem, serial), InputError);
+  }
 }
 
 // The paper's problem with the direct solver: MUMPS's distributed Cholesky factorisation,
 // against the serial condensed path.
 TEST(DistributedUzawaGnm, PaperProblemWithMumpsMatchesTheSerialSolve) {
-  const ContactProblem& problem = testing::paper_model(60).problem;
+  const ProblemSpec spec = paper_benchmark(60, 20);
   ContactSolverOptions o;
   o.uzawa_tolerance = 1e-10;
-  o.distributed = DistributedMode::Petsc;
-  const ContactResult distributed = solve_contact(problem, o);
-  const ContactResult serial = serial_solve(problem, o);
+  const ContactResult distributed = testing::distributed_solve(testing::distributed_model(spec), o);
+  const ContactResult serial = testing::serial_solve(testing::serial_model(spec), o);
   expect_same_solve(distributed, serial);
   // The same GNM counts too: both factorise, so the Newton steps are exact.
   ASSERT_EQ(distributed.summary.steps.size(), serial.summary.steps.size());
@@ -59,29 +84,26 @@ TEST(DistributedUzawaGnm, PaperProblemWithMumpsMatchesTheSerialSolve) {
       << distributed.summary.device;
 }
 
-// A 3D block on a rigid ball with CG and GAMG on the rigid-body modes (build_model gives them
-// for the distributed path), against the serial CG with smoothed aggregation.
-TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
-  ProblemSpec spec = testing::ball_on_block(8, 6e-3);
+ProblemSpec ball_with_multigrid(Index n) {
+  ProblemSpec spec = testing::ball_on_block(n, 6e-3);
   spec.solver.automatic_path = false;
   spec.solver.linear.type = LinearSolverType::ConjugateGradient;
   spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
   spec.solver.inner_tolerance = InnerTolerance::Fixed;
   spec.solver.uzawa_tolerance = 1e-10;
-  spec.solver.distributed = DistributedMode::Petsc;
-  const Model model = build_model(spec);
+  return spec;
+}
+
+// A 3D block on a rigid ball with CG and GAMG on the rigid-body modes (build_model gives them
+// for the distributed path), against the serial CG with smoothed aggregation.
+TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
+  const ProblemSpec spec = ball_with_multigrid(8);
+  const Model model = testing::distributed_model(spec);
   ASSERT_EQ(model.problem.near_null_space.cols(), 6);
   ASSERT_EQ(model.problem.node_of_unknown.size(), static_cast<std::size_t>(model.problem.A.rows()));
-  const ContactResult distributed = solve_contact(model.problem, model.solver);
-
-  ProblemSpec serial_spec = spec;
-  serial_spec.solver.distributed = DistributedMode::Auto;
-  DistributedEngine* engine = distributed_engine();
-  set_distributed_engine(nullptr);
-  const Model serial_model = build_model(serial_spec);
-  set_distributed_engine(engine);
-  const ContactResult serial =
-      serial_solve(serial_model.problem, serial_model.solver, &serial_model.multigrid);
+  const ContactResult distributed = testing::distributed_solve(model, model.solver);
+  const Model serial_model = testing::serial_model(spec);
+  const ContactResult serial = testing::serial_solve(serial_model, serial_model.solver);
   expect_same_solve(distributed, serial);
   EXPECT_NE(distributed.summary.device.find("gamg"), std::string::npos)
       << distributed.summary.device;
@@ -93,42 +115,34 @@ TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
 
 // CG with hypre's BoomerAMG (solver.petsc_multigrid = "hypre") on the same 3D problem.
 TEST(DistributedUzawaGnm, BallOnBlockWithHypreMatchesTheSerialSolve) {
-  ProblemSpec spec = testing::ball_on_block(6, 6e-3);
-  spec.solver.automatic_path = false;
-  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
-  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
-  spec.solver.inner_tolerance = InnerTolerance::Fixed;
-  spec.solver.uzawa_tolerance = 1e-10;
-  spec.solver.distributed = DistributedMode::Petsc;
+  ProblemSpec spec = ball_with_multigrid(6);
   spec.solver.petsc_multigrid = PetscMultigrid::Hypre;
-  const Model model = build_model(spec);
-  const ContactResult distributed = solve_contact(model.problem, model.solver);
-  ContactSolverOptions direct = model.solver;
+  const Model model = testing::distributed_model(spec);
+  const ContactResult distributed = testing::distributed_solve(model, model.solver);
+  const Model serial_model = testing::serial_model(spec);
+  ContactSolverOptions direct = serial_model.solver;
   direct.linear.type = LinearSolverType::Cholmod;
-  expect_same_solve(distributed, serial_solve(model.problem, direct));
+  expect_same_solve(distributed, testing::serial_solve(serial_model, direct));
   EXPECT_NE(distributed.summary.device.find("PC hypre"), std::string::npos)
       << distributed.summary.device;
 }
 
 // CG with Jacobi, the paper's own configuration, on the paper's problem.
 TEST(DistributedUzawaGnm, PaperProblemWithJacobiMatchesTheSerialSolve) {
-  const ContactProblem& problem = testing::paper_model(30).problem;
+  const ProblemSpec spec = paper_benchmark(30, 10);
   ContactSolverOptions o;
   o.uzawa_tolerance = 1e-10;
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.cg_tolerance = 1e-13;
-  o.distributed = DistributedMode::Petsc;
-  const ContactResult distributed = solve_contact(problem, o);
-  const ContactResult serial = serial_solve(problem, o);
-  expect_same_solve(distributed, serial);
+  expect_same_solve(testing::distributed_solve(testing::distributed_model(spec), o),
+                    testing::serial_solve(testing::serial_model(spec), o));
 }
 
 TEST(DistributedUzawaGnm, ClassicalUzawaIsRefusedWithAMessage) {
   ContactSolverOptions o;
-  o.distributed = DistributedMode::Petsc;
   o.method = ContactMethod::ClassicalUzawa;
   try {
-    (void)solve_contact(testing::paper_model(30).problem, o);
+    (void)testing::distributed_solve(testing::distributed_model(paper_benchmark(30, 10)), o);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("uzawa_gnm"), std::string::npos) << e.what();
@@ -136,12 +150,11 @@ TEST(DistributedUzawaGnm, ClassicalUzawaIsRefusedWithAMessage) {
 }
 
 TEST(DistributedUzawaGnm, PetscOptionsReachTheSolver) {
-  const ContactProblem& problem = testing::paper_model(30).problem;
   ContactSolverOptions o;
-  o.distributed = DistributedMode::Petsc;
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.petsc_options = "-pc_type none";
-  const ContactResult r = solve_contact(problem, o);
+  const ContactResult r =
+      testing::distributed_solve(testing::distributed_model(paper_benchmark(30, 10)), o);
   // PETSc's options database is the process's: the next tests must not see this one.
   ASSERT_EQ(PetscOptionsClearValue(nullptr, "-pc_type"), 0);
   EXPECT_NE(r.summary.device.find("PC none"), std::string::npos) << r.summary.device;

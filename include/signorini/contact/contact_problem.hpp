@@ -18,6 +18,14 @@ struct ContactProblem {
   /// node stay on one rank.
   Matrix near_null_space = {};
   std::vector<Index> node_of_unknown = {};
+  /// Non-empty for a partitioned problem (docs/distributed.md): rank r of a distributed run owns
+  /// the free dofs [row_starts[r], row_starts[r + 1]), and A holds only their columns (by
+  /// symmetry their rows), the other columns empty; products with A are then sums over the
+  /// ranks (parallel/distributed_engine.hpp, stiffness_product). Only the distributed path
+  /// solves such a problem.
+  std::vector<Index> row_starts = {};
+
+  [[nodiscard]] bool partitioned() const { return !row_starts.empty(); }
 };
 
 }  // namespace signorini

@@ -34,8 +34,12 @@ void require_supported_cells(const Mesh& mesh);
 
 /// Reduced stiffness A (num_free x num_free, SPD when clamping holds the body, both triangles
 /// stored). Throws InputError on an inverted or degenerate cell, naming it.
+/// `columns_of` (optional, one flag per node): only the columns of these nodes, the others left
+/// empty, from the cells that touch them (a distributed run's part: by symmetry the rows of its
+/// unknowns; docs/distributed.md).
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
-                                const ElasticityOptions& options);
+                                const ElasticityOptions& options,
+                                const std::vector<bool>* columns_of = nullptr);
 
 /// K u for the full node-major vector u (num_nodes * dim), cell by cell, at the nodes of the
 /// cells for which `needed(cell)` holds (all cells if it is empty); zero elsewhere. With u the

@@ -152,6 +152,10 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
   m.path = choose_path(m.options);
+  if (problem.partitioned() && m.path != SolvePath::Distributed)
+    throw InputError(
+        "a partitioned contact problem (each rank holding its part of A) is solved on the "
+        "distributed path only (solver.distributed)");
   if (m.path == SolvePath::Distributed && m.options.method == ContactMethod::ClassicalUzawa)
     throw InputError(
         "solver.method = \"classical_uzawa\": the distributed path runs \"uzawa_gnm\" and "
@@ -273,7 +277,7 @@ ContactResult ContactSolver::solve() {
   s.automatic_r = m.r_auto;
   s.kkt_tolerance = options.kkt_tolerance;
   s.kkt = kkt_residuals(problem, result.u, result.l);
-  s.energy = 0.5 * result.u.dot(problem.A * result.u) - problem.b.dot(result.u);
+  s.energy = 0.5 * result.u.dot(stiffness_product(problem, result.u)) - problem.b.dot(result.u);
   s.lagrangian =
       ModifiedLagrangian::value(problem, *options.r, result.u, result.l, contact_law(options));
   const ContactSet& c = problem.contact;

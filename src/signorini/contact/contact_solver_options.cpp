@@ -8,6 +8,7 @@
 #include "signorini/contact/contact_solver_option_table.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/linalg/linear_solver_option_table.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -155,15 +156,18 @@ double automatic_r(const ContactProblem& p, double factor) {
   // whatever the units and the mesh size (method.md section 7).
   const ContactSet& c = p.contact;
   const SparseMatrix Nt = c.N.transpose();  // column j = row j of N
+  // A partitioned A has node j's block only on the rank that owns the node: the others add 0.
+  Vector stiffness = Vector::Zero(c.size());
+  for (Index j = 0; j < c.size(); ++j)
+    for (SparseMatrix::InnerIterator a(Nt, j); a; ++a)
+      for (SparseMatrix::InnerIterator b(Nt, j); b; ++b)
+        stiffness(j) += a.value() * p.A.coeff(a.row(), b.row()) * b.value();
+  sum_over_ranks(p, stiffness.data(), stiffness.size());
   std::vector<double> values;
   values.reserve(static_cast<std::size_t>(c.size()));
   for (Index j = 0; j < c.size(); ++j) {
     if (!c.movable[static_cast<std::size_t>(j)] || !(c.weights(j) > 0.0)) continue;
-    double stiffness = 0.0;
-    for (SparseMatrix::InnerIterator a(Nt, j); a; ++a)
-      for (SparseMatrix::InnerIterator b(Nt, j); b; ++b)
-        stiffness += a.value() * p.A.coeff(a.row(), b.row()) * b.value();
-    if (stiffness > 0.0) values.push_back(stiffness / c.weights(j));
+    if (stiffness(j) > 0.0) values.push_back(stiffness(j) / c.weights(j));
   }
   if (values.empty())
     throw InputError(

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "signorini/parallel/distributed_engine.hpp"
+
 namespace signorini {
 
 KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vector& l) {
@@ -10,7 +12,7 @@ KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vecto
   KktResiduals k;
   const Vector reaction = c.N.transpose() * c.weights.cwiseProduct(l);
   const double b_norm = std::max(p.b.norm(), reaction.norm());
-  k.equilibrium = b_norm > 0.0 ? (p.A * u - p.b + reaction).norm() / b_norm : 0.0;
+  k.equilibrium = b_norm > 0.0 ? (stiffness_product(p, u) - p.b + reaction).norm() / b_norm : 0.0;
 
   const Vector gap_residual = c.N * u - c.gaps;  // <= 0 where feasible
   const double length = std::max(u.lpNorm<Eigen::Infinity>(),

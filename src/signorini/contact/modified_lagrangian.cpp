@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "signorini/core/error.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -137,7 +138,7 @@ double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector
     const double diff = law.penalty_change(l(j), r * (Nu(j) - p.contact.gaps(j)));
     penalty += p.contact.weights(j) * diff;
   }
-  return 0.5 * u.dot(p.A * u) - p.b.dot(u) + penalty / (2.0 * r);
+  return 0.5 * u.dot(stiffness_product(p, u)) - p.b.dot(u) + penalty / (2.0 * r);
 }
 
 }  // namespace signorini

@@ -51,9 +51,10 @@ void require_supported_cells(const Mesh& mesh) {
 namespace {
 
 template <int Dim>
-SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& options) {
+SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& options,
+                      const std::vector<bool>* columns_of) {
   const std::vector<ElasticityMatrixOf<Dim>> D = region_elasticity_matrices<Dim>(mesh, options);
-  SparsityPattern pattern(mesh, dofs);
+  SparsityPattern pattern(mesh, dofs, columns_of);
   SparseMatrix A = pattern.take_zero_matrix();
   double* values = A.valuePtr();
   // Cells of the type of the previous one that are its translates (all of them on a structured
@@ -63,12 +64,19 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
   CellCoordinatesOf<Dim> previous = CellCoordinatesOf<Dim>::Zero(Dim, 0);
   CellRules rules(options.gauss_points);
   ElementMatrixOf<Dim> K;
+  bool have_previous = false;  // K is the element matrix of `previous`
   for (Index c = 0; c < mesh.num_cells(); ++c) {
+    if (columns_of != nullptr) {  // only the cells that touch a kept node
+      bool touches = false;
+      for (const Index a : mesh.cell(c))
+        touches = touches || (*columns_of)[static_cast<std::size_t>(a)];
+      if (!touches) continue;
+    }
     const CellType type = mesh.cell_type(c);
     const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
     const CellCoordinatesOf<Dim> relative = X.colwise() - X.col(0);
     const int region = mesh.cell_region(c);
-    bool same = c > 0 && type == previous_type && region == previous_region;
+    bool same = have_previous && type == previous_type && region == previous_region;
     if (same) {
       double size = 0.0, change = 0.0;
       for (Index a = 0; a < relative.cols(); ++a) {
@@ -86,6 +94,7 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
       previous = relative;
       previous_type = type;
       previous_region = region;
+      have_previous = true;
     }
     const auto nodes = mesh.cell(c);
     const auto n = static_cast<int>(nodes.size());
@@ -153,11 +162,15 @@ Vector internal_forces_of(const Mesh& mesh, const ElasticityOptions& options, co
 }  // namespace
 
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
-                                const ElasticityOptions& options) {
+                                const ElasticityOptions& options,
+                                const std::vector<bool>* columns_of) {
   require_supported_cells(mesh);
   if (dofs.dim() != mesh.dim())
     throw std::logic_error("assemble_stiffness: the dof map has another dimension than the mesh");
-  return mesh.dim() == 2 ? assemble<2>(mesh, dofs, options) : assemble<3>(mesh, dofs, options);
+  if (columns_of != nullptr && static_cast<Index>(columns_of->size()) != mesh.num_nodes())
+    throw InputError("assemble_stiffness: one flag per node expected");
+  return mesh.dim() == 2 ? assemble<2>(mesh, dofs, options, columns_of)
+                         : assemble<3>(mesh, dofs, options, columns_of);
 }
 
 Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,

@@ -9,7 +9,12 @@
 
 namespace signorini {
 
-SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(dofs) {
+SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs,
+                                 const std::vector<bool>* columns_of)
+    : dofs_(dofs) {
+  const auto kept = [&](Index m) {
+    return columns_of == nullptr || (*columns_of)[static_cast<std::size_t>(m)];
+  };
   const Index n = mesh.num_nodes();
   const int dim = dofs.dim();
   // The cells of each node (CSR), then each node's neighbours through them as a sorted unique
@@ -31,6 +36,10 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs) : dofs_(d
   std::vector<Index> list;
   for (Index m = 0; m < n; ++m) {
     list.clear();
+    if (!kept(m)) {  // an empty column: no neighbours kept
+      neighbor_start_[static_cast<std::size_t>(m + 1)] = static_cast<Index>(neighbors_.size());
+      continue;
+    }
     for (Index s = cell_start[static_cast<std::size_t>(m)];
          s < cell_start[static_cast<std::size_t>(m + 1)]; ++s)
       for (const Index b : mesh.cell(cells_of[static_cast<std::size_t>(s)])) list.push_back(b);
@@ -113,6 +122,10 @@ void SparsityPattern::block_positions(Index node_a, Index node_b, Index* out) co
   const int dim = dofs_.dim();
   const Index s0 = neighbor_start_[static_cast<std::size_t>(node_b)];
   const Index s1 = neighbor_start_[static_cast<std::size_t>(node_b + 1)];
+  if (s0 == s1) {  // a column left empty (the constructor's columns_of)
+    std::fill(out, out + dim * dim, Index{-1});
+    return;
+  }
   const Index place = dofs_.node_place(node_a);
   const auto it =
       std::lower_bound(neighbors_.begin() + s0, neighbors_.begin() + s1, place,

@@ -13,13 +13,16 @@ namespace signorini {
 
 class SparsityPattern {
  public:
-  SparsityPattern(const Mesh& mesh, const DofMap& dofs);
+  /// `columns_of` (optional, one flag per node): the columns of only these nodes are filled, the
+  /// others left empty (a distributed run's part of the symmetric matrix: docs/distributed.md).
+  SparsityPattern(const Mesh& mesh, const DofMap& dofs,
+                  const std::vector<bool>* columns_of = nullptr);
 
   /// The compressed matrix with this pattern and zero values, handed over once (the pattern
   /// keeps what block_positions needs, not a second copy of the row numbers).
   [[nodiscard]] SparseMatrix take_zero_matrix();
   /// The positions of the whole dim x dim block coupling node_a (rows) and node_b (columns):
-  /// out[ka * dim + kb], -1 for clamped components.
+  /// out[ka * dim + kb], -1 for clamped components and for columns left empty.
   void block_positions(Index node_a, Index node_b, Index* out) const;
 
  private:

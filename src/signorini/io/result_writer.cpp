@@ -36,7 +36,8 @@ namespace {
 std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
   const ContactProblem& p = model.problem;
   const Index n = p.A.rows();
-  const std::vector<Index> starts = row_partition(n, ranks, p.node_of_unknown, p.contact.N);
+  const std::vector<Index> starts =
+      p.partitioned() ? p.row_starts : row_partition(n, ranks, p.node_of_unknown, p.contact.N);
   const std::vector<Index> node_of = free_dof_nodes(model.dofs);
   std::vector<int> owner(static_cast<std::size_t>(model.mesh.num_nodes()), -1);
   int r = 0;

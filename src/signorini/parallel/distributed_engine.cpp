@@ -18,6 +18,19 @@ void set_distributed_engine(DistributedEngine* engine) {
   registered = engine;
 }
 
+void sum_over_ranks(const ContactProblem& problem, double* values, Index count) {
+  if (!problem.partitioned()) return;
+  if (registered == nullptr)
+    throw InputError("a partitioned contact problem needs the distributed engine that made it");
+  registered->sum(values, count);
+}
+
+Vector stiffness_product(const ContactProblem& problem, const Vector& u) {
+  Vector Au = problem.A * u;
+  sum_over_ranks(problem, Au.data(), Au.size());
+  return Au;
+}
+
 bool distributed_path(const ContactSolverOptions& options) {
   const DistributedEngine* engine = registered;
   switch (options.distributed) {

@@ -52,6 +52,8 @@ class DistributedEngine {
   [[nodiscard]] virtual std::unique_ptr<DistributedActiveSetSolver> active_set_solver(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) = 0;
+  /// Sums `values` over the ranks, in place on every rank (a collective call).
+  virtual void sum(double* values, Index count) const = 0;
   /// True on every rank when `flag` is true on any (a collective call).
   [[nodiscard]] virtual bool any(bool flag) const = 0;
   /// Ends every rank's process with this exit status (a collective abort: a rank that fails
@@ -63,6 +65,12 @@ class DistributedEngine {
 [[nodiscard]] DistributedEngine* distributed_engine();
 /// Registers (or, with null, removes) the engine; not owned, it must outlive its use.
 void set_distributed_engine(DistributedEngine* engine);
+
+/// A u for any problem: for a partitioned one (ContactProblem::partitioned) each rank's
+/// columns' share, summed over the ranks of the registered engine (a collective call).
+[[nodiscard]] Vector stiffness_product(const ContactProblem& problem, const Vector& u);
+/// Sums values over the ranks where the problem is partitioned (a collective call then).
+void sum_over_ranks(const ContactProblem& problem, double* values, Index count);
 
 /// Whether a solve with these options takes the distributed path: `distributed` = "petsc", or
 /// "auto" with an engine of more than one rank. Throws InputError for "petsc" without an engine

@@ -24,7 +24,8 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
   nc_ = problem.contact.size();
   // The rotation mixes only the dofs of one node, which row_partition keeps on one rank.
   const std::vector<Index> starts =
-      row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
+      problem.partitioned() ? problem.row_starts
+                            : row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
   lo_ = starts[static_cast<std::size_t>(rank)];
   hi_ = starts[static_cast<std::size_t>(rank) + 1];
   for (Index j = 0; j < nc_; ++j) {

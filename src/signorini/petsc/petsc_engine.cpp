@@ -45,6 +45,12 @@ std::unique_ptr<DistributedActiveSetSolver> PetscEngine::active_set_solver(
   return std::make_unique<PetscActiveSetSolver>(problem, options, x0, timings, PETSC_COMM_WORLD);
 }
 
+void PetscEngine::sum(double* values, Index count) const {
+  if (count > 0)
+    MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM,
+                  PETSC_COMM_WORLD);
+}
+
 bool PetscEngine::any(bool flag) const {
   int local = flag ? 1 : 0, global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LOR, PETSC_COMM_WORLD);

@@ -26,6 +26,7 @@ class PetscEngine final : public DistributedEngine {
   [[nodiscard]] std::unique_ptr<DistributedActiveSetSolver> active_set_solver(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) override;
+  void sum(double* values, Index count) const override;
   [[nodiscard]] bool any(bool flag) const override;
   [[noreturn]] void abort(int status) const override;
 

@@ -24,7 +24,9 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   MPI_Comm_size(comm_, &size);
   n_ = problem.A.rows();
   nc_ = problem.contact.size();
-  starts_ = row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
+  starts_ = problem.partitioned()
+                ? problem.row_starts
+                : row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
   lo_ = starts_[static_cast<std::size_t>(rank)];
   hi_ = starts_[static_cast<std::size_t>(rank) + 1];
 

@@ -16,6 +16,7 @@
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/parallel/row_partition.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
 #include "signorini/problem/solver_plan.hpp"
 
@@ -246,7 +247,23 @@ Model build_model(const ProblemSpec& spec) {
   ContactProblem problem;
   {
     ScopedTimer t(timings, "assembly");
-    problem.A = assemble_stiffness(mesh, dofs, elasticity);
+    const DistributedEngine* engine = distributed_engine();
+    if (distributed_path(spec.solver) && engine != nullptr) {
+      // A distributed run (docs/distributed.md): each rank assembles only the columns of the
+      // unknowns it owns (by symmetry its rows), from the cells that touch its nodes; the
+      // partition keeps each node's unknowns on one rank.
+      problem.node_of_unknown = free_dof_nodes(dofs);
+      problem.row_starts = row_partition(dofs.num_free(), engine->size(), problem.node_of_unknown,
+                                         SparseMatrix(0, dofs.num_free()));
+      const auto rank = static_cast<std::size_t>(engine->rank());
+      std::vector<bool> owned(static_cast<std::size_t>(mesh.num_nodes()), false);
+      for (Index i = problem.row_starts[rank]; i < problem.row_starts[rank + 1]; ++i)
+        owned[static_cast<std::size_t>(problem.node_of_unknown[static_cast<std::size_t>(i)])] =
+            true;
+      problem.A = assemble_stiffness(mesh, dofs, elasticity, &owned);
+    } else {
+      problem.A = assemble_stiffness(mesh, dofs, elasticity);
+    }
   }
   Vector loads = Vector::Zero(dofs.num_dofs());
   std::vector<PlacedPointLoad> placed;
@@ -315,7 +332,7 @@ Model build_model(const ProblemSpec& spec) {
     // PETSc's algebraic multigrid builds its own levels from the rigid-body modes, and the
     // partition keeps each node's dofs on one rank (docs/distributed.md).
     problem.near_null_space = rigid_body_modes(mesh, dofs);
-    problem.node_of_unknown = free_dof_nodes(dofs);
+    if (problem.node_of_unknown.empty()) problem.node_of_unknown = free_dof_nodes(dofs);
   } else if (linear.type == LinearSolverType::ConjugateGradient &&
              linear.preconditioner == PreconditionerType::Multigrid) {
     ScopedTimer t(timings, "multigrid hierarchy");

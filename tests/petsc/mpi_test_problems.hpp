@@ -1,0 +1,52 @@
+#pragma once
+// The models of the MPI tests (tests/petsc/): each problem built twice on every rank, as the
+// distributed path builds it (partitioned: each rank its part of A, docs/distributed.md) and as
+// a serial run does (the engine out of sight while it is built and solved), so that the
+// distributed solve can be checked against the serial one on the same rank.
+
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini::testing {
+
+/// Unregisters the engine for its lifetime (a serial build or solve), restoring it even when
+/// that throws.
+class WithoutEngine {
+ public:
+  WithoutEngine() : engine_(distributed_engine()) { set_distributed_engine(nullptr); }
+  ~WithoutEngine() { set_distributed_engine(engine_); }
+  WithoutEngine(const WithoutEngine&) = delete;
+  WithoutEngine& operator=(const WithoutEngine&) = delete;
+
+ private:
+  DistributedEngine* engine_;
+};
+
+/// The model as the distributed path builds it: partitioned over the ranks.
+inline Model distributed_model(ProblemSpec spec) {
+  spec.solver.distributed = DistributedMode::Petsc;
+  return build_model(spec);
+}
+
+/// The model as a serial run builds it.
+inline Model serial_model(ProblemSpec spec) {
+  const WithoutEngine serial;
+  spec.solver.distributed = DistributedMode::Auto;
+  return build_model(spec);
+}
+
+/// A serial solve on this rank alone.
+inline ContactResult serial_solve(const Model& model, ContactSolverOptions o) {
+  const WithoutEngine serial;
+  o.distributed = DistributedMode::Auto;
+  return solve_contact(model.problem, o, &model.multigrid);
+}
+
+/// The distributed solve.
+inline ContactResult distributed_solve(const Model& model, ContactSolverOptions o) {
+  o.distributed = DistributedMode::Petsc;
+  return solve_contact(model.problem, o);
+}
+
+}  // namespace signorini::testing
