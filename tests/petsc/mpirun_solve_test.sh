@@ -85,6 +85,19 @@ grep -q "material.E" "$tmp/stderr" || { echo "the message does not name the key"
 [ "$before" = "$(md5sum "$tmp/paper_mpi/summary.json")" ] || { echo "earlier results changed"; exit 1; }
 echo "ok: bad input under mpirun"
 
+# A rank that dies during the solve (killed by a signal): mpirun ends the others, the status is
+# not 0, and the earlier results stay as they were.
+before=$(md5sum "$tmp/box_mpi/summary.json")
+status=0
+"$mpirun" --allow-run-as-root --oversubscribe -n 2 bash -c \
+  'if [ "${OMPI_COMM_WORLD_RANK:-0}" = 1 ]; then exec timeout -s KILL 1 "$0" "$@"; else exec "$0" "$@"; fi' \
+  "$tool" solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi" --set mesh.nx=40 \
+  --set mesh.ny=40 --set mesh.nz=20 --set 'mesh.cell="hex8"' > "$tmp/stdout" 2> "$tmp/stderr" ||
+  status=$?
+[ "$status" -ne 0 ] || { echo "a killed rank: exit status 0"; cat "$tmp/stderr"; exit 1; }
+[ "$before" = "$(md5sum "$tmp/box_mpi/summary.json")" ] || { echo "a killed rank: results changed"; exit 1; }
+echo "ok: a killed rank stops the run (status $status), earlier results kept"
+
 # An output folder that rank 0 cannot make: every rank stops before the solve, one message.
 status=0
 run_mpi solve "$examples/paper.toml" -q -o /proc/no-such-folder 2> "$tmp/stderr" || status=$?
