@@ -7,6 +7,7 @@
 #include "model_loading.hpp"
 #include "signorini/backend/make_backend.hpp"
 #include "signorini/mesh/mesh_description.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini::app {
 
@@ -21,6 +22,19 @@ int run_check(const CheckArguments& args) {
   }
   fmt::print("mesh: {}\n", mesh_description(model.mesh));
   fmt::print("solver path: {}\n", model.solver_reason);
+  // Under mpirun the solve is distributed (docs/distributed.md): the plan above then says which
+  // Newton-system solver the ranks share.
+  if (const DistributedEngine* engine = distributed_engine();
+      engine != nullptr && distributed_path(model.solver))
+    fmt::print(
+        "distributed: {}, each rank holding its part of the stiffness; the Newton "
+        "systems by {}\n",
+        engine->description(),
+        model.solver.linear.type != LinearSolverType::ConjugateGradient
+            ? "MUMPS (the plan's direct solver)"
+        : model.solver.linear.preconditioner == PreconditionerType::Jacobi ? "CG with Jacobi"
+        : model.solver.petsc_multigrid == PetscMultigrid::Hypre ? "CG with hypre's BoomerAMG"
+                                                                : "CG with GAMG");
   fmt::print("ok: {} dofs, {} contact nodes\n", model.dofs.num_dofs(),
              model.problem.contact.size());
   return kSuccess;

@@ -49,6 +49,13 @@ compare "$tmp/ssn_serial" "$tmp/ssn_mpi"
 run_mpi solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi"
 compare "$tmp/box_serial" "$tmp/box_mpi"
 
+# `check` under mpirun says that the solve would be distributed, and how.
+run_mpi check "$examples/box_on_sphere.toml" > "$tmp/check" ||
+  { echo "check under mpirun failed"; cat "$tmp/check"; exit 1; }
+grep -q "^distributed: PETSc .* on 2 MPI ranks" "$tmp/check" ||
+  { echo "check under mpirun does not say distributed"; cat "$tmp/check"; exit 1; }
+echo "ok: check under mpirun"
+
 # solution.pvtu: one piece per rank, the pieces' cells those of solution.vtu, each piece's
 # displacements those of solution.vtu at the same points (meshio, an independent reader).
 /usr/bin/python3 - "$tmp/box_mpi" <<'PY'
