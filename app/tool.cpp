@@ -221,6 +221,14 @@ int run_tool(int argc, char** argv) {
     }
     if (*solve_cmd) return run_solve(solve);
     if (*check_cmd) return run_check(check);
+    // On several MPI ranks only solve and check take part (docs/distributed.md): the figures
+    // and the benchmarks are one process's work, and N copies would race for the same files.
+    if (const signorini::DistributedEngine* engine = signorini::distributed_engine();
+        engine != nullptr && engine->size() > 1 && (*plot_cmd || *bench_cmd))
+      return fail(kBadInput,
+                  fmt::format("signorini {} runs in one process, not on {} MPI ranks: run it "
+                              "without mpirun (solve and check run distributed)",
+                              *plot_cmd ? "plot" : "bench", engine->size()));
     if (*plot_cmd) return run_plot(plot);
     if (*bench_cmd) return run_bench(bench);
     return fail(kBadInput,

@@ -56,6 +56,14 @@ grep -q "^distributed: PETSc .* on 2 MPI ranks" "$tmp/check" ||
   { echo "check under mpirun does not say distributed"; cat "$tmp/check"; exit 1; }
 echo "ok: check under mpirun"
 
+# plot and bench are one process's work: refused under mpirun, one message, status 2.
+status=0
+run_mpi plot "$tmp/box_mpi" > /dev/null 2> "$tmp/stderr" || status=$?
+[ "$status" -eq 2 ] && [ "$(grep -c "signorini: error:" "$tmp/stderr")" -eq 1 ] &&
+  grep -q "without mpirun" "$tmp/stderr" ||
+  { echo "plot under mpirun: status $status"; cat "$tmp/stderr"; exit 1; }
+echo "ok: plot refused under mpirun"
+
 # solution.pvtu: one piece per rank, the pieces' cells those of solution.vtu, each piece's
 # displacements those of solution.vtu at the same points (meshio, an independent reader).
 /usr/bin/python3 - "$tmp/box_mpi" <<'PY'
