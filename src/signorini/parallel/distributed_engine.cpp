@@ -37,9 +37,9 @@ bool distributed_path(const ContactSolverOptions& options) {
     case DistributedMode::Petsc:
       if (engine == nullptr)
         throw InputError(
-            "solver.distributed = \"petsc\": this program has no PETSc engine; run signorini "
-            "from a build with PETSc (the tool re-runs itself as signorini-mpi under mpirun; "
-            "docs/distributed.md)");
+            "solver.distributed = \"petsc\": this program has no PETSc engine; run "
+            "signorini-mpi (beside signorini in a build with PETSc), or signorini under mpirun, "
+            "which becomes it (docs/distributed.md)");
       return true;
     case DistributedMode::Off:
       if (engine != nullptr && engine->size() > 1)

@@ -1,0 +1,42 @@
+// The seam to a distributed engine (src/signorini/parallel/distributed_engine.hpp) in a program
+// without one: the serial paths, and clear errors where the options ask for the distributed one.
+
+#include "signorini/parallel/distributed_engine.hpp"
+
+#include <gtest/gtest.h>
+
+#include "../test_problems.hpp"
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+namespace {
+
+TEST(DistributedEngine, WithoutAnEngineTheSerialPathsRun) {
+  ASSERT_EQ(distributed_engine(), nullptr);
+  ContactSolverOptions o;
+  EXPECT_FALSE(distributed_path(o));  // auto
+  o.distributed = DistributedMode::Off;
+  EXPECT_FALSE(distributed_path(o));
+  o.distributed = DistributedMode::Petsc;
+  try {
+    (void)distributed_path(o);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("signorini-mpi"), std::string::npos) << e.what();
+  }
+  // The products of a whole problem are the serial ones.
+  const ContactProblem& p = testing::paper_model(30).problem;
+  const Vector u = Vector::LinSpaced(p.A.rows(), -1.0, 1.0);
+  EXPECT_EQ(stiffness_product(p, u), p.A * u);
+}
+
+TEST(DistributedEngine, APartitionedProblemNeedsItsEngine) {
+  ContactProblem p = testing::paper_model(30).problem;
+  p.row_starts = {0, p.A.rows()};
+  const Vector u = Vector::Ones(p.A.rows());
+  EXPECT_THROW((void)stiffness_product(p, u), InputError);
+  EXPECT_THROW((void)solve_contact(p, ContactSolverOptions{}), InputError);
+}
+
+}  // namespace
+}  // namespace signorini
