@@ -6,7 +6,7 @@
 #include "process_tuning.hpp"
 
 int main(int argc, char** argv) {
-  signorini::app::hand_over_to_mpi_tool(argc, argv);  // under mpirun: becomes signorini-mpi
-  signorini::app::tune_process(argc, argv);  // may re-execute the program (process_tuning.hpp)
+  signorini::app::hand_over_to_mpi_tool(argv);  // under mpirun: becomes signorini-mpi
+  signorini::app::tune_process(argc, argv);     // may re-execute the program (process_tuning.hpp)
   return signorini::app::run_tool(argc, argv);
 }

@@ -12,6 +12,9 @@
 
 namespace signorini::app {
 
+namespace {
+
+// The number of ranks an MPI launcher says it started (0: not started by one).
 int launched_ranks() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
     const char* value = std::getenv(name);
@@ -20,8 +23,9 @@ int launched_ranks() {
   return std::getenv("PMIX_RANK") != nullptr ? 1 : 0;
 }
 
-void hand_over_to_mpi_tool(int argc, char** argv) {
-  (void)argc;
+}  // namespace
+
+void hand_over_to_mpi_tool(char** argv) {
   const int ranks = launched_ranks();
   if (ranks == 0) return;
   std::error_code error;

@@ -11,9 +11,6 @@ namespace signorini::app {
 /// there is none, and the launcher started more than one rank, prints an error and exits with
 /// status 2; with one rank it returns and the tool runs serially. Returns at once otherwise, and
 /// when this program is signorini-mpi.
-void hand_over_to_mpi_tool(int argc, char** argv);
-
-/// The number of ranks an MPI launcher says it started (0: not started by one).
-[[nodiscard]] int launched_ranks();
+void hand_over_to_mpi_tool(char** argv);
 
 }  // namespace signorini::app

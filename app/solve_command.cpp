@@ -107,9 +107,8 @@ int solve(const SolveArguments& args, LogFormat format) {
       folder_error = e.what();
     }
   }
-  if (engine != nullptr && engine->any(!folder_error.empty()))
+  if (engine != nullptr ? engine->any(!folder_error.empty()) : !folder_error.empty())
     throw InputError(root ? folder_error : "the output folder (rank 0 says why)");
-  if (!folder_error.empty()) throw InputError(folder_error);
 
   progress.phase("contact solve");
   ContactSolverOptions solver = model.solver;  // the path planned from the problem's size

@@ -4,6 +4,9 @@
 // a serial run does (the engine out of sight while it is built and solved), so that the
 // distributed solve can be checked against the serial one on the same rank.
 
+#include <gtest/gtest.h>
+
+#include "../test_problems.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/problem/model.hpp"
@@ -41,6 +44,20 @@ inline ContactResult serial_solve(const Model& model, ContactSolverOptions o) {
   const WithoutEngine serial;
   o.distributed = DistributedMode::Auto;
   return solve_contact(model.problem, o, &model.multigrid);
+}
+
+/// What every distributed solve must share with the serial one (the distributed issue's
+/// check): both converged, the distributed path on all the ranks, u and l to 1e-8, small KKT
+/// residuals. The callers compare the steps as their method defines them.
+inline void expect_distributed_agrees(const ContactResult& distributed,
+                                      const ContactResult& serial) {
+  ASSERT_TRUE(distributed.summary.converged()) << distributed.summary.message;
+  ASSERT_TRUE(serial.summary.converged()) << serial.summary.message;
+  EXPECT_EQ(distributed.summary.path, SolvePath::Distributed);
+  EXPECT_EQ(distributed.summary.ranks, distributed_engine()->size());
+  EXPECT_LT(relative_difference(distributed.u, serial.u), 1e-8);
+  EXPECT_LT(relative_difference(distributed.l, serial.l), 1e-8);
+  EXPECT_LT(distributed.summary.kkt.max(), 1e-8);
 }
 
 /// The distributed solve.

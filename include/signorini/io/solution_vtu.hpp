@@ -27,10 +27,12 @@ std::string solution_vtu(const ContactResult& result, const Model& model);
 
 /// One piece of solution.vtu for a distributed run (docs/distributed.md): the given cells and the
 /// nodes they use, with the same arrays; `pvtu`, when not null, receives the solution.pvtu that
-/// names `pieces` (file names beside it).
+/// names `pieces` (file names beside it), and `whole`, when not null, the whole solution.vtu,
+/// from the same nodal stresses.
 std::string solution_vtu_piece(const ContactResult& result, const Model& model,
                                const std::vector<Index>& cells,
-                               const std::vector<std::string>& pieces, std::string* pvtu);
+                               const std::vector<std::string>& pieces, std::string* pvtu,
+                               std::string* whole = nullptr);
 
 /// contact.vtu: the contact nodes in the order of contact.csv, its facets as line cells, and the
 /// point data displacement, normal (nu_j, 3 components), normal_displacement (u . nu),

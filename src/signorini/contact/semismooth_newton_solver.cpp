@@ -371,15 +371,13 @@ ContactResult solve_semismooth_newton_on_backend(const ContactProblem& problem,
 ContactResult solve_semismooth_newton_distributed(const ContactProblem& problem,
                                                   const ContactSolverOptions& options,
                                                   const MethodStart& start) {
-  DistributedEngine* engine = distributed_engine();
-  if (engine == nullptr) throw InputError("the distributed path needs a PETSc engine");
+  DistributedEngine& engine = required_distributed_engine();
   ContactResult out;
   TimingTable timings;
   const std::unique_ptr<DistributedActiveSetSolver> solver =
-      engine->active_set_solver(problem, options, start.displacement(problem.A.rows()), timings);
+      engine.active_set_solver(problem, options, start.displacement(problem.A.rows()), timings);
   run_semismooth_newton(problem, options, start.multipliers(problem.contact.size()), *solver, out);
-  out.summary.device = engine->description() + ", " + solver->linear_solver_description();
-  out.summary.ranks = engine->size();
+  record_distributed(out.summary, engine, solver->linear_solver_description());
   out.summary.timings.merge(timings);
   return out;
 }

@@ -10,7 +10,6 @@
 #include "signorini/contact/host_newton_space.hpp"
 #include "signorini/contact/newton_system.hpp"
 #include "signorini/contact/uzawa_iteration.hpp"
-#include "signorini/core/error.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
@@ -51,13 +50,11 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
 ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
                                           const ContactSolverOptions& options,
                                           const MethodStart& start) {
-  DistributedEngine* engine = distributed_engine();
-  if (engine == nullptr) throw InputError("the distributed path needs a PETSc engine");
+  DistributedEngine& engine = required_distributed_engine();
   ContactResult out;
-  SolveSummary& s = out.summary;
   TimingTable timings;
   const std::unique_ptr<DistributedNewtonSpace> space =
-      engine->newton_space(problem, options, start.displacement(problem.A.rows()), timings);
+      engine.newton_space(problem, options, start.displacement(problem.A.rows()), timings);
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
   run_uzawa_iteration(problem, options, phi, *space, start.multipliers(problem.contact.size()),
                       out);
@@ -65,9 +62,8 @@ ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
     ScopedTimer t(timings, "gather");
     out.u = space->gathered_solution();
   }
-  s.device = engine->description() + ", " + space->linear_solver_description();
-  s.ranks = engine->size();
-  s.timings.merge(timings);
+  record_distributed(out.summary, engine, space->linear_solver_description());
+  out.summary.timings.merge(timings);
   return out;
 }
 

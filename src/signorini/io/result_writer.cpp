@@ -36,9 +36,9 @@ namespace {
 std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
   const ContactProblem& p = model.problem;
   const Index n = p.A.rows();
-  const std::vector<Index> starts =
-      p.partitioned() ? p.row_starts : row_partition(n, ranks, p.node_of_unknown, p.contact.N);
-  const std::vector<Index> node_of = free_dof_nodes(model.dofs);
+  const std::vector<Index> starts = partition_of(p, ranks);
+  const std::vector<Index> node_of =
+      p.node_of_unknown.empty() ? free_dof_nodes(model.dofs) : p.node_of_unknown;
   std::vector<int> owner(static_cast<std::size_t>(model.mesh.num_nodes()), -1);
   int r = 0;
   for (Index i = 0; i < n; ++i) {
@@ -72,16 +72,16 @@ void write_distributed(const std::filesystem::path& outdir, const ContactResult&
   StagedFiles staged;
   std::string error;
   try {
-    std::string pvtu;
+    std::string pvtu, whole;
     staged.add(outdir / pieces[static_cast<std::size_t>(rank)],
                solution_vtu_piece(result, model, cells_of_rank(model, rank, ranks), pieces,
-                                  rank == 0 ? &pvtu : nullptr));
+                                  rank == 0 ? &pvtu : nullptr, rank == 0 ? &whole : nullptr));
     if (rank == 0) {
       staged.add(outdir / "solution.pvtu", pvtu);
       staged.add(outdir / "summary.json",
                  summary_to_json(result, model, spec, resultants).dump(2) + "\n");
       staged.add(outdir / "contact.csv", contact_csv(result, model));
-      staged.add(outdir / "solution.vtu", solution_vtu(result, model));
+      staged.add(outdir / "solution.vtu", whole);
       staged.add(outdir / "contact.vtu", contact_vtu(result, model));
     }
   } catch (const InputError& e) {

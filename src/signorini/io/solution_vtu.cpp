@@ -14,17 +14,40 @@ std::uint8_t flag(bool b) {
   return b ? std::uint8_t{1} : std::uint8_t{0};
 }
 
-}  // namespace
+// The point data of solution.vtu on every node of the mesh, made once for the whole file and
+// any of its pieces (the nodal stresses are the costly part).
+struct NodalFields {
+  Vector u;  // the full node-major displacement, clamped dofs 0
+  NodalStress stress;
+  std::vector<double> pressure, gap;
+  std::vector<std::uint8_t> active, on_boundary;
+};
 
-namespace {
+NodalFields nodal_fields(const ContactResult& result, const Model& model) {
+  const Index n = model.mesh.num_nodes();
+  NodalFields f;
+  f.u = model.dofs.expand(result.u);
+  f.stress = nodal_stress(model.mesh, model.elasticity, f.u);  // YZ, XZ are 0 in 2D
+  f.pressure.assign(static_cast<std::size_t>(n), 0.0);
+  f.gap.assign(static_cast<std::size_t>(n), 0.0);
+  f.active.assign(static_cast<std::size_t>(n), 0);
+  f.on_boundary.assign(static_cast<std::size_t>(n), 0);
+  const ContactSet& c = model.problem.contact;
+  for (Index j = 0; j < c.size(); ++j) {
+    const auto node = static_cast<std::size_t>(c.nodes[static_cast<std::size_t>(j)]);
+    f.pressure[node] = result.l(j);
+    f.gap[node] = c.gaps(j);
+    f.active[node] = flag(result.l(j) > 0.0);  // as SolveSummary::num_active counts them
+    f.on_boundary[node] = 1;
+  }
+  return f;
+}
 
 // solution.vtu's content for the given cells (all: null), with the nodes that they use,
 // renumbered in increasing order (all nodes when all cells).
-VtuFile solution_file(const ContactResult& result, const Model& model,
-                      const std::vector<Index>* cells) {
+VtuFile solution_file(const NodalFields& f, const Model& model, const std::vector<Index>* cells) {
   const Mesh& mesh = model.mesh;
   const Index n = mesh.num_nodes();
-  const Vector u = model.dofs.expand(result.u);  // clamped dofs are 0
 
   // The nodes of the piece and their numbers in it (-1: not in it).
   std::vector<Index> point_of(static_cast<std::size_t>(n), -1);
@@ -73,27 +96,13 @@ VtuFile solution_file(const ContactResult& result, const Model& model,
   };
   const int dim = mesh.dim();
   vtu.add_point_data("displacement", 3,
-                     per_point(3, [&](Index k, int i) { return i < dim ? u(dim * k + i) : 0.0; }),
+                     per_point(3, [&](Index k, int i) { return i < dim ? f.u(dim * k + i) : 0.0; }),
                      {"X", "Y", "Z"});
-
-  const NodalStress stress = nodal_stress(mesh, model.elasticity, u);  // YZ, XZ are 0 in 2D
-  vtu.add_point_data("stress", 6, per_point(6, [&](Index k, int i) { return stress.sigma(i, k); }),
+  vtu.add_point_data("stress", 6,
+                     per_point(6, [&](Index k, int i) { return f.stress.sigma(i, k); }),
                      {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
   vtu.add_point_data("von_mises", 1,
-                     per_point(1, [&](Index k, int) { return stress.von_mises(k); }));
-
-  const ContactSet& c = model.problem.contact;
-  std::vector<double> pressure(static_cast<std::size_t>(n), 0.0);
-  std::vector<double> gap(static_cast<std::size_t>(n), 0.0);
-  std::vector<std::uint8_t> active(static_cast<std::size_t>(n), 0);
-  std::vector<std::uint8_t> on_boundary(static_cast<std::size_t>(n), 0);
-  for (Index j = 0; j < c.size(); ++j) {
-    const auto node = static_cast<std::size_t>(c.nodes[static_cast<std::size_t>(j)]);
-    pressure[node] = result.l(j);
-    gap[node] = c.gaps(j);
-    active[node] = flag(result.l(j) > 0.0);  // as SolveSummary::num_active counts them
-    on_boundary[node] = 1;
-  }
+                     per_point(1, [&](Index k, int) { return f.stress.von_mises(k); }));
   const auto bytes = [&](const std::vector<std::uint8_t>& all) {
     std::vector<std::uint8_t> out(static_cast<std::size_t>(m));
     for (Index p = 0; p < m; ++p)
@@ -102,26 +111,29 @@ VtuFile solution_file(const ContactResult& result, const Model& model,
     return out;
   };
   vtu.add_point_data("contact_pressure", 1, per_point(1, [&](Index k, int) {
-                       return pressure[static_cast<std::size_t>(k)];
+                       return f.pressure[static_cast<std::size_t>(k)];
                      }));
-  vtu.add_point_data("gap", 1,
-                     per_point(1, [&](Index k, int) { return gap[static_cast<std::size_t>(k)]; }));
-  vtu.add_point_data("contact_active", bytes(active));
-  vtu.add_point_data("contact_boundary", bytes(on_boundary));
+  vtu.add_point_data(
+      "gap", 1, per_point(1, [&](Index k, int) { return f.gap[static_cast<std::size_t>(k)]; }));
+  vtu.add_point_data("contact_active", bytes(f.active));
+  vtu.add_point_data("contact_boundary", bytes(f.on_boundary));
   return vtu;
 }
 
 }  // namespace
 
 std::string solution_vtu(const ContactResult& result, const Model& model) {
-  return solution_file(result, model, nullptr).take_text();
+  return solution_file(nodal_fields(result, model), model, nullptr).take_text();
 }
 
 std::string solution_vtu_piece(const ContactResult& result, const Model& model,
                                const std::vector<Index>& cells,
-                               const std::vector<std::string>& pieces, std::string* pvtu) {
-  VtuFile vtu = solution_file(result, model, &cells);
+                               const std::vector<std::string>& pieces, std::string* pvtu,
+                               std::string* whole) {
+  const NodalFields fields = nodal_fields(result, model);
+  VtuFile vtu = solution_file(fields, model, &cells);
   if (pvtu != nullptr) *pvtu = vtu.parallel_text(pieces);
+  if (whole != nullptr) *whole = solution_file(fields, model, nullptr).take_text();
   return vtu.take_text();
 }
 

@@ -45,6 +45,28 @@ std::string xml_escaped(const std::string& text) {
   return out;
 }
 
+// A data array's attributes: type, name (none when empty), components and their names.
+std::string array_attributes(const std::string& type, const std::string& name, int components,
+                             const std::vector<std::string>& component_names) {
+  std::string out = fmt::format(" type=\"{}\"", type);
+  if (!name.empty()) out += fmt::format(" Name=\"{}\"", xml_escaped(name));
+  out += fmt::format(" NumberOfComponents=\"{}\"", components);
+  for (std::size_t i = 0; i < component_names.size(); ++i)
+    out += fmt::format(" ComponentName{}=\"{}\"", i, xml_escaped(component_names[i]));
+  return out;
+}
+
+// The XML declaration and the opening VTKFile tag of a file of this type, in the machine's byte
+// order, with UInt64 block headers.
+std::string vtk_file_header(const char* type) {
+  const char* byte_order =
+      std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+  return fmt::format(
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"{}\" "
+      "header_type=\"UInt64\">\n",
+      type, byte_order);
+}
+
 }  // namespace
 
 VtkCellType vtk_cell_type(CellType type) {
@@ -170,20 +192,10 @@ void VtuFile::add_cell_data(const std::string& name, const std::vector<std::int3
 
 std::string VtuFile::parallel_text(const std::vector<std::string>& pieces) const {
   const auto array = [](const std::string& indent, const Array& a) {
-    std::string line =
-        fmt::format("{}<PDataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"", indent,
-                    a.type, xml_escaped(a.name), a.components);
-    for (std::size_t i = 0; i < a.component_names.size(); ++i)
-      line += fmt::format(" ComponentName{}=\"{}\"", i, xml_escaped(a.component_names[i]));
-    return line + "/>\n";
+    return indent + "<PDataArray" +
+           array_attributes(a.type, a.name, a.components, a.component_names) + "/>\n";
   };
-  const char* byte_order =
-      std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
-  std::string xml = "<?xml version=\"1.0\"?>\n";
-  xml += fmt::format(
-      "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
-      "header_type=\"UInt64\">\n",
-      byte_order);
+  std::string xml = vtk_file_header("PUnstructuredGrid");
   xml += "  <PUnstructuredGrid GhostLevel=\"0\">\n";
   xml += "    <PPointData>\n";
   for (const Array& a : point_data_) xml += array("      ", a);
@@ -218,11 +230,7 @@ std::string VtuFile::take_text() {
   const auto data_array = [&](const std::string& indent, const std::string& name,
                               const std::string& type, int components,
                               const std::vector<std::string>& component_names, Block block) {
-    xml += fmt::format("{}<DataArray type=\"{}\"", indent, type);
-    if (!name.empty()) xml += fmt::format(" Name=\"{}\"", xml_escaped(name));
-    xml += fmt::format(" NumberOfComponents=\"{}\"", components);
-    for (std::size_t i = 0; i < component_names.size(); ++i)
-      xml += fmt::format(" ComponentName{}=\"{}\"", i, xml_escaped(component_names[i]));
+    xml += indent + "<DataArray" + array_attributes(type, name, components, component_names);
     xml += fmt::format(" format=\"appended\" offset=\"{}\"/>\n", appended);
     appended += sizeof(std::uint64_t) + block.size;
     blocks.push_back(std::move(block));
@@ -236,13 +244,7 @@ std::string VtuFile::take_text() {
                  [&values] { std::decay_t<decltype(values)>().swap(values); }};
   };
 
-  const char* byte_order =
-      std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
-  xml += "<?xml version=\"1.0\"?>\n";
-  xml += fmt::format(
-      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
-      "header_type=\"UInt64\">\n",
-      byte_order);
+  xml += vtk_file_header("UnstructuredGrid");
   xml += "  <UnstructuredGrid>\n";
   xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", num_points_,
                      types_.size());

@@ -1,7 +1,10 @@
 #include "signorini/linalg/cholmod_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include "signorini/linalg/detail/cholmod_matrix.hpp"
@@ -43,6 +46,13 @@ struct CholmodSolver::Impl {
 
   void tree();
   void to_ldl();
+  // Throws unless there is a numeric factor (and `row`, when given, is one of its rows).
+  void require_factor(const char* call, std::optional<Index> row = {}) const;
+  // Before a modification of the factor: the tree for the cost estimates, and L D L^T.
+  void prepare_modification() {
+    tree();
+    to_ldl();
+  }
   [[nodiscard]] bool pivots_positive() const;
   // A row modification is a rank-two change along the path from its (permuted) column: twice
   // update_flops() of that column, which sets the rate of the estimates that follow.
@@ -169,8 +179,7 @@ void CholmodSolver::Impl::tree() {
 
 double CholmodSolver::update_flops(const std::vector<Index>& rows) {
   Impl& s = *impl_;
-  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
-    throw NumericalError("CHOLMOD: update_flops() before factorize()");
+  s.require_factor("update_flops()");
   if (rows.empty()) return 0.0;
   s.tree();
   detail::CholmodInt k = static_cast<detail::CholmodInt>(s.n);
@@ -194,6 +203,13 @@ double CholmodSolver::predicted_conversion_seconds() const {
 
 double CholmodSolver::last_factorization_seconds() const {
   return impl_->factorization_seconds;
+}
+
+void CholmodSolver::Impl::require_factor(const char* call, std::optional<Index> row) const {
+  if (factor == nullptr || factor->xtype == CHOLMOD_PATTERN)
+    throw NumericalError(fmt::format("CHOLMOD: {} before factorize()", call));
+  if (row && (*row < 0 || *row >= n))
+    throw NumericalError(fmt::format("CHOLMOD: {} of a row out of range", call));
 }
 
 void CholmodSolver::Impl::to_ldl() {
@@ -224,12 +240,9 @@ bool CholmodSolver::Impl::pivots_positive() const {
 
 bool CholmodSolver::delete_row(Index k) {
   Impl& s = *impl_;
-  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
-    throw NumericalError("CHOLMOD: delete_row() before factorize()");
-  if (k < 0 || k >= s.n) throw NumericalError("CHOLMOD: delete_row() of a row out of range");
+  s.require_factor("delete_row()", k);
   ScopedTimer timer(timings_, "linear factor update");
-  s.tree();
-  s.to_ldl();
+  s.prepare_modification();
   const auto kp = s.inverse_perm[static_cast<std::size_t>(k)];
   const auto start = std::chrono::steady_clock::now();
   const int ok = cholmod_l_rowdel(static_cast<std::size_t>(kp), nullptr, s.factor, &s.common);
@@ -239,12 +252,9 @@ bool CholmodSolver::delete_row(Index k) {
 
 bool CholmodSolver::add_row(Index k, const std::vector<std::pair<Index, double>>& column) {
   Impl& s = *impl_;
-  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
-    throw NumericalError("CHOLMOD: add_row() before factorize()");
-  if (k < 0 || k >= s.n) throw NumericalError("CHOLMOD: add_row() of a row out of range");
+  s.require_factor("add_row()", k);
   ScopedTimer timer(timings_, "linear factor update");
-  s.tree();
-  s.to_ldl();
+  s.prepare_modification();
   // The column in the factor's (permuted) order, sorted, as an n x 1 CHOLMOD matrix.
   std::vector<std::pair<detail::CholmodInt, double>> permuted;
   permuted.reserve(column.size());
@@ -275,13 +285,11 @@ bool CholmodSolver::add_row(Index k, const std::vector<std::pair<Index, double>>
 
 bool CholmodSolver::update(const SparseMatrix& C, bool up) {
   Impl& s = *impl_;
-  if (s.factor == nullptr || s.factor->xtype == CHOLMOD_PATTERN)
-    throw NumericalError("CHOLMOD: update() before factorize()");
+  s.require_factor("update()");
   if (C.rows() != s.n) throw NumericalError("CHOLMOD: update() with a matrix of the wrong size");
   if (C.cols() == 0) return true;
   ScopedTimer timer(timings_, "linear factor update");
-  s.tree();
-  s.to_ldl();
+  s.prepare_modification();
   // CHOLMOD takes C's rows in the factor's (permuted) order, sorted within each column.
   cholmod_sparse* Cp = cholmod_l_allocate_sparse(
       static_cast<std::size_t>(s.n), static_cast<std::size_t>(C.cols()),

@@ -18,6 +18,17 @@ void set_distributed_engine(DistributedEngine* engine) {
   registered = engine;
 }
 
+DistributedEngine& required_distributed_engine() {
+  if (registered == nullptr) throw InputError("the distributed path needs a PETSc engine");
+  return *registered;
+}
+
+void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
+                        const std::string& linear_solver) {
+  summary.device = engine.description() + ", " + linear_solver;
+  summary.ranks = engine.size();
+}
+
 void sum_over_ranks(const ContactProblem& problem, double* values, Index count) {
   if (!problem.partitioned()) return;
   if (registered == nullptr)

@@ -15,6 +15,7 @@
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/newton_space.hpp"
+#include "signorini/contact/solve_summary.hpp"
 #include "signorini/core/timing_table.hpp"
 
 namespace signorini {
@@ -63,6 +64,12 @@ class DistributedEngine {
 
 /// The registered engine, or null (a serial build or tool).
 [[nodiscard]] DistributedEngine* distributed_engine();
+/// The registered engine; InputError without one (the distributed path's solvers).
+[[nodiscard]] DistributedEngine& required_distributed_engine();
+/// What a distributed solve records in its summary: the ranks, and the engine and the linear
+/// solver (`device`).
+void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
+                        const std::string& linear_solver);
 /// Registers (or, with null, removes) the engine; not owned, it must outlive its use.
 void set_distributed_engine(DistributedEngine* engine);
 

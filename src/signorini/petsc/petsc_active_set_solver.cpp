@@ -1,6 +1,7 @@
 #include "signorini/petsc/petsc_active_set_solver.hpp"
 
-#include "signorini/parallel/row_partition.hpp"
+#include <tuple>
+
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
@@ -17,17 +18,10 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
       comm_(comm),
       rotation_(make_normal_rotation(problem.contact, problem.A.rows())) {
   ScopedTimer timer(external_timings_, "distributed set-up");
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm_, &rank);
-  MPI_Comm_size(comm_, &size);
   n_ = problem.A.rows();
   nc_ = problem.contact.size();
-  // The rotation mixes only the dofs of one node, which row_partition keeps on one rank.
-  const std::vector<Index> starts =
-      problem.partitioned() ? problem.row_starts
-                            : row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
-  lo_ = starts[static_cast<std::size_t>(rank)];
-  hi_ = starts[static_cast<std::size_t>(rank) + 1];
+  // The rotation mixes only the dofs of one node, which the partition keeps on one rank.
+  std::tie(lo_, hi_) = petsc::owned_rows(problem, comm_);
   for (Index j = 0; j < nc_; ++j) {
     const Index a = rotation_.normal_dof[static_cast<std::size_t>(j)];
     if (a >= lo_ && a < hi_) owned_.push_back(j);

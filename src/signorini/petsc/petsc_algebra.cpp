@@ -5,9 +5,18 @@
 #include <vector>
 
 #include "signorini/core/error.hpp"
+#include "signorini/parallel/row_partition.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
 namespace signorini::petsc {
+
+std::pair<Index, Index> owned_rows(const ContactProblem& problem, MPI_Comm comm) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const std::vector<Index> starts = partition_of(problem, size);
+  return {starts[static_cast<std::size_t>(rank)], starts[static_cast<std::size_t>(rank) + 1]};
+}
 
 Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm) {
   const auto m = static_cast<PetscInt>(hi - lo);

@@ -7,11 +7,16 @@
 #include <petscksp.h>
 
 #include <string>
+#include <utility>
 
+#include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/core/types.hpp"
 
 namespace signorini::petsc {
+
+/// The range [first, second) of unknowns that this rank of `comm` owns (partition_of).
+[[nodiscard]] std::pair<Index, Index> owned_rows(const ContactProblem& problem, MPI_Comm comm);
 
 /// Rows [lo, hi) of the symmetric, column-major A (row i of A is its column i) as an MPIAIJ
 /// matrix, marked symmetric positive definite.

@@ -2,11 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
+#include <tuple>
 
-#include "signorini/core/error.hpp"
-#include "signorini/parallel/row_partition.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
@@ -19,16 +16,9 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
                                    TimingTable& timings, MPI_Comm comm)
     : p_(problem), o_(options), timings_(timings), comm_(comm) {
   ScopedTimer timer(timings_, "distributed set-up");
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm_, &rank);
-  MPI_Comm_size(comm_, &size);
   n_ = problem.A.rows();
   nc_ = problem.contact.size();
-  starts_ = problem.partitioned()
-                ? problem.row_starts
-                : row_partition(n_, size, problem.node_of_unknown, problem.contact.N);
-  lo_ = starts_[static_cast<std::size_t>(rank)];
-  hi_ = starts_[static_cast<std::size_t>(rank) + 1];
+  std::tie(lo_, hi_) = petsc::owned_rows(problem, comm_);
 
   A_ = petsc::distributed_rows(problem.A, lo_, hi_, comm_);
   check(MatDuplicate(A_, MAT_COPY_VALUES, &H_), "the Newton matrix");

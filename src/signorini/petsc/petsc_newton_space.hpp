@@ -38,9 +38,6 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   [[nodiscard]] Vector gathered_solution() override;
   [[nodiscard]] std::string linear_solver_description() const override { return description_; }
 
-  /// The first row of each rank's range, and the number of rows (ranks + 1 numbers).
-  [[nodiscard]] const std::vector<Index>& row_starts() const { return starts_; }
-
  private:
   struct ContactRow {
     Index j;                     // contact node
@@ -56,7 +53,6 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   TimingTable& timings_;
   MPI_Comm comm_;
   Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;
-  std::vector<Index> starts_;
   std::vector<ContactRow> rows_;  // the contact rows whose dofs this rank owns
   Mat A_ = nullptr, H_ = nullptr;
   Vec b_ = nullptr, x_ = nullptr, x_new_ = nullptr, residual_ = nullptr, d_ = nullptr,

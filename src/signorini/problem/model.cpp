@@ -244,18 +244,21 @@ Model build_model(const ProblemSpec& spec) {
   if (dofs.num_free() == 0) throw InputError("every dof is clamped: nothing to solve");
   require_no_free_rigid_motion(mesh, dofs);
 
+  // The distributed path (docs/distributed.md) is the options' choice alone: the size-based plan
+  // below never changes it.
+  const bool distributed = distributed_path(spec.solver);
   ContactProblem problem;
   {
     ScopedTimer t(timings, "assembly");
-    const DistributedEngine* engine = distributed_engine();
-    if (distributed_path(spec.solver) && engine != nullptr) {
+    if (distributed) {
+      const DistributedEngine& engine = required_distributed_engine();
       // A distributed run (docs/distributed.md): each rank assembles only the columns of the
       // unknowns it owns (by symmetry its rows), from the cells that touch its nodes; the
       // partition keeps each node's unknowns on one rank.
       problem.node_of_unknown = free_dof_nodes(dofs);
-      problem.row_starts = row_partition(dofs.num_free(), engine->size(), problem.node_of_unknown,
+      problem.row_starts = row_partition(dofs.num_free(), engine.size(), problem.node_of_unknown,
                                          SparseMatrix(0, dofs.num_free()));
-      const auto rank = static_cast<std::size_t>(engine->rank());
+      const auto rank = static_cast<std::size_t>(engine.rank());
       std::vector<bool> owned(static_cast<std::size_t>(mesh.num_nodes()), false);
       for (Index i = problem.row_starts[rank]; i < problem.row_starts[rank + 1]; ++i)
         owned[static_cast<std::size_t>(problem.node_of_unknown[static_cast<std::size_t>(i)])] =
@@ -328,13 +331,12 @@ Model build_model(const ProblemSpec& spec) {
                                            problem.contact.size(), physical_memory_bytes()});
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = plan.options.linear;
-  if (distributed_path(plan.options)) {
-    // PETSc's algebraic multigrid builds its own levels from the rigid-body modes, and the
-    // partition keeps each node's dofs on one rank (docs/distributed.md).
-    problem.near_null_space = rigid_body_modes(mesh, dofs);
-    if (problem.node_of_unknown.empty()) problem.node_of_unknown = free_dof_nodes(dofs);
-  } else if (linear.type == LinearSolverType::ConjugateGradient &&
-             linear.preconditioner == PreconditionerType::Multigrid) {
+  const bool multigrid_cg = linear.type == LinearSolverType::ConjugateGradient &&
+                            linear.preconditioner == PreconditionerType::Multigrid;
+  if (distributed) {
+    // PETSc's algebraic multigrid builds its own levels, from the rigid-body modes.
+    if (multigrid_cg) problem.near_null_space = rigid_body_modes(mesh, dofs);
+  } else if (multigrid_cg) {
     ScopedTimer t(timings, "multigrid hierarchy");
     // (The plan changes neither the coarsening nor the smoother, which the hierarchy reads from
     // the spec.)
