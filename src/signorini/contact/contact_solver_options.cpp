@@ -100,7 +100,9 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
     t.choice("petsc_multigrid", &O::petsc_multigrid, kPetscMultigridNames,
              "on the distributed path, the multigrid of `[solver.linear] preconditioner = "
              "\"multigrid\"`: `\"gamg\"`, PETSc's smoothed aggregation on the rigid-body "
-             "modes; `\"hypre\"`, hypre's BoomerAMG (classical AMG, without the modes: slower "
+             "modes, its levels formed once and kept for every active set of Uzawa-GNM (a "
+             "`-pc_type` in `petsc_options` replaces them); `\"hypre\"`, hypre's BoomerAMG "
+             "(classical AMG, without the modes: slower "
              "on elastic bodies) ([distributed.md](distributed.md))");
     t.choice("device", &O::device, kDeviceKindNames,
              "where the solve runs; `\"cuda\"`: the whole Uzawa–GNM loop on an NVIDIA GPU, with "

@@ -30,8 +30,7 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
   check(MatDuplicate(Ar_, MAT_COPY_VALUES, &K_), "the Newton matrix");
   // MatZeroRowsColumns keeps K's pattern, so every step's matrix has A_r's.
   check(MatSetOption(K_, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE), "the Newton matrix");
-  check(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE), "the Newton matrix");
-  check(MatSetOption(K_, MAT_SPD, PETSC_TRUE), "the Newton matrix");
+  petsc::mark_spd(K_, "the Newton matrix");
   check(MatCreateVecs(Ar_, &y_, &br_), "vectors");
   for (Vec* v : {&rhs_, &fixed_values_, &reaction_}) check(VecDuplicate(y_, v), "vectors");
   petsc::set_local(br_, rotation_.to_rotated(problem.b), lo_, hi_);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "signorini/core/error.hpp"
@@ -18,7 +19,40 @@ std::pair<Index, Index> owned_rows(const ContactProblem& problem, MPI_Comm comm)
   return {starts[static_cast<std::size_t>(rank)], starts[static_cast<std::size_t>(rank) + 1]};
 }
 
-Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm) {
+PetscInt node_block_size(const ContactProblem& problem, Index lo, Index hi, MPI_Comm comm) {
+  // The lengths of the runs of one node's unknowns on this rank (the partition keeps a node's
+  // unknowns together): one length on every rank is the block size.
+  const std::vector<Index>& node = problem.node_of_unknown;
+  int shortest = 1 << 20, longest = 0;
+  if (static_cast<Index>(node.size()) != problem.A.rows()) {
+    shortest = longest = 1;
+  } else {
+    for (Index i = lo; i < hi;) {
+      Index end = i + 1;
+      while (end < hi && node[static_cast<std::size_t>(end)] == node[static_cast<std::size_t>(i)])
+        ++end;
+      shortest = std::min(shortest, static_cast<int>(end - i));
+      longest = std::max(longest, static_cast<int>(end - i));
+      i = end;
+    }
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &shortest, 1, MPI_INT, MPI_MIN, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &longest, 1, MPI_INT, MPI_MAX, comm);
+  return shortest == longest ? longest : 1;
+}
+
+void mark_spd(Mat M, const char* what) {
+  check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), what);
+  check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), what);
+  // (MPIBAIJ takes no MAT_SPD in PETSc 3.18; CG and the smoothers do not need it.)
+  PetscBool block = PETSC_FALSE;
+  check(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(M), &block, MATSEQBAIJ, MATMPIBAIJ,
+                                  ""),
+        what);
+  if (!block) check(MatSetOption(M, MAT_SPD, PETSC_TRUE), what);
+}
+
+Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscInt block) {
   const auto m = static_cast<PetscInt>(hi - lo);
   std::vector<PetscInt> ia(static_cast<std::size_t>(m) + 1, 0), ja;
   std::vector<PetscScalar> va;
@@ -33,11 +67,65 @@ Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm) {
   }
   const auto n = static_cast<PetscInt>(A.rows());
   Mat M = nullptr;
-  check(MatCreateMPIAIJWithArrays(comm, m, m, n, n, ia.data(), ja.data(), va.data(), &M),
-        "a distributed matrix");
-  check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "a distributed matrix");
-  check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "a distributed matrix");
-  check(MatSetOption(M, MAT_SPD, PETSC_TRUE), "a distributed matrix");
+  check(MatCreate(comm, &M), "a distributed matrix");
+  check(MatSetSizes(M, m, m, n, n), "a distributed matrix");
+  check(MatSetBlockSize(M, block), "a distributed matrix");
+  check(MatSetType(M, MATAIJ), "a distributed matrix");
+  // (Each call is a no-op on a matrix of the other type: MATAIJ is one of them by size.)
+  check(MatSeqAIJSetPreallocationCSR(M, ia.data(), ja.data(), va.data()), "a distributed matrix");
+  check(MatMPIAIJSetPreallocationCSR(M, ia.data(), ja.data(), va.data()), "a distributed matrix");
+  mark_spd(M, "a distributed matrix");
+  return M;
+}
+
+Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscInt block) {
+  if (block <= 1) return distributed_rows(A, lo, hi, comm);
+  // Block row ib holds the rows lo + bs ib ... of one node, which all have the same columns (the
+  // nodes that share a cell with it): their block columns are those of its first row.
+  const Index bs = block;
+  const Index rows = (hi - lo) / bs;
+  std::vector<PetscInt> d_blocks(static_cast<std::size_t>(rows), 0), o_blocks(d_blocks);
+  for (Index ib = 0; ib < rows; ++ib)
+    for (SparseMatrix::InnerIterator it(A, lo + ib * bs); it; ++it)
+      if (it.row() % bs == 0) {
+        const bool own = it.row() >= lo && it.row() < hi;
+        ++(own ? d_blocks : o_blocks)[static_cast<std::size_t>(ib)];
+      }
+  Mat M = nullptr;
+  const auto m = static_cast<PetscInt>(hi - lo);
+  const auto n = static_cast<PetscInt>(A.rows());
+  check(MatCreate(comm, &M), "a block matrix");
+  check(MatSetSizes(M, m, m, n, n), "a block matrix");
+  check(MatSetBlockSize(M, block), "a block matrix");
+  check(MatSetType(M, MATBAIJ), "a block matrix");
+  check(MatXAIJSetPreallocation(M, block, d_blocks.data(), o_blocks.data(), nullptr, nullptr),
+        "a block matrix");
+  // One block row at a time: a bs x (bs * blocks) row-major array (MatSetValuesBlocked).
+  std::vector<PetscInt> columns;
+  std::vector<PetscScalar> values;
+  for (Index ib = 0; ib < rows; ++ib) {
+    columns.clear();
+    for (SparseMatrix::InnerIterator it(A, lo + ib * bs); it; ++it)
+      if (it.row() % bs == 0) columns.push_back(static_cast<PetscInt>(it.row() / bs));
+    const std::size_t width = columns.size() * static_cast<std::size_t>(bs);
+    values.assign(width * static_cast<std::size_t>(bs), 0.0);
+    for (Index k = 0; k < bs; ++k) {
+      std::size_t c = 0;  // the position of the entry's block among `columns`
+      for (SparseMatrix::InnerIterator it(A, lo + ib * bs + k); it; ++it) {
+        const auto b = static_cast<PetscInt>(it.row() / bs);
+        while (columns[c] != b) ++c;
+        values[static_cast<std::size_t>(k) * width + c * static_cast<std::size_t>(bs) +
+               static_cast<std::size_t>(it.row() % bs)] = it.value();
+      }
+    }
+    const auto row = static_cast<PetscInt>(lo / bs + ib);
+    check(MatSetValuesBlocked(M, 1, &row, static_cast<PetscInt>(columns.size()), columns.data(),
+                              values.data(), INSERT_VALUES),
+          "a block matrix");
+  }
+  check(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY), "a block matrix");
+  check(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY), "a block matrix");
+  mark_spd(M, "a block matrix");
   return M;
 }
 
@@ -97,10 +185,46 @@ std::vector<Vec> near_null_vectors(const Matrix& modes, Index lo, Index hi, Mat 
 
 }  // namespace
 
+std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space, Index lo, Index hi) {
+  PetscInt rows = 0;
+  check(MatGetSize(M, &rows, nullptr), "near-null space");
+  if (near_null_space.rows() != rows)
+    throw NumericalError(fmt::format("PETSc: a near-null space of {} rows for {} unknowns",
+                                     near_null_space.rows(), rows));
+  std::vector<Vec> vecs = near_null_vectors(near_null_space, lo, hi, M);
+  MatNullSpace space = nullptr;
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(M));
+  check(MatNullSpaceCreate(comm, PETSC_FALSE, static_cast<PetscInt>(vecs.size()), vecs.data(),
+                           &space),
+        "near-null space");
+  check(MatSetNearNullSpace(M, space), "near-null space");
+  check(MatNullSpaceDestroy(&space), "near-null space");
+  const std::size_t modes = vecs.size();
+  for (Vec& v : vecs) check(VecDestroy(&v), "near-null space");
+  return modes;
+}
+
+void insert_petsc_options(const ContactSolverOptions& o) {
+  if (!o.petsc_options.empty())
+    check(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()),
+          fmt::format("solver.petsc_options = \"{}\"", o.petsc_options).c_str());
+}
+
+bool keeps_gamg_levels(const ContactSolverOptions& o) {
+  insert_petsc_options(o);
+  PetscBool pc_type_given = PETSC_FALSE;
+  check(PetscOptionsHasName(nullptr, nullptr, "-pc_type", &pc_type_given), "PETSc options");
+  return o.linear.type == LinearSolverType::ConjugateGradient &&
+         o.linear.preconditioner == PreconditionerType::Multigrid &&
+         o.petsc_multigrid == PetscMultigrid::Gamg && !pc_type_given;
+}
+
 KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
-                        const Matrix& near_null_space, Index lo, Index hi,
-                        bool reuse_interpolation) {
+                        const Matrix& near_null_space, Index lo, Index hi, bool reuse_interpolation,
+                        const MultigridBuilder& multigrid) {
   KspChoice choice;
+  const bool keep_levels = multigrid && keeps_gamg_levels(o);
+  std::string built;
   check(KSPSetOperators(ksp, H, H), "KSP");
   PC pc = nullptr;
   check(KSPGetPC(ksp, &pc), "KSP");
@@ -114,6 +238,8 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
         o.petsc_multigrid == PetscMultigrid::Hypre) {
       check(PCSetType(pc, PCHYPRE), "hypre");
       check(PCHYPRESetType(pc, "boomeramg"), "hypre");
+    } else if (keep_levels) {
+      built = multigrid(pc);
     } else if (o.linear.preconditioner == PreconditionerType::Multigrid) {
       check(PCSetType(pc, PCGAMG), "GAMG");
       // A new active set changes H only on the contact nodes' blocks: the levels' prolongators
@@ -124,23 +250,7 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
       // them from its first smoothed-aggregation estimate, that of A, which the penalty of a new
       // active set exceeds, and the smoother diverges (CG stops with DIVERGED_INDEFINITE_PC).
       check(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE), "GAMG");
-      if (near_null_space.rows() > 0) {
-        PetscInt rows = 0;
-        check(MatGetSize(H, &rows, nullptr), "near-null space");
-        if (near_null_space.rows() != rows)
-          throw NumericalError(fmt::format("PETSc: a near-null space of {} rows for {} unknowns",
-                                           near_null_space.rows(), rows));
-        std::vector<Vec> vecs = near_null_vectors(near_null_space, lo, hi, H);
-        MatNullSpace space = nullptr;
-        MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(H));
-        check(MatNullSpaceCreate(comm, PETSC_FALSE, static_cast<PetscInt>(vecs.size()), vecs.data(),
-                                 &space),
-              "near-null space");
-        check(MatSetNearNullSpace(H, space), "near-null space");
-        check(MatNullSpaceDestroy(&space), "near-null space");
-        modes = vecs.size();
-        for (Vec& v : vecs) check(VecDestroy(&v), "near-null space");
-      }
+      if (near_null_space.rows() > 0) modes = attach_near_null_space(H, near_null_space, lo, hi);
     } else {
       check(PCSetType(pc, PCJACOBI), "Jacobi");
     }
@@ -150,9 +260,7 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
     check(PCSetType(pc, PCCHOLESKY), "Cholesky");
     check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "MUMPS");
   }
-  if (!o.petsc_options.empty())
-    check(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()),
-          fmt::format("solver.petsc_options = \"{}\"", o.petsc_options).c_str());
+  insert_petsc_options(o);
   check(KSPSetFromOptions(ksp), "KSP options");
   KSPType ksp_type = nullptr;
   PCType pc_type = nullptr;
@@ -161,6 +269,7 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
   choice.description = fmt::format("KSP {} with PC {}", ksp_type != nullptr ? ksp_type : "?",
                                    pc_type != nullptr ? pc_type : "?");
   if (choice.direct) choice.description += " (MUMPS)";
+  if (!built.empty()) choice.description += " (" + built + ")";
   // (The modes only where the PC in the end is GAMG: petsc_options may have changed it.)
   if (modes > 0 && pc_type != nullptr && std::string(pc_type) == PCGAMG)
     choice.description += fmt::format(" ({} rigid-body modes)", modes);

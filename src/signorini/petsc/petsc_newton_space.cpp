@@ -20,11 +20,18 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   nc_ = problem.contact.size();
   std::tie(lo_, hi_) = petsc::owned_rows(problem, comm_);
 
-  A_ = petsc::distributed_rows(problem.A, lo_, hi_, comm_);
+  // A in AIJ for GAMG's set-up and, where every node has all its unknowns, in node blocks for
+  // the products (petsc_algebra.hpp, block_copy).
+  const PetscInt block = petsc::node_block_size(problem, lo_, hi_, comm_);
+  Mat A_aij = petsc::distributed_rows(problem.A, lo_, hi_, comm_, block);
+  if (petsc::keeps_gamg_levels(o_)) {
+    A_ = petsc::block_rows(problem.A, lo_, hi_, comm_, block);
+  } else {
+    A_ = A_aij;
+    check(PetscObjectReference(reinterpret_cast<PetscObject>(A_)), "A");
+  }
   check(MatDuplicate(A_, MAT_COPY_VALUES, &H_), "the Newton matrix");
-  check(MatSetOption(H_, MAT_SYMMETRIC, PETSC_TRUE), "the Newton matrix");
-  check(MatSetOption(H_, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "the Newton matrix");
-  check(MatSetOption(H_, MAT_SPD, PETSC_TRUE), "the Newton matrix");
+  petsc::mark_spd(H_, "the Newton matrix");
 
   check(MatCreateVecs(A_, &x_, &b_), "vectors");
   for (Vec* v : {&x_new_, &residual_, &d_, &Ad_, &work_}) check(VecDuplicate(x_, v), "vectors");
@@ -36,7 +43,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   // The contact rows of this rank: all the dofs of a row lie in one range (row_partition).
   const SparseMatrix Nt = problem.contact.N.transpose();
   for (Index j = 0; j < nc_; ++j) {
-    ContactRow row{j, {}, {}};
+    petsc::ContactRow row{j, {}, {}};
     for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
       row.dofs.push_back(static_cast<PetscInt>(it.row()));
       row.normal.push_back(it.value());
@@ -44,22 +51,37 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
     if (!row.dofs.empty() && row.dofs.front() >= lo_ && row.dofs.front() < hi_)
       rows_.push_back(std::move(row));
   }
-  set_up_solver();
+  set_up_solver(A_aij);
+  check(MatDestroy(&A_aij), "A");
   active_.assign(static_cast<std::size_t>(nc_), false);
   Nx_ = contact_values_of(x_);
 }
 
 PetscNewtonSpace::~PetscNewtonSpace() {
   KSPDestroy(&ksp_);
+  multigrid_.reset();
   for (Vec* v : {&b_, &x_, &x_new_, &residual_, &d_, &Ad_, &work_}) VecDestroy(v);
   MatDestroy(&H_);
   MatDestroy(&A_);
 }
 
-void PetscNewtonSpace::set_up_solver() {
+void PetscNewtonSpace::set_up_solver(Mat A_aij) {
   check(KSPCreate(comm_, &ksp_), "KSP");
+  // CG with GAMG: GAMG's levels formed once, from A, and the contact term carried to each
+  // (petsc_contact_multigrid.hpp).
+  const petsc::MultigridBuilder keep_levels = [&](PC pc) {
+    std::string what = "GAMG's levels, kept for every active set";
+    if (p_.near_null_space.rows() > 0)
+      what += fmt::format(", {} rigid-body modes",
+                          petsc::attach_near_null_space(A_aij, p_.near_null_space, lo_, hi_));
+    multigrid_ = std::make_unique<petsc::ContactMultigrid>(pc, A_aij, A_, rows_, comm_);
+    std::string sizes;
+    for (const PetscInt n : multigrid_->level_sizes())
+      sizes += fmt::format("{}{}", sizes.empty() ? "" : ", ", n);
+    return fmt::format("{}; levels of {} unknowns", what, sizes);
+  };
   const petsc::KspChoice choice =
-      petsc::configure_ksp(ksp_, H_, o_, p_.near_null_space, lo_, hi_, true);
+      petsc::configure_ksp(ksp_, H_, o_, p_.near_null_space, lo_, hi_, true, keep_levels);
   direct_ = choice.direct;
   description_ = choice.description;
 }
@@ -72,7 +94,7 @@ void PetscNewtonSpace::set_active(const ActiveSet& active, double r) {
   ScopedTimer t(timings_, "preconditioner setup");
   check(MatCopy(A_, H_, SAME_NONZERO_PATTERN), "the Newton matrix");
   std::vector<PetscScalar> block;
-  for (const ContactRow& row : rows_) {
+  for (const petsc::ContactRow& row : rows_) {
     if (!active[static_cast<std::size_t>(row.j)]) continue;
     const double c = r * p_.contact.weights(row.j);
     const std::size_t k = row.dofs.size();
@@ -85,6 +107,12 @@ void PetscNewtonSpace::set_active(const ActiveSet& active, double r) {
   }
   check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
   check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
+  if (multigrid_) {
+    Vector c = Vector::Zero(nc_);
+    for (Index j = 0; j < nc_; ++j)
+      if (active[static_cast<std::size_t>(j)]) c(j) = r * p_.contact.weights(j);
+    multigrid_->set_weights(c);
+  }
   check(KSPSetOperators(ksp_, H_, H_), "KSP");  // the preconditioner is set up again
   active_ = active;
   has_active_ = true;
@@ -153,7 +181,7 @@ Vector PetscNewtonSpace::contact_values_of(Vec v) {
   Vector values = Vector::Zero(nc_);
   const PetscScalar* a = nullptr;
   check(VecGetArrayRead(v, &a), "N x");
-  for (const ContactRow& row : rows_) {
+  for (const petsc::ContactRow& row : rows_) {
     double s = 0.0;
     for (std::size_t k = 0; k < row.dofs.size(); ++k) s += row.normal[k] * a[row.dofs[k] - lo_];
     values(row.j) = s;
@@ -167,7 +195,7 @@ Vector PetscNewtonSpace::contact_values_of(Vec v) {
 void PetscNewtonSpace::add_contact_transpose(const Vector& values, Vec v) {
   PetscScalar* a = nullptr;
   check(VecGetArray(v, &a), "N^T l");
-  for (const ContactRow& row : rows_)
+  for (const petsc::ContactRow& row : rows_)
     for (std::size_t k = 0; k < row.dofs.size(); ++k)
       a[row.dofs[k] - lo_] += row.normal[k] * values(row.j);
   check(VecRestoreArray(v, &a), "N^T l");

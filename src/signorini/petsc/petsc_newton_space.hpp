@@ -10,9 +10,11 @@
 
 #include <petscksp.h>
 
+#include <memory>
 #include <vector>
 
 #include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/petsc/petsc_contact_multigrid.hpp"
 
 namespace signorini {
 
@@ -39,25 +41,21 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   [[nodiscard]] std::string linear_solver_description() const override { return description_; }
 
  private:
-  struct ContactRow {
-    Index j;                     // contact node
-    std::vector<PetscInt> dofs;  // global rows of its dofs (all on this rank)
-    std::vector<double> normal;  // its row of N on them
-  };
   Vector contact_values_of(Vec v);
   void add_contact_transpose(const Vector& values, Vec v);  // v += N^T values
-  void set_up_solver();
+  void set_up_solver(Mat A_aij);
 
   const ContactProblem& p_;
   const ContactSolverOptions& o_;
   TimingTable& timings_;
   MPI_Comm comm_;
   Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;
-  std::vector<ContactRow> rows_;  // the contact rows whose dofs this rank owns
+  std::vector<petsc::ContactRow> rows_;  // the contact rows whose dofs this rank owns
   Mat A_ = nullptr, H_ = nullptr;
   Vec b_ = nullptr, x_ = nullptr, x_new_ = nullptr, residual_ = nullptr, d_ = nullptr,
       Ad_ = nullptr, work_ = nullptr;
   KSP ksp_ = nullptr;
+  std::unique_ptr<petsc::ContactMultigrid> multigrid_;  // CG with GAMG's levels kept
   bool direct_ = false;
   std::string description_;
   ActiveSet active_;

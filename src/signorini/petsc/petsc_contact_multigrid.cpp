@@ -1,0 +1,211 @@
+#include "signorini/petsc/petsc_contact_multigrid.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "signorini/core/error.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
+#include "signorini/petsc/petsc_check.hpp"
+
+namespace signorini::petsc {
+
+namespace {
+
+// Chebyshev-Jacobi of degree 2 with bounds [0.1, 1.1] x lambda_max(D^-1 H), lambda_max estimated
+// by CG from a noisy right-hand side: GAMG's smoother, as the serial one (chebyshev_smoother.hpp).
+void make_smoother(KSP k) {
+  check(KSPSetType(k, KSPCHEBYSHEV), "the multigrid smoother");
+  check(KSPChebyshevEstEigSet(k, 0.0, 0.1, 0.0, 1.1), "the multigrid smoother");
+  check(KSPChebyshevEstEigSetUseNoisy(k, PETSC_TRUE), "the multigrid smoother");
+  KSP est = nullptr;
+  check(KSPChebyshevEstEigGetKSP(k, &est), "the multigrid smoother");
+  if (est != nullptr) check(KSPSetType(est, KSPCG), "the multigrid smoother");
+  check(KSPSetTolerances(k, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2),
+        "the multigrid smoother");
+  PC p = nullptr;
+  check(KSPGetPC(k, &p), "the multigrid smoother");
+  check(PCSetType(p, PCJACOBI), "the multigrid smoother");
+}
+
+// lambda_max(D^-1 A) estimated by 10 steps of Jacobi-preconditioned CG from a random right-hand
+// side (the Lanczos values of CG), as GAMG's smoothers estimate theirs.
+double jacobi_lambda_max(Mat A) {
+  KSP k = nullptr;
+  check(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &k), "an estimate");
+  check(KSPSetOperators(k, A, A), "an estimate");
+  check(KSPSetType(k, KSPCG), "an estimate");
+  PC p = nullptr;
+  check(KSPGetPC(k, &p), "an estimate");
+  check(PCSetType(p, PCJACOBI), "an estimate");
+  check(KSPSetComputeSingularValues(k, PETSC_TRUE), "an estimate");
+  check(KSPSetNormType(k, KSP_NORM_NONE), "an estimate");
+  check(KSPSetConvergenceTest(k, KSPConvergedSkip, nullptr, nullptr), "an estimate");
+  check(KSPSetTolerances(k, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 10), "an estimate");
+  Vec b = nullptr, x = nullptr;
+  check(MatCreateVecs(A, &x, &b), "an estimate");
+  PetscRandom random = nullptr;
+  check(PetscRandomCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &random),
+        "an estimate");
+  check(PetscRandomSetFromOptions(random), "an estimate");
+  check(VecSetRandom(b, random), "an estimate");
+  check(KSPSolve(k, b, x), "an estimate");
+  PetscReal emax = 0.0, emin = 0.0;
+  check(KSPComputeExtremeSingularValues(k, &emax, &emin), "an estimate");
+  PetscRandomDestroy(&random);
+  VecDestroy(&b);
+  VecDestroy(&x);
+  KSPDestroy(&k);
+  return emax;
+}
+
+}  // namespace
+
+ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<ContactRow>& rows,
+                                   MPI_Comm comm)
+    : pc_(pc), comm_(comm) {
+  // GAMG once, on A; PETSc's options for GAMG (-pc_gamg_*) apply to it.
+  {
+    KSP setup = nullptr;
+    check(KSPCreate(comm_, &setup), "GAMG");
+    check(KSPSetOperators(setup, A_setup, A_setup), "GAMG");
+    PC g = nullptr;
+    check(KSPGetPC(setup, &g), "GAMG");
+    check(PCSetType(g, PCGAMG), "GAMG");
+    check(PCSetFromOptions(g), "GAMG options");
+    check(PCSetType(g, PCGAMG), "GAMG");  // whatever -pc_type says: its levels are wanted here
+    check(PCSetUp(g), "GAMG's set-up");
+    PetscInt np = 0, na = 0;
+    Mat* Ps = nullptr;
+    Mat* As = nullptr;
+    check(PCGetInterpolations(g, &np, &Ps), "GAMG's levels");
+    check(PCGetCoarseOperators(g, &na, &As), "GAMG's levels");
+    // Both report the number of levels and hold one matrix fewer (PETSc referenced each). One
+    // level (a problem of a few dozen unknowns): the smoother alone preconditions.
+    if (np != na || np < 1)
+      throw NumericalError(fmt::format("PETSc: GAMG made {} prolongators for {} levels", np, na));
+    P_.assign(Ps, Ps + np - 1);
+    levels_.resize(static_cast<std::size_t>(na) - 1);
+    for (PetscInt l = 0; l + 1 < na; ++l) levels_[static_cast<std::size_t>(l)].A = As[l];
+    check(PetscFree(Ps), "GAMG's levels");
+    check(PetscFree(As), "GAMG's levels");
+    check(KSPDestroy(&setup), "GAMG");
+  }
+
+  // N on the finest level: this rank's contact rows, numbered after the lower ranks' ones.
+  const auto m = static_cast<PetscInt>(rows.size());
+  PetscInt first = 0;
+  MPI_Exscan(&m, &first, 1, MPIU_INT, MPI_SUM, comm_);
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  if (rank == 0) first = 0;
+  PetscInt local_cols = 0, cols = 0;
+  check(MatGetLocalSize(A_setup, &local_cols, nullptr), "the contact matrix");
+  check(MatGetSize(A_setup, &cols, nullptr), "the contact matrix");
+  std::size_t widest = 1;
+  for (const ContactRow& row : rows) widest = std::max(widest, row.dofs.size());
+  Mat N = nullptr;
+  check(MatCreateAIJ(comm_, m, local_cols, PETSC_DETERMINE, cols, static_cast<PetscInt>(widest),
+                     nullptr, 0, nullptr, &N),
+        "the contact matrix");
+  for (PetscInt k = 0; k < m; ++k) {
+    const ContactRow& row = rows[static_cast<std::size_t>(k)];
+    const PetscInt i = first + k;
+    check(MatSetValues(N, 1, &i, static_cast<PetscInt>(row.dofs.size()), row.dofs.data(),
+                       row.normal.data(), INSERT_VALUES),
+          "the contact matrix");
+    row_j_.push_back(row.j);
+    row_entries_.push_back(static_cast<int>(
+        std::count_if(row.normal.begin(), row.normal.end(), [](double v) { return v != 0.0; })));
+  }
+  check(MatAssemblyBegin(N, MAT_FINAL_ASSEMBLY), "the contact matrix");
+  check(MatAssemblyEnd(N, MAT_FINAL_ASSEMBLY), "the contact matrix");
+
+  // diag(c), every diagonal entry stored, so that the products' patterns hold for every c.
+  check(MatCreateAIJ(comm_, m, m, PETSC_DETERMINE, PETSC_DETERMINE, 1, nullptr, 0, nullptr, &C_),
+        "diag(c)");
+  check(MatCreateVecs(C_, &c_, nullptr), "diag(c)");
+  check(VecSet(c_, 1.0), "diag(c)");
+  check(MatDiagonalSet(C_, c_, INSERT_VALUES), "diag(c)");
+
+  // N_l = N_{l+1} P_l, Q_l = N_l^T diag(c) N_l, and H_l's pattern: that of A_l + Q_l.
+  Mat finer = N;
+  for (std::size_t l = levels_.size(); l-- > 0;) {
+    Coarse& c = levels_[l];
+    check(MatMatMult(finer, P_[l], MAT_INITIAL_MATRIX, PETSC_DEFAULT, &c.N),
+          "the contact rows on a coarse level");
+    check(MatPtAP(C_, c.N, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &c.Q),
+          "the contact term on a coarse level");
+    check(MatDuplicate(c.A, MAT_COPY_VALUES, &c.H), "a coarse level");
+    check(MatAXPY(c.H, 1.0, c.Q, DIFFERENT_NONZERO_PATTERN), "a coarse level");
+    mark_spd(c.H, "a coarse level");
+    check(MatDuplicate(c.H, MAT_DO_NOT_COPY_VALUES, &c.A_in_H), "a coarse level");
+    check(MatAXPY(c.A_in_H, 1.0, c.A, SUBSET_NONZERO_PATTERN), "a coarse level");
+    finer = c.N;
+  }
+  check(MatDestroy(&N), "the contact matrix");
+
+  // The PCMG: GAMG's prolongators, the coarse levels' H_l, the finest from the KSP.
+  const auto L = static_cast<PetscInt>(levels_.size() + 1);
+  check(PCSetType(pc_, PCMG), "multigrid");
+  check(PCMGSetLevels(pc_, L, nullptr), "multigrid");
+  check(PCMGSetGalerkin(pc_, PC_MG_GALERKIN_NONE), "multigrid");
+  for (PetscInt l = 1; l < L; ++l)
+    check(PCMGSetInterpolation(pc_, l, P_[static_cast<std::size_t>(l) - 1]), "multigrid");
+  for (PetscInt l = 0; l < L; ++l) {
+    KSP k = nullptr;
+    check(PCMGGetSmoother(pc_, l, &k), "multigrid");
+    if (l + 1 < L) {
+      Mat H = levels_[static_cast<std::size_t>(l)].H;
+      check(KSPSetOperators(k, H, H), "multigrid");
+    }
+    if (l > 0 || L == 1) make_smoother(k);
+  }
+  fine_lambda_a_ = jacobi_lambda_max(A);
+  sizes_.push_back(cols);
+  for (std::size_t l = levels_.size(); l-- > 0;) {
+    PetscInt n = 0;
+    check(MatGetSize(levels_[l].A, &n, nullptr), "multigrid");
+    sizes_.push_back(n);
+  }
+}
+
+ContactMultigrid::~ContactMultigrid() {
+  for (Coarse& c : levels_)
+    for (Mat* M : {&c.A, &c.N, &c.Q, &c.H, &c.A_in_H}) MatDestroy(M);
+  for (Mat& P : P_) MatDestroy(&P);
+  MatDestroy(&C_);
+  VecDestroy(&c_);
+}
+
+void ContactMultigrid::set_weights(const Vector& c) {
+  PetscScalar* a = nullptr;
+  check(VecGetArray(c_, &a), "diag(c)");
+  for (std::size_t k = 0; k < row_j_.size(); ++k) a[k] = c(row_j_[k]);
+  check(VecRestoreArray(c_, &a), "diag(c)");
+  check(MatDiagonalSet(C_, c_, INSERT_VALUES), "diag(c)");
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    Coarse& lev = levels_[l];
+    check(MatPtAP(C_, lev.N, MAT_REUSE_MATRIX, PETSC_DEFAULT, &lev.Q),
+          "the contact term on a coarse level");
+    check(MatCopy(lev.A_in_H, lev.H, SAME_NONZERO_PATTERN), "a coarse level");
+    check(MatAXPY(lev.H, 1.0, lev.Q, SUBSET_NONZERO_PATTERN), "a coarse level");
+    // The smoothers' diagonals and bounds and the coarsest factorisation are set up again.
+    KSP k = nullptr;
+    check(PCMGGetSmoother(pc_, static_cast<PetscInt>(l), &k), "multigrid");
+    check(KSPSetOperators(k, lev.H, lev.H), "multigrid");
+  }
+  // The fine level: instead of 10 products with H, the bound of multigrid_preconditioner.cpp
+  // (refresh()): lambda_max(D_H^-1 H) <= max(lambda_A, the most nonzero components of an active
+  // n_j); with GAMG's interval [0.1, 1.1] x lambda_max.
+  int entries = 0;
+  for (std::size_t k = 0; k < row_j_.size(); ++k)
+    if (c(row_j_[k]) > 0.0) entries = std::max(entries, row_entries_[k]);
+  MPI_Allreduce(MPI_IN_PLACE, &entries, 1, MPI_INT, MPI_MAX, comm_);
+  const double bound = std::max(fine_lambda_a_, static_cast<double>(entries));
+  KSP fine = nullptr;
+  check(PCMGGetSmoother(pc_, static_cast<PetscInt>(levels_.size()), &fine), "multigrid");
+  check(KSPChebyshevSetEigenvalues(fine, 1.1 * bound, 0.1 * bound), "the fine smoother");
+}
+
+}  // namespace signorini::petsc

@@ -1,0 +1,70 @@
+#pragma once
+// Multigrid for the Newton matrices H(c) = A + N^T diag(c) N of Uzawa-GNM on PETSc objects, with
+// GAMG's levels formed once (docs/distributed.md, "The multigrid of the Newton systems").
+//
+// The serial multigrid (multigrid_preconditioner.hpp) keeps its levels for every active set:
+// since P^T (N^T diag(c) N) P = N_l^T diag(c) N_l with N_l = N P, a new active set only changes
+// c, and each level's matrix is A_l + N_l^T diag(c) N_l. Here GAMG builds its smoothed-aggregation
+// levels once, from A with the rigid-body modes; its prolongators P_l and Galerkin products A_l
+// become the levels of a PCMG, and a new c costs the small products N_l^T diag(c) N_l (rows only
+// where there is contact) instead of GAMG's set-up again (whose Galerkin products with the
+// finest level cost as much as a dozen CG iterations). Smoothing is Chebyshev-Jacobi as in GAMG,
+// its bounds estimated again on each coarse level for each c and, on the fine level, bounded from
+// A's as the serial multigrid does (multigrid_preconditioner.cpp, refresh()); the coarsest level
+// is factorised (LU, redundantly on every rank).
+
+#include <petscksp.h>
+
+#include <string>
+#include <vector>
+
+#include "signorini/core/types.hpp"
+
+namespace signorini::petsc {
+
+/// A contact node's row of N on the rank that owns its dofs.
+struct ContactRow {
+  Index j;                     ///< contact node
+  std::vector<PetscInt> dofs;  ///< global rows of its dofs (all on this rank)
+  std::vector<double> normal;  ///< its row of N on them
+};
+
+class ContactMultigrid {
+ public:
+  /// Sets GAMG up on `A_setup` (an AIJ matrix, with its near-null space attached) and makes `pc`
+  /// a PCMG on GAMG's levels, whose finest operator is the one the KSP of `pc` is given.
+  /// `A` is the fine level's A (the same values as A_setup, in any format), `rows` this rank's
+  /// contact rows (of the fine level's unknowns).
+  ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<ContactRow>& rows, MPI_Comm comm);
+  ~ContactMultigrid();
+  ContactMultigrid(const ContactMultigrid&) = delete;
+  ContactMultigrid& operator=(const ContactMultigrid&) = delete;
+
+  /// The coarse levels' matrices A_l + N_l^T diag(c) N_l for c_j (every rank the whole vector,
+  /// indexed by contact node). The fine level's is the KSP's operator, which the caller updates.
+  void set_weights(const Vector& c);
+
+  /// Unknowns per level, finest first.
+  [[nodiscard]] const std::vector<PetscInt>& level_sizes() const { return sizes_; }
+
+ private:
+  struct Coarse {
+    Mat A = nullptr;       // GAMG's Galerkin product
+    Mat N = nullptr;       // the contact rows on this level: N_{l+1} P_l
+    Mat Q = nullptr;       // N^T diag(c) N
+    Mat H = nullptr;       // A + Q, on the union of their patterns
+    Mat A_in_H = nullptr;  // A on H's pattern, copied into H before Q is added
+  };
+  PC pc_;
+  MPI_Comm comm_;
+  std::vector<Index> row_j_;      // this rank's rows of the contact matrices: contact node
+  std::vector<int> row_entries_;  // and the nonzero entries of its normal
+  double fine_lambda_a_ = 0.0;    // lambda_max(D_A^-1 A) on the fine level
+  Mat C_ = nullptr;               // diag(c) on the contact rows
+  Vec c_ = nullptr;
+  std::vector<Coarse> levels_;  // coarsest first, as PCMG numbers them (without the finest)
+  std::vector<Mat> P_;          // P_[l]: level l to level l + 1
+  std::vector<PetscInt> sizes_;
+};
+
+}  // namespace signorini::petsc
