@@ -19,28 +19,6 @@ std::pair<Index, Index> owned_rows(const ContactProblem& problem, MPI_Comm comm)
   return {starts[static_cast<std::size_t>(rank)], starts[static_cast<std::size_t>(rank) + 1]};
 }
 
-PetscInt node_block_size(const ContactProblem& problem, Index lo, Index hi, MPI_Comm comm) {
-  // The lengths of the runs of one node's unknowns on this rank (the partition keeps a node's
-  // unknowns together): one length on every rank is the block size.
-  const std::vector<Index>& node = problem.node_of_unknown;
-  int shortest = 1 << 20, longest = 0;
-  if (static_cast<Index>(node.size()) != problem.A.rows()) {
-    shortest = longest = 1;
-  } else {
-    for (Index i = lo; i < hi;) {
-      Index end = i + 1;
-      while (end < hi && node[static_cast<std::size_t>(end)] == node[static_cast<std::size_t>(i)])
-        ++end;
-      shortest = std::min(shortest, static_cast<int>(end - i));
-      longest = std::max(longest, static_cast<int>(end - i));
-      i = end;
-    }
-  }
-  MPI_Allreduce(MPI_IN_PLACE, &shortest, 1, MPI_INT, MPI_MIN, comm);
-  MPI_Allreduce(MPI_IN_PLACE, &longest, 1, MPI_INT, MPI_MAX, comm);
-  return shortest == longest ? longest : 1;
-}
-
 void mark_spd(Mat M, const char* what) {
   check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), what);
   check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), what);

@@ -19,12 +19,6 @@ namespace signorini::petsc {
 /// The range [first, second) of unknowns that this rank of `comm` owns (partition_of).
 [[nodiscard]] std::pair<Index, Index> owned_rows(const ContactProblem& problem, MPI_Comm comm);
 
-/// The number of unknowns of every node where it is the same for all (the free nodes of a problem
-/// without rollers: the dimension), so that the matrices can be stored in node blocks; 1
-/// otherwise (a roller's node has fewer than the others).
-[[nodiscard]] PetscInt node_block_size(const ContactProblem& problem, Index lo, Index hi,
-                                       MPI_Comm comm);
-
 /// Marks M symmetric for good, and positive definite where its type takes the option.
 void mark_spd(Mat M, const char* what);
 

@@ -14,29 +14,44 @@ using petsc::check;
 PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
                                    const ContactSolverOptions& options, const Vector& x0,
                                    TimingTable& timings, MPI_Comm comm)
-    : p_(problem), o_(options), timings_(timings), comm_(comm) {
+    : p_(problem),
+      o_(options),
+      timings_(timings),
+      comm_(comm),
+      padding_(problem.node_of_unknown, problem.A.rows()) {
   ScopedTimer timer(timings_, "distributed set-up");
   n_ = problem.A.rows();
   nc_ = problem.contact.size();
-  std::tie(lo_, hi_) = petsc::owned_rows(problem, comm_);
+  // The unknowns in whole node blocks (node_padding.hpp): this rank's range [first, last) of
+  // unknowns becomes [lo_, hi_) of slots.
+  const auto [first, last] = petsc::owned_rows(problem, comm_);
+  lo_ = padding_.start(first);
+  hi_ = padding_.start(last);
+  if (padding_.active()) modes_ = padding_.columns(problem.near_null_space);
 
-  // A in AIJ for GAMG's set-up and, where every node has all its unknowns, in node blocks for
-  // the products (petsc_algebra.hpp, block_copy).
-  const PetscInt block = petsc::node_block_size(problem, lo_, hi_, comm_);
-  Mat A_aij = petsc::distributed_rows(problem.A, lo_, hi_, comm_, block);
-  if (petsc::keeps_gamg_levels(o_)) {
-    A_ = petsc::block_rows(problem.A, lo_, hi_, comm_, block);
-  } else {
-    A_ = A_aij;
-    check(PetscObjectReference(reinterpret_cast<PetscObject>(A_)), "A");
+  // A in AIJ for GAMG's set-up, and in node blocks for the products (petsc_algebra.hpp,
+  // block_rows). (The padded copy of A is freed before GAMG's set-up.)
+  Mat A_aij = nullptr;
+  {
+    SparseMatrix padded_A;
+    if (padding_.active()) padded_A = padding_.matrix(problem.A, first, last);
+    const SparseMatrix& A = padding_.active() ? padded_A : problem.A;
+    const auto block = static_cast<PetscInt>(padding_.block());
+    A_aij = petsc::distributed_rows(A, lo_, hi_, comm_, block);
+    if (petsc::keeps_gamg_levels(o_)) {
+      A_ = petsc::block_rows(A, lo_, hi_, comm_, block);
+    } else {
+      A_ = A_aij;
+      check(PetscObjectReference(reinterpret_cast<PetscObject>(A_)), "A");
+    }
   }
   check(MatDuplicate(A_, MAT_COPY_VALUES, &H_), "the Newton matrix");
   petsc::mark_spd(H_, "the Newton matrix");
 
   check(MatCreateVecs(A_, &x_, &b_), "vectors");
   for (Vec* v : {&x_new_, &residual_, &d_, &Ad_, &work_}) check(VecDuplicate(x_, v), "vectors");
-  petsc::set_local(b_, problem.b, lo_, hi_);
-  petsc::set_local(x_, x0, lo_, hi_);
+  petsc::set_local(b_, padding_.vector(problem.b), lo_, hi_);
+  petsc::set_local(x_, padding_.vector(x0), lo_, hi_);
   check(MatMult(A_, x_, residual_), "A x");  // A x - b at x0
   check(VecAXPY(residual_, -1.0, b_), "A x - b");
 
@@ -45,7 +60,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   for (Index j = 0; j < nc_; ++j) {
     petsc::ContactRow row{j, {}, {}};
     for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
-      row.dofs.push_back(static_cast<PetscInt>(it.row()));
+      row.dofs.push_back(static_cast<PetscInt>(padding_.slot(it.row())));
       row.normal.push_back(it.value());
     }
     if (!row.dofs.empty() && row.dofs.front() >= lo_ && row.dofs.front() < hi_)
@@ -71,9 +86,9 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij) {
   // (petsc_contact_multigrid.hpp).
   const petsc::MultigridBuilder keep_levels = [&](PC pc) {
     std::string what = "GAMG's levels, kept for every active set";
-    if (p_.near_null_space.rows() > 0)
+    if (modes().rows() > 0)
       what += fmt::format(", {} rigid-body modes",
-                          petsc::attach_near_null_space(A_aij, p_.near_null_space, lo_, hi_));
+                          petsc::attach_near_null_space(A_aij, modes(), lo_, hi_));
     multigrid_ = std::make_unique<petsc::ContactMultigrid>(pc, A_aij, A_, rows_, comm_);
     std::string sizes;
     for (const PetscInt n : multigrid_->level_sizes())
@@ -81,7 +96,7 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij) {
     return fmt::format("{}; levels of {} unknowns", what, sizes);
   };
   const petsc::KspChoice choice =
-      petsc::configure_ksp(ksp_, H_, o_, p_.near_null_space, lo_, hi_, true, keep_levels);
+      petsc::configure_ksp(ksp_, H_, o_, modes(), lo_, hi_, true, keep_levels);
   direct_ = choice.direct;
   description_ = choice.description;
 }
@@ -172,7 +187,7 @@ NewtonStepNorms PetscNewtonSpace::norms(const Vector& contact_forces) {
 }
 
 Vector PetscNewtonSpace::gathered_solution() {
-  return petsc::gather(x_);
+  return padding_.unknowns(petsc::gather(x_));
 }
 
 // (N v)_j for every contact node on every rank: each rank its own rows, summed over the ranks

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/petsc/node_padding.hpp"
 #include "signorini/petsc/petsc_contact_multigrid.hpp"
 
 namespace signorini {
@@ -45,10 +46,17 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   void add_contact_transpose(const Vector& values, Vec v);  // v += N^T values
   void set_up_solver(Mat A_aij);
 
+  // The rigid-body modes on the slots.
+  [[nodiscard]] const Matrix& modes() const {
+    return padding_.active() ? modes_ : p_.near_null_space;
+  }
+
   const ContactProblem& p_;
   const ContactSolverOptions& o_;
   TimingTable& timings_;
   MPI_Comm comm_;
+  petsc::NodePadding padding_;
+  Matrix modes_;  // p_.near_null_space on the slots, where padded
   Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;
   std::vector<petsc::ContactRow> rows_;  // the contact rows whose dofs this rank owns
   Mat A_ = nullptr, H_ = nullptr;

@@ -1,0 +1,53 @@
+#pragma once
+// The unknowns of the PETSc path in whole node blocks (docs/distributed.md, "Node blocks").
+//
+// A node on a roller has one or two free unknowns where the others have three. Blocks of one size
+// let PETSc store A in 3 x 3 blocks (MPIBAIJ, products about twice as fast) and let GAMG
+// aggregate nodes rather than single unknowns (a graph a third the size). So each node gets
+// `block` slots: its free unknowns first, in their order, then padding slots, whose rows and
+// columns hold only a diagonal entry (that of the node's first unknown), zero right-hand side and
+// zero near-null space. Such a slot is decoupled: CG leaves it at zero, and it changes no other
+// unknown's value.
+
+#include <vector>
+
+#include "signorini/core/types.hpp"
+
+namespace signorini::petsc {
+
+class NodePadding {
+ public:
+  /// `node_of_unknown`: the mesh node of each of the n unknowns, a node's unknowns consecutive.
+  /// Blocks of the most unknowns any node has; none (every slot an unknown) where all nodes have
+  /// as many, or where the nodes are not known.
+  NodePadding(const std::vector<Index>& node_of_unknown, Index n);
+
+  /// Whether some node has padding slots.
+  [[nodiscard]] bool active() const { return size_ != n_; }
+  /// Slots per node: the block size of the PETSc matrices.
+  [[nodiscard]] Index block() const { return block_; }
+  /// Unknowns and padding slots together.
+  [[nodiscard]] Index size() const { return size_; }
+  /// The slot of unknown i.
+  [[nodiscard]] Index slot(Index i) const {
+    return active() ? slot_[static_cast<std::size_t>(i)] : i;
+  }
+  /// The first slot of the node of unknown i, where i starts its node's unknowns (a rank's range
+  /// [lo, hi) of unknowns becomes [start(lo), start(hi)) of slots; start(n) = size()).
+  [[nodiscard]] Index start(Index i) const;
+
+  /// A's columns [lo, hi) (by symmetry its rows) on the slots, the padding slots of their nodes
+  /// with a diagonal entry; the other columns empty.
+  [[nodiscard]] SparseMatrix matrix(const SparseMatrix& A, Index lo, Index hi) const;
+  /// v (n entries, or n rows) on the slots, zero on the padding slots.
+  [[nodiscard]] Vector vector(const Vector& v) const;
+  [[nodiscard]] Matrix columns(const Matrix& m) const;
+  /// The unknowns' entries of a vector on the slots.
+  [[nodiscard]] Vector unknowns(const Vector& slots) const;
+
+ private:
+  Index n_ = 0, size_ = 0, block_ = 1;
+  std::vector<Index> slot_;  // per unknown; empty where not active
+};
+
+}  // namespace signorini::petsc
