@@ -39,11 +39,15 @@ inline Model serial_model(ProblemSpec spec) {
   return build_model(spec);
 }
 
-/// A serial solve on this rank alone.
+/// A serial solve on this rank alone. Its u is the mesh's whole displacement
+/// (DofMap::expand): the distributed path numbers the unknowns rank by rank (the partition), the
+/// serial one in another order, and the two compare node by node.
 inline ContactResult serial_solve(const Model& model, ContactSolverOptions o) {
   const WithoutEngine serial;
   o.distributed = DistributedMode::Auto;
-  return solve_contact(model.problem, o, &model.multigrid);
+  ContactResult r = solve_contact(model.problem, o, &model.multigrid);
+  r.u = model.dofs.expand(r.u);
+  return r;
 }
 
 /// What every distributed solve must share with the serial one (the distributed issue's
@@ -60,10 +64,12 @@ inline void expect_distributed_agrees(const ContactResult& distributed,
   EXPECT_LT(distributed.summary.kkt.max(), 1e-8);
 }
 
-/// The distributed solve.
+/// The distributed solve; u the mesh's whole displacement, as serial_solve's.
 inline ContactResult distributed_solve(const Model& model, ContactSolverOptions o) {
   o.distributed = DistributedMode::Petsc;
-  return solve_contact(model.problem, o);
+  ContactResult r = solve_contact(model.problem, o);
+  r.u = model.dofs.expand(r.u);
+  return r;
 }
 
 }  // namespace signorini::testing

@@ -17,6 +17,7 @@
 #include "signorini/contact/newton_space.hpp"
 #include "signorini/contact/solve_summary.hpp"
 #include "signorini/core/timing_table.hpp"
+#include "signorini/parallel/node_partition.hpp"
 
 namespace signorini {
 
@@ -53,6 +54,10 @@ class DistributedEngine {
   [[nodiscard]] virtual std::unique_ptr<DistributedActiveSetSolver> active_set_solver(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) = 0;
+  /// The rank of every vertex of the mesh's node graph, from the engine's graph partitioner (a
+  /// collective call: each rank gives its rows of `graph`; `options` may name the partitioner).
+  [[nodiscard]] virtual std::vector<int> partition(const NodeGraph& graph,
+                                                   const ContactSolverOptions& options) = 0;
   /// Sums `values` over the ranks, in place on every rank (a collective call).
   virtual void sum(double* values, Index count) const = 0;
   /// True on every rank when `flag` is true on any (a collective call).

@@ -1,12 +1,14 @@
 #include "signorini/petsc/petsc_engine.hpp"
 
 #include <fmt/format.h>
+#include <petscmat.h>
 #include <petscsys.h>
 
 #include <cstdlib>
 
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/petsc_active_set_solver.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 #include "signorini/petsc/petsc_newton_space.hpp"
 
@@ -29,8 +31,76 @@ PetscEngine::~PetscEngine() {
 }
 
 std::string PetscEngine::description() const {
-  return fmt::format("PETSc {}.{}.{} on {} MPI rank{}", PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR,
-                     PETSC_VERSION_SUBMINOR, size_, size_ == 1 ? "" : "s");
+  std::string d =
+      fmt::format("PETSc {}.{}.{} on {} MPI rank{}", PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR,
+                  PETSC_VERSION_SUBMINOR, size_, size_ == 1 ? "" : "s");
+  if (!partitioner_.empty()) d += ", nodes partitioned by " + partitioner_;
+  return d;
+}
+
+std::vector<int> PetscEngine::partition(const NodeGraph& graph,
+                                        const ContactSolverOptions& options) {
+  petsc::insert_petsc_options(options);  // -mat_partitioning_type may name another partitioner
+  const auto local = static_cast<PetscInt>(graph.last - graph.first);
+  // MatCreateMPIAdj and the vertex weights take arrays from PetscMalloc, and free them.
+  PetscInt* ia = nullptr;
+  PetscInt* ja = nullptr;
+  PetscInt* weights = nullptr;
+  petsc::check(PetscMalloc1(local + 1, &ia), "the node graph");
+  petsc::check(PetscMalloc1(static_cast<PetscInt>(graph.neighbours.size()) + 1, &ja),
+               "the node graph");
+  petsc::check(PetscMalloc1(local + 1, &weights), "the node graph");
+  for (PetscInt i = 0; i <= local; ++i)
+    ia[i] = static_cast<PetscInt>(graph.offsets[static_cast<std::size_t>(i)]);
+  for (std::size_t e = 0; e < graph.neighbours.size(); ++e)
+    ja[e] = static_cast<PetscInt>(graph.neighbours[e]);
+  for (PetscInt i = 0; i < local; ++i)
+    weights[i] = static_cast<PetscInt>(graph.weights[static_cast<std::size_t>(i)]);
+  Mat adjacency = nullptr;
+  petsc::check(MatCreateMPIAdj(PETSC_COMM_WORLD, local, static_cast<PetscInt>(graph.vertices), ia,
+                               ja, nullptr, &adjacency),
+               "the node graph");
+  MatPartitioning part = nullptr;
+  petsc::check(MatPartitioningCreate(PETSC_COMM_WORLD, &part), "the partitioner");
+  petsc::check(MatPartitioningSetAdjacency(part, adjacency), "the partitioner");
+  // PT-Scotch where PETSc has it (Debian's does), else ParMETIS, else PETSc's own split.
+  PetscBool has = PETSC_FALSE;
+  petsc::check(PetscHasExternalPackage("ptscotch", &has), "the partitioner");
+  MatPartitioningType type = MATPARTITIONINGAVERAGE;
+  if (has) {
+    type = MATPARTITIONINGPTSCOTCH;
+  } else {
+    petsc::check(PetscHasExternalPackage("parmetis", &has), "the partitioner");
+    if (has) type = MATPARTITIONINGPARMETIS;
+  }
+  petsc::check(MatPartitioningSetType(part, type), "the partitioner");
+  petsc::check(MatPartitioningSetNParts(part, size_), "the partitioner");
+  petsc::check(MatPartitioningSetVertexWeights(part, weights), "the partitioner");
+  petsc::check(MatPartitioningSetFromOptions(part), "the partitioner options");
+  IS owners = nullptr;
+  petsc::check(MatPartitioningApply(part, &owners), "partitioning the nodes");
+  MatPartitioningType used = nullptr;
+  petsc::check(MatPartitioningGetType(part, &used), "the partitioner");
+  partitioner_ = used != nullptr ? used : "?";
+
+  // Every rank gets every vertex's rank.
+  const PetscInt* mine = nullptr;
+  petsc::check(ISGetIndices(owners, &mine), "partitioning the nodes");
+  std::vector<int> local_owner(mine, mine + local);
+  petsc::check(ISRestoreIndices(owners, &mine), "partitioning the nodes");
+  std::vector<int> counts(static_cast<std::size_t>(size_)), displs(static_cast<std::size_t>(size_));
+  for (int r = 0; r < size_; ++r) {
+    const Index first = graph.vertices * r / size_, last = graph.vertices * (r + 1) / size_;
+    counts[static_cast<std::size_t>(r)] = static_cast<int>(last - first);
+    displs[static_cast<std::size_t>(r)] = static_cast<int>(first);
+  }
+  std::vector<int> owner(static_cast<std::size_t>(graph.vertices));
+  MPI_Allgatherv(local_owner.data(), static_cast<int>(local), MPI_INT, owner.data(), counts.data(),
+                 displs.data(), MPI_INT, PETSC_COMM_WORLD);
+  ISDestroy(&owners);
+  MatPartitioningDestroy(&part);
+  MatDestroy(&adjacency);
+  return owner;
 }
 
 std::unique_ptr<DistributedNewtonSpace> PetscEngine::newton_space(

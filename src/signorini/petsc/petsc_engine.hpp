@@ -3,6 +3,9 @@
 // docs/distributed.md): initialises MPI and PETSc, registers itself for the solver, and finalises
 // them when it goes. One per process, made by the main() of signorini-mpi and of the MPI tests.
 
+#include <string>
+#include <vector>
+
 #include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
@@ -26,6 +29,11 @@ class PetscEngine final : public DistributedEngine {
   [[nodiscard]] std::unique_ptr<DistributedActiveSetSolver> active_set_solver(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) override;
+  /// PT-Scotch's partition where PETSc has it, else ParMETIS's, else PETSc's even split
+  /// ("average"); -mat_partitioning_type among the PETSc options chooses another ("current":
+  /// the even split of the numbering).
+  [[nodiscard]] std::vector<int> partition(const NodeGraph& graph,
+                                           const ContactSolverOptions& options) override;
   void sum(double* values, Index count) const override;
   [[nodiscard]] bool any(bool flag) const override;
   [[noreturn]] void abort(int status) const override;
@@ -33,6 +41,7 @@ class PetscEngine final : public DistributedEngine {
  private:
   int rank_ = 0;
   int size_ = 1;
+  std::string partitioner_;  // the last partition's, for the description
 };
 
 }  // namespace signorini

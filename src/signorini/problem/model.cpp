@@ -16,6 +16,7 @@
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/parallel/node_partition.hpp"
 #include "signorini/parallel/row_partition.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
 #include "signorini/problem/solver_plan.hpp"
@@ -248,6 +249,26 @@ Model build_model(const ProblemSpec& spec) {
   // below never changes it.
   const bool distributed = distributed_path(spec.solver);
   ContactProblem problem;
+  if (distributed) {
+    DistributedEngine& engine = required_distributed_engine();
+    // The nodes partitioned by the engine's graph partitioner (parallel/node_partition.hpp),
+    // and the unknowns numbered again rank by rank; the even split of the numbering where the
+    // partitioner leaves a rank without unknowns (or on one rank).
+    ScopedTimer t(timings, "partition");
+    if (engine.size() > 1) {
+      const NodeGraph graph = node_graph(mesh, dofs, engine.rank(), engine.size());
+      const NodePartition p =
+          partition_order(graph, dofs, engine.partition(graph, spec.solver), engine.size());
+      if (!p.row_starts.empty()) {
+        dofs = number_dofs(mesh, spec.clamps, spec.displacements, owner, p.node_order);
+        problem.row_starts = p.row_starts;
+      }
+    }
+    problem.node_of_unknown = free_dof_nodes(dofs);
+    if (problem.row_starts.empty())
+      problem.row_starts = row_partition(dofs.num_free(), engine.size(), problem.node_of_unknown,
+                                         SparseMatrix(0, dofs.num_free()));
+  }
   {
     ScopedTimer t(timings, "assembly");
     if (distributed) {
@@ -255,9 +276,6 @@ Model build_model(const ProblemSpec& spec) {
       // A distributed run (docs/distributed.md): each rank assembles only the columns of the
       // unknowns it owns (by symmetry its rows), from the cells that touch its nodes; the
       // partition keeps each node's unknowns on one rank.
-      problem.node_of_unknown = free_dof_nodes(dofs);
-      problem.row_starts = row_partition(dofs.num_free(), engine.size(), problem.node_of_unknown,
-                                         SparseMatrix(0, dofs.num_free()));
       const auto rank = static_cast<std::size_t>(engine.rank());
       std::vector<bool> owned(static_cast<std::size_t>(mesh.num_nodes()), false);
       for (Index i = problem.row_starts[rank]; i < problem.row_starts[rank + 1]; ++i)
