@@ -9,32 +9,16 @@
 #include <string>
 
 #include "mpi_test_problems.hpp"
+#include "problem/hertz_ball.hpp"
 #include "signorini/parallel/node_partition.hpp"
 
 namespace signorini {
 namespace {
 
-// The coarse mesh of Hertz's ball (examples/gmsh/hertz_sphere_coarse.msh): an unstructured gmsh
-// mesh, its unknowns numbered along the Z-order curve, with rollers.
+// The coarse mesh of Hertz's ball: an unstructured gmsh mesh, its unknowns numbered along the
+// Z-order curve, with rollers.
 ProblemSpec hertz_ball() {
-  ProblemSpec spec;
-  spec.name = "hertz_sphere";
-  spec.mesh_type = MeshType::Gmsh;
-  spec.mesh_file = std::string(SIGNORINI_EXAMPLES_DIR) + "/gmsh/hertz_sphere_coarse.msh";
-  spec.elasticity.material = {1.0, 0.3};
-  spec.clamps = {{"xsym", {true, false, false}}, {"ysym", {false, true, false}}};
-  DisplacementSpec top;
-  top.boundary = "top";
-  top.values[2] = [](const Point&) { return -1e-3; };
-  top.texts[2] = "-0.001";
-  spec.displacements = {top};
-  ContactSpec plane;
-  plane.boundary = "contact";
-  plane.obstacle.shape = ObstacleShape::Plane;
-  plane.obstacle.point = Eigen::Vector3d::Zero();
-  plane.obstacle.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
-  spec.contacts = {plane};
-  return spec;
+  return testing::hertz_ball("hertz_sphere_coarse.msh");
 }
 
 Index sum_over_ranks(Index value) {

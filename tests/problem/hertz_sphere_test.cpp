@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "problem/each_method.hpp"
+#include "problem/hertz_ball.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/problem/model.hpp"
@@ -22,25 +23,9 @@ namespace {
 
 constexpr double kE = 1.0, kNu = 0.3, kR = 1.0, kD = 1e-3;
 
+// (kE, kNu and kD are the ball's of hertz_ball.hpp.)
 ProblemSpec ball(const std::string& mesh) {
-  ProblemSpec spec;
-  spec.name = "hertz_sphere";
-  spec.mesh_type = MeshType::Gmsh;
-  spec.mesh_file = std::string(SIGNORINI_EXAMPLES_DIR) + "/gmsh/" + mesh;
-  spec.elasticity.material = {kE, kNu};
-  spec.clamps = {{"xsym", {true, false, false}}, {"ysym", {false, true, false}}};
-  DisplacementSpec top;
-  top.boundary = "top";
-  top.values[2] = [](const Point&) { return -kD; };
-  top.texts[2] = "-0.001";
-  spec.displacements = {top};
-  ContactSpec plane;
-  plane.boundary = "contact";
-  plane.obstacle.shape = ObstacleShape::Plane;
-  plane.obstacle.point = Eigen::Vector3d::Zero();
-  plane.obstacle.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
-  spec.contacts = {plane};
-  return spec;
+  return testing::hertz_ball(mesh);
 }
 
 struct HertzErrors {
