@@ -1,10 +1,11 @@
 #pragma once
 // The GNM vectors and Newton systems of Uzawa-GNM on PETSc objects spread over the MPI ranks
-// (docs/distributed.md): A and H(P) = A + r N^T diag(h on P) N as MPIAIJ matrices, each rank
-// owning one contiguous range of rows (row_partition.hpp); x, A x - b and the Newton direction as
-// MPI vectors; the Newton systems solved by a KSP (CG with GAMG on the rigid-body modes, CG with
-// Jacobi, or MUMPS's distributed Cholesky factorisation, from the same options as the serial
-// paths). The contact-node values (N x, N d: n_c numbers) are summed over the ranks, so that
+// (docs/distributed.md): A and H(P) = A + r N^T diag(h on P) N as PETSc matrices in node blocks
+// (node_padding.hpp; MPIBAIJ for CG with GAMG's kept levels, MPIAIJ otherwise), each rank owning
+// one contiguous range of rows (the partition, parallel/node_partition.hpp); x, A x - b and the
+// Newton direction as MPI vectors; the Newton systems solved by a KSP (CG with GAMG's levels kept
+// for every active set, petsc_contact_multigrid.hpp; CG with Jacobi; or MUMPS's distributed
+// Cholesky factorisation; from the same options as the serial paths). The contact-node values (N x, N d: n_c numbers) are summed over the ranks, so that
 // every rank holds them all and runs the same loop; dot products and norms are PETSc's global
 // reductions.
 
