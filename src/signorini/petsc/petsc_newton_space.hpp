@@ -5,9 +5,9 @@
 // one contiguous range of rows (the partition, parallel/node_partition.hpp); x, A x - b and the
 // Newton direction as MPI vectors; the Newton systems solved by a KSP (CG with GAMG's levels kept
 // for every active set, petsc_contact_multigrid.hpp; CG with Jacobi; or MUMPS's distributed
-// Cholesky factorisation; from the same options as the serial paths). The contact-node values (N x, N d: n_c numbers) are summed over the ranks, so that
-// every rank holds them all and runs the same loop; dot products and norms are PETSc's global
-// reductions.
+// Cholesky factorisation; from the same options as the serial paths). The contact-node values (N x,
+// N d: n_c numbers) are summed over the ranks, so that every rank holds them all and runs the same
+// loop; dot products and norms are PETSc's global reductions.
 
 #include <petscksp.h>
 
