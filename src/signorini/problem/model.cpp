@@ -254,8 +254,8 @@ Model build_model(const ProblemSpec& spec) {
     // The nodes partitioned by the engine's graph partitioner (parallel/node_partition.hpp),
     // and the unknowns numbered again rank by rank; the even split of the numbering where the
     // partitioner leaves a rank without unknowns (or on one rank).
-    ScopedTimer t(timings, "partition");
     if (engine.size() > 1) {
+      ScopedTimer t(timings, "partition");
       const NodeGraph graph = node_graph(mesh, dofs, engine.rank(), engine.size());
       const NodePartition p =
           partition_order(graph, dofs, engine.partition(graph, spec.solver), engine.size());
