@@ -7,6 +7,7 @@
 #include <petscsys.h>
 
 #include "../problem/ball_on_block.hpp"
+#include "../problem/hertz_ball.hpp"
 #include "../test_problems.hpp"
 #include "mpi_test_problems.hpp"
 #include "signorini/core/error.hpp"
@@ -167,6 +168,28 @@ TEST(DistributedUzawaGnm, GamgOfOneLevelStillSolves) {
   ContactSolverOptions direct = serial_model.solver;
   direct.linear.type = LinearSolverType::Cholmod;
   expect_same_solve(distributed, testing::serial_solve(serial_model, direct));
+}
+
+// Hertz's ball on rollers: its nodes on the symmetry planes have one or two free unknowns, so
+// the PETSc path pads them to whole blocks (node_padding.hpp) before GAMG; the answer is the
+// serial one.
+TEST(DistributedUzawaGnm, BallOnRollersWithPaddedBlocksMatchesTheSerialSolve) {
+  ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
+  spec.solver.automatic_path = false;
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  spec.solver.inner_tolerance = InnerTolerance::Fixed;
+  spec.solver.uzawa_tolerance = 1e-10;
+  const Model model = testing::distributed_model(spec);
+  const ContactResult distributed = testing::distributed_solve(model, model.solver);
+  const Model serial_model = testing::serial_model(spec);
+  expect_same_solve(distributed, testing::serial_solve(serial_model, serial_model.solver));
+  // The levels count slots: more than the free unknowns, by the padding.
+  const std::size_t at = distributed.summary.device.find("levels of ");
+  ASSERT_NE(at, std::string::npos) << distributed.summary.device;
+  const long slots = std::stol(distributed.summary.device.substr(at + 10));
+  EXPECT_GT(slots, model.problem.A.rows());
+  EXPECT_EQ(slots % 3, 0);
 }
 
 // CG with hypre's BoomerAMG (solver.petsc_multigrid = "hypre") on the same 3D problem.

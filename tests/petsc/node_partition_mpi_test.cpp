@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <string>
 
+#include "../problem/hertz_ball.hpp"
 #include "mpi_test_problems.hpp"
-#include "problem/hertz_ball.hpp"
 #include "signorini/parallel/node_partition.hpp"
 
 namespace signorini {
