@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
 
@@ -78,6 +79,29 @@ TEST(FrictionProjection, CoulombDerivativeIsTheDerivativeAndNotSymmetricWhenSlid
     }
   }
   EXPECT_GT(sliding, 10);
+}
+
+// Tresca's potential psi has the force as its gradient (so the merit function's gradient is the
+// GNM gradient G of (16) with friction), and psi is convex: the force is monotone.
+TEST(FrictionProjection, TrescaForceIsTheGradientOfItsPotential) {
+  const double s = 0.7, h = 1e-6;
+  for (const Eigen::VectorXd& z : points()) {
+    const FrictionProjection p = project_tresca(z, s);
+    Eigen::VectorXd gradient(z.size());
+    for (Eigen::Index k = 0; k < z.size(); ++k) {
+      Eigen::VectorXd up = z, down = z;
+      up(k) += h;
+      down(k) -= h;
+      gradient(k) = (project_tresca(up, s).potential - project_tresca(down, s).potential) / (2 * h);
+    }
+    EXPECT_LT((gradient - p.force).norm(), 1e-7) << z.transpose();
+    for (const Eigen::VectorXd& w : points()) {
+      if (w.size() == z.size()) {
+        EXPECT_GE((project_tresca(w, s).force - p.force).dot(w - z), -1e-14);
+      }
+    }
+  }
+  EXPECT_TRUE(std::isnan(project_coulomb(points().front(), 0.5).potential));
 }
 
 // The projection onto the friction ball is the closest point: (z_t - P_t) . (w - P_t) <= 0 for

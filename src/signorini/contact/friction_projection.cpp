@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace signorini {
@@ -53,11 +54,18 @@ FrictionProjection start(const Eigen::VectorXd& z, double bound, const char* wha
 FrictionProjection project_tresca(const Eigen::VectorXd& z, double slip_bound) {
   FrictionProjection p = start(z, slip_bound, "the slip bound");
   project_tangential(z, slip_bound, p);
+  // psi = max(z_n, 0)^2 / 2 + (|z_t|^2 inside the ball, s (2 |z_t| - s) outside) / 2: the
+  // outside's |z_t|^2 - (|z_t| - s)^2 without cancellation.
+  const double zt = z.tail(z.size() - 1).norm();
+  const double zn = std::max(z(0), 0.0);
+  p.potential = 0.5 * zn * zn +
+                (zt < slip_bound ? 0.5 * zt * zt : 0.5 * slip_bound * (2.0 * zt - slip_bound));
   return p;
 }
 
 FrictionProjection project_coulomb(const Eigen::VectorXd& z, double mu) {
   FrictionProjection p = start(z, mu, "the friction coefficient");
+  p.potential = std::numeric_limits<double>::quiet_NaN();
   if (!p.in_contact) {
     p.sliding = false;  // separated: no force at all
     return p;

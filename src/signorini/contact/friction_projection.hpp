@@ -24,8 +24,12 @@ namespace signorini {
 struct FrictionProjection {
   Eigen::VectorXd force;       ///< P(z): the normal force, then the tangential force
   Eigen::MatrixXd derivative;  ///< a generalised derivative dP/dz (d x d)
-  bool in_contact = false;     ///< z_n > 0: the normal force is active
-  bool sliding = false;        ///< z_t at or beyond the slip bound: the tangential force on it
+  /// Tresca only: psi(z) = (|z|^2 - dist(z, K)^2) / 2, K the admissible forces, whose gradient
+  /// is P(z): the node's term of the merit function Phi (16) with friction, as max(z, 0)^2 / 2
+  /// is without. (Coulomb's K moves with z_n: no such potential; NaN.)
+  double potential = 0.0;
+  bool in_contact = false;  ///< z_n > 0: the normal force is active
+  bool sliding = false;     ///< z_t at or beyond the slip bound: the tangential force on it
 };
 
 /// Tresca friction with slip bound `slip_bound` (>= 0): the tangential force is bounded by it
