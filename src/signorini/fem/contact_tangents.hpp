@@ -1,0 +1,25 @@
+#pragma once
+// The tangential directions of the contact nodes, for friction (docs/method.md, "Friction"): at
+// node j an orthonormal basis t_1 .. t_{d-1} of the plane normal to nu_j, and the operator T
+// with (T x)_{j,k} = (x . t_k)_j over the free dofs of node j, as N gives (x . nu)_j
+// (contact_set.hpp). Together, (N x)_j and (T x)_j are node j's displacement in the frame
+// (nu_j, t_1, .., t_{d-1}).
+//
+// Status: built and tested (tests/fem/contact_tangents_test.cpp); no solver uses it yet.
+
+#include "signorini/contact/contact_set.hpp"
+#include "signorini/fem/dof_map.hpp"
+
+namespace signorini {
+
+/// An orthonormal basis of the plane normal to the unit vector nu, as the columns of a
+/// dim x (dim - 1) matrix: in 2D t = (-nu_y, nu_x), so that (nu, t) turns as (x, y); in 3D
+/// t_1 = e x nu / |e x nu| with e the axis least aligned with nu, and t_2 = nu x t_1, so that
+/// (nu, t_1, t_2) is right-handed.
+[[nodiscard]] Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& nu);
+
+/// T: (dim - 1) size() rows (row (dim - 1) j + k for t_k of node j) over the free dofs, in the
+/// local axes of a node that has them (DofMap::set_frame), as N's rows are.
+[[nodiscard]] SparseMatrix tangential_operator(const ContactSet& contact, const DofMap& dofs);
+
+}  // namespace signorini
