@@ -2,8 +2,9 @@
 // The unknowns of the PETSc path in whole node blocks (docs/distributed.md, "Node blocks").
 //
 // A node on a roller has one or two free unknowns where the others have three. Blocks of one size
-// let PETSc store A in 3 x 3 blocks (MPIBAIJ, products about twice as fast) and let GAMG
-// aggregate nodes rather than single unknowns (a graph a third the size). So each node gets
+// let PETSc store A in 3 x 3 blocks (MPIBAIJ: 12 ms a product against AIJ's 14 ms at 100,860
+// unknowns) and let GAMG aggregate nodes rather than single unknowns (a graph a third the
+// size). So each node gets
 // `block` slots: its free unknowns first, in their order, then padding slots, whose rows and
 // columns hold only a diagonal entry (that of the node's first unknown), zero right-hand side and
 // zero near-null space. Such a slot is decoupled: CG leaves it at zero, and it changes no other

@@ -28,8 +28,9 @@ void mark_spd(Mat M, const char* what);
                                    PetscInt block = 1);
 
 /// As distributed_rows, in node blocks of `block` rows (MPIBAIJ) where `block` is above 1: a
-/// product with a 3 x 3 block matrix reads a ninth of the column indices and is about twice as
-/// fast. (GAMG's set-up needs AIJ; the products of the CG and the smoothers take either.)
+/// product with a 3 x 3 block matrix reads a ninth of the column indices (12 ms against AIJ's
+/// 14 ms at 100,860 unknowns). GAMG's set-up needs AIJ; the products of the CG and the smoothers
+/// take either.
 [[nodiscard]] Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm,
                              PetscInt block);
 
