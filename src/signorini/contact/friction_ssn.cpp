@@ -1,0 +1,145 @@
+#include "signorini/contact/friction_ssn.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <stdexcept>
+
+#include "signorini/contact/friction_projection.hpp"
+#include "signorini/core/error.hpp"
+
+namespace signorini {
+
+FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix& T,
+                                     const FrictionLawSpec& law, const FrictionSsnOptions& o) {
+  const ContactSet& cs = p.contact;
+  const Index n = p.A.rows(), nc = cs.size();
+  if (nc == 0) throw InputError("friction: no contact nodes");
+  if (T.rows() % nc != 0 || T.cols() != n)
+    throw InputError("friction: T must have (dim - 1) rows per contact node over the free dofs");
+  const Index d = 1 + T.rows() / nc;
+  if (d < 2 || d > 3) throw InputError("friction: 1 or 2 tangential rows per contact node");
+  if (law.bound.size() != nc || !(law.bound.array() >= 0.0).all() || !law.bound.allFinite())
+    throw InputError("friction: one finite bound >= 0 (s or mu) per contact node expected");
+
+  // B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. its tangential rows.
+  std::vector<Eigen::Triplet<double>> entries;
+  const SparseMatrix Nr = cs.N;  // column-major: walk the columns, place the rows
+  for (Index col = 0; col < n; ++col) {
+    for (SparseMatrix::InnerIterator it(Nr, col); it; ++it)
+      entries.emplace_back(d * it.row(), col, it.value());
+    for (SparseMatrix::InnerIterator it(T, col); it; ++it)
+      entries.emplace_back(d * (it.row() / (d - 1)) + 1 + it.row() % (d - 1), col, it.value());
+  }
+  SparseMatrix B(d * nc, n);
+  B.setFromTriplets(entries.begin(), entries.end());
+  Vector g_hat = Vector::Zero(d * nc), w = Vector::Zero(d * nc);
+  for (Index j = 0; j < nc; ++j) {
+    g_hat(d * j) = cs.gaps(j);
+    w.segment(d * j, d).setConstant(cs.weights(j));
+  }
+  const SparseMatrix BtW = SparseMatrix(B.transpose()) * w.asDiagonal();
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> B_rows = B;  // for the rows of a node
+  const double c = o.c > 0.0 ? o.c : p.A.diagonal().mean() / cs.weights.mean();
+
+  FrictionSsnResult r;
+  Vector lambda = Vector::Zero(d * nc);
+  if (law.bound.size() > 0 && law.bound.maxCoeff() > 0.0) {
+    // From the frictionless solution (the same law with zero bounds): from x = A^-1 b the plain
+    // iteration stalls on some frictional problems (Tresca with bounds of 2 times a pressure on
+    // the paper's problem), from the frictionless one it does not.
+    FrictionLawSpec frictionless = law;
+    frictionless.bound.setZero();
+    const FrictionSsnResult start = solve_friction_ssn(p, T, frictionless, o);
+    r.u = start.u;
+    lambda = Eigen::Map<const Vector>(start.force.data(), d * nc);
+  } else {
+    Eigen::SimplicialLDLT<SparseMatrix> A_factor(p.A);
+    if (A_factor.info() != Eigen::Success) throw NumericalError("friction: A is not SPD");
+    r.u = A_factor.solve(p.b);
+  }
+  const double b_norm = std::max(p.b.norm(), 1e-300);
+
+  // F(x, lambda) and, where asked, the KKT matrix J of its generalised derivative.
+  struct State {
+    Vector F1, F2;
+    double merit = 0.0;  // ||F1|| / ||b|| + ||F2|| / ||lambda||, the sizes the test measures
+  };
+  const auto evaluate = [&](const Vector& x, const Vector& l,
+                            std::vector<Eigen::Triplet<double>>* jac) {
+    const Vector z = l + c * (B * x - g_hat);
+    Vector projected = Vector::Zero(d * nc);
+    r.in_contact.assign(static_cast<std::size_t>(nc), false);
+    r.sliding.assign(static_cast<std::size_t>(nc), false);
+    for (Index j = 0; j < nc; ++j) {
+      Eigen::MatrixXd D = Eigen::MatrixXd::Zero(d, d);
+      if (cs.movable[static_cast<std::size_t>(j)]) {
+        const Eigen::VectorXd zj = z.segment(d * j, d);
+        const FrictionProjection pj = law.kind == FrictionKind::Tresca
+                                          ? project_tresca(zj, law.bound(j))
+                                          : project_coulomb(zj, law.bound(j));
+        projected.segment(d * j, d) = pj.force;
+        D = pj.derivative;
+        r.in_contact[static_cast<std::size_t>(j)] = pj.in_contact;
+        r.sliding[static_cast<std::size_t>(j)] = pj.sliding;
+      }
+      if (jac == nullptr) continue;
+      // Rows n + d j + a: -c (D B_j)_a dx + ((I - D) dlambda_j)_a (duplicates are summed).
+      for (Index a = 0; a < d; ++a)
+        for (Index e = 0; e < d; ++e) {
+          if (D(a, e) != 0.0)
+            for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(B_rows, d * j + e);
+                 it; ++it)
+              jac->emplace_back(n + d * j + a, it.col(), -c * D(a, e) * it.value());
+          const double v = (a == e ? 1.0 : 0.0) - D(a, e);
+          if (v != 0.0) jac->emplace_back(n + d * j + a, n + d * j + e, v);
+        }
+    }
+    State st;
+    st.F1 = p.A * x - p.b + BtW * l;
+    st.F2 = l - projected;
+    r.equilibrium = st.F1.norm() / b_norm;
+    r.projection = st.F2.norm() / std::max(l.norm(), 1e-300);
+    st.merit = r.equilibrium + (l.norm() > 0.0 ? r.projection : st.F2.norm());
+    return st;
+  };
+
+  Eigen::SparseLU<SparseMatrix> lu;
+  for (r.iterations = 0; r.iterations <= o.max_iterations; ++r.iterations) {
+    std::vector<Eigen::Triplet<double>> jac;  // the KKT matrix: A and B^T W, then the rows above
+    jac.reserve(static_cast<std::size_t>(p.A.nonZeros() + 2 * B.nonZeros()));
+    for (Index col = 0; col < n; ++col)
+      for (SparseMatrix::InnerIterator it(p.A, col); it; ++it)
+        jac.emplace_back(it.row(), col, it.value());
+    for (Index col = 0; col < n; ++col)
+      for (SparseMatrix::InnerIterator it(B, col); it; ++it)
+        jac.emplace_back(col, n + it.row(), it.value() * w(it.row()));
+    const State st = evaluate(r.u, lambda, &jac);
+    if (r.equilibrium <= o.tolerance && r.projection <= o.tolerance) {
+      r.converged = true;
+      break;
+    }
+    if (r.iterations == o.max_iterations) break;
+    SparseMatrix J(n + d * nc, n + d * nc);
+    J.setFromTriplets(jac.begin(), jac.end());
+    lu.compute(J);
+    if (lu.info() != Eigen::Success) throw NumericalError("friction: the KKT matrix is singular");
+    Vector rhs(n + d * nc);
+    rhs << -st.F1, -st.F2;
+    const Vector step = lu.solve(rhs);
+    // The full step where it reduces the residual, else halved until it does (a plain
+    // semismooth Newton can cycle between active sets: Tresca at large bounds does here).
+    double t = 1.0;
+    for (int halvings = 0; halvings < 30; ++halvings, t *= 0.5) {
+      const Vector x_trial = r.u + t * step.head(n);
+      const Vector l_trial = lambda + t * step.tail(d * nc);
+      if (evaluate(x_trial, l_trial, nullptr).merit < (1.0 - 1e-4 * t) * st.merit) break;
+    }
+    r.u += t * step.head(n);
+    lambda += t * step.tail(d * nc);
+  }
+  r.force = Eigen::Map<const Eigen::MatrixXd>(lambda.data(), d, nc);
+  return r;
+}
+
+}  // namespace signorini

@@ -1,0 +1,61 @@
+#pragma once
+// Semismooth Newton for frictional contact (docs/method.md, "Friction"): the reference solver
+// that the friction issue asks for as the independent check of the Uzawa-GNM methods to come.
+//
+// Unknowns: the displacement x (free dofs) and per contact node the force lambda_j = (normal,
+// tangential) in R^d. With B = [N; T] (the normal and tangential rows of each node), W the
+// nodal weights and g^ = (g_j, 0), the KKT conditions are
+//   A x - b + B^T W lambda = 0,    lambda = P(lambda + c (B x - g^)),
+// P the node's projection (friction_projection.hpp): Tresca's or Coulomb's. Newton on them with
+// P's generalised derivative D:
+//   [ A        B^T W ] [dx     ]     [ A x - b + B^T W lambda ]
+//   [ -c D B   I - D ] [dlambda] = - [ lambda - P(z)           ]
+// solved by a sparse LU (the matrix is not symmetric). A node without a free normal unknown keeps
+// lambda_j = 0. A frictional law starts from the frictionless solution (the same law with zero
+// bounds), and each step is halved until the residual decreases.
+//
+// Status: library only, for small and medium problems (a sparse LU of the whole KKT matrix at
+// each step); no problem-file or tool access yet. On the paper's problem it converges for
+// Coulomb up to mu = 2 and fails at mu = 5 (tests/contact/friction_ssn_test.cpp): a better
+// globalisation is still to come.
+
+#include <vector>
+
+#include "signorini/contact/contact_problem.hpp"
+
+namespace signorini {
+
+enum class FrictionKind { Tresca, Coulomb };
+
+struct FrictionLawSpec {
+  FrictionKind kind = FrictionKind::Tresca;
+  /// Per contact node: Tresca's slip bound s_j or Coulomb's coefficient mu_j (>= 0).
+  Vector bound;
+};
+
+struct FrictionSsnOptions {
+  int max_iterations = 100;
+  /// Converged when ||A x - b + B^T W lambda|| <= tolerance ||b|| and
+  /// ||lambda - P(z)|| <= tolerance ||lambda||.
+  double tolerance = 1e-12;
+  /// The complementarity constant c; 0: mean(diag A) / mean(weights).
+  double c = 0.0;
+};
+
+struct FrictionSsnResult {
+  Vector u;               ///< free dofs
+  Eigen::MatrixXd force;  ///< d x n_c: lambda_j (normal, then tangential)
+  std::vector<bool> in_contact, sliding;
+  int iterations = 0;
+  double equilibrium = 0.0;  ///< ||A u - b + B^T W lambda|| / ||b||
+  double projection = 0.0;   ///< ||lambda - P(z)|| / ||lambda||
+  bool converged = false;
+};
+
+/// `T`: the tangential rows (fem/contact_tangents.hpp, tangential_operator).
+[[nodiscard]] FrictionSsnResult solve_friction_ssn(const ContactProblem& problem,
+                                                   const SparseMatrix& T,
+                                                   const FrictionLawSpec& law,
+                                                   const FrictionSsnOptions& options = {});
+
+}  // namespace signorini
