@@ -15,6 +15,8 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
   const ContactSet& cs = p.contact;
   const Index n = p.A.rows(), nc = cs.size();
   if (nc == 0) throw InputError("friction: no contact nodes");
+  if (p.partitioned())
+    throw InputError("friction: a partitioned problem (the distributed path) is not supported");
   if (T.rows() % nc != 0 || T.cols() != n)
     throw InputError("friction: T must have (dim - 1) rows per contact node over the free dofs");
   const Index d = 1 + T.rows() / nc;
@@ -24,9 +26,8 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
 
   // B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. its tangential rows.
   std::vector<Eigen::Triplet<double>> entries;
-  const SparseMatrix Nr = cs.N;  // column-major: walk the columns, place the rows
-  for (Index col = 0; col < n; ++col) {
-    for (SparseMatrix::InnerIterator it(Nr, col); it; ++it)
+  for (Index col = 0; col < n; ++col) {  // column-major: walk the columns, place the rows
+    for (SparseMatrix::InnerIterator it(cs.N, col); it; ++it)
       entries.emplace_back(d * it.row(), col, it.value());
     for (SparseMatrix::InnerIterator it(T, col); it; ++it)
       entries.emplace_back(d * (it.row() / (d - 1)) + 1 + it.row() % (d - 1), col, it.value());
