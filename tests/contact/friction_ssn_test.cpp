@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../problem/ball_on_block.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/fem/contact_tangents.hpp"
 #include "signorini/problem/model.hpp"
@@ -107,6 +108,49 @@ TEST(FrictionSsn, CoulombIsTrescaWithTheBoundOfItsPressure) {
       EXPECT_LT(sliding, in_contact) << "mu = " << mu << ": a stick zone expected";
     }
   }
+}
+
+// In 3D (a block pressed 0.03 onto a rigid ball, two tangential directions per node; b = 0, the
+// load comes from the prescribed interference): Coulomb's
+// tangential forces within mu times the pressure, sticking nodes without slip, sliding ones
+// slipping along their force; and Tresca with s_j = mu times that pressure gives the same u.
+TEST(FrictionSsn, CoulombIn3DMeetsTheConditionsAndIsTrescaWithItsBound) {
+  const Model model = build_model(testing::ball_on_block(8, 3e-2));  // 21 nodes in contact
+  const SparseMatrix T = tangential_operator(model.problem.contact, model.dofs);
+  const double mu = 0.2;
+  const Index nc = model.problem.contact.size();
+  const FrictionSsnResult coulomb =
+      solve_friction_ssn(model.problem, T, {FrictionKind::Coulomb, Vector::Constant(nc, mu)});
+  ASSERT_TRUE(coulomb.converged) << coulomb.equilibrium << " " << coulomb.projection;
+  ASSERT_EQ(coulomb.force.rows(), 3);
+  const Vector slip = T * coulomb.u;
+  const double scale = coulomb.u.lpNorm<Eigen::Infinity>();
+  int in_contact = 0, sliding = 0;
+  for (Index j = 0; j < nc; ++j) {
+    if (!coulomb.in_contact[static_cast<std::size_t>(j)]) continue;
+    ++in_contact;
+    sliding += coulomb.sliding[static_cast<std::size_t>(j)] ? 1 : 0;
+    const Eigen::Vector2d lt = coulomb.force.col(j).tail(2);
+    const Eigen::Vector2d sj = slip.segment(2 * j, 2);
+    EXPECT_LE(lt.norm(), mu * coulomb.force(0, j) * (1 + 1e-10)) << "node " << j;
+    if (!coulomb.sliding[static_cast<std::size_t>(j)]) {
+      EXPECT_LE(sj.norm(), 1e-9 * scale) << "a sticking node slips: " << j;
+    } else if (sj.norm() > 1e-9 * scale) {
+      // Along the force: parallel, same sense.
+      EXPECT_LE(std::abs(sj(0) * lt(1) - sj(1) * lt(0)), 1e-8 * sj.norm() * lt.norm());
+      EXPECT_GT(sj.dot(lt), 0.0);
+    }
+  }
+  EXPECT_GT(in_contact, 10);
+  EXPECT_GT(sliding, 0);
+  EXPECT_LT(sliding, in_contact);  // a stick zone
+  const FrictionSsnResult frictionless =
+      solve_friction_ssn(model.problem, T, {FrictionKind::Tresca, Vector::Zero(nc)});
+  EXPECT_GT(relative(coulomb.u, frictionless.u), 1e-2);  // friction matters here
+  const FrictionSsnResult tresca = solve_friction_ssn(
+      model.problem, T, {FrictionKind::Tresca, mu * coulomb.force.row(0).transpose()});
+  ASSERT_TRUE(tresca.converged);
+  EXPECT_LT(relative(tresca.u, coulomb.u), 1e-8);
 }
 
 }  // namespace

@@ -59,12 +59,14 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
     if (A_factor.info() != Eigen::Success) throw NumericalError("friction: A is not SPD");
     r.u = A_factor.solve(p.b);
   }
-  const double b_norm = std::max(p.b.norm(), 1e-300);
-
-  // F(x, lambda) and, where asked, the KKT matrix J of its generalised derivative.
+  // F(x, lambda) and, where asked, the KKT matrix J of its generalised derivative. The merit
+  // that the steps must reduce measures F1 and F2 against fixed scales, those of the start (the
+  // loads, or the contact forces where there are none: a body moved onto the obstacle by its
+  // prescribed displacements has b = 0).
+  double force_scale = 0.0, lambda_scale = 0.0;
   struct State {
     Vector F1, F2;
-    double merit = 0.0;  // ||F1|| / ||b|| + ||F2|| / ||lambda||, the sizes the test measures
+    double merit = 0.0;
   };
   const auto evaluate = [&](const Vector& x, const Vector& l,
                             std::vector<Eigen::Triplet<double>>* jac) {
@@ -99,9 +101,14 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
     State st;
     st.F1 = p.A * x - p.b + BtW * l;
     st.F2 = l - projected;
-    r.equilibrium = st.F1.norm() / b_norm;
+    if (force_scale == 0.0) {  // the start
+      force_scale = std::max({p.b.norm(), (BtW * projected).norm(), (BtW * l).norm(), 1e-300});
+      lambda_scale = std::max({projected.norm(), l.norm(), 1e-300});
+    }
+    // As kkt_residuals measures them: against the larger of the loads and the contact forces.
+    r.equilibrium = st.F1.norm() / std::max({p.b.norm(), (BtW * l).norm(), 1e-300});
     r.projection = st.F2.norm() / std::max(l.norm(), 1e-300);
-    st.merit = r.equilibrium + (l.norm() > 0.0 ? r.projection : st.F2.norm());
+    st.merit = st.F1.norm() / force_scale + st.F2.norm() / lambda_scale;
     return st;
   };
 

@@ -35,7 +35,7 @@ struct FrictionLawSpec {
 
 struct FrictionSsnOptions {
   int max_iterations = 100;
-  /// Converged when ||A x - b + B^T W lambda|| <= tolerance ||b|| and
+  /// Converged when ||A x - b + B^T W lambda|| <= tolerance max(||b||, ||B^T W lambda||) and
   /// ||lambda - P(z)|| <= tolerance ||lambda||.
   double tolerance = 1e-12;
   /// The complementarity constant c; 0: mean(diag A) / mean(weights).
