@@ -52,7 +52,8 @@ TEST(NodePartition, BalancesTheUnknownsAndCutsLessThanTheNumbering) {
   // Against the even split of the Z-order numbering (what the ranks owned before the partition).
   std::vector<int> split(owner.size());
   for (int r = 0; r < ranks; ++r)
-    for (Index v = graph.vertices * r / ranks; v < graph.vertices * (r + 1) / ranks; ++v)
+    for (Index v = vertex_share_start(graph.vertices, r, ranks);
+         v < vertex_share_start(graph.vertices, r + 1, ranks); ++v)
       split[static_cast<std::size_t>(v)] = r;
   const Index cut = sum_over_ranks(cut_edges(graph, owner));
   const Index split_cut = sum_over_ranks(cut_edges(graph, split));
@@ -95,8 +96,8 @@ TEST(NodePartition, CurrentKeepsTheNumberingsSplit) {
   const std::vector<int> owner = engine.partition(graph, o);
   ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mat_partitioning_type"), 0);
   for (int r = 0; r < engine.size(); ++r)
-    for (Index v = graph.vertices * r / engine.size(); v < graph.vertices * (r + 1) / engine.size();
-         ++v)
+    for (Index v = vertex_share_start(graph.vertices, r, engine.size());
+         v < vertex_share_start(graph.vertices, r + 1, engine.size()); ++v)
       EXPECT_EQ(owner[static_cast<std::size_t>(v)], r) << "vertex " << v;
 }
 

@@ -99,29 +99,33 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
         }
     }
     State st;
-    st.F1 = p.A * x - p.b + BtW * l;
+    const Vector reaction = BtW * l;
+    st.F1 = p.A * x - p.b + reaction;
     st.F2 = l - projected;
     if (force_scale == 0.0) {  // the start
-      force_scale = std::max({p.b.norm(), (BtW * projected).norm(), (BtW * l).norm(), 1e-300});
+      force_scale = std::max({p.b.norm(), (BtW * projected).norm(), reaction.norm(), 1e-300});
       lambda_scale = std::max({projected.norm(), l.norm(), 1e-300});
     }
     // As kkt_residuals measures them: against the larger of the loads and the contact forces.
-    r.equilibrium = st.F1.norm() / std::max({p.b.norm(), (BtW * l).norm(), 1e-300});
+    r.equilibrium = st.F1.norm() / std::max({p.b.norm(), reaction.norm(), 1e-300});
     r.projection = st.F2.norm() / std::max(l.norm(), 1e-300);
     st.merit = st.F1.norm() / force_scale + st.F2.norm() / lambda_scale;
     return st;
   };
 
+  // The KKT matrix's rows of A x - b + B^T W lambda do not change: made once, and each step
+  // adds the rows of its D.
+  std::vector<Eigen::Triplet<double>> fixed_rows;
+  fixed_rows.reserve(static_cast<std::size_t>(p.A.nonZeros() + B.nonZeros()));
+  for (Index col = 0; col < n; ++col)
+    for (SparseMatrix::InnerIterator it(p.A, col); it; ++it)
+      fixed_rows.emplace_back(it.row(), col, it.value());
+  for (Index col = 0; col < n; ++col)
+    for (SparseMatrix::InnerIterator it(B, col); it; ++it)
+      fixed_rows.emplace_back(col, n + it.row(), it.value() * w(it.row()));
   Eigen::SparseLU<SparseMatrix> lu;
   for (r.iterations = 0; r.iterations <= o.max_iterations; ++r.iterations) {
-    std::vector<Eigen::Triplet<double>> jac;  // the KKT matrix: A and B^T W, then the rows above
-    jac.reserve(static_cast<std::size_t>(p.A.nonZeros() + 2 * B.nonZeros()));
-    for (Index col = 0; col < n; ++col)
-      for (SparseMatrix::InnerIterator it(p.A, col); it; ++it)
-        jac.emplace_back(it.row(), col, it.value());
-    for (Index col = 0; col < n; ++col)
-      for (SparseMatrix::InnerIterator it(B, col); it; ++it)
-        jac.emplace_back(col, n + it.row(), it.value() * w(it.row()));
+    std::vector<Eigen::Triplet<double>> jac = fixed_rows;
     const State st = evaluate(r.u, lambda, &jac);
     if (r.equilibrium <= o.tolerance && r.projection <= o.tolerance) {
       r.converged = true;

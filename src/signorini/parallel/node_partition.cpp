@@ -22,8 +22,8 @@ NodeGraph node_graph(const Mesh& mesh, const DofMap& dofs, int rank, int ranks) 
     ++unknowns.back();
   }
   g.vertices = static_cast<Index>(g.node.size());
-  g.first = g.vertices * rank / ranks;
-  g.last = g.vertices * (rank + 1) / ranks;
+  g.first = vertex_share_start(g.vertices, rank, ranks);
+  g.last = vertex_share_start(g.vertices, rank + 1, ranks);
   g.weights.assign(unknowns.begin() + g.first, unknowns.begin() + g.last);
 
   // This rank's rows: for each cell, each of its own vertices meets the cell's other vertices.

@@ -26,6 +26,12 @@ struct NodeGraph {
   std::vector<Index> node;        ///< the mesh node of every vertex
 };
 
+/// The first vertex of rank `rank`'s even share of `vertices` (rank = ranks: the end): the rows
+/// that node_graph gives a rank, and what a partitioner starts from.
+[[nodiscard]] inline Index vertex_share_start(Index vertices, int rank, int ranks) {
+  return vertices * rank / ranks;
+}
+
 /// The graph of `dofs`'s free nodes, with the rows of the vertices of `rank` of `ranks` (an even
 /// split of the vertices in the numbering's order).
 [[nodiscard]] NodeGraph node_graph(const Mesh& mesh, const DofMap& dofs, int rank, int ranks);

@@ -30,6 +30,21 @@ void mark_spd(Mat M, const char* what) {
   if (!block) check(MatSetOption(M, MAT_SPD, PETSC_TRUE), what);
 }
 
+namespace {
+
+// An empty matrix of `type` with this rank's m rows of n, in blocks of `block`.
+Mat new_matrix(MPI_Comm comm, PetscInt m, PetscInt n, PetscInt block, MatType type,
+               const char* what) {
+  Mat M = nullptr;
+  check(MatCreate(comm, &M), what);
+  check(MatSetSizes(M, m, m, n, n), what);
+  check(MatSetBlockSize(M, block), what);
+  check(MatSetType(M, type), what);
+  return M;
+}
+
+}  // namespace
+
 Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscInt block) {
   const auto m = static_cast<PetscInt>(hi - lo);
   std::vector<PetscInt> ia(static_cast<std::size_t>(m) + 1, 0), ja;
@@ -44,11 +59,7 @@ Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, P
     ia[static_cast<std::size_t>(i - lo) + 1] = static_cast<PetscInt>(ja.size());
   }
   const auto n = static_cast<PetscInt>(A.rows());
-  Mat M = nullptr;
-  check(MatCreate(comm, &M), "a distributed matrix");
-  check(MatSetSizes(M, m, m, n, n), "a distributed matrix");
-  check(MatSetBlockSize(M, block), "a distributed matrix");
-  check(MatSetType(M, MATAIJ), "a distributed matrix");
+  Mat M = new_matrix(comm, m, n, block, MATAIJ, "a distributed matrix");
   // (Each call is a no-op on a matrix of the other type: MATAIJ is one of them by size.)
   check(MatSeqAIJSetPreallocationCSR(M, ia.data(), ja.data(), va.data()), "a distributed matrix");
   check(MatMPIAIJSetPreallocationCSR(M, ia.data(), ja.data(), va.data()), "a distributed matrix");
@@ -69,13 +80,8 @@ Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscIn
         const bool own = it.row() >= lo && it.row() < hi;
         ++(own ? d_blocks : o_blocks)[static_cast<std::size_t>(ib)];
       }
-  Mat M = nullptr;
-  const auto m = static_cast<PetscInt>(hi - lo);
-  const auto n = static_cast<PetscInt>(A.rows());
-  check(MatCreate(comm, &M), "a block matrix");
-  check(MatSetSizes(M, m, m, n, n), "a block matrix");
-  check(MatSetBlockSize(M, block), "a block matrix");
-  check(MatSetType(M, MATBAIJ), "a block matrix");
+  Mat M = new_matrix(comm, static_cast<PetscInt>(hi - lo), static_cast<PetscInt>(A.rows()), block,
+                     MATBAIJ, "a block matrix");
   check(MatXAIJSetPreallocation(M, block, d_blocks.data(), o_blocks.data(), nullptr, nullptr),
         "a block matrix");
   // One block row at a time: a bs x (bs * blocks) row-major array (MatSetValuesBlocked).
@@ -201,7 +207,6 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
                         const Matrix& near_null_space, Index lo, Index hi, bool reuse_interpolation,
                         const MultigridBuilder& multigrid) {
   KspChoice choice;
-  const bool keep_levels = multigrid && keeps_gamg_levels(o);
   std::string built;
   check(KSPSetOperators(ksp, H, H), "KSP");
   PC pc = nullptr;
@@ -216,7 +221,7 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
         o.petsc_multigrid == PetscMultigrid::Hypre) {
       check(PCSetType(pc, PCHYPRE), "hypre");
       check(PCHYPRESetType(pc, "boomeramg"), "hypre");
-    } else if (keep_levels) {
+    } else if (multigrid) {
       built = multigrid(pc);
     } else if (o.linear.preconditioner == PreconditionerType::Multigrid) {
       check(PCSetType(pc, PCGAMG), "GAMG");

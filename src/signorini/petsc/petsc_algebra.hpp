@@ -66,7 +66,7 @@ using MultigridBuilder = std::function<std::string(PC pc)>;
 /// with "jacobi" -> CG with Jacobi, a direct solver -> MUMPS's Cholesky factorisation; CG measures
 /// the unpreconditioned residual and starts from the given x. Then solver.petsc_options.
 /// `reuse_interpolation`: GAMG keeps its prolongators when H's values change. `multigrid`, where
-/// given, makes the multigrid instead of GAMG (unless the PETSc options name a -pc_type).
+/// given (the caller asks keeps_gamg_levels), makes the multigrid of "cg" with "multigrid".
 KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& options,
                         const Matrix& near_null_space, Index lo, Index hi, bool reuse_interpolation,
                         const MultigridBuilder& multigrid = {});

@@ -72,8 +72,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<
     PC g = nullptr;
     check(KSPGetPC(setup, &g), "GAMG");
     check(PCSetType(g, PCGAMG), "GAMG");
-    check(PCSetFromOptions(g), "GAMG options");
-    check(PCSetType(g, PCGAMG), "GAMG");  // whatever -pc_type says: its levels are wanted here
+    check(PCSetFromOptions(g), "GAMG options");  // (no -pc_type: keeps_gamg_levels)
     check(PCSetUp(g), "GAMG's set-up");
     PetscInt np = 0, na = 0;
     Mat* Ps = nullptr;
@@ -141,6 +140,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<
     mark_spd(c.H, "a coarse level");
     check(MatDuplicate(c.H, MAT_DO_NOT_COPY_VALUES, &c.A_in_H), "a coarse level");
     check(MatAXPY(c.A_in_H, 1.0, c.A, SUBSET_NONZERO_PATTERN), "a coarse level");
+    check(MatDestroy(&c.A), "a coarse level");  // A_in_H holds it from here on
     finer = c.N;
   }
   check(MatDestroy(&N), "the contact matrix");
@@ -165,14 +165,14 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<
   sizes_.push_back(cols);
   for (std::size_t l = levels_.size(); l-- > 0;) {
     PetscInt n = 0;
-    check(MatGetSize(levels_[l].A, &n, nullptr), "multigrid");
+    check(MatGetSize(levels_[l].H, &n, nullptr), "multigrid");
     sizes_.push_back(n);
   }
 }
 
 ContactMultigrid::~ContactMultigrid() {
   for (Coarse& c : levels_)
-    for (Mat* M : {&c.A, &c.N, &c.Q, &c.H, &c.A_in_H}) MatDestroy(M);
+    for (Mat* M : {&c.A, &c.N, &c.Q, &c.H, &c.A_in_H}) MatDestroy(M);  // (A: null once used)
   for (Mat& P : P_) MatDestroy(&P);
   MatDestroy(&C_);
   VecDestroy(&c_);

@@ -49,7 +49,7 @@ class ContactMultigrid {
 
  private:
   struct Coarse {
-    Mat A = nullptr;       // GAMG's Galerkin product
+    Mat A = nullptr;       // GAMG's Galerkin product, until A_in_H is made
     Mat N = nullptr;       // the contact rows on this level: N_{l+1} P_l
     Mat Q = nullptr;       // N^T diag(c) N
     Mat H = nullptr;       // A + Q, on the union of their patterns

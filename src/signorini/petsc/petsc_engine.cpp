@@ -90,7 +90,8 @@ std::vector<int> PetscEngine::partition(const NodeGraph& graph,
   petsc::check(ISRestoreIndices(owners, &mine), "partitioning the nodes");
   std::vector<int> counts(static_cast<std::size_t>(size_)), displs(static_cast<std::size_t>(size_));
   for (int r = 0; r < size_; ++r) {
-    const Index first = graph.vertices * r / size_, last = graph.vertices * (r + 1) / size_;
+    const Index first = vertex_share_start(graph.vertices, r, size_);
+    const Index last = vertex_share_start(graph.vertices, r + 1, size_);
     counts[static_cast<std::size_t>(r)] = static_cast<int>(last - first);
     displs[static_cast<std::size_t>(r)] = static_cast<int>(first);
   }

@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <tuple>
-
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
@@ -22,6 +20,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   ScopedTimer timer(timings_, "distributed set-up");
   n_ = problem.A.rows();
   nc_ = problem.contact.size();
+  const bool keeps_levels = petsc::keeps_gamg_levels(o_);
   // The unknowns in whole node blocks (node_padding.hpp): this rank's range [first, last) of
   // unknowns becomes [lo_, hi_) of slots.
   const auto [first, last] = petsc::owned_rows(problem, comm_);
@@ -38,7 +37,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
     const SparseMatrix& A = padding_.active() ? padded_A : problem.A;
     const auto block = static_cast<PetscInt>(padding_.block());
     A_aij = petsc::distributed_rows(A, lo_, hi_, comm_, block);
-    if (petsc::keeps_gamg_levels(o_)) {
+    if (keeps_levels) {
       A_ = petsc::block_rows(A, lo_, hi_, comm_, block);
     } else {
       A_ = A_aij;
@@ -66,7 +65,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
     if (!row.dofs.empty() && row.dofs.front() >= lo_ && row.dofs.front() < hi_)
       rows_.push_back(std::move(row));
   }
-  set_up_solver(A_aij);
+  set_up_solver(A_aij, keeps_levels);
   check(MatDestroy(&A_aij), "A");
   active_.assign(static_cast<std::size_t>(nc_), false);
   Nx_ = contact_values_of(x_);
@@ -80,21 +79,23 @@ PetscNewtonSpace::~PetscNewtonSpace() {
   MatDestroy(&A_);
 }
 
-void PetscNewtonSpace::set_up_solver(Mat A_aij) {
+void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
   check(KSPCreate(comm_, &ksp_), "KSP");
   // CG with GAMG: GAMG's levels formed once, from A, and the contact term carried to each
   // (petsc_contact_multigrid.hpp).
-  const petsc::MultigridBuilder keep_levels = [&](PC pc) {
-    std::string what = "GAMG's levels, kept for every active set";
-    if (modes().rows() > 0)
-      what += fmt::format(", {} rigid-body modes",
-                          petsc::attach_near_null_space(A_aij, modes(), lo_, hi_));
-    multigrid_ = std::make_unique<petsc::ContactMultigrid>(pc, A_aij, A_, rows_, comm_);
-    std::string sizes;
-    for (const PetscInt n : multigrid_->level_sizes())
-      sizes += fmt::format("{}{}", sizes.empty() ? "" : ", ", n);
-    return fmt::format("{}; levels of {} unknowns", what, sizes);
-  };
+  petsc::MultigridBuilder keep_levels;
+  if (keeps_levels)
+    keep_levels = [&](PC pc) {
+      std::string what = "GAMG's levels, kept for every active set";
+      if (modes().rows() > 0)
+        what += fmt::format(", {} rigid-body modes",
+                            petsc::attach_near_null_space(A_aij, modes(), lo_, hi_));
+      multigrid_ = std::make_unique<petsc::ContactMultigrid>(pc, A_aij, A_, rows_, comm_);
+      std::string sizes;
+      for (const PetscInt n : multigrid_->level_sizes())
+        sizes += fmt::format("{}{}", sizes.empty() ? "" : ", ", n);
+      return fmt::format("{}; levels of {} unknowns", what, sizes);
+    };
   const petsc::KspChoice choice =
       petsc::configure_ksp(ksp_, H_, o_, modes(), lo_, hi_, true, keep_levels);
   direct_ = choice.direct;
@@ -107,27 +108,26 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij) {
 void PetscNewtonSpace::set_active(const ActiveSet& active, double r) {
   if (has_active_ && active == active_) return;
   ScopedTimer t(timings_, "preconditioner setup");
+  // c_j = r h_j on the active nodes, 0 elsewhere: H's blocks here, the levels' terms below.
+  Vector c = Vector::Zero(nc_);
+  for (Index j = 0; j < nc_; ++j)
+    if (active[static_cast<std::size_t>(j)]) c(j) = r * p_.contact.weights(j);
   check(MatCopy(A_, H_, SAME_NONZERO_PATTERN), "the Newton matrix");
   std::vector<PetscScalar> block;
   for (const petsc::ContactRow& row : rows_) {
-    if (!active[static_cast<std::size_t>(row.j)]) continue;
-    const double c = r * p_.contact.weights(row.j);
+    if (c(row.j) == 0.0) continue;
     const std::size_t k = row.dofs.size();
     block.assign(k * k, 0.0);
     for (std::size_t a = 0; a < k; ++a)
-      for (std::size_t b = 0; b < k; ++b) block[a * k + b] = c * row.normal[a] * row.normal[b];
+      for (std::size_t b = 0; b < k; ++b)
+        block[a * k + b] = c(row.j) * row.normal[a] * row.normal[b];
     check(MatSetValues(H_, static_cast<PetscInt>(k), row.dofs.data(), static_cast<PetscInt>(k),
                        row.dofs.data(), block.data(), ADD_VALUES),
           "the Newton matrix");
   }
   check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
   check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
-  if (multigrid_) {
-    Vector c = Vector::Zero(nc_);
-    for (Index j = 0; j < nc_; ++j)
-      if (active[static_cast<std::size_t>(j)]) c(j) = r * p_.contact.weights(j);
-    multigrid_->set_weights(c);
-  }
+  if (multigrid_) multigrid_->set_weights(c);
   check(KSPSetOperators(ksp_, H_, H_), "KSP");  // the preconditioner is set up again
   active_ = active;
   has_active_ = true;

@@ -45,7 +45,7 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
  private:
   Vector contact_values_of(Vec v);
   void add_contact_transpose(const Vector& values, Vec v);  // v += N^T values
-  void set_up_solver(Mat A_aij);
+  void set_up_solver(Mat A_aij, bool keeps_levels);
 
   // The rigid-body modes on the slots.
   [[nodiscard]] const Matrix& modes() const {
