@@ -52,14 +52,14 @@ TEST(GeneralizedNewton, AdaptiveInnerToleranceAsksForATenthOfItsToleranceFromThe
   space.next_direction.Nd = Vector::Zero(p.contact.size());
   o.max_gnm_iterations = 1;
   o.inner_tolerance = InnerTolerance::Adaptive;
-  static_cast<void>(GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1, 1e-4));
+  static_cast<void>(GeneralizedNewton(o, 1.0).minimize(phi, space, 1, 1e-4));
   EXPECT_DOUBLE_EQ(space.linear_tolerance, 1e-5);
   // Never below the configured CG tolerance; and the exact method uses the configured one.
   o.linear.cg_tolerance = 1e-3;
-  static_cast<void>(GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1, 1e-4));
+  static_cast<void>(GeneralizedNewton(o, 1.0).minimize(phi, space, 1, 1e-4));
   EXPECT_DOUBLE_EQ(space.linear_tolerance, 1e-3);
   o.inner_tolerance = InnerTolerance::Fixed;
-  static_cast<void>(GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1, 1e-4));
+  static_cast<void>(GeneralizedNewton(o, 1.0).minimize(phi, space, 1, 1e-4));
   EXPECT_EQ(space.linear_tolerance, 0.0);
 }
 
@@ -74,7 +74,7 @@ TEST(GeneralizedNewton, ArmijoFailureStopsWithTheHalvingsTried) {
   space.next_direction.residual_dot_d = -1.0;
   space.next_direction.d_A_d = 1e6;
   space.next_direction.Nd = Vector::Zero(p.contact.size());
-  const GeneralizedNewton gnm(o, 1.0, p.contact.weights);
+  const GeneralizedNewton gnm(o, 1.0);
   const GnmResult g = gnm.minimize(phi, space, 4);
   EXPECT_EQ(g.termination, Termination::LineSearchFailure);
   EXPECT_EQ(g.armijo_reductions, 3);  // the halvings tried, not one more
@@ -96,7 +96,7 @@ TEST(GeneralizedNewton, LinearSolverFailureNamesTheSolverAndItsResidual) {
   space.next_solve.residual = 3.5e-4;
   space.next_solve.solver = "conjugate gradients";
   space.next_solve.tolerance = 1e-12;
-  const GnmResult g = GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 2);
+  const GnmResult g = GeneralizedNewton(o, 1.0).minimize(phi, space, 2);
   EXPECT_EQ(g.termination, Termination::LinearSolverFailure);
   EXPECT_EQ(g.linear_iterations, 17);
   EXPECT_EQ(g.message,
@@ -115,7 +115,7 @@ TEST(GeneralizedNewton, RepeatedActiveSetAfterAFullStepEndsTheMinimisation) {
   space.next_direction.residual_dot_d = -1.0;  // a full step that decreases Phi
   space.next_direction.d_A_d = 1.0;
   space.next_direction.Nd = Vector::Zero(p.contact.size());
-  const GnmResult g = GeneralizedNewton(o, 1.0, p.contact.weights).minimize(phi, space, 1);
+  const GnmResult g = GeneralizedNewton(o, 1.0).minimize(phi, space, 1);
   EXPECT_EQ(g.termination, Termination::Converged);
   EXPECT_EQ(g.iterations, 2);
   EXPECT_EQ(space.steps, 1);
@@ -129,7 +129,7 @@ TEST(GeneralizedNewton, HostAndBackendSpacesAgree) {
   o.linear.cg_tolerance = 1e-14;
   ModifiedLagrangian phi(p, 1e3);
   phi.set_multipliers(Vector::Constant(p.contact.size(), 0.05));
-  const GeneralizedNewton gnm(o, p.b.norm(), p.contact.weights);
+  const GeneralizedNewton gnm(o, p.b.norm());
 
   const auto system = make_newton_system(p, phi, o.linear);
   HostNewtonSpace host(p, *system, Vector::Zero(p.A.rows()));

@@ -9,8 +9,8 @@
 //   - the change P(z0 + dz)^2 - P(z0)^2 of the penalty term of Phi (16) and M (10), without
 //     cancellation, for the Armijo rule and the reported M.
 // Frictionless unilateral contact (the paper's) has P(z) = max(z, 0). Friction laws (Tresca,
-// Coulomb) project a normal-and-tangential z onto their admissible set instead: they are new
-// ContactLaw classes with more components per node, not new loops.
+// Coulomb) project a normal-and-tangential z onto their admissible set instead: they are
+// ContactLaw classes with more components per node (friction_law.hpp), not new loops.
 
 #include <string_view>
 #include <vector>
@@ -23,10 +23,24 @@ namespace signorini {
 /// section 4).
 using ActiveSet = std::vector<bool>;
 
+/// The generalised derivative of P at z, which makes the Newton matrix of (17). For a law with
+/// one component per node it is the active set alone. A frictional law (m components per node)
+/// adds, per node j, D_j = dP/dz (m x m, column-major) and the offset c_j = P(z_j) - D_j z_j
+/// of P's linearisation; `active` then says which nodes are in contact (z_n > 0).
+struct Linearization {
+  ActiveSet active;
+  std::vector<double> blocks;   ///< m^2 per node; empty for one component
+  std::vector<double> offsets;  ///< m per node; empty for one component
+  bool operator==(const Linearization&) const = default;
+};
+
 class ContactLaw {
  public:
   virtual ~ContactLaw() = default;
   [[nodiscard]] virtual std::string_view name() const = 0;
+  /// Values per contact node in z and l: 1 for frictionless laws, d for frictional ones
+  /// (friction_law.hpp), whose contact sets have d rows of N per node.
+  [[nodiscard]] virtual int components() const { return 1; }
   /// P(z_j) for every node; a non-finite z_j (a node that cannot move, method.md section 4) gives
   /// 0.
   [[nodiscard]] virtual Vector project(const Vector& z) const = 0;

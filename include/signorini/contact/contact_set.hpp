@@ -17,7 +17,13 @@ struct ContactSet {
   /// that touch node j; on quadratic facets the integrals of the quadratic shape functions.
   Vector weights;
   Vector gaps;     ///< g_j = g(x_j), the initial gap to the foundation
-  SparseMatrix N;  ///< size() x num_free
+  SparseMatrix N;  ///< size() x num_free; (components size()) x num_free with friction
+  /// Rows of N per node: 1 (the normal), or d for frictional contact, where rows d j + 1 ..
+  /// are node j's tangential directions (contact/friction_law.hpp, add_tangential_rows).
+  int components = 1;
+  /// Frictional contact only: (d - 1) values per node, the tangential displacement (T x)_j from
+  /// which slip is measured (the previous load step's); empty: 0.
+  Vector slip_origin;
   /// false where node j has no free unknown in its normal direction (clamped): its multiplier is
   /// kept at 0 (method.md section 4, last paragraph).
   std::vector<bool> movable;

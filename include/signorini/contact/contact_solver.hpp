@@ -16,6 +16,10 @@ namespace signorini {
 struct ContactResult {
   Vector u;  ///< displacement, free dofs
   Vector l;  ///< contact pressure l_j >= 0 per contact node (l* = -sigma_nu)
+  /// Friction only (empty otherwise): (d - 1) x contact nodes, the tangential traction per node
+  /// in its tangent basis (fem/contact_tangents.hpp), the force per area that the obstacle
+  /// exerts on the body, opposed to its slip where it slides.
+  Matrix tangential;
   SolveSummary summary;
 };
 
@@ -55,6 +59,9 @@ class ContactSolver {
   void warm_start(const ContactResult& previous);
   /// Back to the paper's start u = 0, l = 0.
   void cold_start();
+  /// Friction: slip is measured from the displacement u from now on (the previous load step's
+  /// solution, so that each step's slip is its increment); no effect without friction.
+  void set_slip_origin(const Vector& u);
 
   /// How this solver solves (from the options; recorded in every summary).
   [[nodiscard]] SolvePath path() const;

@@ -53,11 +53,18 @@ struct OuterStepRecord {
 ///   penetration     max_j (N u - g)_j^+ / max(||u||_inf, max|g|)
 ///   sign            max_j (-l_j)^+ / ||l||_inf
 ///   complementarity max_j |l_j (N u - g)_j| / (||l||_inf max(||u||_inf, max|g|))
+/// and with friction (l_j = (normal, tangential), slip v_j = (T u)_j - slip origin, bound s_j
+/// Tresca's or mu_j times the normal pressure; docs/method.md, "Friction"):
+///   friction_bound  max_j (|l_t,j| - s_j)^+ / ||l||_inf
+///   slip            max_j (s_j |v_j| - l_t,j . v_j) / (||l||_inf max(||u||_inf, max|g|)),
+///                   0 where the node sticks (v_j = 0) or slides along its force at the bound
 struct KktResiduals {
   double equilibrium = 0.0;
   double penetration = 0.0;
   double sign = 0.0;
   double complementarity = 0.0;
+  double friction_bound = 0.0;  ///< 0 without friction
+  double slip = 0.0;            ///< 0 without friction
   [[nodiscard]] double max() const;
 };
 

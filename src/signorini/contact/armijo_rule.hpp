@@ -15,9 +15,9 @@ struct ArmijoStep {
   bool failed = false;  ///< no decrease within max_halvings
 };
 
-/// `dir` describes d at x (ModifiedLagrangian::direction); `weights` are the h_j.
+/// `dir` describes d at x (ModifiedLagrangian::direction).
 ArmijoStep armijo_step(const ModifiedLagrangian& phi, const ModifiedLagrangian::Direction& dir,
-                       const Vector& weights, double sigma, int max_halvings);
+                       double sigma, int max_halvings);
 
 /// The one-line message of a failed Armijo rule in GNM iteration m of Uzawa step k.
 std::string armijo_failure_message(int max_halvings, int m, int k, double gradient_norm);

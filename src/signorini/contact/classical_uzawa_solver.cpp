@@ -1,6 +1,8 @@
 // The classical Uzawa method on the ordinary Lagrangian L(v, l) = J(v) + sum_j h_j l_j ((N v)_j -
 // g_j) (method.md section 2, last paragraph): the baseline the paper improves on. Step (i) is a
-// linear solve with l^k as a load, step (ii) a projected gradient step of length rho.
+// linear solve with l^k as a load, step (ii) a projected gradient step of length rho. With
+// friction the same on every row of N (normal and tangential), the law projecting each node's
+// d values (friction_law.hpp).
 
 #include <fmt/format.h>
 
@@ -8,6 +10,7 @@
 
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/outer_iteration.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/iterative/eigenvalue_estimate.hpp"
@@ -24,9 +27,9 @@ class DualOperator final : public LinearOperator {
   DualOperator(const ContactProblem& p, LinearSolver& solver)
       : contact_(p.contact),
         solver_(solver),
-        sqrt_h_(p.contact.weights.cwiseSqrt()),
+        sqrt_h_(row_weights(p.contact).cwiseSqrt()),
         u_(Vector::Zero(p.A.rows())) {}
-  [[nodiscard]] Index size() const override { return contact_.size(); }
+  [[nodiscard]] Index size() const override { return contact_.N.rows(); }
   void apply(const DeviceVector& x, DeviceVector& y) override {
     const Eigen::Map<const Vector> v(x.data(), x.size());
     solver_.solve(contact_.N.transpose() * sqrt_h_.cwiseProduct(v), u_);  // u_: the last guess
@@ -44,10 +47,11 @@ class DualOperator final : public LinearOperator {
 // so its top is found in a few steps; 30 give it to many digits.
 double dual_operator_norm(const ContactProblem& p, LinearSolver& solver) {
   const ContactSet& c = p.contact;
-  Vector v(c.size());
-  for (Index j = 0; j < c.size(); ++j)
-    v(j) =
-        c.movable[static_cast<std::size_t>(j)] ? 1.0 + 0.1 * std::sin(static_cast<double>(j)) : 0.0;
+  Vector v(c.N.rows());
+  for (Index i = 0; i < v.size(); ++i)
+    v(i) = c.movable[static_cast<std::size_t>(i / c.components)]
+               ? 1.0 + 0.1 * std::sin(static_cast<double>(i))
+               : 0.0;
   HostBackend host;
   DualOperator T(p, solver);
   IdentityPreconditioner identity;
@@ -79,6 +83,8 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
   s.classical_step = rho;
 
   Vector x = start.displacement(problem.A.rows());
+  const Vector h = row_weights(c), g_hat = row_offsets(c);
+  const Index m = c.components;
   OuterLoop loop;
   loop.max_steps = options.max_classical_iterations;
   loop.step = [&](int k, const Vector& l) {
@@ -86,7 +92,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
     OuterStepRecord& rec = o.record;
     // (i) A u = b - N^T H l: the contact pressure acts as a load.
     const LinearSolveStats st =
-        solver->solve(problem.b - c.N.transpose() * c.weights.cwiseProduct(l), x);
+        solver->solve(problem.b - c.N.transpose() * h.cwiseProduct(l), x);
     rec.inner_iterations = 1;
     rec.linear_iterations = st.iterations;
     rec.factorizations = k == 1 ? 1 : 0;
@@ -97,11 +103,12 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
       return o;
     }
     // (ii) l^{k+1} = P(l^k + rho ((N u)_j - g_j)), P(z) = z_+ for the paper's law
-    o.l = contact_law(options).project(l + rho * (c.N * x - c.gaps));
+    o.l = contact_law(options).project(l + rho * (c.N * x - g_hat));
     for (Index j = 0; j < c.size(); ++j)
-      if (!c.movable[static_cast<std::size_t>(j)]) o.l(j) = 0.0;
+      if (!c.movable[static_cast<std::size_t>(j)]) o.l.segment(m * j, m).setZero();
     rec.dual_change = relative_change(o.l, l);
-    rec.active_set_size = (o.l.array() > 0.0).count();
+    rec.active_set_size = 0;
+    for (Index j = 0; j < c.size(); ++j) rec.active_set_size += o.l(m * j) > 0.0 ? 1 : 0;
     if (rec.dual_change < options.uzawa_tolerance) {
       o.stop = Termination::Converged;
       o.message = dual_change_message(rec, options.uzawa_tolerance, k,
@@ -117,7 +124,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
   };
   // Thousands of cheap steps: the first ten and every hundredth go to the observer.
   loop.report = [](int k) { return k <= 10 || k % 100 == 0; };
-  run_outer_loop(loop, start.multipliers(c.size()), options, out);
+  run_outer_loop(loop, start.multipliers(c.N.rows()), options, out);
   s.timings.merge(solver->timings());
   out.u = std::move(x);
   return out;

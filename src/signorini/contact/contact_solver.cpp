@@ -11,6 +11,7 @@
 
 #include "signorini/contact/condensed_problem.hpp"
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/kkt_residuals.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/core/error.hpp"
@@ -152,6 +153,27 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
   m.path = choose_path(m.options);
+  const ContactLaw& law = contact_law(given);
+  if (problem.contact.components != law.components())
+    throw InputError(fmt::format(
+        "the contact law \"{}\" has {} value(s) per contact node, the contact set {} row(s) of "
+        "N per node",
+        law.name(), law.components(), problem.contact.components));
+  if (law.components() > 1) {
+    // Friction (method.md, "Friction") runs on the full sparse problem on the host: the
+    // condensation is onto the normal displacements, and the backend, GPU and distributed
+    // Newton matrices hold diag(c) on the normal rows only.
+    if (m.path == SolvePath::CondensedDirect) m.path = SolvePath::SparseDirect;
+    if (m.path == SolvePath::Backend || m.path == SolvePath::Distributed)
+      throw InputError(fmt::format(
+          "the contact law \"{}\" (friction) runs on the host's sparse direct and CG paths only, "
+          "not with {}: use solver.linear.type = \"cholmod\" (docs/solvers.md)",
+          law.name(),
+          m.path == SolvePath::Distributed ? "solver.distributed"
+          : m.options.device == DeviceKind::Cuda
+              ? "solver.device = \"cuda\""
+              : "solver.linear.preconditioner = \"multigrid\""));
+  }
   if (problem.partitioned() && m.path != SolvePath::Distributed)
     throw InputError(
         "a partitioned contact problem (each rank holding its part of A) is solved on the "
@@ -201,9 +223,34 @@ void ContactSolver::set_gaps(const Vector& gaps) {
 
 void ContactSolver::warm_start(const ContactResult& previous) {
   const Impl& m = *impl_;
-  if (previous.u.size() != m.problem->A.rows() || previous.l.size() != m.problem->contact.size())
+  const ContactSet& c = m.problem->contact;
+  const Index k = c.components;
+  if (previous.u.size() != m.problem->A.rows() || previous.l.size() != c.size() ||
+      (k > 1 && (previous.tangential.rows() != k - 1 || previous.tangential.cols() != c.size())))
     throw InputError("ContactSolver::warm_start: the result is not one of this problem");
-  impl_->start = MethodStart{previous.l, previous.u};
+  Vector l = previous.l;
+  if (k > 1) {  // the layout of the methods: d values per node
+    l.resize(k * c.size());
+    for (Index j = 0; j < c.size(); ++j) {
+      l(k * j) = previous.l(j);
+      l.segment(k * j + 1, k - 1) = previous.tangential.col(j);
+    }
+  }
+  impl_->start = MethodStart{l, previous.u};
+}
+
+void ContactSolver::set_slip_origin(const Vector& u) {
+  Impl& m = *impl_;
+  const ContactSet& c = m.problem->contact;
+  if (c.components == 1) return;  // frictionless: slip plays no part
+  if (u.size() != m.problem->A.rows())
+    throw InputError("ContactSolver::set_slip_origin: a displacement of this problem expected");
+  const Index k = c.components;
+  const Vector rows = c.N * u;
+  Vector origin(static_cast<Index>(k - 1) * c.size());
+  for (Index j = 0; j < c.size(); ++j)
+    origin.segment((k - 1) * j, k - 1) = rows.segment(k * j + 1, k - 1);
+  m.own_problem().contact.slip_origin = std::move(origin);
 }
 
 void ContactSolver::cold_start() {
@@ -276,11 +323,22 @@ ContactResult ContactSolver::solve() {
   s.r_automatic = !m.given.r.has_value();
   s.automatic_r = m.r_auto;
   s.kkt_tolerance = options.kkt_tolerance;
-  s.kkt = kkt_residuals(problem, result.u, result.l);
+  const ContactLaw& law = contact_law(options);
+  s.kkt = kkt_residuals(problem, result.u, result.l, law);
   s.energy = 0.5 * result.u.dot(stiffness_product(problem, result.u)) - problem.b.dot(result.u);
-  s.lagrangian =
-      ModifiedLagrangian::value(problem, *options.r, result.u, result.l, contact_law(options));
+  s.lagrangian = ModifiedLagrangian::value(problem, *options.r, result.u, result.l, law);
   const ContactSet& c = problem.contact;
+  if (c.components > 1) {
+    // The methods' layout (d values per node) split into the pressure and the tangential part.
+    const Index k = c.components;
+    const Vector flat = std::move(result.l);
+    result.l.resize(c.size());
+    result.tangential.resize(k - 1, c.size());
+    for (Index j = 0; j < c.size(); ++j) {
+      result.l(j) = flat(k * j);
+      result.tangential.col(j) = flat.segment(k * j + 1, k - 1);
+    }
+  }
   s.contact_force = c.weights.dot(result.l);
   s.contact_force_vector.setZero();
   s.contact_force_vector.head(c.normals.rows()) = -(c.normals * c.weights.cwiseProduct(result.l));

@@ -159,10 +159,11 @@ double automatic_r(const ContactProblem& p, double factor) {
   const ContactSet& c = p.contact;
   const SparseMatrix Nt = c.N.transpose();  // column j = row j of N
   // A partitioned A has node j's block only on the rank that owns the node: the others add 0.
+  // With friction the normal row of node j is row components * j.
   Vector stiffness = Vector::Zero(c.size());
   for (Index j = 0; j < c.size(); ++j)
-    for (SparseMatrix::InnerIterator a(Nt, j); a; ++a)
-      for (SparseMatrix::InnerIterator b(Nt, j); b; ++b)
+    for (SparseMatrix::InnerIterator a(Nt, c.components * j); a; ++a)
+      for (SparseMatrix::InnerIterator b(Nt, c.components * j); b; ++b)
         stiffness(j) += a.value() * p.A.coeff(a.row(), b.row()) * b.value();
   sum_over_ranks(p, stiffness.data(), stiffness.size());
   std::vector<double> values;

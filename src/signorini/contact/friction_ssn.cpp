@@ -25,20 +25,12 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
     throw InputError("friction: one finite bound >= 0 (s or mu) per contact node expected");
 
   // B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. its tangential rows.
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Index col = 0; col < n; ++col) {  // column-major: walk the columns, place the rows
-    for (SparseMatrix::InnerIterator it(cs.N, col); it; ++it)
-      entries.emplace_back(d * it.row(), col, it.value());
-    for (SparseMatrix::InnerIterator it(T, col); it; ++it)
-      entries.emplace_back(d * (it.row() / (d - 1)) + 1 + it.row() % (d - 1), col, it.value());
-  }
-  SparseMatrix B(d * nc, n);
-  B.setFromTriplets(entries.begin(), entries.end());
-  Vector g_hat = Vector::Zero(d * nc), w = Vector::Zero(d * nc);
-  for (Index j = 0; j < nc; ++j) {
-    g_hat(d * j) = cs.gaps(j);
-    w.segment(d * j, d).setConstant(cs.weights(j));
-  }
+  ContactSet rows = cs;
+  add_tangential_rows(rows, T);
+  const SparseMatrix& B = rows.N;
+  const Vector g_hat = row_offsets(rows);
+  Vector w(d * nc);
+  for (Index j = 0; j < nc; ++j) w.segment(d * j, d).setConstant(cs.weights(j));
   const SparseMatrix BtW = SparseMatrix(B.transpose()) * w.asDiagonal();
   const Eigen::SparseMatrix<double, Eigen::RowMajor> B_rows = B;  // for the rows of a node
   const double c = o.c > 0.0 ? o.c : p.A.diagonal().mean() / cs.weights.mean();

@@ -22,10 +22,9 @@
 #include <vector>
 
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/friction_law.hpp"
 
 namespace signorini {
-
-enum class FrictionKind { Tresca, Coulomb };
 
 struct FrictionLawSpec {
   FrictionKind kind = FrictionKind::Tresca;

@@ -23,9 +23,8 @@ void stopped_by_callback(GnmResult& res, int m, int outer) {
 }
 }  // namespace
 
-GeneralizedNewton::GeneralizedNewton(const ContactSolverOptions& options, double b_norm,
-                                     const Vector& weights)
-    : options_(options), b_norm_(b_norm), weights_(weights) {}
+GeneralizedNewton::GeneralizedNewton(const ContactSolverOptions& options, double b_norm)
+    : options_(options), b_norm_(b_norm) {}
 
 GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace& space, int outer,
                                       double tolerance) const {
@@ -45,13 +44,15 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
     res.factor_updates = space.factor_updates() - updates_before;
     return res;
   };
-  ActiveSet previous;          // active set that defined the previous Newton step
+  Linearization previous;      // linearisation that defined the previous Newton step
   bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
   double gradient_norm = std::numeric_limits<double>::infinity();
 
   for (int m = 1; m <= options_.max_gnm_iterations; ++m) {
-    const ActiveSet active = phi.active_set(space.contact_values());
-    IterationEvent ev{IterationEvent::Kind::Inner, outer, m, count_active(active), 0.0, 0, 0};
+    // The active set (with friction also each node's derivative of P, method.md "Friction").
+    Linearization active = phi.linearize(space.contact_values());
+    IterationEvent ev{IterationEvent::Kind::Inner, outer, m, count_active(active.active), 0.0, 0,
+                      0};
 
     // The active set repeats after a full Newton step: x minimises the quadratic piece that is
     // active at x, so it is the minimiser of Phi and this Newton step would return x itself
@@ -66,7 +67,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
     }
 
     // H(x_{m-1}) = A + r sum_{active} h_j nu_j nu_j^T, then H x_m = b - N^T (h (l - r g))_active.
-    space.set_active(active, phi.r());
+    space.set_linearization(active, phi.r());
     const NewtonSolveStats stats = space.solve(phi.newton_contact_terms(active));
     res.linear_iterations += stats.iterations;
     ev.linear_iterations = stats.iterations;
@@ -86,7 +87,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
     space.direction(dir);
     dir.z = phi.shifted_multipliers(space.contact_values());
     const ArmijoStep armijo =
-        armijo_step(phi, dir, weights_, options_.armijo_sigma, options_.max_armijo_halvings);
+        armijo_step(phi, dir, options_.armijo_sigma, options_.max_armijo_halvings);
     res.armijo_reductions += armijo.halvings;
     ev.armijo = armijo.halvings;
     if (armijo.failed) {
@@ -110,7 +111,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
       return finish();
     }
     if (res.residual < tolerance) return finish();  // the paper's stopping rule
-    previous = active;
+    previous = std::move(active);
     previous_full = full;
   }
   res.termination = Termination::IterationLimit;

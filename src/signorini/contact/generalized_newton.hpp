@@ -35,9 +35,8 @@ inline constexpr double kInnerForcing = 1e-3;
 
 class GeneralizedNewton {
  public:
-  /// `b_norm` = ||b||, the load part of the force scale of relative_gradient(); `weights` the
-  /// h_j of the contact nodes.
-  GeneralizedNewton(const ContactSolverOptions& options, double b_norm, const Vector& weights);
+  /// `b_norm` = ||b||, the load part of the force scale of relative_gradient().
+  GeneralizedNewton(const ContactSolverOptions& options, double b_norm);
 
   /// Minimises Phi (set up in `phi`) starting from the point held by `space`, which holds the
   /// minimiser on return. `outer` is the Uzawa step number, passed to the observer.
@@ -50,7 +49,6 @@ class GeneralizedNewton {
  private:
   const ContactSolverOptions& options_;
   double b_norm_;
-  const Vector& weights_;
 };
 
 }  // namespace signorini

@@ -14,6 +14,10 @@ void HostNewtonSpace::set_active(const ActiveSet& active, double /*r: the system
   system_.set_active(active);  // H(x_{m-1}) = A + r sum_{active} h_j nu_j nu_j^T
 }
 
+void HostNewtonSpace::set_linearization(const Linearization& lin, double /*r*/) {
+  system_.set_linearization(lin);  // H = A + r N^T diag(h D_j) N (with friction)
+}
+
 NewtonSolveStats HostNewtonSpace::solve(const Vector& terms) {
   x_new_ = x_;
   const LinearSolveStats s = system_.solve(p_.b - p_.contact.N.transpose() * terms, x_new_);

@@ -14,6 +14,7 @@ class HostNewtonSpace final : public NewtonSpace {
 
   [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
   void set_active(const ActiveSet& active, double r) override;
+  void set_linearization(const Linearization& lin, double r) override;
   NewtonSolveStats solve(const Vector& terms) override;
   void direction(ModifiedLagrangian::Direction& dir) override;
   void step(double t) override;

@@ -3,12 +3,59 @@
 #include <algorithm>
 #include <cmath>
 
+#include "signorini/contact/friction_law.hpp"
+#include "signorini/core/error.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
-KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vector& l) {
+namespace {
+
+// With friction: the rows of N per node (normal, tangents), the multipliers likewise.
+KktResiduals frictional_kkt_residuals(const ContactProblem& p, const Vector& u, const Vector& l,
+                                      const FrictionLaw& law) {
   const ContactSet& c = p.contact;
+  const Index m = c.components, nc = c.size();
+  KktResiduals k;
+  Vector hl(m * nc);
+  for (Index j = 0; j < nc; ++j) hl.segment(m * j, m) = c.weights(j) * l.segment(m * j, m);
+  const Vector reaction = c.N.transpose() * hl;
+  const double b_norm = std::max(p.b.norm(), reaction.norm());
+  k.equilibrium = b_norm > 0.0 ? (stiffness_product(p, u) - p.b + reaction).norm() / b_norm : 0.0;
+  const Vector rows = c.N * u - row_offsets(c);  // gap residual, then slip v_j
+  const double length = std::max(u.lpNorm<Eigen::Infinity>(),
+                                 c.gaps.size() > 0 ? c.gaps.lpNorm<Eigen::Infinity>() : 0.0);
+  const double l_max = l.size() > 0 ? l.lpNorm<Eigen::Infinity>() : 0.0;
+  const Vector bounds = law.slip_bounds(l);
+  double pen = 0.0, sign = 0.0, comp = 0.0, bound = 0.0, slip = 0.0;
+  for (Index j = 0; j < nc; ++j) {
+    if (!c.movable[static_cast<std::size_t>(j)]) continue;
+    const double ln = l(m * j), gap = rows(m * j);
+    pen = std::max(pen, gap);
+    sign = std::max(sign, -ln);
+    comp = std::max(comp, std::abs(ln * gap));
+    const Eigen::VectorXd lt = l.segment(m * j + 1, m - 1), v = rows.segment(m * j + 1, m - 1);
+    bound = std::max(bound, lt.norm() - bounds(j));
+    slip = std::max(slip, bounds(j) * v.norm() - lt.dot(v));
+  }
+  k.penetration = length > 0.0 ? pen / length : 0.0;
+  k.sign = l_max > 0.0 ? sign / l_max : 0.0;
+  k.complementarity = (l_max > 0.0 && length > 0.0) ? comp / (l_max * length) : 0.0;
+  k.friction_bound = l_max > 0.0 ? std::max(bound, 0.0) / l_max : 0.0;
+  k.slip = (l_max > 0.0 && length > 0.0) ? std::max(slip, 0.0) / (l_max * length) : 0.0;
+  return k;
+}
+
+}  // namespace
+
+KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vector& l,
+                           const ContactLaw& law) {
+  const ContactSet& c = p.contact;
+  if (c.components > 1) {
+    const auto* friction = dynamic_cast<const FrictionLaw*>(&law);
+    if (friction == nullptr) throw InputError("KKT residuals: a frictional set needs its law");
+    return frictional_kkt_residuals(p, u, l, *friction);
+  }
   KktResiduals k;
   const Vector reaction = c.N.transpose() * c.weights.cwiseProduct(l);
   const double b_norm = std::max(p.b.norm(), reaction.norm());

@@ -1,8 +1,12 @@
 #include "signorini/contact/modified_lagrangian.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
+#include "signorini/contact/friction_projection.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
 
@@ -25,7 +29,19 @@ Index find_entry(const SparseMatrix& A, Index row, Index col) {
 
 ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r,
                                        const ContactLaw& law)
-    : p_(problem), r_(r), law_(law), l_(Vector::Zero(problem.contact.size())) {}
+    : p_(problem), r_(r), law_(law), m_(law.components()) {
+  if (p_.contact.components != m_)
+    throw InputError(fmt::format(
+        "the contact law \"{}\" has {} component(s) per node, the contact set {} row(s) of N",
+        law.name(), m_, p_.contact.components));
+  if (m_ > 1) {
+    friction_ = dynamic_cast<const FrictionLaw*>(&law);
+    if (friction_ == nullptr || friction_->size() != p_.contact.size())
+      throw InputError("a frictional contact set needs a FrictionLaw with one bound per node");
+  }
+  g_hat_ = row_offsets(p_.contact);
+  set_multipliers(Vector::Zero(m_ * p_.contact.size()));
+}
 
 // Made at the first hessian(): only the host's sparse Newton systems need it, not the backend
 // path or the condensed problems' dense systems.
@@ -52,15 +68,16 @@ const std::vector<std::vector<std::pair<Index, double>>>& ModifiedLagrangian::bl
 
 void ModifiedLagrangian::set_multipliers(const Vector& l) {
   l_ = l;
-  for (Index j = 0; j < l_.size(); ++j)
-    if (!p_.contact.movable[static_cast<std::size_t>(j)]) l_(j) = 0.0;
+  for (Index j = 0; j < p_.contact.size(); ++j)
+    if (!p_.contact.movable[static_cast<std::size_t>(j)]) l_.segment(m_ * j, m_).setZero();
+  if (friction_ != nullptr) bounds_ = friction_->slip_bounds(l_);  // Coulomb: mu (l_n)_+
 }
 
 Vector ModifiedLagrangian::shifted_multipliers(const Vector& Nx) const {
-  Vector z = l_ + r_ * (Nx - p_.contact.gaps);
-  for (Index j = 0; j < z.size(); ++j)
+  Vector z = l_ + r_ * (Nx - g_hat_);
+  for (Index j = 0; j < p_.contact.size(); ++j)
     if (!p_.contact.movable[static_cast<std::size_t>(j)])
-      z(j) = -std::numeric_limits<double>::infinity();
+      z.segment(m_ * j, m_).setConstant(-std::numeric_limits<double>::infinity());
   return z;
 }
 
@@ -68,12 +85,105 @@ ActiveSet ModifiedLagrangian::active_set(const Vector& Nx) const {
   return law_.active_set(shifted_multipliers(Nx));
 }
 
+Index ModifiedLagrangian::count_in_contact(const Vector& l) const {
+  Index n = 0;
+  for (Index j = 0; j < l.size(); j += m_) n += l(j) > 0.0 ? 1 : 0;
+  return n;
+}
+
+Linearization ModifiedLagrangian::linearize(const Vector& Nx) const {
+  Linearization lin;
+  if (friction_ == nullptr) {
+    lin.active = active_set(Nx);
+    return lin;
+  }
+  // Step (i) minimises a Tresca Phi: Coulomb's bound is mu (l_n)_+ of the Uzawa step.
+  const Vector z = shifted_multipliers(Nx);
+  const Index nc = p_.contact.size();
+  lin.active.assign(static_cast<std::size_t>(nc), false);
+  lin.blocks.assign(static_cast<std::size_t>(m_ * m_ * nc), 0.0);
+  lin.offsets.assign(static_cast<std::size_t>(m_ * nc), 0.0);
+  for (Index j = 0; j < nc; ++j) {
+    if (!p_.contact.movable[static_cast<std::size_t>(j)]) continue;
+    const Eigen::VectorXd zj = z.segment(m_ * j, m_);
+    const FrictionProjection pj = project_tresca(zj, bounds_(j));
+    lin.active[static_cast<std::size_t>(j)] = pj.in_contact;
+    Eigen::Map<Eigen::MatrixXd>(&lin.blocks[static_cast<std::size_t>(m_ * m_ * j)], m_, m_) =
+        pj.derivative;
+    Eigen::Map<Eigen::VectorXd>(&lin.offsets[static_cast<std::size_t>(m_ * j)], m_) =
+        pj.force - pj.derivative * zj;
+  }
+  return lin;
+}
+
+Vector ModifiedLagrangian::forces_of(const Vector& z) const {
+  if (friction_ == nullptr) return p_.contact.weights.cwiseProduct(law_.project(z));
+  Vector f = Vector::Zero(z.size());
+  for (Index j = 0; j < p_.contact.size(); ++j) {
+    const Eigen::VectorXd zj = z.segment(m_ * j, m_);
+    if (!zj.allFinite()) continue;  // a node that cannot move
+    f.segment(m_ * j, m_) = p_.contact.weights(j) * project_tresca(zj, bounds_(j)).force;
+  }
+  return f;
+}
+
 Vector ModifiedLagrangian::updated_multipliers(const Vector& Nx) const {
-  return law_.project(shifted_multipliers(Nx));
+  const Vector z = shifted_multipliers(Nx);
+  if (friction_ == nullptr) return law_.project(z);
+  // Step (ii) with the bound of step (i): l^{k+1} = P_{s(l^k)}(z).
+  Vector l = Vector::Zero(z.size());
+  for (Index j = 0; j < p_.contact.size(); ++j) {
+    const Eigen::VectorXd zj = z.segment(m_ * j, m_);
+    if (zj.allFinite()) l.segment(m_ * j, m_) = project_tresca(zj, bounds_(j)).force;
+  }
+  return l;
 }
 
 Vector ModifiedLagrangian::contact_forces(const Vector& Nx) const {
-  return p_.contact.weights.cwiseProduct(updated_multipliers(Nx));
+  return forces_of(shifted_multipliers(Nx));
+}
+
+double ModifiedLagrangian::potential_change(Index j, const double* z0, const double* dz) const {
+  const double s = bounds_(j);
+  // Normal part: (max(z_n, 0)^2) / 2, as the unilateral law's penalty change.
+  double change = 0.5 * unilateral_contact_law().penalty_change(z0[0], dz[0]);
+  // Tangential part: |z_t|^2 / 2 inside the ball of radius s, s |z_t| - s^2 / 2 outside.
+  double n0 = 0.0, n1 = 0.0, dot = 0.0;
+  for (Index a = 1; a < m_; ++a) {
+    n0 += z0[a] * z0[a];
+    n1 += (z0[a] + dz[a]) * (z0[a] + dz[a]);
+    dot += dz[a] * (2.0 * z0[a] + dz[a]);
+  }
+  n0 = std::sqrt(n0);
+  n1 = std::sqrt(n1);
+  if (n0 < s && n1 < s)
+    change += 0.5 * dot;  // |z1|^2 - |z0|^2 = dz . (z0 + z1)
+  else if (n0 >= s && n1 >= s)
+    change += s * (n1 - n0);
+  else {
+    const auto psi = [s](double n) { return n < s ? 0.5 * n * n : s * (n - 0.5 * s); };
+    change += psi(n1) - psi(n0);
+  }
+  return change;
+}
+
+const std::vector<std::vector<ModifiedLagrangian::BlockEntry>>&
+ModifiedLagrangian::friction_entries() const {
+  if (!friction_entries_.empty() || p_.contact.size() == 0) return friction_entries_;
+  const SparseMatrix Nt = p_.contact.N.transpose();  // column i = row i of N
+  friction_entries_.resize(static_cast<std::size_t>(p_.contact.size()));
+  for (Index j = 0; j < p_.contact.size(); ++j)
+    for (Index a = 0; a < m_; ++a)
+      for (Index b = 0; b < m_; ++b)
+        for (SparseMatrix::InnerIterator ia(Nt, m_ * j + a); ia; ++ia)
+          for (SparseMatrix::InnerIterator ib(Nt, m_ * j + b); ib; ++ib) {
+            const Index pos = find_entry(p_.A, ia.row(), ib.row());
+            if (pos < 0)
+              throw NumericalError("contact node block missing from the stiffness pattern");
+            friction_entries_[static_cast<std::size_t>(j)].push_back(
+                {pos, static_cast<int>(a + m_ * b), ia.value() * ib.value()});
+          }
+  return friction_entries_;
 }
 
 Vector ModifiedLagrangian::gradient(const Vector& residual, const Vector& Nx) const {
@@ -89,6 +199,38 @@ void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const
     const double scale = r_ * p_.contact.weights(static_cast<Index>(j));
     for (const auto& [pos, c] : block_entries()[j]) v[pos] += scale * c;
   }
+}
+
+void ModifiedLagrangian::hessian(const Linearization& lin, SparseMatrix& H) const {
+  if (friction_ == nullptr) {
+    hessian(lin.active, H);
+    return;
+  }
+  if (H.nonZeros() != p_.A.nonZeros()) H = p_.A;
+  std::copy(p_.A.valuePtr(), p_.A.valuePtr() + p_.A.nonZeros(), H.valuePtr());
+  double* v = H.valuePtr();
+  // H = A + r sum_j h_j N_j^T D_j N_j: node j's d x d block gains r h_j (N_j^T D_j N_j). D_j is
+  // symmetric for Tresca's projection (friction_projection.hpp), so H stays symmetric.
+  for (Index j = 0; j < p_.contact.size(); ++j) {
+    const double* D = &lin.blocks[static_cast<std::size_t>(m_ * m_ * j)];
+    const double scale = r_ * p_.contact.weights(j);
+    for (const BlockEntry& e : friction_entries()[static_cast<std::size_t>(j)])
+      if (D[e.ab] != 0.0) v[e.pos] += scale * D[e.ab] * e.value;
+  }
+}
+
+Vector ModifiedLagrangian::newton_contact_terms(const Linearization& lin) const {
+  if (friction_ == nullptr) return newton_contact_terms(lin.active);
+  Vector w = Vector::Zero(l_.size());
+  for (Index j = 0; j < p_.contact.size(); ++j) {
+    const Eigen::Map<const Eigen::MatrixXd> D(&lin.blocks[static_cast<std::size_t>(m_ * m_ * j)],
+                                              m_, m_);
+    const Eigen::Map<const Eigen::VectorXd> c(&lin.offsets[static_cast<std::size_t>(m_ * j)], m_);
+    w.segment(m_ * j, m_) =
+        p_.contact.weights(j) *
+        (c + D * (l_.segment(m_ * j, m_) - r_ * g_hat_.segment(m_ * j, m_)));
+  }
+  return w;
 }
 
 Vector ModifiedLagrangian::newton_contact_terms(const ActiveSet& active) const {
@@ -118,6 +260,16 @@ ModifiedLagrangian::Direction ModifiedLagrangian::direction(const Vector& residu
 double ModifiedLagrangian::phi_change(const Direction& dir, double t) const {
   double change = t * dir.residual_dot_d + 0.5 * t * t * dir.d_A_d;
   double penalty = 0.0;
+  if (friction_ != nullptr) {
+    std::vector<double> dz(static_cast<std::size_t>(m_));
+    for (Index j = 0; j < p_.contact.size(); ++j) {
+      if (!p_.contact.movable[static_cast<std::size_t>(j)]) continue;
+      for (Index a = 0; a < m_; ++a) dz[static_cast<std::size_t>(a)] = t * r_ * dir.Nd(m_ * j + a);
+      // 2 (psi(z1) - psi(z0)), as P(z1)^2 - P(z0)^2 is for the unilateral law.
+      penalty += 2.0 * p_.contact.weights(j) * potential_change(j, &dir.z(m_ * j), dz.data());
+    }
+    return change + penalty / (2.0 * r_);
+  }
   for (Index j = 0; j < dir.z.size(); ++j) {
     const double z0 = dir.z(j);
     if (!std::isfinite(z0)) continue;                                 // non-movable node: no term
@@ -131,6 +283,17 @@ double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector
                                  const Vector& l, const ContactLaw& law) {
   const Vector Nu = p.contact.N * u;
   double penalty = 0.0;
+  if (law.components() > 1) {
+    // psi(l + r (N u - g^)) - |l|^2 / 2 = psi(z) - psi(l) for admissible l.
+    ModifiedLagrangian phi(p, r, law);
+    phi.set_multipliers(l);
+    const Vector shift = r * (Nu - phi.g_hat_);
+    for (Index j = 0; j < p.contact.size(); ++j)
+      if (p.contact.movable[static_cast<std::size_t>(j)])
+        penalty += 2.0 * p.contact.weights(j) *
+                   phi.potential_change(j, &phi.l_(phi.m_ * j), &shift(phi.m_ * j));
+    return 0.5 * u.dot(stiffness_product(p, u)) - p.b.dot(u) + penalty / (2.0 * r);
+  }
   for (Index j = 0; j < l.size(); ++j) {
     if (!p.contact.movable[static_cast<std::size_t>(j)]) continue;
     // P(l + shift)^2 - P(l)^2 with P(l) = l (l >= 0): (z_+)^2 - l^2, without cancellation near

@@ -3,11 +3,18 @@
 //   Phi(x) = 1/2 <Ax, x> - <b, x> + 1/(2r) sum_j h_j ( ((l_j + r ((N x)_j - g_j))_+)^2 - l_j^2 ),
 // with its gradient G, generalised Hessian H and the Newton right-hand side of (17), and the
 // modified Lagrangian M(u, l) (10) itself.
+//
+// With friction (a law of m = d components per node, friction_law.hpp) the same with vectors per
+// node: z_j = l_j + r ((N x)_j - g^_j) in R^d, and the penalty term h_j (psi(z_j) - |l_j|^2 / 2)
+// / r, psi(z) = (|z|^2 - dist(z, K_j)^2) / 2 with K_j Tresca's admissible forces of bound s_j
+// (Coulomb: s_j = mu_j (l_n)_j, fixed during step (i)). grad psi = P, so G = A x - b +
+// N^T (h P(z)) and H = A + r N^T diag(h D_j) N with D_j = dP/dz (method.md, "Friction").
 
 #include <vector>
 
 #include "signorini/contact/contact_law.hpp"
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/friction_law.hpp"
 
 namespace signorini {
 
@@ -20,6 +27,8 @@ class ModifiedLagrangian {
   ModifiedLagrangian(const ContactProblem& problem, double r,
                      const ContactLaw& law = unilateral_contact_law());
   [[nodiscard]] const ContactLaw& law() const { return law_; }
+  /// Values per contact node in l and z (the law's components).
+  [[nodiscard]] Index components() const { return m_; }
 
   /// Sets the multipliers l (fixed during one GNM minimisation). Non-movable nodes keep l_j = 0.
   void set_multipliers(const Vector& l);
@@ -29,6 +38,11 @@ class ModifiedLagrangian {
   /// z = l + r (N x - g); non-movable nodes get -infinity (never active).
   [[nodiscard]] Vector shifted_multipliers(const Vector& Nx) const;
   [[nodiscard]] ActiveSet active_set(const Vector& Nx) const;
+  /// The generalised derivative of P at z(x): the active set, and with friction each node's
+  /// block and offset.
+  [[nodiscard]] Linearization linearize(const Vector& Nx) const;
+  /// Nodes with a positive normal multiplier in l (a vector of this law's layout).
+  [[nodiscard]] Index count_in_contact(const Vector& l) const;
   /// P(z): the multipliers of Uzawa's step (ii) at x (non-movable nodes 0).
   [[nodiscard]] Vector updated_multipliers(const Vector& Nx) const;
 
@@ -37,14 +51,21 @@ class ModifiedLagrangian {
   [[nodiscard]] Vector gradient(const Vector& residual, const Vector& Nx) const;
   /// h P(z) (n_c values): the contact part of G, G = (A x - b) + N^T (h P(z)).
   [[nodiscard]] Vector contact_forces(const Vector& Nx) const;
+  /// h P(z) for given shifted multipliers z (the Armijo rule's slope).
+  [[nodiscard]] Vector forces_of(const Vector& z) const;
   /// Writes H = A + r N^T diag(h on the active set) N into `H`, which must have A's pattern
   /// (the node blocks of contact nodes are in it), so one symbolic analysis serves every H.
   void hessian(const ActiveSet& active, SparseMatrix& H) const;
+  /// The same for any law: H = A + r N^T diag(h D_j) N.
+  void hessian(const Linearization& lin, SparseMatrix& H) const;
   /// Newton right-hand side b - N^T (h (l - r g) on the active set): H x_m = rhs gives the
   /// minimiser of the quadratic piece active at x_{m-1} (17).
   [[nodiscard]] Vector newton_rhs(const ActiveSet& active) const;
   /// h (l - r g) on the active set, 0 elsewhere (n_c values): newton_rhs = b - N^T of these.
   [[nodiscard]] Vector newton_contact_terms(const ActiveSet& active) const;
+  /// For any law: h_j (c_j + D_j (l_j - r g^_j)) per node, which is h (l - r g) on the active
+  /// set for one component (H x_new = H x - G written with P(z) = D z + c).
+  [[nodiscard]] Vector newton_contact_terms(const Linearization& lin) const;
 
   /// Phi(x + t d) - Phi(x), evaluated without cancellation (method.md section 4, numerical
   /// note): t <A x - b, d> + t^2/2 <A d, d> + sum_j h_j/(2r) ((z_j + t r (N d)_j)_+^2 - (z_j)_+^2).
@@ -69,7 +90,23 @@ class ModifiedLagrangian {
   const ContactProblem& p_;
   double r_;
   const ContactLaw& law_;
+  Index m_ = 1;                          // components per node
+  const FrictionLaw* friction_ = nullptr;  // the law, where it is frictional
+  Vector g_hat_;                         // g^ per row of N (row_offsets)
+  Vector bounds_;                        // friction: the slip bounds s_j of step (i)
   Vector l_;
+  // Friction: psi(z0 + dz) - psi(z0) of node j with its bound, without cancellation where both
+  // points are on the same smooth piece.
+  [[nodiscard]] double potential_change(Index j, const double* z0, const double* dz) const;
+  // Friction: per node j, the positions in A's value array of its node block, which entry
+  // (a, b) of D_j they take, and (N_a)_p (N_b)_q there.
+  struct BlockEntry {
+    Index pos;
+    int ab;
+    double value;
+  };
+  [[nodiscard]] const std::vector<std::vector<BlockEntry>>& friction_entries() const;
+  mutable std::vector<std::vector<BlockEntry>> friction_entries_;
   // For each contact node j: positions in A's value array of its node block and nu_a nu_b there.
   [[nodiscard]] const std::vector<std::vector<std::pair<Index, double>>>& block_entries() const;
   mutable std::vector<std::vector<std::pair<Index, double>>> block_entries_;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/core/error.hpp"
 #include "signorini/core/types.hpp"
 
 namespace signorini {
@@ -37,6 +38,14 @@ class NewtonSpace {
   [[nodiscard]] virtual const Vector& contact_values() const = 0;
   /// Makes H(P) = A + r N^T diag(h on P) N the Newton matrix (no work when P has not changed).
   virtual void set_active(const ActiveSet& active, double r) = 0;
+  /// The same for any law: H = A + r N^T diag(h D_j) N from a linearisation. Frictionless ones
+  /// are their active set; the host's spaces take friction's blocks too, the others refuse them
+  /// (ContactSolver sends friction to the host, docs/solvers.md).
+  virtual void set_linearization(const Linearization& lin, double r) {
+    if (!lin.blocks.empty())
+      throw InputError("friction runs on the host's sparse paths only (docs/solvers.md)");
+    set_active(lin.active, r);
+  }
   /// Solves H(P) x_new = b - N^T terms (17), starting from x_new = x; `terms` are
   /// ModifiedLagrangian::newton_contact_terms(P).
   virtual NewtonSolveStats solve(const Vector& terms) = 0;

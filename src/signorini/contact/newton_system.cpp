@@ -37,10 +37,26 @@ class SparseNewtonSystem final : public NewtonSystem {
     current_ = active;
     has_factor_ = true;
   }
+  void set_linearization(const Linearization& lin) override {
+    if (lin.blocks.empty()) {
+      set_active(lin.active);
+      return;
+    }
+    // Friction: the blocks D_j vary continuously on sliding nodes in 3D, so H is formed and
+    // factorised again whenever the linearisation changes (no rank-one updates).
+    if (has_linearization_ && lin == current_linearization_) return;
+    phi_.hessian(lin, H_);
+    solver_->factorize(H_);
+    ++factorizations_;
+    current_linearization_ = lin;
+    has_linearization_ = true;
+  }
   LinearSolveStats solve(const Vector& rhs, Vector& x) override { return solver_->solve(rhs, x); }
   [[nodiscard]] const TimingTable& timings() const override { return solver_->timings(); }
 
  private:
+  Linearization current_linearization_;  // friction's, where it was set
+  bool has_linearization_ = false;
   // Updates and downdates accumulate rounding: refactorise after this many since the last
   // factorisation, however cheap they are.
   static constexpr std::size_t kMaxUpdates = 2000;

@@ -9,6 +9,7 @@
 
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/core/error.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 
 namespace signorini {
@@ -18,6 +19,13 @@ class NewtonSystem {
   virtual ~NewtonSystem() = default;
   /// Makes H(P) the current matrix (no work if P is the current active set).
   virtual void set_active(const ActiveSet& active) = 0;
+  /// The same for any law (friction's per-node blocks: the sparse systems refactorise when they
+  /// change; the dense one refuses them).
+  virtual void set_linearization(const Linearization& lin) {
+    if (!lin.blocks.empty())
+      throw InputError("friction: the dense Newton system takes frictionless laws only");
+    set_active(lin.active);
+  }
   virtual LinearSolveStats solve(const Vector& rhs, Vector& x) = 0;
   [[nodiscard]] int factorizations() const { return factorizations_; }
   [[nodiscard]] int updates() const { return updates_; }

@@ -7,7 +7,7 @@
 namespace signorini {
 
 double KktResiduals::max() const {
-  return std::max({equilibrium, penetration, sign, complementarity});
+  return std::max({equilibrium, penetration, sign, complementarity, friction_bound, slip});
 }
 
 std::vector<int> SolveSummary::inner_iterations() const {

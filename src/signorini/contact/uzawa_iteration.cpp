@@ -12,7 +12,7 @@ namespace signorini {
 void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
                          ModifiedLagrangian& phi, NewtonSpace& space, Vector l0,
                          ContactResult& out) {
-  const GeneralizedNewton gnm(options, problem.b.norm(), problem.contact.weights);
+  const GeneralizedNewton gnm(options, problem.b.norm());
   OuterLoop loop;
   loop.max_steps = options.max_uzawa_iterations;
   double previous_change = 1.0;     // ||l^k - l^(k-1)|| / ||l^k|| of the previous step
@@ -43,17 +43,18 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
     rec.factor_updates = g.factor_updates;
     rec.inner_residual = g.residual;
     if (g.termination != Termination::Converged) {
-      rec.active_set_size = (l.array() > 0.0).count();
+      rec.active_set_size = phi.count_in_contact(l);
       o.stop = g.termination;
       o.message = g.message;
       return o;
     }
-    // Step (ii): l^{k+1} = P(l^k + r ((N x)_j - g_j)), P(z) = z_+ for the paper's law;
-    // non-movable nodes stay at 0.
+    // Step (ii): l^{k+1} = P(l^k + r ((N x)_j - g_j)), P(z) = z_+ for the paper's law (with
+    // friction P projects each node's d values, with the slip bound of step (i): Coulomb's
+    // mu (l_n^k)_+, method.md "Friction"); non-movable nodes stay at 0.
     o.l = phi.updated_multipliers(space.contact_values());
     rec.dual_change = relative_change(o.l, l);
     previous_change = rec.dual_change;
-    rec.active_set_size = (o.l.array() > 0.0).count();
+    rec.active_set_size = phi.count_in_contact(o.l);
     if (rec.dual_change < options.uzawa_tolerance) {
       o.stop = Termination::Converged;
       o.message = dual_change_message(rec, options.uzawa_tolerance, k, "Uzawa steps");

@@ -1,0 +1,76 @@
+#pragma once
+// Frictional contact laws (docs/method.md, "Friction"): Tresca's and Coulomb's, as ContactLaw
+// classes with d components per contact node (the normal, then the d - 1 tangential ones), so
+// that the one Uzawa-GNM loop solves them (contact laws, not new loops).
+//
+// A frictional problem's contact set has d rows per node in N (ContactSet::components = d):
+// row d j is node j's normal, rows d j + 1 .. its tangents (add_tangential_rows). The
+// multipliers l and the shifted multipliers z = l + r (N x - g^), g^ = (g_j, 0, ..), are then
+// d values per node, and the law projects each node's z_j onto its admissible forces
+// (friction_projection.hpp):
+//   Tresca, slip bound s_j >= 0:       P(z) = (max(z_n, 0), proj_{|.| <= s_j}(z_t))
+//   Coulomb, coefficient mu_j >= 0:    the same with s_j = mu_j times the normal pressure.
+// For Uzawa-GNM, Coulomb's bound is taken from the multipliers of the Uzawa step, s_j =
+// mu_j (l_n)_j, so that each step (i) minimises a Tresca Phi (convex, its Newton matrix
+// symmetric) and step (ii) updates the bound with the pressure: the fixed point of Tresca
+// problems carried out inside the Uzawa loop (method.md, "Friction").
+
+#include <string_view>
+
+#include "signorini/contact/contact_law.hpp"
+#include "signorini/contact/contact_set.hpp"
+
+namespace signorini {
+
+enum class FrictionKind { Tresca, Coulomb };
+
+class FrictionLaw final : public ContactLaw {
+ public:
+  /// One law for every node: `dim` 2 or 3; `bound` per contact node, Tresca's slip bound s_j or
+  /// Coulomb's mu_j, finite and >= 0 (std::invalid_argument otherwise).
+  FrictionLaw(FrictionKind kind, int dim, Vector bound);
+  /// A law per node (contact boundaries with different laws): Tresca's s_j where mu_j = 0,
+  /// Coulomb's mu_j where s_j = 0 (a frictionless node has both 0; not both positive).
+  FrictionLaw(int dim, Vector slip_bound, Vector mu);
+
+  /// "tresca", "coulomb", or "tresca and coulomb" for a mixture.
+  [[nodiscard]] std::string_view name() const override;
+  [[nodiscard]] int components() const override { return dim_; }
+  [[nodiscard]] Index size() const { return s_.size(); }
+  [[nodiscard]] const Vector& slip_bound() const { return s_; }
+  [[nodiscard]] const Vector& mu() const { return mu_; }
+
+  /// The slip bounds that step (i) of Uzawa uses with multipliers l (d per node):
+  /// s_j + mu_j max(l_n, 0), Tresca's own or Coulomb's with the pressure of l.
+  [[nodiscard]] Vector slip_bounds(const Vector& l) const;
+
+  /// P(z) node by node with Coulomb's true radius mu_j max(z_n, 0) (classical Uzawa's update and
+  /// the KKT check); non-finite components give 0.
+  [[nodiscard]] Vector project(const Vector& z) const override;
+  /// Per node: z_n > 0.
+  [[nodiscard]] ActiveSet active_set(const Vector& z) const override;
+  /// Scalar laws only: throws std::logic_error.
+  [[nodiscard]] double penalty_change(double z0, double dz) const override;
+
+ private:
+  int dim_;
+  Vector s_, mu_;
+};
+
+/// B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. d j + d - 1 the tangential
+/// rows (d - 1) j .. of T (fem/contact_tangents.hpp). Sets contact.components = d. Throws
+/// InputError when T does not have (d - 1) rows per node over N's columns.
+void add_tangential_rows(ContactSet& contact, const SparseMatrix& T);
+
+/// g^ per row of N: g_j on the normal rows, the slip origin (0 by default) on the tangential
+/// rows, so that the constraint rows read N x - g^ (the gaps alone for a frictionless set).
+[[nodiscard]] Vector row_offsets(const ContactSet& contact);
+
+/// h per row of N: node j's weight on each of its rows (the weights alone for a frictionless
+/// set).
+[[nodiscard]] Vector row_weights(const ContactSet& contact);
+
+/// The normal rows of a frictional N (rows d j): the frictionless N of the same set.
+[[nodiscard]] SparseMatrix normal_rows(const ContactSet& contact);
+
+}  // namespace signorini

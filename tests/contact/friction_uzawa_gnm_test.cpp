@@ -1,0 +1,153 @@
+// The paper's Uzawa-GNM method and classical Uzawa with friction (contact/friction_law.hpp):
+// the one loop with Tresca's and Coulomb's laws, checked against the independent semismooth
+// Newton solver on the KKT system (friction_ssn.hpp) on the same discrete problems, in 2D and 3D,
+// and against the frictionless solver at zero friction.
+
+#include <gtest/gtest.h>
+
+#include "../problem/ball_on_block.hpp"
+#include "signorini/contact/contact_solver.hpp"
+#include "signorini/contact/friction_law.hpp"
+#include "signorini/contact/friction_ssn.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/fem/contact_tangents.hpp"
+#include "signorini/problem/model.hpp"
+
+namespace signorini {
+namespace {
+
+double relative(const Vector& a, const Vector& b) {
+  return (a - b).norm() / b.norm();
+}
+
+// A model with its frictional contact problem (N with the tangential rows).
+struct Frictional {
+  Model model;
+  SparseMatrix T;
+  ContactProblem problem;
+  explicit Frictional(const ProblemSpec& spec)
+      : model(build_model(spec)),
+        T(tangential_operator(model.problem.contact, model.dofs)),
+        problem(model.problem) {
+    add_tangential_rows(problem.contact, T);
+  }
+  [[nodiscard]] int dim() const { return problem.contact.components; }
+  [[nodiscard]] ContactResult solve(const FrictionLaw& law, ContactMethod method,
+                                    LinearSolverType linear = LinearSolverType::Cholmod) const {
+    ContactSolverOptions o;
+    o.method = method;
+    o.law = &law;
+    o.uzawa_tolerance = 1e-12;
+    o.linear.type = linear;
+    o.linear.cg_tolerance = 1e-14;
+    if (method == ContactMethod::ClassicalUzawa) o.max_classical_iterations = 200000;
+    return solve_contact(problem, o);
+  }
+  [[nodiscard]] FrictionSsnResult reference(FrictionKind kind, const Vector& bound) const {
+    return solve_friction_ssn(model.problem, T, {kind, bound});
+  }
+};
+
+// The reference's force per node against the solver's pressure and tangential traction.
+double force_difference(const ContactResult& r, const FrictionSsnResult& ref) {
+  Matrix f(ref.force.rows(), ref.force.cols());
+  f.row(0) = r.l.transpose();
+  f.bottomRows(ref.force.rows() - 1) = r.tangential;
+  return (f - ref.force).norm() / ref.force.norm();
+}
+
+TEST(FrictionUzawaGnm, ZeroFrictionIsTheFrictionlessSolution) {
+  const Frictional p(paper_benchmark(30, 10));
+  ContactSolverOptions o;
+  o.uzawa_tolerance = 1e-12;
+  const ContactResult frictionless = solve_contact(p.model.problem, o);
+  const Index nc = p.problem.contact.size();
+  for (const FrictionKind kind : {FrictionKind::Tresca, FrictionKind::Coulomb}) {
+    const FrictionLaw law(kind, 2, Vector::Zero(nc));
+    const ContactResult r = p.solve(law, ContactMethod::UzawaGnm);
+    ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+    EXPECT_LT(relative(r.u, frictionless.u), 1e-9);
+    EXPECT_LT(relative(r.l, frictionless.l), 1e-9);
+    EXPECT_EQ(r.tangential.norm(), 0.0);
+    EXPECT_EQ(r.summary.num_active, frictionless.summary.num_active);
+  }
+}
+
+TEST(FrictionUzawaGnm, TrescaAgreesWithSemismoothNewtonIn2D) {
+  const Frictional p(paper_benchmark(30, 10));
+  const Index nc = p.problem.contact.size();
+  const FrictionSsnResult frictionless = p.reference(FrictionKind::Tresca, Vector::Zero(nc));
+  // About a tenth of the peak pressure: a stick zone and slip zones.
+  const Vector s = Vector::Constant(nc, 0.1 * frictionless.force.row(0).maxCoeff());
+  const FrictionSsnResult ref = p.reference(FrictionKind::Tresca, s);
+  ASSERT_TRUE(ref.converged);
+  const FrictionLaw law(FrictionKind::Tresca, 2, s);
+  for (const ContactMethod method : {ContactMethod::UzawaGnm, ContactMethod::ClassicalUzawa}) {
+    const ContactResult r = p.solve(law, method);
+    ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+    EXPECT_LT(relative(r.u, ref.u), 1e-8) << enum_to_string(kContactMethodNames, method);
+    EXPECT_LT(force_difference(r, ref), 1e-8) << enum_to_string(kContactMethodNames, method);
+    EXPECT_LT(r.summary.kkt.max(), 1e-9);
+    EXPECT_LT(r.summary.kkt.slip, 1e-9);
+  }
+  // The host's CG path solves the same Newton systems.
+  const ContactResult cg = p.solve(law, ContactMethod::UzawaGnm, LinearSolverType::ConjugateGradient);
+  ASSERT_TRUE(cg.summary.converged()) << cg.summary.message;
+  EXPECT_LT(relative(cg.u, ref.u), 1e-8);
+}
+
+TEST(FrictionUzawaGnm, CoulombAgreesWithSemismoothNewtonIn2D) {
+  const Frictional p(paper_benchmark(30, 10));
+  const Index nc = p.problem.contact.size();
+  for (const double mu : {0.3, 1.0}) {
+    const FrictionSsnResult ref = p.reference(FrictionKind::Coulomb, Vector::Constant(nc, mu));
+    ASSERT_TRUE(ref.converged);
+    const FrictionLaw law(FrictionKind::Coulomb, 2, Vector::Constant(nc, mu));
+    const ContactResult r = p.solve(law, ContactMethod::UzawaGnm);
+    ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+    EXPECT_LT(relative(r.u, ref.u), 1e-8) << "mu = " << mu;
+    EXPECT_LT(force_difference(r, ref), 1e-8) << "mu = " << mu;
+    EXPECT_LT(r.summary.kkt.friction_bound, 1e-10);
+    EXPECT_LT(r.summary.kkt.slip, 1e-9);
+  }
+}
+
+TEST(FrictionUzawaGnm, CoulombAndTrescaAgreeWithSemismoothNewtonIn3D) {
+  const Frictional p(testing::ball_on_block(8, 3e-2));
+  ASSERT_EQ(p.dim(), 3);
+  const Index nc = p.problem.contact.size();
+  const double mu = 0.2;
+  const FrictionSsnResult ref = p.reference(FrictionKind::Coulomb, Vector::Constant(nc, mu));
+  ASSERT_TRUE(ref.converged);
+  const FrictionLaw coulomb(FrictionKind::Coulomb, 3, Vector::Constant(nc, mu));
+  const ContactResult r = p.solve(coulomb, ContactMethod::UzawaGnm);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  EXPECT_LT(relative(r.u, ref.u), 1e-8);
+  EXPECT_LT(force_difference(r, ref), 1e-8);
+  EXPECT_LT(r.summary.kkt.max(), 1e-9);
+  // Tresca with the bound of Coulomb's pressure: the same solution.
+  const FrictionLaw tresca(FrictionKind::Tresca, 3, mu * ref.force.row(0).transpose());
+  const ContactResult t = p.solve(tresca, ContactMethod::UzawaGnm);
+  ASSERT_TRUE(t.summary.converged()) << t.summary.message;
+  EXPECT_LT(relative(t.u, ref.u), 1e-8);
+}
+
+TEST(FrictionUzawaGnm, RefusesAMismatchedLawAndTheFrictionlessPaths) {
+  const Frictional p(paper_benchmark(12, 4));
+  const Index nc = p.problem.contact.size();
+  const FrictionLaw law(FrictionKind::Tresca, 2, Vector::Constant(nc, 1.0));
+  ContactSolverOptions o;
+  o.law = &law;
+  EXPECT_THROW(static_cast<void>(solve_contact(p.model.problem, o)), InputError);  // no T rows
+  o.method = ContactMethod::SemismoothNewton;
+  EXPECT_THROW(static_cast<void>(solve_contact(p.problem, o)), InputError);
+  o.method = ContactMethod::UzawaGnm;
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.preconditioner = PreconditionerType::Multigrid;
+  EXPECT_THROW(static_cast<void>(solve_contact(p.problem, o)), InputError);
+  ContactSolverOptions frictionless;
+  EXPECT_THROW(static_cast<void>(solve_contact(p.problem, frictionless)), InputError);
+}
+
+}  // namespace
+}  // namespace signorini
