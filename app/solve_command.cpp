@@ -118,7 +118,7 @@ int solve(const SolveArguments& args, LogFormat format) {
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
   // Once, for the report, the log and summary.json.
-  const Resultants resultants = compute_resultants(model, result.u, result.l);
+  const Resultants resultants = compute_resultants(model, result.u, result.l, result.tangential);
   {
     nlohmann::json event = summary_to_json(result, model, spec, resultants);
     event.erase("problem");  // the settings event has it

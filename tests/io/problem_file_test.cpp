@@ -15,6 +15,7 @@
 #include "signorini/io/problem_schema.hpp"
 #include "signorini/io/toml_emitter.hpp"
 #include "signorini/problem/model.hpp"
+#include "signorini/problem/model.hpp"
 
 namespace signorini {
 namespace {
@@ -929,6 +930,50 @@ TEST(ProblemFile3DErrors, TwoDimensionalKeysAreRefusedIn3D) {
   EXPECT_EQ(error_of(kBase + "[[displacement]]\nboundary = \"top\"\nz = 0.1\n"),
             "test.toml:36: key 'displacement[0].z' gives component z (3D problems only), but the "
             "mesh is 2D (mesh.type = \"rectangle\"): expected x and y only");
+}
+
+}  // namespace
+}  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// Friction keys of [contact] (docs/problem-format.md): the law, its parameter, and the keys of
+// the other laws refused.
+TEST(ProblemFileFriction, ReadsTheLawAndItsParameter) {
+  const ProblemSpec tresca =
+      parse_problem_string(with("gap = \"0\"", "friction = \"tresca\"\nslip_bound = \"0.1 + x\""),
+                           "test.toml").spec;
+  ASSERT_EQ(tresca.contacts.size(), 1U);
+  EXPECT_EQ(tresca.contacts[0].friction, FrictionModel::Tresca);
+  EXPECT_DOUBLE_EQ(tresca.contacts[0].slip_bound(Point(2.0, 0.0, 0.0)), 2.1);
+  const ProblemSpec coulomb = parse_problem_string(
+      with("gap = \"0\"", "friction = \"coulomb\"\nmu = 0.25"), "test.toml").spec;
+  EXPECT_EQ(coulomb.contacts[0].friction, FrictionModel::Coulomb);
+  EXPECT_EQ(coulomb.contacts[0].mu, 0.25);
+  EXPECT_EQ(parse_problem_string(kBase, "test.toml").spec.contacts[0].friction, FrictionModel::None);
+}
+
+TEST(ProblemFileFriction, BadFrictionInputGetsOneLineNamingTheKey) {
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"stick\"")),
+                  "contact.friction = \"stick\": expected");
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"coulomb\"")), "contact.mu");
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"coulomb\"\nmu = -0.1")),
+                  "contact.mu");
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"tresca\"")), "contact.slip_bound");
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"tresca\"\nmu = 0.3")),
+                  "contact.mu applies with friction = \"coulomb\" only");
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "slip_bound = \"1\"")),
+                  "contact.slip_bound applies with friction = \"tresca\" only");
+  // A negative bound is found where it is evaluated, at a contact node.
+  const ProblemSpec negative = parse_problem_string(
+      with("gap = \"0\"", "friction = \"tresca\"\nslip_bound = \"1 - x\""), "test.toml").spec;
+  try {
+    static_cast<void>(build_model(negative));
+    ADD_FAILURE() << "a negative slip bound was accepted";
+  } catch (const InputError& e) {
+    EXPECT_CONTAINS(std::string(e.what()), "contact.slip_bound = \"1 - x\" is -");
+  }
 }
 
 }  // namespace

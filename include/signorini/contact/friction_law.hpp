@@ -16,9 +16,11 @@
 // problems carried out inside the Uzawa loop (method.md, "Friction").
 
 #include <string_view>
+#include <vector>
 
 #include "signorini/contact/contact_law.hpp"
 #include "signorini/contact/contact_set.hpp"
+#include "signorini/core/enum_names.hpp"
 
 namespace signorini {
 
@@ -56,6 +58,22 @@ class FrictionLaw final : public ContactLaw {
   int dim_;
   Vector s_, mu_;
 };
+
+/// What a contact node does at a frictional solution.
+enum class FrictionState { Separated, Sticking, Sliding };
+
+inline constexpr EnumNames<FrictionState, 3> kFrictionStateNames{{
+    {FrictionState::Separated, "separated"},
+    {FrictionState::Sticking, "sticking"},
+    {FrictionState::Sliding, "sliding"},
+}};
+
+/// Per node from the pressure l_n and the tangential multipliers l_t (ContactResult::l and
+/// ::tangential): separated where l_n = 0 (and l_t = 0), sliding where |l_t| reaches the slip
+/// bound (to 1e-8 relative; a zero bound slides freely), sticking otherwise.
+[[nodiscard]] std::vector<FrictionState> friction_states(const FrictionLaw& law,
+                                                         const Vector& pressure,
+                                                         const Matrix& tangential);
 
 /// B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. d j + d - 1 the tangential
 /// rows (d - 1) j .. of T (fem/contact_tangents.hpp). Sets contact.components = d. Throws

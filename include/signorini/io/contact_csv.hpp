@@ -14,7 +14,10 @@ namespace signorini {
 /// a quarter counterclockwise: on a bottom edge, nu = (0, -1) and tau = (1, 0)), the contact
 /// pressure l_j >= 0, the gap g_j and the outward unit normal nu_j (the foundation lies at
 /// x_j + g_j nu_j). Numbers with 17 significant digits, so that they read back
-/// exactly. 2D only (throws InputError otherwise).
+/// exactly. In 3D: x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary. With friction
+/// (Model::friction) the columns `tangential` (3D: tangential_x, _y, _z), the tangential part of
+/// -sigma n as the pressure is its normal part (along the slip where the node slides), and
+/// `state` (separated, sticking, sliding) follow.
 std::string contact_csv(const ContactResult& result, const Model& model);
 
 }  // namespace signorini

@@ -6,7 +6,10 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/friction_law.hpp"
 #include "signorini/core/timing_table.hpp"
 #include "signorini/fem/dof_map.hpp"
 #include "signorini/iterative/multigrid_hierarchy.hpp"
@@ -55,6 +58,9 @@ struct Model {
   /// the contact set's rows: part i has rows contact_starts[i] to contact_starts[i + 1] - 1.
   std::vector<std::string> contact_boundaries;
   std::vector<Index> contact_starts;
+  /// The friction law when a contact boundary has friction (null otherwise): problem.contact
+  /// then has the tangential rows in N, and solver.law points to this law.
+  std::shared_ptr<const FrictionLaw> friction;
 
   /// The name of the contact boundary of contact-set row j.
   [[nodiscard]] const std::string& contact_boundary_of(Index j) const;

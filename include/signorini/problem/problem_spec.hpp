@@ -65,6 +65,15 @@ struct PointLoadSpec {
   std::string boundary;
 };
 
+/// The friction law of a contact boundary (docs/method.md, "Friction").
+enum class FrictionModel { None, Tresca, Coulomb };
+
+inline constexpr EnumNames<FrictionModel, 3> kFrictionModelNames{{
+    {FrictionModel::None, "none"},
+    {FrictionModel::Tresca, "tresca"},
+    {FrictionModel::Coulomb, "coulomb"},
+}};
+
 /// Possible contact with the rigid foundation on a boundary part (Gamma_K), initial gap g(x).
 struct ContactSpec {
   std::string boundary;
@@ -78,6 +87,12 @@ struct ContactSpec {
   /// the facets (docs/method.md section 3).
   VectorField surface_normal;
   std::vector<std::string> surface_normal_text;  ///< as the file gave it
+  /// Friction on this boundary: none (the paper's), Tresca's with the slip bound s(x) (a
+  /// stress, >= 0), or Coulomb's with the coefficient mu (>= 0).
+  FrictionModel friction = FrictionModel::None;
+  ScalarField slip_bound = [](const Point&) { return 0.0; };
+  std::string slip_bound_text = "0";
+  double mu = 0.0;
 };
 
 /// A region of the mesh (a Gmsh physical surface, by name) with a material of its own.

@@ -34,8 +34,10 @@ struct Resultants {
 
 /// The resultants of the displacement u (free dofs) and contact pressure l of `model`. The
 /// reactions are (K u - f - c) at the clamped dofs, f the applied loads and c the contact forces,
-/// with K u formed cell by cell (fem/elasticity_assembly.hpp internal_forces).
-Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l);
+/// with K u formed cell by cell (fem/elasticity_assembly.hpp internal_forces). With friction,
+/// `tangential` (ContactResult::tangential) adds the tangential contact forces.
+Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l,
+                              const Matrix& tangential = {});
 
 /// A few lines for a terminal: the applied load, each reaction, the contact force, the balance.
 std::string resultants_report(const Resultants& r, int dim);

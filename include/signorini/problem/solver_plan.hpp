@@ -19,6 +19,9 @@ struct ProblemSize {
   Index free_unknowns = 0;
   Index contact_nodes = 0;
   double memory_bytes = 0.0;  ///< the machine's physical memory; 0: unknown (no memory rule)
+  /// A contact boundary with friction: the condensed and multigrid paths are frictionless, so
+  /// the sparse direct path runs.
+  bool friction = false;
 };
 
 /// In 3D a sparse Cholesky factor costs more than CG with smoothed-aggregation multigrid from

@@ -14,6 +14,7 @@
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/kkt_residuals.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
+#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
 
@@ -342,6 +343,9 @@ ContactResult ContactSolver::solve() {
   s.contact_force = c.weights.dot(result.l);
   s.contact_force_vector.setZero();
   s.contact_force_vector.head(c.normals.rows()) = -(c.normals * c.weights.cwiseProduct(result.l));
+  for (Index j = 0; j < result.tangential.cols(); ++j)  // friction: the tangential forces too
+    s.contact_force_vector.head(c.normals.rows()) -=
+        c.weights(j) * tangent_basis(c.normals.col(j)) * result.tangential.col(j);
   s.num_active = (result.l.array() > 0.0).count();
 
   // Converged means the KKT conditions hold, not only that the method's rule was met: a

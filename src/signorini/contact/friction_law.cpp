@@ -62,6 +62,25 @@ double FrictionLaw::penalty_change(double /*z0*/, double /*dz*/) const {
   throw std::logic_error("FrictionLaw::penalty_change: a frictional law has no scalar penalty");
 }
 
+std::vector<FrictionState> friction_states(const FrictionLaw& law, const Vector& pressure,
+                                           const Matrix& tangential) {
+  const Index m = law.components(), nc = pressure.size();
+  Vector l(m * nc);
+  for (Index j = 0; j < nc; ++j) {
+    l(m * j) = pressure(j);
+    l.segment(m * j + 1, m - 1) = tangential.col(j);
+  }
+  const Vector bound = law.slip_bounds(l);
+  std::vector<FrictionState> states(static_cast<std::size_t>(nc), FrictionState::Separated);
+  for (Index j = 0; j < nc; ++j) {
+    const double t = tangential.col(j).norm();
+    if (!(pressure(j) > 0.0) && t == 0.0) continue;
+    states[static_cast<std::size_t>(j)] =
+        t >= bound(j) * (1.0 - 1e-8) ? FrictionState::Sliding : FrictionState::Sticking;
+  }
+  return states;
+}
+
 void add_tangential_rows(ContactSet& contact, const SparseMatrix& T) {
   const Index nc = contact.size();
   if (contact.components != 1) throw InputError("friction: the contact set has tangential rows");

@@ -28,6 +28,9 @@ std::string SolveSummary::brief_report() const {
       "  KKT (relative): equilibrium {:.2e}, penetration {:.2e}, sign {:.2e}, "
       "complementarity {:.2e} (tolerance {:.0e})\n",
       kkt.equilibrium, kkt.penetration, kkt.sign, kkt.complementarity, kkt_tolerance);
+  if (kkt.friction_bound > 0.0 || kkt.slip > 0.0)
+    s += fmt::format("  friction (relative): bound {:.2e}, slip direction {:.2e}\n",
+                     kkt.friction_bound, kkt.slip);
   if (method == ContactMethod::UzawaGnm)
     s += fmt::format("  r = {:.4g} ({})\n", r, r_automatic ? "automatic" : "given");
   s += fmt::format("  path: {}{}{}\n", enum_to_string(kSolvePathNames, path),

@@ -8,15 +8,10 @@
 // Status: built and tested (tests/fem/contact_tangents_test.cpp); no solver uses it yet.
 
 #include "signorini/contact/contact_set.hpp"
+#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/fem/dof_map.hpp"
 
 namespace signorini {
-
-/// An orthonormal basis of the plane normal to the unit vector nu, as the columns of a
-/// dim x (dim - 1) matrix: in 2D t = (-nu_y, nu_x), so that (nu, t) turns as (x, y); in 3D
-/// t_1 = e x nu / |e x nu| with e the axis least aligned with nu, and t_2 = nu x t_1, so that
-/// (nu, t_1, t_2) is right-handed.
-[[nodiscard]] Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& nu);
 
 /// T: (dim - 1) size() rows (row (dim - 1) j + k for t_k of node j) over the free dofs, in the
 /// local axes of a node that has them (DofMap::set_frame), as N's rows are.

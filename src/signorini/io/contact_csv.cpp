@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "signorini/core/error.hpp"
+#include "signorini/fem/contact_tangents.hpp"
 
 namespace signorini {
 
@@ -16,12 +17,42 @@ std::string csv_name(const std::string& name) {
   return quoted + "\"";
 }
 
+// Friction's columns, appended to a row: the tangential multiplier (as the pressure is
+// -(sigma n) . nu, this is the tangential part of -sigma n: along the slip where the node
+// slides) and the node's state. In 2D one component along tau, in 3D a Cartesian vector.
+struct FrictionColumns {
+  const Model& model;
+  const ContactResult& result;
+  std::vector<FrictionState> states;
+  FrictionColumns(const Model& m, const ContactResult& r)
+      : model(m),
+        result(r),
+        states(m.friction ? friction_states(*m.friction, r.l, r.tangential)
+                          : std::vector<FrictionState>{}) {}
+  [[nodiscard]] bool on() const { return model.friction != nullptr; }
+  [[nodiscard]] std::string header() const {
+    if (!on()) return "";
+    return model.mesh.dim() == 2 ? ",tangential,state" : ",tangential_x,tangential_y,tangential_z,state";
+  }
+  [[nodiscard]] std::string row(Index j) const {
+    if (!on()) return "";
+    const std::string_view state =
+        enum_to_string(kFrictionStateNames, states[static_cast<std::size_t>(j)]);
+    if (model.mesh.dim() == 2) return fmt::format(",{:.17g},{}", result.tangential(0, j) + 0.0, state);
+    const Eigen::MatrixXd basis = tangent_basis(model.problem.contact.normals.col(j));
+    const Eigen::Vector3d t = basis * result.tangential.col(j);
+    return fmt::format(",{:.17g},{:.17g},{:.17g},{}", t(0) + 0.0, t(1) + 0.0, t(2) + 0.0, state);
+  }
+};
+
 // 3D: a surface has no single tangential direction, so the tangential displacement is given as
 // the Cartesian vector u - u_n nu; no arc length.
 std::string contact_csv_3d(const ContactResult& result, const Model& model) {
   const ContactSet& c = model.problem.contact;
   const Vector u = model.dofs.expand(result.u);
-  std::string out = "x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary\n";
+  const FrictionColumns friction(model, result);
+  std::string out =
+      "x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary" + friction.header() + "\n";
   for (std::size_t part = 0; part < model.contact_boundaries.size(); ++part) {
     const std::string name = csv_name(model.contact_boundaries[part]);
     for (Index j = model.contact_starts[part]; j < model.contact_starts[part + 1]; ++j) {
@@ -34,9 +65,9 @@ std::string contact_csv_3d(const ContactResult& result, const Model& model) {
       const auto x = model.mesh.node(node);
       out += fmt::format(
           "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-          "{:.17g},{}\n",
+          "{:.17g},{}{}\n",
           x(0), x(1), x(2), un, ut(0) + 0.0, ut(1) + 0.0, ut(2) + 0.0, result.l(j), gap, n(0) + 0.0,
-          n(1) + 0.0, n(2) + 0.0, name);
+          n(1) + 0.0, n(2) + 0.0, name, friction.row(j));
     }
   }
   return out;
@@ -49,7 +80,8 @@ std::string contact_csv(const ContactResult& result, const Model& model) {
   const ContactSet& c = model.problem.contact;
   // result.u holds the free dofs only; expand() adds the prescribed values (0 for clamps).
   const Vector u = model.dofs.expand(result.u);
-  std::string out = "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary\n";
+  const FrictionColumns friction(model, result);
+  std::string out = "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary" + friction.header() + "\n";
   // s: the arc length along the contact nodes of each contact boundary in their order (chords
   // between consecutive nodes, so along a quadratic edge through its middle node), from 0 at the
   // start of each.
@@ -71,9 +103,9 @@ std::string contact_csv(const ContactResult& result, const Model& model) {
       const double gap = c.gaps(j) + c.normals.col(j).dot(model.dofs.prescribed_at(node));
       const auto x = model.mesh.node(node);
       out += fmt::format(
-          "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", x(0),
+          "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}{}\n", x(0),
           x(1), ux * nx + uy * ny, -ux * ny + uy * nx, result.l(j), gap, nx + 0.0, ny + 0.0, s,
-          name);
+          name, friction.row(j));
     }
   }
   return out;

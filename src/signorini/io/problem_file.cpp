@@ -531,6 +531,40 @@ std::string vector_text(const Eigen::Vector3d& v, int count) {
   return "[" + out + "]";
 }
 
+// friction = "none" | "tresca" (slip_bound) | "coulomb" (mu): the keys of the other laws refused.
+void read_friction(const Reader& r, const toml::table& t, const std::string& path,
+                   ContactSpec& contact) {
+  const std::string law = r.string(t, path, "friction").value_or("none");
+  const auto parsed = enum_from_string(kFrictionModelNames, law);
+  if (!parsed)
+    r.fail_at(t.get("friction")->source(), join(path, "friction") + " = \"" + law +
+                                               "\": expected " + enum_choices(kFrictionModelNames));
+  contact.friction = *parsed;
+  const auto refuse = [&](const char* key, const char* with) {
+    if (t.contains(key))
+      r.fail_at(t.get(key)->source(), join(path, key) + " applies with friction = \"" + with +
+                                          "\" only; this boundary has friction = \"" + law +
+                                          "\"");
+  };
+  if (contact.friction != FrictionModel::Tresca) refuse("slip_bound", "tresca");
+  if (contact.friction != FrictionModel::Coulomb) refuse("mu", "coulomb");
+  if (contact.friction == FrictionModel::Tresca) {
+    const std::string key = join(path, "slip_bound");
+    contact.slip_bound_text =
+        required(r, r.expression(t, path, "slip_bound"), key,
+                 "a number or an expression of x, y, z >= 0: the tangential traction at which "
+                 "the boundary slides");
+    contact.slip_bound = scalar_formula(r, key, contact.slip_bound_text);
+  }
+  if (contact.friction == FrictionModel::Coulomb) {
+    const std::optional<double> mu = r.number(t, path, "mu");
+    if (!mu) r.missing(join(path, "mu"), "a number >= 0: the friction coefficient");
+    if (!(*mu >= 0.0) || !std::isfinite(*mu))
+      r.out_of_range(join(path, "mu"), as_text(*mu), "a finite number >= 0", t.get("mu"));
+    contact.mu = *mu;
+  }
+}
+
 // One contact boundary, from the table at `path` ("contact", or "contact[1]" of [[contact]]).
 ContactSpec read_contact_entry(const Reader& r, const Dimension& dim, const toml::table* t,
                                const std::string& path) {
@@ -551,6 +585,7 @@ ContactSpec read_contact_entry(const Reader& r, const Dimension& dim, const toml
         with_file(r, [&] { return make_vector_field(*normal, key); }), key, *normal);
     contact.surface_normal_text = std::move(*normal);
   }
+  read_friction(r, *t, path, contact);
   // The keys of each shape; a key that only other shapes have is refused, naming them.
   const std::map<ObstacleShape, std::vector<std::string>> keys{
       {ObstacleShape::Gap, {"gap"}},

@@ -413,6 +413,18 @@ const OptionTable<P>& contact_options() {
              "disc, cylinder: true when the body lies inside it (a shaft in a bore), false when "
              "outside (a roller or a punch pressing on it)")
         .default_text("`false`");
+    t.custom("friction", "`\"none\"`, `\"tresca\"` or `\"coulomb\"`",
+             "friction on this boundary: none (the paper's frictionless contact); Tresca's, the "
+             "tangential traction bounded by `slip_bound`; Coulomb's, bounded by `mu` times the "
+             "contact pressure. Solved by `uzawa_gnm` or `classical_uzawa` on the sparse direct "
+             "path ([method.md](method.md), \"Friction\")")
+        .default_text("`\"none\"`");
+    t.custom("slip_bound", "expression of x, y, z, >= 0",
+             "Tresca: the slip bound s(x), the tangential traction at which the boundary slides")
+        .unit("S")
+        .default_text("required with friction = \"tresca\"");
+    t.custom("mu", "number >= 0", "Coulomb: the friction coefficient")
+        .default_text("required with friction = \"coulomb\"");
     return t;
   }();
   return table;
@@ -469,6 +481,12 @@ std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpe
                              {"inside", o.body_inside}});
       break;
   }
+  if (contact.friction != FrictionModel::None)
+    out.emplace_back("friction",
+                     std::string(enum_to_string(kFrictionModelNames, contact.friction)));
+  if (contact.friction == FrictionModel::Tresca)
+    out.emplace_back("slip_bound", contact.slip_bound_text);
+  if (contact.friction == FrictionModel::Coulomb) out.emplace_back("mu", contact.mu);
   return out;
 }
 

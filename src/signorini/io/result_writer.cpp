@@ -25,7 +25,7 @@ void create_output_folder(const std::filesystem::path& outdir) {
 
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec) {
-  write_results(outdir, result, model, spec, compute_resultants(model, result.u, result.l));
+  write_results(outdir, result, model, spec, compute_resultants(model, result.u, result.l, result.tangential));
 }
 
 namespace {

@@ -1,6 +1,7 @@
 #include "signorini/io/summary_json.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "signorini/config.hpp"
@@ -85,7 +86,7 @@ nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
 
 nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
                                const ProblemSpec& spec) {
-  return summary_to_json(result, model, spec, compute_resultants(model, result.u, result.l));
+  return summary_to_json(result, model, spec, compute_resultants(model, result.u, result.l, result.tangential));
 }
 
 nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
@@ -164,6 +165,18 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
               {"penetration", summary.kkt.penetration},
               {"sign", summary.kkt.sign},
               {"complementarity", summary.kkt.complementarity}};
+  if (model.friction) {
+    j["kkt"]["friction_bound"] = summary.kkt.friction_bound;
+    j["kkt"]["slip"] = summary.kkt.slip;
+    j["friction"] = {{"law", std::string(model.friction->name())}};
+    std::array<Index, 3> counts{};
+    for (const FrictionState s : friction_states(*model.friction, result.l, result.tangential))
+      ++counts[static_cast<std::size_t>(s)];
+    for (const FrictionState s :
+         {FrictionState::Separated, FrictionState::Sticking, FrictionState::Sliding})
+      j["friction"][std::string(enum_to_string(kFrictionStateNames, s))] =
+          counts[static_cast<std::size_t>(s)];
+  }
 
   json timings = json::object();
   const TimingTable phases = run_timings(model, summary);  // named: phases() refers into it

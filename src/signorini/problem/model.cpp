@@ -8,6 +8,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/core/peak_memory.hpp"
 #include "signorini/fem/contact_boundary.hpp"
+#include "signorini/fem/contact_tangents.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
 #include "signorini/fem/load_assembly.hpp"
@@ -195,6 +196,44 @@ void require_loads_off_contact(const ProblemSpec& spec) {
 
 }  // namespace
 
+namespace {
+
+// The friction law of the contact set, node by node from the sections' laws, and the tangential
+// rows added to N; null when no boundary has friction.
+// `starts`: the parts' first rows in the contact set (Model::contact_starts).
+std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const Mesh& mesh,
+                                                 const DofMap& dofs,
+                                                 const std::vector<Index>& starts,
+                                                 ContactSet& contact) {
+  bool any = false;
+  for (const ContactSpec& c : spec.contacts) any = any || c.friction != FrictionModel::None;
+  if (!any) return nullptr;
+  if (distributed_path(spec.solver))
+    throw InputError(
+        "contact.friction: friction runs in one process for now, not on the distributed path "
+        "(run without mpirun, or set solver.distributed = \"off\")");
+  Vector s = Vector::Zero(contact.size()), mu = Vector::Zero(contact.size());
+  for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
+    const ContactSpec& c = spec.contacts[part];
+    const std::string where =
+        spec.contacts.size() == 1 ? "contact" : fmt::format("contact[{}]", part);
+    for (Index j = starts[part]; j < starts[part + 1]; ++j) {
+      const Point x = mesh.node(contact.nodes[static_cast<std::size_t>(j)]);
+      if (c.friction == FrictionModel::Coulomb) mu(j) = c.mu;
+      if (c.friction != FrictionModel::Tresca) continue;
+      s(j) = c.slip_bound(x);
+      if (!(s(j) >= 0.0) || !std::isfinite(s(j)))
+        throw InputError(fmt::format(
+            "{}.slip_bound = \"{}\" is {} at ({:g}, {:g}, {:g}): expected a finite value >= 0",
+            where, c.slip_bound_text, s(j), x(0), x(1), x(2)));
+    }
+  }
+  add_tangential_rows(contact, tangential_operator(contact, dofs));
+  return std::make_shared<const FrictionLaw>(mesh.dim(), std::move(s), std::move(mu));
+}
+
+}  // namespace
+
 Model build_model(const ProblemSpec& spec) {
   validate(spec.elasticity.material);
   validate(spec.solver);
@@ -342,11 +381,14 @@ Model build_model(const ProblemSpec& spec) {
       contact_starts.push_back(problem.contact.size());
     }
   }
+  // Friction: the tangential rows in N and the law per node (friction_law.hpp).
+  std::shared_ptr<const FrictionLaw> friction = make_friction(spec, mesh, dofs, contact_starts, problem.contact);
   // The solver path from the problem's size (solver_plan.hpp), before the hierarchy that it may
   // call for.
-  const SolverPlan plan =
-      plan_solver(spec.solver, ProblemSize{mesh.dim(), mesh.num_nodes(), dofs.num_free(),
-                                           problem.contact.size(), physical_memory_bytes()});
+  SolverPlan plan = plan_solver(
+      spec.solver, ProblemSize{mesh.dim(), mesh.num_nodes(), dofs.num_free(),
+                               problem.contact.size(), physical_memory_bytes(), friction != nullptr});
+  if (friction) plan.options.law = friction.get();
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = plan.options.linear;
   const bool multigrid_cg = linear.type == LinearSolverType::ConjugateGradient &&
@@ -365,7 +407,7 @@ Model build_model(const ProblemSpec& spec) {
                std::move(multigrid),     plan.options,      plan.reason,
                std::move(timings),       elasticity,        std::move(loads),
                std::move(clamps),        std::move(placed), std::move(contact_boundaries),
-               std::move(contact_starts)};
+               std::move(contact_starts), std::move(friction)};
 }
 
 const std::string& Model::contact_boundary_of(Index j) const {

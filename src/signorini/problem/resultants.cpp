@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
+#include "signorini/fem/contact_tangents.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 
 namespace signorini {
@@ -31,20 +32,24 @@ std::string vector_text(const Eigen::Vector3d& v, int dim) {
 
 }  // namespace
 
-Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l) {
+Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l,
+                              const Matrix& tangential) {
   const Mesh& mesh = model.mesh;
   const int dim = mesh.dim();
   Resultants r;
   const Vector centroid = mesh.coordinates().rowwise().mean();
   for (int k = 0; k < dim; ++k) r.reference(k) = centroid(k);
 
-  // The foundation's force on the body, -h_j l_j nu_j at contact node j, on the full dofs.
+  // The foundation's force on the body, -h_j l_j nu_j at contact node j, on the full dofs; with
+  // friction also -h_j l_t,j along the node's tangents (B^T W l of the equilibrium).
   const ContactSet& c = model.problem.contact;
   Vector contact = Vector::Zero(model.dofs.num_dofs());
-  for (Index j = 0; j < c.size(); ++j)
-    for (int k = 0; k < dim; ++k)
-      contact(c.nodes[static_cast<std::size_t>(j)] * dim + k) -=
-          c.weights(j) * l(j) * c.normals(k, j);
+  const bool friction = tangential.cols() == c.size() && tangential.size() > 0;
+  for (Index j = 0; j < c.size(); ++j) {
+    Eigen::VectorXd force = -c.weights(j) * l(j) * c.normals.col(j);
+    if (friction) force -= c.weights(j) * tangent_basis(c.normals.col(j)) * tangential.col(j);
+    for (int k = 0; k < dim; ++k) contact(c.nodes[static_cast<std::size_t>(j)] * dim + k) += force(k);
+  }
 
   Sum applied, foundation;
   for (Index i = 0; i < model.dofs.num_dofs(); ++i) {

@@ -41,6 +41,13 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
     return as_configured(fmt::format("linear.type = \"{}\"",
                                      enum_to_string(kLinearSolverTypeNames, given.linear.type)));
 
+  if (size.friction) {
+    o.schur_complement = false;
+    plan.reason =
+        "sparse direct: friction runs on the full sparse problem (the condensed and multigrid "
+        "paths are frictionless)";
+    return plan;
+  }
   // Classical Uzawa needs one factorisation of A (thousands of steps, each a pair of triangular
   // solves): it has no iterative path.
   const bool iterative_allowed = given.method != ContactMethod::ClassicalUzawa;

@@ -1,0 +1,124 @@
+// examples/paper_coulomb.toml from the command line: Coulomb friction through the problem file,
+// contact.csv's friction columns checked against the law node by node (|t| <= mu p, at the bound
+// where sliding), summary.json's counts and resultants, and mu = 0 against the frictionless tool
+// run (a different path: the condensed one).
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/tool_run.hpp"
+
+namespace signorini {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::quoted;
+using testing::run_tool;
+using testing::ToolRun;
+
+struct Row {
+  double x = 0.0, pressure = 0.0, tangential = 0.0;
+  std::string state;
+};
+
+struct ToolResult {
+  nlohmann::json summary;
+  std::vector<Row> rows;
+};
+
+ToolResult solve(const testing::TemporaryFolder& dir, const std::string& name, const std::string& extra) {
+  const fs::path out = dir / name;
+  const ToolRun r = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_coulomb.toml") +
+                                      " -q " + extra + " -o " + quoted(out.string()));
+  EXPECT_EQ(r.status, 0) << r.err;
+  ToolResult run;
+  std::ifstream js(out / "summary.json");
+  run.summary = nlohmann::json::parse(js);
+  std::istringstream csv(testing::read_text(out / "contact.csv"));
+  std::string line;
+  std::getline(csv, line);
+  const bool friction = line.find(",tangential,state") != std::string::npos;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::istringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) f.push_back(field);
+    Row row{std::stod(f.at(0)), std::stod(f.at(4)), 0.0, ""};
+    if (friction) {
+      row.tangential = std::stod(f.at(10));
+      row.state = f.at(11);
+    }
+    run.rows.push_back(row);
+  }
+  return run;
+}
+
+TEST(FrictionTool, CoulombExampleMeetsTheLawNodeByNode) {
+  const testing::TemporaryFolder dir;
+  const ToolResult run = solve(dir, "coulomb", "");
+  const nlohmann::json& s = run.summary;
+  ASSERT_TRUE(s["converged"].get<bool>()) << s["message"];
+  EXPECT_EQ(s["friction"]["law"], "coulomb");
+  EXPECT_EQ(s["path"], "sparse_direct");
+  EXPECT_LT(s["kkt"]["friction_bound"].get<double>(), 1e-7);
+  EXPECT_LT(s["kkt"]["slip"].get<double>(), 1e-7);
+  // The tangential contact forces are in the resultants: the body is in balance.
+  EXPECT_LT(s["resultants"]["relative_balance"].get<double>(), 1e-10);
+  EXPECT_LT(s["resultants"]["contact"][0].get<double>(), -0.1);  // friction holds it back
+  int sticking = 0, sliding = 0;
+  double peak = 0.0;
+  for (const Row& r : run.rows) peak = std::max(peak, r.pressure);
+  for (const Row& r : run.rows) {
+    EXPECT_LE(std::abs(r.tangential), 1.0 * r.pressure + 1e-7 * peak) << "x = " << r.x;
+    if (r.state == "sliding") {
+      ++sliding;
+      EXPECT_NEAR(std::abs(r.tangential), r.pressure, 1e-7 * peak) << "x = " << r.x;
+    } else if (r.state == "sticking") {
+      ++sticking;
+      EXPECT_LT(std::abs(r.tangential), r.pressure) << "x = " << r.x;
+    } else {
+      EXPECT_EQ(r.state, "separated");
+      EXPECT_EQ(r.pressure, 0.0);
+    }
+  }
+  EXPECT_EQ(s["friction"]["sticking"].get<int>(), sticking);
+  EXPECT_EQ(s["friction"]["sliding"].get<int>(), sliding);
+  EXPECT_GT(sticking, 5);  // a stick zone and a slip zone at mu = 1
+  EXPECT_GT(sliding, 5);
+}
+
+TEST(FrictionTool, ZeroFrictionIsTheFrictionlessRun) {
+  const testing::TemporaryFolder dir;
+  const ToolResult zero = solve(dir, "zero", "--set contact.mu=0");
+  EXPECT_TRUE(zero.summary["converged"].get<bool>());
+  const ToolResult frictionless = [&] {
+    const fs::path out = dir / "frictionless";
+    const ToolRun r = run_tool(
+        dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml") +
+                 " -q --set mesh.nx=120 --set mesh.ny=40 -o " + quoted(out.string()));
+    EXPECT_EQ(r.status, 0) << r.err;
+    ToolResult run;
+    std::istringstream csv(testing::read_text(out / "contact.csv"));
+    std::string line;
+    std::getline(csv, line);
+    while (std::getline(csv, line)) {
+      std::vector<std::string> f;
+      std::istringstream in(line);
+      for (std::string field; std::getline(in, field, ',');) f.push_back(field);
+      run.rows.push_back({std::stod(f.at(0)), std::stod(f.at(4)), 0.0, ""});
+    }
+    return run;
+  }();
+  ASSERT_EQ(zero.rows.size(), frictionless.rows.size());
+  double peak = 0.0;
+  for (const Row& r : frictionless.rows) peak = std::max(peak, r.pressure);
+  for (std::size_t j = 0; j < zero.rows.size(); ++j) {
+    EXPECT_NEAR(zero.rows[j].pressure, frictionless.rows[j].pressure, 1e-8 * peak) << j;
+    EXPECT_EQ(zero.rows[j].tangential, 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace signorini
