@@ -31,6 +31,11 @@ struct Linearization {
   ActiveSet active;
   std::vector<double> blocks;   ///< m^2 per node; empty for one component
   std::vector<double> offsets;  ///< m per node; empty for one component
+  /// Where every D_j is diagonal with entries 0 and 1 (friction in 2D: a node sticks or slides
+  /// along its one tangent), the rows of N whose entry is 1: H = A + r sum over these rows of
+  /// h b b^T, as for the frictionless law, so that the sparse systems can update their factor
+  /// row by row. Empty otherwise.
+  ActiveSet rows;
   bool operator==(const Linearization&) const = default;
 };
 

@@ -113,6 +113,20 @@ Linearization ModifiedLagrangian::linearize(const Vector& Nx) const {
     Eigen::Map<Eigen::VectorXd>(&lin.offsets[static_cast<std::size_t>(m_ * j)], m_) =
         pj.force - pj.derivative * zj;
   }
+  // In 2D each block is diag(0 or 1, 0 or 1): (s / |z_t|)(1 - t t) with t = +-1 vanishes
+  // exactly. Then the rows of N with a 1 describe H as an active set does.
+  lin.rows.assign(static_cast<std::size_t>(m_ * nc), false);
+  for (Index j = 0; j < nc; ++j)
+    for (Index a = 0; a < m_; ++a)
+      for (Index b = 0; b < m_; ++b) {
+        const double v = lin.blocks[static_cast<std::size_t>(m_ * m_ * j + a + m_ * b)];
+        if (a == b && v == 1.0)
+          lin.rows[static_cast<std::size_t>(m_ * j + a)] = true;
+        else if (v != 0.0) {
+          lin.rows.clear();
+          return lin;
+        }
+      }
   return lin;
 }
 
@@ -196,7 +210,8 @@ void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const
   double* v = H.valuePtr();
   for (std::size_t j = 0; j < active.size(); ++j) {
     if (!active[j]) continue;
-    const double scale = r_ * p_.contact.weights(static_cast<Index>(j));
+    // Row j of N belongs to node j / m (friction in 2D: lin.rows).
+    const double scale = r_ * p_.contact.weights(static_cast<Index>(j) / m_);
     for (const auto& [pos, c] : block_entries()[j]) v[pos] += scale * c;
   }
 }

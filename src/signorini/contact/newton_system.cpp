@@ -42,6 +42,10 @@ class SparseNewtonSystem final : public NewtonSystem {
       set_active(lin.active);
       return;
     }
+    if (!lin.rows.empty()) {  // 2D friction: the active rows of N, with factor updates
+      set_active(lin.rows);
+      return;
+    }
     // Friction: the blocks D_j vary continuously on sliding nodes in 3D, so H is formed and
     // factorised again whenever the linearisation changes (no rank-one updates).
     if (has_linearization_ && lin == current_linearization_) return;
@@ -97,7 +101,8 @@ class SparseNewtonSystem final : public NewtonSystem {
     std::vector<Eigen::Triplet<double, Index>> entries;
     for (std::size_t c = 0; c < nodes.size(); ++c) {
       const Index j = nodes[c];
-      const double scale = std::sqrt(phi_.r() * p_.contact.weights(j));
+      // Row j of N is node j / components' (friction: several rows per node).
+      const double scale = std::sqrt(phi_.r() * p_.contact.weights(j / p_.contact.components));
       for (SparseMatrix::InnerIterator it(Nt_, j); it; ++it)
         entries.emplace_back(it.row(), static_cast<Index>(c), scale * it.value());
     }
