@@ -15,6 +15,7 @@
 #include "signorini/io/result_writer.hpp"
 #include "signorini/io/summary_json.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/problem/load_stepping.hpp"
 #include "signorini/problem/resultants.hpp"
 #include "timing_report.hpp"
 
@@ -113,12 +114,34 @@ int solve(const SolveArguments& args, LogFormat format) {
   progress.phase("contact solve");
   ContactSolverOptions solver = model.solver;  // the path planned from the problem's size
   solver.observer = [&progress](const IterationEvent& e) { progress.iteration(e); };
-  ContactResult result = solve_contact(model.problem, solver, &model.multigrid);
+  ContactResult result;
+  if (spec.load_factors.empty()) {
+    result = solve_contact(model.problem, solver, &model.multigrid);
+  } else {
+    // [loading]: each step's files as it is solved (steps/, solution.pvd); the last step's
+    // results are the run's (write_results below).
+    result = solve_load_steps(
+        model, solver, spec.load_factors, [&](int step, const ContactResult& r) {
+          const LoadStepRecord& s = r.summary.load_steps.back();
+          progress.report(
+              fmt::format("load step {} of {}: factor {:g}, {} ({} outer iterations, {} nodes in "
+                          "contact)\n",
+                          step, spec.load_factors.size(), s.factor,
+                          s.converged ? "converged" : "NOT converged", s.outer_iterations,
+                          s.active),
+              {{"event", "load_step"},
+               {"step", step},
+               {"factor", s.factor},
+               {"converged", s.converged},
+               {"outer_iterations", s.outer_iterations}});
+          if (root) write_load_step(args.output_dir, step, r, model);
+        });
+  }
   result.summary.path_reason = model.solver_reason;
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
   // Once, for the report, the log and summary.json.
-  const Resultants resultants = compute_resultants(model, result.u, result.l, result.tangential);
+  const Resultants resultants = compute_resultants(model, result);
   {
     nlohmann::json event = summary_to_json(result, model, spec, resultants);
     event.erase("problem");  // the settings event has it
@@ -134,6 +157,10 @@ int solve(const SolveArguments& args, LogFormat format) {
   write_results(args.output_dir, result, model, spec, resultants);
   if (!root) return summary.converged() ? kSuccess : kNotConverged;
   std::vector<std::string> files = kResultFiles;
+  if (!spec.load_factors.empty()) {  // and the steps' files in steps/
+    files.emplace_back("solution.pvd");
+    files.emplace_back("steps");
+  }
   if (summary.path == SolvePath::Distributed) {
     files.emplace_back("solution.pvtu");  // and its pieces solution_<rank>.vtu
     for (int r = 0; r < summary.ranks; ++r) files.push_back(fmt::format("solution_{}.vtu", r));

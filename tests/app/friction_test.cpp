@@ -40,7 +40,7 @@ ToolResult solve(const testing::TemporaryFolder& dir, const std::string& name, c
   std::istringstream csv(testing::read_text(out / "contact.csv"));
   std::string line;
   std::getline(csv, line);
-  const bool friction = line.find(",tangential,state") != std::string::npos;
+  const bool friction = line.find(",tangential,slip,state") != std::string::npos;
   while (std::getline(csv, line)) {
     std::vector<std::string> f;
     std::istringstream in(line);
@@ -48,7 +48,7 @@ ToolResult solve(const testing::TemporaryFolder& dir, const std::string& name, c
     Row row{std::stod(f.at(0)), std::stod(f.at(4)), 0.0, ""};
     if (friction) {
       row.tangential = std::stod(f.at(10));
-      row.state = f.at(11);
+      row.state = f.at(12);
     }
     run.rows.push_back(row);
   }
@@ -118,6 +118,41 @@ TEST(FrictionTool, ZeroFrictionIsTheFrictionlessRun) {
     EXPECT_NEAR(zero.rows[j].pressure, frictionless.rows[j].pressure, 1e-8 * peak) << j;
     EXPECT_EQ(zero.rows[j].tangential, 0.0);
   }
+}
+
+}  // namespace
+}  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// [loading] from the command line: a file per step, the .pvd series, the history in
+// summary.json, and the last step's results as the run's.
+TEST(FrictionTool, LoadingHistoryWritesEachStep) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "steps_run";
+  const ToolRun r =
+      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_coulomb.toml") +
+                        " -q --set mesh.nx=60 --set mesh.ny=20 --set " +
+                        quoted("loading.factors=[0.5, 1.0, 0.5]") + " -o " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"steps/solution_0001.vtu", "steps/solution_0003.vtu",
+                        "steps/contact_0002.csv", "solution.pvd", "contact.csv"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  EXPECT_FALSE(fs::exists(out / "steps/solution_0004.vtu"));
+  const std::string pvd = testing::read_text(out / "solution.pvd");
+  EXPECT_NE(pvd.find("timestep=\"3\" part=\"0\" file=\"steps/solution_0003.vtu\""),
+            std::string::npos);
+  std::ifstream js(out / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(js);
+  ASSERT_EQ(s["load_steps"].size(), 3U);
+  EXPECT_EQ(s["load_steps"][1]["factor"].get<double>(), 1.0);
+  EXPECT_EQ(s["problem"]["loading"]["factors"].size(), 3U);
+  // The run's contact.csv is the last step's.
+  EXPECT_EQ(testing::read_text(out / "contact.csv"), testing::read_text(out / "steps/contact_0003.csv"));
+  // Back at half the load after the full one: the body's balance holds at that factor.
+  EXPECT_LT(s["resultants"]["relative_balance"].get<double>(), 1e-10);
+  EXPECT_NEAR(s["resultants"]["applied"][1].get<double>(), -0.5 * 2.0, 1e-12);
 }
 
 }  // namespace

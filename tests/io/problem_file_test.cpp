@@ -978,3 +978,33 @@ TEST(ProblemFileFriction, BadFrictionInputGetsOneLineNamingTheKey) {
 
 }  // namespace
 }  // namespace signorini
+
+namespace signorini {
+namespace {
+
+TEST(ProblemFileLoading, StepsAndFactors) {
+  EXPECT_TRUE(parse_problem_string(kBase, "t.toml").spec.load_factors.empty());
+  const std::vector<double> four = {0.25, 0.5, 0.75, 1.0};
+  EXPECT_EQ(parse_problem_string(kBase + "[loading]\nsteps = 4\n", "t.toml").spec.load_factors,
+            four);
+  const std::vector<double> table = {0.5, 1.0, 0.0};
+  EXPECT_EQ(
+      parse_problem_string(kBase + "[loading]\nfactors = [0.5, 1, 0]\n", "t.toml").spec.load_factors,
+      table);
+  // As an override too, and echoed in the effective settings.
+  const LoadedProblem set = parse_problem_string(kBase, "t.toml", {"loading.steps=2"});
+  EXPECT_EQ(set.spec.load_factors, (std::vector<double>{0.5, 1.0}));
+  EXPECT_CONTAINS(set.effective_toml, "[loading]");
+}
+
+TEST(ProblemFileLoading, BadLoadingGetsOneLineNamingTheKey) {
+  EXPECT_CONTAINS(error_of(kBase + "[loading]\nsteps = 0\n"), "loading.steps");
+  EXPECT_CONTAINS(error_of(kBase + "[loading]\nfactors = [0.5, -1]\n"), "loading.factors[1]");
+  EXPECT_CONTAINS(error_of(kBase + "[loading]\nfactors = []\n"), "loading.factors");
+  EXPECT_CONTAINS(error_of(kBase + "[loading]\nsteps = 2\nfactors = [1]\n"), "give one of them");
+  EXPECT_CONTAINS(error_of(kBase + "[loading]\n"), "loading.steps");
+  EXPECT_CONTAINS(error_of(kBase + "[loading]\nstep = 3\n"), "loading");
+}
+
+}  // namespace
+}  // namespace signorini

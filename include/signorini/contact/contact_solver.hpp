@@ -20,6 +20,12 @@ struct ContactResult {
   /// in its tangent basis (fem/contact_tangents.hpp), the force per area that the obstacle
   /// exerts on the body, opposed to its slip where it slides.
   Matrix tangential;
+  /// Friction only: per node the length of the slip, |(T u)_j - slip origin|, the path length
+  /// over the steps of a loading history (problem/load_stepping.hpp).
+  Vector slip;
+  /// The load factor of the loads and prescribed displacements this solution is for (a step of
+  /// a loading history; 1 otherwise): the writers expand u with the prescribed values times it.
+  double load_factor = 1.0;
   SolveSummary summary;
 };
 

@@ -93,6 +93,16 @@ inline constexpr EnumNames<SolvePath, 5> kSolvePathNames{{
     {SolvePath::Distributed, "distributed"},
 }};
 
+/// One step of a loading history (problem/load_stepping.hpp).
+struct LoadStepRecord {
+  double factor = 1.0;  ///< the load factor
+  bool converged = false;
+  int outer_iterations = 0;
+  Index active = 0;            ///< contact nodes with a positive pressure
+  double contact_force = 0.0;  ///< sum_j h_j l_j
+  double seconds = 0.0;        ///< the step's solve
+};
+
 struct SolveSummary {
   ContactMethod method = ContactMethod::UzawaGnm;
   SolvePath path = SolvePath::CondensedDirect;  ///< how it was solved
@@ -104,6 +114,8 @@ struct SolveSummary {
   /// MPI ranks that took part in the solve (1 unless the path is distributed).
   int ranks = 1;
   bool warm_started = false;  ///< started from an earlier solution (ContactSolver::warm_start)
+  /// The steps of a loading history up to this one (its last), empty for one solve.
+  std::vector<LoadStepRecord> load_steps;
   Termination termination = Termination::Converged;
   std::string message;                 ///< one line: why it stopped, with the residuals
   int outer_iterations = 0;            ///< Uzawa iterations (or Newton iterations)

@@ -71,8 +71,8 @@ class DofMap {
   /// dofs): u_D.
   [[nodiscard]] Vector prescribed_values() const;
   /// Full displacement (num_dofs) from a free vector: the free values, and the prescribed values
-  /// (u_D, zero for plain clamps) at the clamped dofs.
-  [[nodiscard]] Vector expand(const Vector& free_values) const;
+  /// (u_D, zero for plain clamps) at the clamped dofs, times `prescribed_scale` (a load factor).
+  [[nodiscard]] Vector expand(const Vector& free_values, double prescribed_scale = 1.0) const;
   /// Free vector from a full (Cartesian) vector: at a node with a frame, its components along
   /// the frame's axes.
   [[nodiscard]] Vector restrict_to_free(const Vector& full_values) const;

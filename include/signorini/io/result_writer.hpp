@@ -21,6 +21,16 @@ void write_results(const std::filesystem::path& outdir, const ContactResult& res
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec, const Resultants& resultants);
 
+/// One step of a loading history (problem/load_stepping.hpp): <outdir>/steps/solution_NNNN.vtu
+/// and contact_NNNN.csv (NNNN the step number from 0001), written as a set, and
+/// <outdir>/solution.pvd, the time series of the steps so far for ParaView (time = the step
+/// number), replaced after each step. Errors as write_results.
+void write_load_step(const std::filesystem::path& outdir, int step, const ContactResult& result,
+                     const Model& model);
+
+/// The file names of step `step` relative to the output folder ("steps/solution_0003.vtu").
+std::string load_step_file(const std::string& stem, int step, const std::string& extension);
+
 /// Creates a folder and its parents; throws InputError "cannot create output folder ...". Called
 /// by write_results; the tool also calls it before the solve, so that a bad -o fails fast.
 void create_output_folder(const std::filesystem::path& outdir);

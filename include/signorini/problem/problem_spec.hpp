@@ -151,6 +151,10 @@ struct ProblemSpec {
   /// The contact boundaries, each with its obstacle (at least one); their nodes form one
   /// contact set, in this order.
   std::vector<ContactSpec> contacts;
+  /// [loading]: the load factors of a loading history, each applied to every load and
+  /// prescribed displacement (not to the gaps), solved in turn and each step warm-started from
+  /// the last (friction's answer depends on the path). Empty: one solve at factor 1.
+  std::vector<double> load_factors;
   ContactSolverOptions solver;
 };
 

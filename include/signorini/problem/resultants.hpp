@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {
@@ -37,7 +38,9 @@ struct Resultants {
 /// with K u formed cell by cell (fem/elasticity_assembly.hpp internal_forces). With friction,
 /// `tangential` (ContactResult::tangential) adds the tangential contact forces.
 Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l,
-                              const Matrix& tangential = {});
+                              const Matrix& tangential = {}, double load_factor = 1.0);
+/// The resultants of a solution (its tangential forces and load factor included).
+Resultants compute_resultants(const Model& model, const ContactResult& result);
 
 /// A few lines for a terminal: the applied load, each reaction, the contact force, the balance.
 std::string resultants_report(const Resultants& r, int dim);

@@ -333,11 +333,14 @@ ContactResult ContactSolver::solve() {
     // The methods' layout (d values per node) split into the pressure and the tangential part.
     const Index k = c.components;
     const Vector flat = std::move(result.l);
+    const Vector rows = c.N * result.u - row_offsets(c);  // the slip on the tangential rows
     result.l.resize(c.size());
     result.tangential.resize(k - 1, c.size());
+    result.slip.resize(c.size());
     for (Index j = 0; j < c.size(); ++j) {
       result.l(j) = flat(k * j);
       result.tangential.col(j) = flat.segment(k * j + 1, k - 1);
+      result.slip(j) = rows.segment(k * j + 1, k - 1).norm();
     }
   }
   s.contact_force = c.weights.dot(result.l);

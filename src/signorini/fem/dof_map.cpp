@@ -84,8 +84,8 @@ void DofMap::finalize(const std::vector<Index>& node_order) {
   finalized_ = true;
 }
 
-Vector DofMap::expand(const Vector& free_values) const {
-  Vector full = values_.size() == 0 ? Vector::Zero(num_dofs()) : values_;
+Vector DofMap::expand(const Vector& free_values, double prescribed_scale) const {
+  Vector full = values_.size() == 0 ? Vector::Zero(num_dofs()) : Vector(prescribed_scale * values_);
   for (Index d = 0; d < num_dofs(); ++d) {
     const Index f = free_[static_cast<std::size_t>(d)];
     if (f >= 0) full(d) = free_values(f);

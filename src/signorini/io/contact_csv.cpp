@@ -32,16 +32,20 @@ struct FrictionColumns {
   [[nodiscard]] bool on() const { return model.friction != nullptr; }
   [[nodiscard]] std::string header() const {
     if (!on()) return "";
-    return model.mesh.dim() == 2 ? ",tangential,state" : ",tangential_x,tangential_y,tangential_z,state";
+    return model.mesh.dim() == 2 ? ",tangential,slip,state"
+                                 : ",tangential_x,tangential_y,tangential_z,slip,state";
   }
   [[nodiscard]] std::string row(Index j) const {
     if (!on()) return "";
     const std::string_view state =
         enum_to_string(kFrictionStateNames, states[static_cast<std::size_t>(j)]);
-    if (model.mesh.dim() == 2) return fmt::format(",{:.17g},{}", result.tangential(0, j) + 0.0, state);
+    const double slip = result.slip.size() > j ? result.slip(j) : 0.0;
+    if (model.mesh.dim() == 2)
+      return fmt::format(",{:.17g},{:.17g},{}", result.tangential(0, j) + 0.0, slip, state);
     const Eigen::MatrixXd basis = tangent_basis(model.problem.contact.normals.col(j));
     const Eigen::Vector3d t = basis * result.tangential.col(j);
-    return fmt::format(",{:.17g},{:.17g},{:.17g},{}", t(0) + 0.0, t(1) + 0.0, t(2) + 0.0, state);
+    return fmt::format(",{:.17g},{:.17g},{:.17g},{:.17g},{}", t(0) + 0.0, t(1) + 0.0, t(2) + 0.0,
+                       slip, state);
   }
 };
 
@@ -49,7 +53,7 @@ struct FrictionColumns {
 // the Cartesian vector u - u_n nu; no arc length.
 std::string contact_csv_3d(const ContactResult& result, const Model& model) {
   const ContactSet& c = model.problem.contact;
-  const Vector u = model.dofs.expand(result.u);
+  const Vector u = model.dofs.expand(result.u, result.load_factor);
   const FrictionColumns friction(model, result);
   std::string out =
       "x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary" + friction.header() + "\n";
@@ -79,7 +83,7 @@ std::string contact_csv(const ContactResult& result, const Model& model) {
   if (model.mesh.dim() == 3) return contact_csv_3d(result, model);
   const ContactSet& c = model.problem.contact;
   // result.u holds the free dofs only; expand() adds the prescribed values (0 for clamps).
-  const Vector u = model.dofs.expand(result.u);
+  const Vector u = model.dofs.expand(result.u, result.load_factor);
   const FrictionColumns friction(model, result);
   std::string out = "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary" + friction.header() + "\n";
   // s: the arc length along the contact nodes of each contact boundary in their order (chords

@@ -91,6 +91,10 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     emit_values(out, contact_values(c, c.description, dim));
     if (!c.surface_normal_text.empty()) out.value("surface_normal", c.surface_normal_text);
   }
+  if (!spec.load_factors.empty()) {
+    out.table("loading");
+    out.value("factors", spec.load_factors);
+  }
   out.table("solver");
   emit_options(out, contact_solver_option_table(), spec.solver);
   out.table("solver.linear");

@@ -653,6 +653,38 @@ ContactSpec read_contact_entry(const Reader& r, const Dimension& dim, const toml
   return contact;
 }
 
+// [loading] steps = N (factors k / N) or factors = [..]: the loading history.
+void read_loading(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+  const toml::table* t = r.table(root, "", "loading");
+  if (t == nullptr) return;
+  r.check_keys(*t, "loading");
+  const std::optional<std::int64_t> steps = r.integer(*t, "loading", "steps");
+  const toml::node* factors = t->get("factors");
+  if (steps && factors != nullptr)
+    r.fail_at(factors->source(), "loading.factors and loading.steps: give one of them");
+  if (steps) {
+    if (*steps < 1 || *steps > 100000)
+      r.out_of_range("loading.steps", std::to_string(*steps), "an integer from 1 to 100000",
+                     t->get("steps"));
+    for (std::int64_t k = 1; k <= *steps; ++k)
+      spec.load_factors.push_back(static_cast<double>(k) / static_cast<double>(*steps));
+    return;
+  }
+  if (factors == nullptr)
+    r.missing("loading.steps", "an integer >= 1 (or loading.factors, an array of numbers >= 0)");
+  const toml::array* a = factors->as_array();
+  if (a == nullptr || a->empty())
+    r.wrong_type("loading.factors", "a non-empty array of numbers >= 0", *factors);
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& n = *a->get(i);
+    const std::optional<double> v = n.value<double>();
+    const std::string key = fmt::format("loading.factors[{}]", i);
+    if (!v) r.wrong_type(key, "a number >= 0", n);
+    if (!(*v >= 0.0) || !std::isfinite(*v)) r.out_of_range(key, as_text(*v), "a finite number >= 0", &n);
+    spec.load_factors.push_back(*v);
+  }
+}
+
 // [contact] (one contact boundary) or [[contact]] (several, each with its obstacle).
 void read_contacts(const Reader& r, const Dimension& dim, const toml::table& root,
                    ProblemSpec& spec) {
@@ -765,6 +797,7 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   read_point_loads(r, dim, root, spec);
   read_body_force(r, dim, root, spec, texts);
   read_contacts(r, dim, root, spec);
+  read_loading(r, root, spec);
   read_solver(r, root, spec);
   check_memory(r, spec);
   out.effective_toml = effective_toml(spec, texts);

@@ -430,6 +430,22 @@ const OptionTable<P>& contact_options() {
   return table;
 }
 
+const OptionTable<P>& loading_options() {
+  static const OptionTable<P> table = [] {
+    OptionTable<P> t("loading");
+    t.custom("steps", "integer >= 1",
+             "proportional loading in this many equal steps: load factors 1/steps, 2/steps, .., "
+             "1 on every load and prescribed displacement (not on the gaps), each step "
+             "warm-started from the last")
+        .default_text("1 (without the section: one solve)");
+    t.custom("factors", "array of numbers >= 0",
+             "or a table of load factors, in the order they are applied (for example "
+             "`[0.5, 1, 0.5, 0]` loads and unloads); instead of `steps`");
+    return t;
+  }();
+  return table;
+}
+
 const std::vector<const OptionTableInfo*>& problem_schema() {
   static const std::vector<const OptionTableInfo*> tables = {&top_level_options(),
                                                              &mesh_options(),
@@ -443,6 +459,7 @@ const std::vector<const OptionTableInfo*>& problem_schema() {
                                                              &point_load_options(),
                                                              &body_force_options(),
                                                              &contact_options(),
+                                                             &loading_options(),
                                                              &contact_solver_option_table(),
                                                              &linear_solver_option_table()};
   return tables;

@@ -23,9 +23,27 @@ void create_output_folder(const std::filesystem::path& outdir) {
     throw InputError("cannot create output folder '" + outdir.string() + "': " + ec.message());
 }
 
+std::string load_step_file(const std::string& stem, int step, const std::string& extension) {
+  return fmt::format("steps/{}_{:04d}.{}", stem, step, extension);
+}
+
+void write_load_step(const std::filesystem::path& outdir, int step, const ContactResult& result,
+                     const Model& model) {
+  create_output_folder(outdir / "steps");
+  write_files_atomically({{outdir / load_step_file("solution", step, "vtu"), solution_vtu(result, model)},
+                          {outdir / load_step_file("contact", step, "csv"), contact_csv(result, model)}});
+  std::string pvd =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (int k = 1; k <= step; ++k)
+    pvd += fmt::format("  <DataSet timestep=\"{}\" part=\"0\" file=\"{}\"/>\n", k,
+                       load_step_file("solution", k, "vtu"));
+  pvd += "</Collection>\n</VTKFile>\n";
+  write_file_atomically(outdir / "solution.pvd", pvd);
+}
+
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec) {
-  write_results(outdir, result, model, spec, compute_resultants(model, result.u, result.l, result.tangential));
+  write_results(outdir, result, model, spec, compute_resultants(model, result));
 }
 
 namespace {

@@ -86,7 +86,7 @@ nlohmann::json options_json(const OptionTable<S>& table, const S& s) {
 
 nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
                                const ProblemSpec& spec) {
-  return summary_to_json(result, model, spec, compute_resultants(model, result.u, result.l, result.tangential));
+  return summary_to_json(result, model, spec, compute_resultants(model, result));
 }
 
 nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
@@ -111,6 +111,17 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   // the one linear solve of each, classical Uzawa steps), and the paper's names for the same.
   j["outer_iterations"] = summary.outer_iterations;
   j["uzawa_iterations"] = summary.outer_iterations;
+  if (!summary.load_steps.empty()) {
+    json steps = json::array();
+    for (const LoadStepRecord& s : summary.load_steps)
+      steps.push_back({{"factor", s.factor},
+                       {"converged", s.converged},
+                       {"outer_iterations", s.outer_iterations},
+                       {"n_active", s.active},
+                       {"contact_force", s.contact_force},
+                       {"seconds", s.seconds}});
+    j["load_steps"] = steps;
+  }
 
   json gnm = json::array(), armijo = json::array(), active = json::array(), dual = json::array(),
        linear = json::array(), factorizations = json::array(), updates = json::array();
@@ -231,6 +242,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     if (!c.surface_normal_text.empty()) contacts.back()["surface_normal"] = c.surface_normal_text;
   }
   problem["contact"] = contacts.size() == 1 ? contacts[0] : contacts;
+  if (!spec.load_factors.empty()) problem["loading"] = {{"factors", spec.load_factors}};
   problem["solver"] = options_json(contact_solver_option_table(), spec.solver);
   problem["solver"]["linear"] = options_json(linear_solver_option_table(), spec.solver.linear);
   j["problem"] = problem;
