@@ -1008,3 +1008,31 @@ TEST(ProblemFileLoading, BadLoadingGetsOneLineNamingTheKey) {
 
 }  // namespace
 }  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// [[clamp]] at: one pinned node, the nearest to the point (on the boundary, where one is named).
+TEST(ProblemFileClamp, AtPinsTheNearestNode) {
+  const std::string text =
+      with("[[clamp]]\nboundary = \"left\"\ncomponents = [\"x\", \"y\"]",
+           "[[clamp]]\nboundary = \"left\"\ncomponents = [\"x\"]\n[[clamp]]\nat = [0.1, 0.05]\n"
+           "components = [\"y\"]");
+  const LoadedProblem loaded = parse_problem_string(text, "t.toml");
+  ASSERT_EQ(loaded.spec.clamps.size(), 2U);
+  ASSERT_TRUE(loaded.spec.clamps[1].at.has_value());
+  EXPECT_CONTAINS(loaded.effective_toml, "at = [0.1, 0.05]");
+  const Model model = build_model(loaded.spec);
+  // The node at the origin (nearest to (0.1, 0.05) on this 6 x 2 mesh of (0, 3) x (0, 1)).
+  EXPECT_TRUE(model.dofs.is_clamped(0, 1));
+  EXPECT_FALSE(model.dofs.is_clamped(1, 1));
+  ASSERT_EQ(model.clamped_parts.size(), 2U);
+  EXPECT_EQ(model.clamped_parts[1].boundary, "at (0.1, 0.05)");
+  EXPECT_EQ(model.clamped_parts[1].dofs.size(), 1U);
+  EXPECT_CONTAINS(error_of(with("[[clamp]]\nboundary = \"left\"\ncomponents = [\"x\", \"y\"]",
+                                "[[clamp]]\ncomponents = [\"x\", \"y\"]")),
+                  "clamp[0].boundary");
+}
+
+}  // namespace
+}  // namespace signorini

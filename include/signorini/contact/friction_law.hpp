@@ -70,7 +70,8 @@ inline constexpr EnumNames<FrictionState, 3> kFrictionStateNames{{
 
 /// Per node from the pressure l_n and the tangential multipliers l_t (ContactResult::l and
 /// ::tangential): separated where l_n = 0 (and l_t = 0), sliding where |l_t| reaches the slip
-/// bound (to 1e-8 relative; a zero bound slides freely), sticking otherwise.
+/// bound (to 1e-6 relative, above the solver's tolerances; a zero bound slides freely),
+/// sticking otherwise.
 [[nodiscard]] std::vector<FrictionState> friction_states(const FrictionLaw& law,
                                                          const Vector& pressure,
                                                          const Matrix& tangential);

@@ -4,6 +4,7 @@
 // directly.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ namespace signorini {
 struct ClampSpec {
   std::string boundary;
   std::array<bool, 3> components{true, true, true};
+  /// A pinned node instead of a whole part: the node nearest to this point (on `boundary` when
+  /// that is given too), as a point load is placed.
+  std::optional<Point> at;
+  /// What the reactions call it: the boundary, or "at (x, y)" for a pinned node.
+  [[nodiscard]] std::string name() const;
 };
 
 /// u_k = value_k(x) on a boundary part for the components given (a prescribed displacement, a

@@ -76,7 +76,7 @@ std::vector<FrictionState> friction_states(const FrictionLaw& law, const Vector&
     const double t = tangential.col(j).norm();
     if (!(pressure(j) > 0.0) && t == 0.0) continue;
     states[static_cast<std::size_t>(j)] =
-        t >= bound(j) * (1.0 - 1e-8) ? FrictionState::Sliding : FrictionState::Sticking;
+        t >= bound(j) * (1.0 - 1e-6) ? FrictionState::Sliding : FrictionState::Sticking;
   }
   return states;
 }

@@ -44,7 +44,11 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   emit_options(out, fem_options(), spec);
   for (const ClampSpec& c : spec.clamps) {
     out.array_table("clamp");
-    out.value("boundary", c.boundary);
+    if (!c.boundary.empty()) out.value("boundary", c.boundary);
+    if (c.at)
+      out.value("at", std::vector<double>(
+                          c.at->data(),
+                          c.at->data() + (dim == 3 || (dim == 0 && (*c.at)(2) != 0.0) ? 3 : 2)));
     std::vector<std::string> components;
     if (c.components[0]) components.emplace_back("x");
     if (c.components[1]) components.emplace_back("y");

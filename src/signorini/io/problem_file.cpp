@@ -281,7 +281,13 @@ void read_clamps(const Reader& r, const Dimension& dim, const toml::table& root,
     const std::string path = element("clamp", i);
     r.check_keys(t, path);
     ClampSpec c;
-    c.boundary = boundary_of(r, t, path);
+    if (t.contains("at")) {  // a pinned node: the boundary, if given, says where to look
+      c.at = required_point(r, dim, t, path, "at",
+                            "[x, y] ([x, y, z] in 3D): the point whose nearest node is held");
+      c.boundary = r.string(t, path, "boundary").value_or("");
+    } else {
+      c.boundary = boundary_of(r, t, path);
+    }
     if (const toml::node* n = t.get("components")) {
       const std::string key = join(path, "components");
       // z in a 2D problem is refused as any other name; on a Gmsh mesh it implies 3D.

@@ -261,11 +261,15 @@ const OptionTable<P>& clamp_options() {
              "a boundary part: `left`, `right`, `bottom`, `top` of a rectangle, `xmin`, `xmax`, "
              "`ymin`, `ymax`, `zmin`, `zmax` of a box, or a physical curve (surface in 3D) of a "
              "Gmsh mesh")
-        .required();
+        .default_text("required, unless `at` is given");
     t.custom("components", "array of `\"x\"`, `\"y\"`, `\"z\"` (3D)",
              "the displacement components held at 0 (`[\"x\"]`: a roller that slides along y, "
              "and z in 3D)")
         .default_text("every component: `[\"x\", \"y\"]`, in 3D `[\"x\", \"y\", \"z\"]`");
+    t.custom("at", "array of 2 (3 in 3D) numbers",
+             "a pinned node instead of a whole part: the node nearest to this point (on "
+             "`boundary`, where that is given too) is held in `components`")
+        .unit("L");
     return t;
   }();
   return table;

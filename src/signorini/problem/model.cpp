@@ -73,7 +73,14 @@ DofMap number_dofs(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
     return owner[static_cast<std::size_t>(node * mesh.dim() + k)];
   };
   for (std::size_t c = 0; c < clamps.size(); ++c) {
-    const auto nodes = mesh.boundary_part_nodes(clamps[c].boundary);  // throws on unknown names
+    std::vector<Index> nodes;
+    if (!clamps[c].boundary.empty())
+      nodes = mesh.boundary_part_nodes(clamps[c].boundary);  // throws on unknown names
+    if (clamps[c].at) {  // a pinned node: the nearest one (of the part, where one is named)
+      if (!clamps[c].at->allFinite())
+        throw InputError(fmt::format("clamp[{}].at: expected finite coordinates", c));
+      nodes = {nearest_node(mesh, *clamps[c].at, nodes)};
+    }
     for (const Index node : nodes)
       for (int k = 0; k < mesh.dim(); ++k) {
         if (!clamps[c].components[static_cast<std::size_t>(k)]) continue;
@@ -135,7 +142,7 @@ std::vector<ClampedPart> clamped_parts(const std::vector<ClampSpec>& clamps,
                                        const std::vector<DisplacementSpec>& displacements,
                                        const std::vector<int>& owner) {
   std::vector<ClampedPart> parts;
-  for (const ClampSpec& c : clamps) parts.push_back({c.boundary, {}});
+  for (const ClampSpec& c : clamps) parts.push_back({c.name(), {}});
   for (const DisplacementSpec& d : displacements) parts.push_back({d.boundary, {}});
   for (std::size_t dof = 0; dof < owner.size(); ++dof)
     if (owner[dof] >= 0)
@@ -173,6 +180,12 @@ void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs) {
       "cannot hold a body by itself (the foundation only pushes, never along its surface); "
       "clamp more components ([[clamp]] components = [\"x\", \"y\"]) or another boundary part",
       free.size() == 1 ? "a rigid motion" : fmt::format("{} rigid motions", free.size()), list));
+}
+
+std::string ClampSpec::name() const {
+  if (!at) return boundary;
+  if ((*at)(2) == 0.0) return fmt::format("at ({:g}, {:g})", (*at)(0), (*at)(1));
+  return fmt::format("at ({:g}, {:g}, {:g})", (*at)(0), (*at)(1), (*at)(2));
 }
 
 namespace {
