@@ -13,7 +13,8 @@ int run_plot(const PlotArguments& args) {
   if (run.status == 0) {
     std::string files;
     for (const std::string& f :
-         figure_files(args.options.formats, result_dimension(args.output_dir)))
+         figure_files(args.options.formats, result_dimension(args.output_dir),
+                      result_has_friction(args.output_dir)))
       files += (files.empty() ? "" : ", ") + args.output_dir + "/" + f;
     fmt::print("figures: {}\n", files);
     return kSuccess;

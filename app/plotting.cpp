@@ -42,7 +42,7 @@ std::string find_script() {
 
 }  // namespace
 
-std::vector<std::string> figure_files(const std::string& formats, int dimension) {
+std::vector<std::string> figure_files(const std::string& formats, int dimension, bool friction) {
   // As the script reads --format: lower case, spaces ignored, each format once.
   std::vector<std::string> chosen;
   std::size_t start = 0;
@@ -61,25 +61,39 @@ std::vector<std::string> figure_files(const std::string& formats, int dimension)
           ? std::vector<const char*>{"contact_pressure_map", "contact_pressure", "convergence"}
           : std::vector<const char*>{"contact_displacement", "contact_pressure",
                                      "deformed_von_mises", "convergence"};
-  for (const char* name : names)
+  std::vector<const char*> all = names;
+  if (friction && dimension == 2) all.push_back("contact_friction");
+  for (const char* name : all)
     for (const std::string& format : chosen) files.push_back(fmt::format("{}.{}", name, format));
   return files;
 }
 
-int result_dimension(const std::string& outdir) {
+namespace {
+// Whether contact.csv's header in `outdir` has the column `name` (false when it cannot be read:
+// the script says why).
+bool has_column(const std::string& outdir, const std::string& name) {
   std::ifstream in(std::filesystem::path(outdir) / "contact.csv");
   std::string header;
-  if (!in || !std::getline(in, header)) return 2;
+  if (!in || !std::getline(in, header)) return false;
   std::size_t start = 0;
   while (start <= header.size()) {
     const std::size_t end = std::min(header.find(',', start), header.size());
     std::string column;
     for (const char c : header.substr(start, end - start))
       if (!std::isspace(static_cast<unsigned char>(c))) column += c;
-    if (column == "z") return 3;
+    if (column == name) return true;
     start = end + 1;
   }
-  return 2;
+  return false;
+}
+}  // namespace
+
+int result_dimension(const std::string& outdir) {
+  return has_column(outdir, "z") ? 3 : 2;
+}
+
+bool result_has_friction(const std::string& outdir) {
+  return has_column(outdir, "state");
 }
 
 PlotRun run_plot_script(const std::vector<std::string>& arguments, bool capture) {

@@ -23,12 +23,18 @@ struct PlotOptions {
 };
 
 /// The files the script writes into the output folder for `formats` (as PlotOptions::formats)
-/// and the problem's dimension (2 or 3), in the order of docs/output.md.
-std::vector<std::string> figure_files(const std::string& formats, int dimension);
+/// and the problem's dimension (2 or 3), in the order of docs/output.md; `friction`: the 2D
+/// results have friction's columns, and contact_friction is drawn too.
+std::vector<std::string> figure_files(const std::string& formats, int dimension,
+                                      bool friction = false);
 
 /// The dimension of the results in `outdir`, as the script decides it: 3 if contact.csv has a z
 /// column, else 2 (also when it cannot be read: the script says why).
 int result_dimension(const std::string& outdir);
+
+/// Whether contact.csv in `outdir` has friction's columns (a `state` column), as the script
+/// decides it.
+bool result_has_friction(const std::string& outdir);
 
 /// How the script ended: its exit status (0 done, 2 a missing package or an unusable folder,
 /// which it reports on stderr in one line, 1 a failure of the script) and, when captured, what it

@@ -16,6 +16,9 @@ OUTDIR/summary.json, contact.csv and solution.vtu and writes, as PNG (and SVG or
     contact_pressure       the contact pressure along the contact boundary, where the body touches
     deformed_von_mises     the deformed body x + s u(x) coloured by the von Mises stress
     convergence            the Uzawa residual per iteration and GNM iterations per Uzawa step
+    contact_friction       with friction (contact.csv with the columns tangential, slip, state):
+                           the pressure, the tangential traction and the slip along the contact
+                           boundary, the sticking and sliding zones shaded
 
 and for a 3D problem (contact.csv with a z column):
 
@@ -233,8 +236,10 @@ def read_contact_csv(outdir):
         with open(path, newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
         header = [h.strip() for h in rows[0]] if rows else []
-        # Every column is a number but the boundary's name (a text column of newer files).
-        text = [k for k, h in enumerate(header) if h == "boundary"]
+        # Every column is a number but the boundary's name (a text column of newer files) and
+        # friction's node state.
+        text = [k for k, h in enumerate(header) if h in ("boundary", "state")]
+        boundary = [k for k, h in enumerate(header) if h == "boundary"]
         body = np.array([[0.0 if k in text else float(v) for k, v in enumerate(r)]
                          for r in rows[1:] if r], dtype=float)
         if body.size == 0:
@@ -250,8 +255,12 @@ def read_contact_csv(outdir):
             columns = {k: body[:, header.index(k)]
                        for k in ("x", "y", "u_n", "u_t", "pressure", "gap")}
         # The contact boundary of each row (one name in files of one boundary or older ones).
-        names = ([r[text[0]] for r in rows[1:] if r] if text else [""] * len(body))
+        names = ([r[boundary[0]] for r in rows[1:] if r] if boundary else [""] * len(body))
         columns["boundary"] = names
+        if "state" in header and "z" not in header:  # 2D friction
+            columns["tangential"] = body[:, header.index("tangential")]
+            columns["slip"] = body[:, header.index("slip")]
+            columns["state"] = [r[header.index("state")].strip() for r in rows[1:] if r]
         if "z" in header:
             pass  # the normal was read above
         elif "n_x" in header and "n_y" in header:
@@ -268,6 +277,17 @@ def read_contact_csv(outdir):
     if len(body) == 0:
         raise UsageError(f"'{path}' has no contact nodes")
     return columns
+
+
+def contact_friction(outdir):
+    """True if contact.csv has friction's columns (a `state` column), read before numpy is
+    imported."""
+    try:
+        with open(os.path.join(outdir, "contact.csv"), encoding="utf-8") as f:
+            header = [h.strip() for h in f.readline().split(",")]
+    except OSError:
+        return False
+    return "state" in header
 
 
 def contact_dimension(outdir):
@@ -612,6 +632,22 @@ def place_single(fig, ax, measure, title):
         place(fig, ax, left, bottom, w - left - right, h - bottom - top - offset)
 
 
+def place_with_right_axis(fig, ax, right, measure, title):
+    """place_single for axes with a second y axis on the right (`right`, ax.twinx()): room for
+    its tick labels and label too."""
+    w, h = fig.get_size_inches() * 72.0
+    top = BORDER + measure.height(title) + TITLE_PAD
+    for _ in range(2):
+        left, offset = measure.left(ax)
+        room, right_offset = measure.left(right)
+        bottom, _ = measure.bottom(ax)
+        left += BORDER
+        bottom += BORDER
+        place(fig, ax, left, bottom, w - left - BORDER - room,
+              h - bottom - top - max(offset, right_offset))
+        right.set_position(ax.get_position())
+
+
 def legend_columns(measure, labels, width, most=4):
     """(columns, rows, height) of a frameless legend of `labels` that fits `width` points."""
     em = LEGEND_SIZE
@@ -740,6 +776,63 @@ def figure_pressure(summary, contact, units, measure):
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=LEGEND_SIZE, loc="best")
     place_single(fig, ax, measure, title)
+    return fig, describe_limits(ax, scale)
+
+
+def shade_states(ax, t, states):
+    """The sticking and the sliding nodes' zones, each run extended half a spacing either side."""
+    for state, color, text in (("sticking", "tab:green", "sticking"),
+                               ("sliding", "tab:purple", "sliding")):
+        for i, (lo, hi) in enumerate(contact_intervals(t, [s == state for s in states])):
+            ax.axvspan(lo, hi, color=color, alpha=0.13, lw=0, label=text if i == 0 else None)
+
+
+def figure_friction(summary, contact, units, measure):
+    """2D friction: the pressure, the tangential traction (signed, along tau) and its bound where
+    the node slides, and the slip on a second axis, with the stick and slip zones shaded."""
+    import numpy as np
+
+    t, xlabel = contact["t"], contact["t_label"]
+    p, q, slip = contact["pressure"], contact["tangential"], contact["slip"]
+    states = contact["state"]
+    k = power_of_ten(np.concatenate([p, np.abs(q)]))
+    scale = 10.0 ** k
+    fig = new_figure(8, 4.5)
+    ax = fig.add_axes([0.1, 0.1, 0.75, 0.8])
+    shade_states(ax, t, states)
+    for i, (name, rows) in enumerate(contact["parts"]):
+        on = f" on '{name}'" if len(contact["parts"]) > 1 else ""
+        style = STYLES[i % len(STYLES)]
+        ax.plot(t[rows], p[rows] / scale, color="tab:red", lw=2.6, ls=style,
+                label="contact pressure" + on if i == 0 or on else None)
+        ax.plot(t[rows], q[rows] / scale, color="tab:blue", lw=1.4, ls=style,
+                label="tangential traction (along the slip where sliding)" + on
+                if i == 0 or on else None)
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(axis_label("traction", units.stress, k))
+    ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
+    right = ax.twinx()
+    ks = power_of_ten(slip)
+    right.plot(t, slip / 10.0 ** ks, color="black", lw=1.0, ls=(0, (4, 2)),
+               label="slip (accumulated)")
+    right.set_ylabel(axis_label("slip", units.length, ks))
+    right.set_ylim(bottom=0.0, top=max(float(np.nanmax(slip)) / 10.0 ** ks, 1e-300) * 1.1)
+    friction = summary.get("friction", {})
+    counts = ", ".join(f"{friction[s]} {s}" for s in ("sticking", "sliding", "separated")
+                       if isinstance(friction.get(s), int))
+    subtitle = f"Friction ({friction.get('law', '?')}) along the contact boundary" + \
+        (f": {counts}" if counts else "")
+    steps = summary.get("load_steps")
+    if isinstance(steps, list) and steps:
+        subtitle += f", load step {len(steps)} (factor {steps[-1].get('factor', 1):g})"
+    title = wrapped(title_of(summary) + "\n" + subtitle, 8)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
+    ax.grid(True, alpha=0.3)
+    handles, labels = ax.get_legend_handles_labels()
+    more, more_labels = right.get_legend_handles_labels()
+    ax.legend(handles + more, labels + more_labels, fontsize=LEGEND_SIZE, loc="best")
+    place_with_right_axis(fig, ax, right, measure, title)
     return fig, describe_limits(ax, scale)
 
 
@@ -1442,6 +1535,8 @@ def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(Non
                 summary, read_vtu(os.path.join(outdir, "solution.vtu")), contact, scale, units,
                 measure),
         }
+        if "state" in contact:
+            makers["contact_friction"] = lambda: figure_friction(summary, contact, units, measure)
     makers["convergence"] = lambda: figure_convergence(summary, measure)
     drawn = []
     while (name := next_figure()) is not None:
@@ -1463,8 +1558,10 @@ ORDER = ["deformed_von_mises", "convergence", "contact_displacement", "contact_p
 ORDER_3D = ["contact_pressure_map", "convergence", "contact_pressure"]
 
 
-def order_of(dimension):
-    return ORDER_3D if dimension == 3 else ORDER
+def order_of(dimension, friction=False):
+    if dimension == 3:
+        return ORDER_3D
+    return ORDER + ["contact_friction"] if friction else ORDER
 
 
 class Helper:
@@ -1572,7 +1669,8 @@ def save_all(outdir, scale, quiet, formats, hertz=(None, 1)):
     failure leaves no half-written picture and keeps the pictures of an earlier run. With two
     cores or more, two processes draw the figures (about half of the time)."""
     dimension = contact_dimension(outdir)
-    order = order_of(dimension)
+    friction = contact_friction(outdir)
+    order = order_of(dimension, friction)
     helper = None
     if cores() >= 2 and hasattr(os, "fork"):
         helper = Helper(outdir, scale, formats, order, hertz)
@@ -1603,7 +1701,9 @@ def save_all(outdir, scale, quiet, formats, hertz=(None, 1)):
                 os.unlink(tmp)
     if not quiet:
         print("figures: " + ", ".join(os.path.join(outdir, f"{n}.{fmt}")
-                                      for n in (FIGURES_3D if dimension == 3 else FIGURES)
+                                      for n in (FIGURES_3D if dimension == 3 else
+                                                FIGURES + (["contact_friction"] if friction
+                                                           else []))
                                       for fmt in formats))
 
 
