@@ -89,6 +89,30 @@ TEST(FrictionTool, CoulombExampleMeetsTheLawNodeByNode) {
   EXPECT_GT(sliding, 5);
 }
 
+// The three methods from the tool on the same discrete problem: the pressures and tangential
+// tractions agree to 1e-8 of the peak pressure.
+TEST(FrictionTool, ThreeMethodsAgree) {
+  const testing::TemporaryFolder dir;
+  const std::string small = "--set mesh.nx=60 --set mesh.ny=20 --set solver.uzawa_tolerance=1e-12 ";
+  const ToolResult gnm = solve(dir, "gnm", small);
+  const ToolResult ssn =
+      solve(dir, "ssn", small + "--set " + quoted("solver.method=\"semismooth_newton\""));
+  const ToolResult classical =
+      solve(dir, "classical", small + "--set " + quoted("solver.method=\"classical_uzawa\""));
+  double peak = 0.0;
+  for (const ToolResult* r : {&gnm, &ssn, &classical}) {
+    EXPECT_TRUE(r->summary["converged"].get<bool>()) << r->summary["message"];
+    ASSERT_EQ(r->rows.size(), gnm.rows.size());
+  }
+  for (const Row& r : gnm.rows) peak = std::max(peak, r.pressure);
+  EXPECT_EQ(ssn.summary["method"], "semismooth_newton");
+  for (std::size_t j = 0; j < gnm.rows.size(); ++j)
+    for (const ToolResult* r : {&ssn, &classical}) {
+      EXPECT_NEAR(r->rows[j].pressure, gnm.rows[j].pressure, 1e-8 * peak) << j;
+      EXPECT_NEAR(r->rows[j].tangential, gnm.rows[j].tangential, 1e-8 * peak) << j;
+    }
+}
+
 TEST(FrictionTool, ZeroFrictionIsTheFrictionlessRun) {
   const testing::TemporaryFolder dir;
   const ToolResult zero = solve(dir, "zero", "--set contact.mu=0");

@@ -40,6 +40,11 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
                                          const ContactSolverOptions& options,
                                          const MethodStart& start = {},
                                          const MultigridHierarchy* multigrid = nullptr);
+/// Semismooth Newton on a frictional problem (contact.components > 1): friction_ssn.hpp on the
+/// whole KKT system, from start (u, l with d values per node) or the frictionless solution.
+ContactResult solve_friction_semismooth_newton(const ContactProblem& problem,
+                                               const ContactSolverOptions& options,
+                                               const MethodStart& start = {});
 /// Starts from the active set {l_j > 0} of start.l (empty: no node active).
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options,

@@ -136,7 +136,8 @@ void validate(const ContactSolverOptions& o) {
         "iterative; set solver.linear.type = \"cg\" (and solver.linear.preconditioner = "
         "\"multigrid\" for speed)",
         enum_to_string(kLinearSolverTypeNames, o.linear.type)));
-  if (o.method == ContactMethod::SemismoothNewton && &contact_law(o) != &unilateral_contact_law())
+  if (o.method == ContactMethod::SemismoothNewton && &contact_law(o) != &unilateral_contact_law() &&
+      contact_law(o).components() == 1)
     throw InputError(fmt::format(
         "solver.method = \"semismooth_newton\" solves the unilateral contact law only, not "
         "\"{}\"; use \"uzawa_gnm\"",

@@ -1,10 +1,13 @@
 #include "signorini/contact/friction_ssn.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <stdexcept>
 
+#include "signorini/contact/contact_methods.hpp"
 #include "signorini/contact/friction_projection.hpp"
 #include "signorini/core/error.hpp"
 
@@ -13,22 +16,32 @@ namespace signorini {
 FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix& T,
                                      const FrictionLawSpec& law, const FrictionSsnOptions& o) {
   const ContactSet& cs = p.contact;
-  const Index n = p.A.rows(), nc = cs.size();
+  const Index nc = cs.size();
   if (nc == 0) throw InputError("friction: no contact nodes");
-  if (p.partitioned())
-    throw InputError("friction: a partitioned problem (the distributed path) is not supported");
-  if (T.rows() % nc != 0 || T.cols() != n)
+  if (T.rows() % nc != 0 || T.cols() != p.A.rows())
     throw InputError("friction: T must have (dim - 1) rows per contact node over the free dofs");
   const Index d = 1 + T.rows() / nc;
   if (d < 2 || d > 3) throw InputError("friction: 1 or 2 tangential rows per contact node");
   if (law.bound.size() != nc || !(law.bound.array() >= 0.0).all() || !law.bound.allFinite())
     throw InputError("friction: one finite bound >= 0 (s or mu) per contact node expected");
+  ContactProblem frictional = p;
+  add_tangential_rows(frictional.contact, T);
+  return solve_friction_ssn(frictional, FrictionLaw(law.kind, static_cast<int>(d), law.bound), o);
+}
 
-  // B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. its tangential rows.
-  ContactSet rows = cs;
-  add_tangential_rows(rows, T);
-  const SparseMatrix& B = rows.N;
-  const Vector g_hat = row_offsets(rows);
+FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw& law,
+                                     const FrictionSsnOptions& o, const Vector& u0,
+                                     const Vector& l0) {
+  const ContactSet& cs = p.contact;
+  const Index n = p.A.rows(), nc = cs.size(), d = cs.components;
+  if (nc == 0) throw InputError("friction: no contact nodes");
+  if (p.partitioned())
+    throw InputError("friction: a partitioned problem (the distributed path) is not supported");
+  if (d < 2 || law.components() != d || law.size() != nc)
+    throw InputError("friction: a frictional contact set and its law (one bound per node)");
+  // B = [N; T] node by node: row d j the normal, rows d j + 1 .. the tangents.
+  const SparseMatrix& B = cs.N;
+  const Vector g_hat = row_offsets(cs);
   Vector w(d * nc);
   for (Index j = 0; j < nc; ++j) w.segment(d * j, d).setConstant(cs.weights(j));
   const SparseMatrix BtW = SparseMatrix(B.transpose()) * w.asDiagonal();
@@ -37,13 +50,17 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
 
   FrictionSsnResult r;
   Vector lambda = Vector::Zero(d * nc);
-  if (law.bound.size() > 0 && law.bound.maxCoeff() > 0.0) {
+  const bool frictional = law.slip_bound().size() > 0 &&
+                          (law.slip_bound().maxCoeff() > 0.0 || law.mu().maxCoeff() > 0.0);
+  if (u0.size() == n && l0.size() == d * nc) {
+    r.u = u0;
+    lambda = l0;
+  } else if (frictional) {
     // From the frictionless solution (the same law with zero bounds): from x = A^-1 b the plain
     // iteration stalls on some frictional problems (Tresca with bounds of 2 times a pressure on
     // the paper's problem), from the frictionless one it does not.
-    FrictionLawSpec frictionless = law;
-    frictionless.bound.setZero();
-    const FrictionSsnResult start = solve_friction_ssn(p, T, frictionless, o);
+    const FrictionLaw frictionless(static_cast<int>(d), Vector::Zero(nc), Vector::Zero(nc));
+    const FrictionSsnResult start = solve_friction_ssn(p, frictionless, o);
     r.u = start.u;
     lambda = Eigen::Map<const Vector>(start.force.data(), d * nc);
   } else {
@@ -70,9 +87,8 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
       Eigen::MatrixXd D = Eigen::MatrixXd::Zero(d, d);
       if (cs.movable[static_cast<std::size_t>(j)]) {
         const Eigen::VectorXd zj = z.segment(d * j, d);
-        const FrictionProjection pj = law.kind == FrictionKind::Tresca
-                                          ? project_tresca(zj, law.bound(j))
-                                          : project_coulomb(zj, law.bound(j));
+        const FrictionProjection pj = law.mu()(j) > 0.0 ? project_coulomb(zj, law.mu()(j))
+                                                        : project_tresca(zj, law.slip_bound()(j));
         projected.segment(d * j, d) = pj.force;
         D = pj.derivative;
         r.in_contact[static_cast<std::size_t>(j)] = pj.in_contact;
@@ -119,6 +135,7 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
   for (r.iterations = 0; r.iterations <= o.max_iterations; ++r.iterations) {
     std::vector<Eigen::Triplet<double>> jac = fixed_rows;
     const State st = evaluate(r.u, lambda, &jac);
+    r.history.push_back(std::max(r.equilibrium, r.projection));
     if (r.equilibrium <= o.tolerance && r.projection <= o.tolerance) {
       r.converged = true;
       break;
@@ -144,6 +161,54 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
   }
   r.force = Eigen::Map<const Eigen::MatrixXd>(lambda.data(), d, nc);
   return r;
+}
+
+ContactResult solve_friction_semismooth_newton(const ContactProblem& problem,
+                                               const ContactSolverOptions& options,
+                                               const MethodStart& start) {
+  const auto* law = dynamic_cast<const FrictionLaw*>(&contact_law(options));
+  if (law == nullptr) throw InputError("friction: semismooth Newton needs a FrictionLaw");
+  FrictionSsnOptions o;
+  o.max_iterations = options.max_newton_iterations;
+  // The complementarity constant: the augmentation parameter r of the other methods (a
+  // stiffness per area of the contact boundary, method.md section 7).
+  if (options.r) o.c = *options.r;
+  const Index rows = problem.contact.N.rows();
+  TimingTable timings;
+  ScopedTimer timer(timings, "semismooth newton");
+  const FrictionSsnResult r =
+      solve_friction_ssn(problem, *law, o, start.displacement(problem.A.rows()),
+                         start.l.size() == rows ? start.l : Vector());
+  timer.stop();
+  ContactResult out;
+  out.u = r.u;
+  out.l = Eigen::Map<const Vector>(r.force.data(), rows);
+  SolveSummary& s = out.summary;
+  s.timings = std::move(timings);
+  for (std::size_t k = 1; k < r.history.size(); ++k) {
+    OuterStepRecord rec;
+    rec.inner_iterations = 1;
+    rec.factorizations = 1;  // a sparse LU of the KKT matrix per step
+    rec.dual_change = r.history[k];
+    s.steps.push_back(rec);
+  }
+  Index in_contact = 0;
+  for (const bool c : r.in_contact) in_contact += c ? 1 : 0;
+  if (!s.steps.empty()) s.steps.back().active_set_size = in_contact;
+  if (r.converged) {
+    s.termination = Termination::Converged;
+    s.message = fmt::format(
+        "KKT residuals {:.1e} (equilibrium) and {:.1e} (projection) below {:.0e} after {} "
+        "semismooth Newton steps on the KKT system",
+        r.equilibrium, r.projection, o.tolerance, r.iterations);
+  } else {
+    s.termination = Termination::IterationLimit;
+    s.message = fmt::format(
+        "semismooth Newton (friction) did not converge in {} steps: equilibrium {:.3e}, "
+        "projection {:.3e} (tolerance {:.0e})",
+        r.iterations, r.equilibrium, r.projection, o.tolerance);
+  }
+  return out;
 }
 
 }  // namespace signorini

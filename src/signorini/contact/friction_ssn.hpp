@@ -14,14 +14,15 @@
 // lambda_j = 0. A frictional law starts from the frictionless solution (the same law with zero
 // bounds), and each step is halved until the residual decreases.
 //
-// Status: library only, for small and medium problems (a sparse LU of the whole KKT matrix at
-// each step); no problem-file or tool access yet. On the paper's problem it converges for
-// Coulomb up to mu = 2 and fails at mu = 5 (tests/contact/friction_ssn_test.cpp): a better
-// globalisation is still to come.
+// It is `solver.method = "semismooth_newton"` for a frictional problem (contact_methods.hpp),
+// for small and medium problems (a sparse LU of the whole KKT matrix at each step). On the
+// paper's problem it converges for Coulomb up to mu = 2 and fails at mu = 5
+// (tests/contact/friction_ssn_test.cpp): a better globalisation is still to come.
 
 #include <vector>
 
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/friction_law.hpp"
 
 namespace signorini {
@@ -49,6 +50,7 @@ struct FrictionSsnResult {
   double equilibrium = 0.0;  ///< ||A u - b + B^T W lambda|| / ||b||
   double projection = 0.0;   ///< ||lambda - P(z)|| / ||lambda||
   bool converged = false;
+  std::vector<double> history;  ///< max(equilibrium, projection) at each iterate, the start first
 };
 
 /// `T`: the tangential rows (fem/contact_tangents.hpp, tangential_operator).
@@ -56,5 +58,14 @@ struct FrictionSsnResult {
                                                    const SparseMatrix& T,
                                                    const FrictionLawSpec& law,
                                                    const FrictionSsnOptions& options = {});
+
+/// The same on a frictional problem (its contact set with the tangential rows in N,
+/// add_tangential_rows) with a law per node (Tresca's s_j or Coulomb's mu_j; the slip origin of
+/// the set honoured). `u0`, `l0` (d values per node): a start instead of the frictionless
+/// solution (empty: that).
+[[nodiscard]] FrictionSsnResult solve_friction_ssn(const ContactProblem& frictional,
+                                                   const FrictionLaw& law,
+                                                   const FrictionSsnOptions& options = {},
+                                                   const Vector& u0 = {}, const Vector& l0 = {});
 
 }  // namespace signorini

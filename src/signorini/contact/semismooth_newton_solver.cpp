@@ -342,6 +342,8 @@ void run_semismooth_newton(const ContactProblem& problem, const ContactSolverOpt
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options,
                                       const MethodStart& start) {
+  if (problem.contact.components > 1)
+    return solve_friction_semismooth_newton(problem, options, start);
   ContactResult out;
   std::unique_ptr<ActiveSetSolver> solver;
   if (options.linear.type == LinearSolverType::Dense && DelassusSolver::applies(problem))

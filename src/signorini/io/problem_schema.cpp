@@ -420,8 +420,8 @@ const OptionTable<P>& contact_options() {
     t.custom("friction", "`\"none\"`, `\"tresca\"` or `\"coulomb\"`",
              "friction on this boundary: none (the paper's frictionless contact); Tresca's, the "
              "tangential traction bounded by `slip_bound`; Coulomb's, bounded by `mu` times the "
-             "contact pressure. Solved by `uzawa_gnm` or `classical_uzawa` on the sparse direct "
-             "path ([method.md](method.md), \"Friction\")")
+             "contact pressure. Solved by `uzawa_gnm`, `semismooth_newton` or `classical_uzawa` on "
+             "the sparse direct path ([method.md](method.md), \"Friction\")")
         .default_text("`\"none\"`");
     t.custom("slip_bound", "expression of x, y, z, >= 0",
              "Tresca: the slip bound s(x), the tangential traction at which the boundary slides")
