@@ -140,6 +140,36 @@ TEST(FrictionUzawaGnm, CoulombAndTrescaAgreeWithSemismoothNewtonIn3D) {
   EXPECT_LT(relative(t.u, ref.u), 1e-8);
 }
 
+// The backend path (CG with the multigrid V-cycle): in 2D the active rows, in 3D the nodes'
+// blocks as weights of H, the coarse levels with their diagonal; the same solution as the sparse
+// direct path to the CG tolerance.
+TEST(FrictionUzawaGnm, MultigridPathAgreesWithTheDirectOne) {
+  for (const bool three_d : {false, true}) {
+    // The model with its multigrid hierarchy (the options ask for it).
+    ProblemSpec spec = three_d ? testing::ball_on_block(12, 3e-2) : paper_benchmark(60, 20);
+    spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+    spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+    const Frictional p(spec);
+    ASSERT_GT(p.model.multigrid.prolongations.size(), 0U);
+    const Index nc = p.problem.contact.size();
+    const FrictionLaw law(FrictionKind::Coulomb, p.dim(),
+                          Vector::Constant(nc, three_d ? 0.2 : 0.5));
+    const ContactResult direct = p.solve(law, ContactMethod::UzawaGnm);
+    ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;
+    ContactSolverOptions o;
+    o.law = &law;
+    o.uzawa_tolerance = 1e-12;
+    o.linear.type = LinearSolverType::ConjugateGradient;
+    o.linear.preconditioner = PreconditionerType::Multigrid;
+    o.linear.cg_tolerance = 1e-13;
+    const ContactResult mg = solve_contact(p.problem, o, &p.model.multigrid);
+    ASSERT_TRUE(mg.summary.converged()) << mg.summary.message;
+    EXPECT_EQ(mg.summary.path, SolvePath::Backend);
+    EXPECT_LT(relative(mg.u, direct.u), 1e-9) << (three_d ? "3D" : "2D");
+    EXPECT_LT(relative(mg.tangential.reshaped(), direct.tangential.reshaped()), 1e-8);
+  }
+}
+
 TEST(FrictionUzawaGnm, RefusesAMismatchedLawAndTheFrictionlessPaths) {
   const Frictional p(paper_benchmark(12, 4));
   const Index nc = p.problem.contact.size();
@@ -147,6 +177,7 @@ TEST(FrictionUzawaGnm, RefusesAMismatchedLawAndTheFrictionlessPaths) {
   ContactSolverOptions o;
   o.law = &law;
   EXPECT_THROW(static_cast<void>(solve_contact(p.model.problem, o)), InputError);  // no T rows
+  o.method = ContactMethod::SemismoothNewton;  // friction's SSN factorises: not on multigrid
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.preconditioner = PreconditionerType::Multigrid;
   EXPECT_THROW(static_cast<void>(solve_contact(p.problem, o)), InputError);

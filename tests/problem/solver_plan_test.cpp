@@ -26,6 +26,23 @@ TEST(SolverPlan, TwoDimensionalProblemsStayCondensedWhileTheyFit) {
                   "condensed direct: 961 contact nodes, a dense matrix of about 30 MB");
 }
 
+// Friction: never condensed (the condensation is onto the normal displacements); in 3D above
+// the threshold Uzawa-GNM goes iterative as without friction, semismooth Newton (a sparse LU of
+// the KKT system) and classical Uzawa stay direct.
+TEST(SolverPlan, FrictionIsNeverCondensedAndGoesIterativeWithUzawaGnmOnly) {
+  ContactSolverOptions given;
+  const SolverPlan two = plan_solver(given, {2, 309123, 617604, 961, 24 * kGB, true});
+  EXPECT_FALSE(two.options.schur_complement);
+  EXPECT_EQ(two.options.linear.type, LinearSolverType::Cholmod);
+  EXPECT_CONTAINS(two.reason, "sparse direct: friction");
+  const SolverPlan three = plan_solver(given, {3, 35000, 100000, 1681, 24 * kGB, true});
+  EXPECT_EQ(three.options.linear.type, LinearSolverType::ConjugateGradient);
+  given.method = ContactMethod::SemismoothNewton;
+  const SolverPlan ssn = plan_solver(given, {3, 35000, 100000, 1681, 24 * kGB, true});
+  EXPECT_EQ(ssn.options.linear.type, LinearSolverType::Cholmod);
+  EXPECT_FALSE(ssn.options.schur_complement);
+}
+
 TEST(SolverPlan, ACondensedMatrixThatDoesNotFitGoesSparseDirect) {
   // 50,000 contact nodes: 32 * 50,000^2 bytes = 80 GB of dense matrices.
   const SolverPlan plan = plan_solver(ContactSolverOptions{}, {2, 400000, 800000, 50000, 24 * kGB});

@@ -40,6 +40,21 @@ void BackendNewtonMatrix::set_active(const ActiveSet& active, double r, const Ve
   H->backend().synchronize();
 }
 
+void BackendNewtonMatrix::set_row_weights(const Vector& c, TimingTable& timings) {
+  ScopedTimer timer(timings, "preconditioner setup");
+  H->set_weights(c);
+  preconditioner->refresh();
+  H->backend().synchronize();
+}
+
+void BackendNewtonMatrix::set_block_weights(const SparseMatrix& W, Index block_size,
+                                            TimingTable& timings) {
+  ScopedTimer timer(timings, "preconditioner setup");
+  H->set_block_weights(W, block_size);
+  preconditioner->refresh();
+  H->backend().synchronize();
+}
+
 std::unique_ptr<Backend> make_timed_backend(const ContactSolverOptions& options,
                                             TimingTable& timings) {
   ScopedTimer t(timings, "device setup");

@@ -25,6 +25,10 @@ struct BackendNewtonMatrix {
                       const MultigridHierarchy* multigrid, Backend& backend, TimingTable& timings);
   /// c_j = r h_j on the active nodes, 0 elsewhere; refreshes the preconditioner.
   void set_active(const ActiveSet& active, double r, const Vector& weights, TimingTable& timings);
+  /// Friction (docs/method.md, "Friction"): H = A + N^T diag(c) N with c per row of N (2D, the
+  /// blocks diag(0/1)), or A + N^T W N with W block diagonal (3D); refreshes the preconditioner.
+  void set_row_weights(const Vector& c, TimingTable& timings);
+  void set_block_weights(const SparseMatrix& W, Index block_size, TimingTable& timings);
 
   std::unique_ptr<PenalizedOperator> H;
   std::unique_ptr<Preconditioner> preconditioner;

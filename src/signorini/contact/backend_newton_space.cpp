@@ -16,7 +16,7 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
       be_(backend),
       timings_(timings),
       n_(problem.A.rows()),
-      nc_(problem.contact.size()),
+      nc_(problem.contact.N.rows()),  // the rows of N (d per node with friction)
       newton_(problem, options, multigrid, backend, timings) {
   {
     ScopedTimer t(timings_, "device upload");
@@ -33,7 +33,7 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
     be_.synchronize();
   }
   pcg_ = std::make_unique<Pcg>(be_, n_);
-  weights_active_.assign(static_cast<std::size_t>(nc_), false);
+  weights_active_.assign(static_cast<std::size_t>(problem.contact.size()), false);
   Nx_ = contact_values_of(x_);
 }
 
@@ -43,6 +43,37 @@ void BackendNewtonSpace::set_active(const ActiveSet& active, double r) {
   if (active == weights_active_) return;
   weights_active_ = active;
   newton_.set_active(active, r, p_.contact.weights, timings_);
+  ++refreshes_;
+}
+
+void BackendNewtonSpace::set_linearization(const Linearization& lin, double r) {
+  if (lin.blocks.empty()) {
+    set_active(lin.active, r);
+    return;
+  }
+  if (lin == linearization_ && refreshes_ > 0) return;
+  linearization_ = lin;
+  const ContactSet& c = p_.contact;
+  const Index m = c.components;
+  if (!lin.rows.empty()) {
+    // 2D: c = r h on the rows whose entry of D is 1, as the frictionless law on its nodes.
+    Vector weights = Vector::Zero(nc_);
+    for (Index i = 0; i < nc_; ++i)
+      if (lin.rows[static_cast<std::size_t>(i)]) weights(i) = r * c.weights(i / m);
+    newton_.set_row_weights(weights, timings_);
+  } else {
+    // 3D: W = blockdiag(r h_j D_j), D_j the node's derivative of P (symmetric for step (i)).
+    std::vector<Eigen::Triplet<double, Index>> entries;
+    for (Index j = 0; j < c.size(); ++j)
+      for (Index b = 0; b < m; ++b)
+        for (Index a = 0; a < m; ++a) {
+          const double v = lin.blocks[static_cast<std::size_t>(m * m * j + a + m * b)];
+          if (v != 0.0) entries.emplace_back(m * j + a, m * j + b, r * c.weights(j) * v);
+        }
+    SparseMatrix W(nc_, nc_);
+    W.setFromTriplets(entries.begin(), entries.end());
+    newton_.set_block_weights(W, m, timings_);
+  }
   ++refreshes_;
 }
 

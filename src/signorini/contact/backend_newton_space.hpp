@@ -30,6 +30,8 @@ class BackendNewtonSpace final : public NewtonSpace {
 
   [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
   void set_active(const ActiveSet& active, double r) override;
+  /// Friction: the active rows (2D) or the nodes' blocks (3D) as weights of H.
+  void set_linearization(const Linearization& lin, double r) override;
   NewtonSolveStats solve(const Vector& terms) override;
   void set_linear_tolerance(double tolerance) override { linear_tolerance_ = tolerance; }
   void direction(ModifiedLagrangian::Direction& dir) override;
@@ -55,6 +57,7 @@ class BackendNewtonSpace final : public NewtonSpace {
   std::unique_ptr<Pcg> pcg_;
   DeviceVector b_, x_, x_new_, residual_, d_, Ad_, work_, contact_;
   ActiveSet weights_active_;
+  Linearization linearization_;  // friction's, where one was set
   Vector Nx_;
   double last_t_ = 1.0;
   double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance

@@ -161,19 +161,21 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
         "N per node",
         law.name(), law.components(), problem.contact.components));
   if (law.components() > 1) {
-    // Friction (method.md, "Friction") runs on the full sparse problem on the host: the
-    // condensation is onto the normal displacements, and the backend, GPU and distributed
+    // Friction (method.md, "Friction") runs on the full problem: the condensation is onto the
+    // normal displacements. The backend's Newton matrix takes the nodes' blocks for Uzawa-GNM;
+    // semismooth Newton's friction solver factorises the whole KKT system, and the distributed
     // Newton matrices hold diag(c) on the normal rows only.
     if (m.path == SolvePath::CondensedDirect) m.path = SolvePath::SparseDirect;
-    if (m.path == SolvePath::Backend || m.path == SolvePath::Distributed)
+    if (m.path == SolvePath::Distributed ||
+        (m.path == SolvePath::Backend && m.options.method != ContactMethod::UzawaGnm))
       throw InputError(fmt::format(
-          "the contact law \"{}\" (friction) runs on the host's sparse direct and CG paths only, "
-          "not with {}: use solver.linear.type = \"cholmod\" (docs/solvers.md)",
-          law.name(),
-          m.path == SolvePath::Distributed ? "solver.distributed"
-          : m.options.device == DeviceKind::Cuda
-              ? "solver.device = \"cuda\""
-              : "solver.linear.preconditioner = \"multigrid\""));
+          "the contact law \"{}\" (friction) runs {} not with {} (docs/solvers.md)", law.name(),
+          m.path == SolvePath::Distributed ? "in one process," : "on the host's sparse paths,",
+          m.path == SolvePath::Distributed
+              ? "solver.distributed"
+              : fmt::format("solver.method = \"{}\" on the multigrid or GPU path; use "
+                            "\"uzawa_gnm\" there",
+                            enum_to_string(kContactMethodNames, m.options.method))));
   }
   if (problem.partitioned() && m.path != SolvePath::Distributed)
     throw InputError(

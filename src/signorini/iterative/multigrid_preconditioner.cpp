@@ -43,9 +43,13 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   const SparseMatrix* current = &A;
   SparseMatrix Nl = N;
   fine_normal_entries_.assign(static_cast<std::size_t>(N.rows()), 0);
+  fine_row_columns_.assign(static_cast<std::size_t>(N.rows()), {});
   for (Index j = 0; j < N.outerSize(); ++j)
     for (SparseMatrix::InnerIterator it(N, j); it; ++it)
-      if (it.value() != 0.0) ++fine_normal_entries_[static_cast<std::size_t>(it.row())];
+      if (it.value() != 0.0) {
+        ++fine_normal_entries_[static_cast<std::size_t>(it.row())];
+        fine_row_columns_[static_cast<std::size_t>(it.row())].push_back(j);
+      }
   auto first = std::make_unique<Level>();
   first->op = &fine;
   levels_.push_back(std::move(first));
@@ -126,13 +130,26 @@ void MultigridPreconditioner::refresh() {
   // (a mediant), and each rank-one block gives n^T diag(n n^T)^-1 n = its number of nonzero
   // components. So lambda_max(D_H^-1 H) <= max(lambda_A, the most components of an active n_j):
   // safe for Chebyshev, and equal to the estimate wherever A's spectrum dominates.
+  // With block weights (friction in 3D: a node's rows coupled, E_j = B_j^T W_j B_j) the same
+  // holds with the number of unknowns that the node's rows touch together: for a positive
+  // semidefinite k x k block, lambda_max(diag(E)^-1 E) <= its trace = k.
   double fine_bound = 0.0;
+  const Index block = levels_.front()->op->block_size();
   if (fine_lambda_without_contact_ > 0.0) {
     fine_bound = fine_lambda_without_contact_;
-    for (Index j = 0; j < c.size(); ++j)
-      if (c(j) > 0.0)
-        fine_bound = std::max(
-            fine_bound, static_cast<double>(fine_normal_entries_[static_cast<std::size_t>(j)]));
+    for (Index j = 0; j < c.size(); ++j) {
+      if (!(c(j) > 0.0) && block == 1) continue;
+      double entries = static_cast<double>(fine_normal_entries_[static_cast<std::size_t>(j)]);
+      if (block > 1) {
+        std::vector<Index> columns;
+        for (Index a = j - j % block; a < j - j % block + block; ++a)
+          for (const Index col : fine_row_columns_[static_cast<std::size_t>(a)])
+            if (std::find(columns.begin(), columns.end(), col) == columns.end())
+              columns.push_back(col);
+        entries = static_cast<double>(columns.size());
+      }
+      fine_bound = std::max(fine_bound, entries);
+    }
   }
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];

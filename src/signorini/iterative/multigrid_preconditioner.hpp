@@ -81,6 +81,7 @@ class MultigridPreconditioner final : public Preconditioner {
   // c = 0; 0 until then), and per contact row j the number of nonzero entries of N's row j.
   double fine_lambda_without_contact_ = 0.0;
   std::vector<int> fine_normal_entries_;
+  std::vector<std::vector<Index>> fine_row_columns_;  // the unknowns of each row of N
   // The coarsest level's solve: on a GPU its explicit inverse, applied by one dense product; on
   // the CPU its Cholesky factor, applied by two triangular solves (as fast for one vector, and
   // the inverse cost twice the factorisation again at every refresh).

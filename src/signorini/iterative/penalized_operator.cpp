@@ -17,7 +17,8 @@ PenalizedOperator::PenalizedOperator(Backend& backend, const SparseMatrix& A, co
     throw NumericalError("penalized operator: sizes of A and N do not match");
   A_ = backend.upload_symmetric(A, arrays);
   N_ = backend.upload(N);
-  const SparseMatrix Nt = N.transpose();
+  Nt_host_ = N.transpose();
+  const SparseMatrix& Nt = Nt_host_;
   Nt_ = backend.upload(Nt);
   N2t_ = backend.upload(SparseMatrix(Nt.cwiseAbs2()));
   diag_a_ = to_device(backend, Vector(A.diagonal()));
@@ -30,6 +31,11 @@ void PenalizedOperator::apply(const DeviceVector& x, DeviceVector& y) {
   backend_.spmv(*A_, x, y);
   if (nc_ == 0) return;
   backend_.spmv(*N_, x, t_);
+  if (W_) {
+    backend_.spmv(*W_, t_, t2_);
+    backend_.spmv(*Nt_, t2_, y, 1.0, 1.0);
+    return;
+  }
   backend_.multiply(c_, t_, t_);
   backend_.spmv(*Nt_, t_, y, 1.0, 1.0);
 }
@@ -51,11 +57,31 @@ void PenalizedOperator::set_weights(const Vector& c) {
   if (c.size() != nc_) throw NumericalError("penalized operator: wrong number of weights");
   c_host_ = c;
   upload_into(c, c_);
+  W_.reset();
+}
+
+void PenalizedOperator::set_block_weights(const SparseMatrix& W, Index block_size) {
+  if (W.rows() != nc_ || W.cols() != nc_ || block_size < 1 || nc_ % block_size != 0)
+    throw NumericalError("penalized operator: block weights of the wrong size");
+  c_host_ = W.diagonal();
+  upload_into(c_host_, c_);
+  // diag(N^T W N)_k = sum_j (N^T W)_kj N_jk: the row sums of (N^T W) .* N^T.
+  const SparseMatrix NtW = Nt_host_ * W;
+  const Vector diag = SparseMatrix(NtW.cwiseProduct(Nt_host_)) * Vector::Ones(nc_);
+  W_ = backend_.upload(W);
+  diag_w_ = to_device(backend_, diag);
+  if (t2_.size() != nc_) t2_ = DeviceVector(backend_, nc_);
+  block_size_ = block_size;
 }
 
 void PenalizedOperator::diagonal(DeviceVector& out) {
   backend_.copy(diag_a_, out);
-  if (nc_ > 0) backend_.spmv(*N2t_, c_, out, 1.0, 1.0);
+  if (nc_ == 0) return;
+  if (W_) {
+    backend_.axpby(1.0, diag_w_, 1.0, out);
+    return;
+  }
+  backend_.spmv(*N2t_, c_, out, 1.0, 1.0);
 }
 
 void PenalizedOperator::inverse_diagonal(DeviceVector& out) {

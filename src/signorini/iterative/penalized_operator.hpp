@@ -35,8 +35,16 @@ class PenalizedOperator final : public LinearOperator {
   void apply_contact(const DeviceVector& x, DeviceVector& y);
   void apply_contact_transpose(const DeviceVector& w, DeviceVector& y, double beta = 0.0);
 
-  /// Sets c (n_c values, host).
+  /// Sets c (n_c values, host), and drops block weights.
   void set_weights(const Vector& c);
+  /// Friction in 3D (docs/method.md, "Friction"): H = A + N^T W N with W block diagonal, the
+  /// rows of N in groups of `block_size` (a node's normal and tangents), each block the node's
+  /// r h_j D_j (symmetric). weights() becomes W's diagonal: the coarse levels of a multigrid
+  /// take A_l + N_l^T diag(W) N_l, an approximation of H there (exact where the blocks are
+  /// diagonal), while the products and the diagonal of this operator are exact.
+  void set_block_weights(const SparseMatrix& W, Index block_size);
+  /// Rows of N per block of W (1 without block weights).
+  [[nodiscard]] Index block_size() const { return W_ ? block_size_ : 1; }
   /// diag(H) = diag(A) + (N.^2)^T c
   void diagonal(DeviceVector& out);
   /// diag(H)^{-1}: the Jacobi scaling of the preconditioner and of the smoother.
@@ -47,9 +55,11 @@ class PenalizedOperator final : public LinearOperator {
  private:
   Backend& backend_;
   Index n_, nc_;
-  std::unique_ptr<DeviceSparseMatrix> A_, N_, Nt_, N2t_;
-  DeviceVector diag_a_, c_, t_;
+  std::unique_ptr<DeviceSparseMatrix> A_, N_, Nt_, N2t_, W_;
+  DeviceVector diag_a_, c_, t_, t2_, diag_w_;
   Vector c_host_;
+  SparseMatrix Nt_host_;  // N^T, for the diagonal of N^T W N
+  Index block_size_ = 1;
 };
 
 }  // namespace signorini

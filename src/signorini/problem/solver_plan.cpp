@@ -41,16 +41,12 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
     return as_configured(fmt::format("linear.type = \"{}\"",
                                      enum_to_string(kLinearSolverTypeNames, given.linear.type)));
 
-  if (size.friction) {
-    o.schur_complement = false;
-    plan.reason =
-        "sparse direct: friction runs on the full sparse problem (the condensed and multigrid "
-        "paths are frictionless)";
-    return plan;
-  }
   // Classical Uzawa needs one factorisation of A (thousands of steps, each a pair of triangular
-  // solves): it has no iterative path.
-  const bool iterative_allowed = given.method != ContactMethod::ClassicalUzawa;
+  // solves): it has no iterative path; nor has semismooth Newton with friction (a sparse LU of
+  // the whole KKT system).
+  const bool iterative_allowed =
+      given.method == ContactMethod::UzawaGnm ||
+      (given.method == ContactMethod::SemismoothNewton && !size.friction);
   const double factor = estimated_factor_bytes(size);
   const bool memory_known = size.memory_bytes > 0.0;
   const auto go_iterative = [&](const std::string& why) {
@@ -70,6 +66,13 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
         fmt::format("a sparse factor of about {} would exceed half of the {} of "
                     "this machine",
                     gigabytes(factor), gigabytes(size.memory_bytes)));
+  if (size.friction) {
+    o.schur_complement = false;
+    plan.reason =
+        "sparse direct: friction runs on the full problem (the condensed path is onto the "
+        "normal displacements)";
+    return plan;
+  }
   if (!given.schur_complement) return as_configured("schur_complement = false");
   const double nc = static_cast<double>(size.contact_nodes);
   const double dense = kCondensedBytesPerEntry * nc * nc;
