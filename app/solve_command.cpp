@@ -120,8 +120,8 @@ int solve(const SolveArguments& args, LogFormat format) {
   } else {
     // [loading]: each step's files as it is solved (steps/, solution.pvd); the last step's
     // results are the run's (write_results below).
-    result = solve_load_steps(
-        model, solver, spec.load_factors, [&](int step, const ContactResult& r) {
+    result =
+        solve_load_steps(model, solver, spec.load_factors, [&](int step, const ContactResult& r) {
           const LoadStepRecord& s = r.summary.load_steps.back();
           progress.report(
               fmt::format("load step {} of {}: factor {:g}, {} ({} outer iterations, {} nodes in "

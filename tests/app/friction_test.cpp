@@ -29,10 +29,14 @@ struct ToolResult {
   std::vector<Row> rows;
 };
 
-ToolResult solve(const testing::TemporaryFolder& dir, const std::string& name, const std::string& extra) {
+// Solves `example` (examples/paper_coulomb.toml by default) with the extra arguments into
+// dir/name, and reads summary.json and contact.csv (friction's columns where it has them).
+ToolResult solve(const testing::TemporaryFolder& dir, const std::string& name,
+                 const std::string& extra,
+                 const std::string& example = SIGNORINI_EXAMPLES_DIR "/paper_coulomb.toml") {
   const fs::path out = dir / name;
-  const ToolRun r = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_coulomb.toml") +
-                                      " -q " + extra + " -o " + quoted(out.string()));
+  const ToolRun r =
+      run_tool(dir, "solve " + quoted(example) + " -q " + extra + " -o " + quoted(out.string()));
   EXPECT_EQ(r.status, 0) << r.err;
   ToolResult run;
   std::ifstream js(out / "summary.json");
@@ -117,24 +121,8 @@ TEST(FrictionTool, ZeroFrictionIsTheFrictionlessRun) {
   const testing::TemporaryFolder dir;
   const ToolResult zero = solve(dir, "zero", "--set contact.mu=0");
   EXPECT_TRUE(zero.summary["converged"].get<bool>());
-  const ToolResult frictionless = [&] {
-    const fs::path out = dir / "frictionless";
-    const ToolRun r = run_tool(
-        dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper.toml") +
-                 " -q --set mesh.nx=120 --set mesh.ny=40 -o " + quoted(out.string()));
-    EXPECT_EQ(r.status, 0) << r.err;
-    ToolResult run;
-    std::istringstream csv(testing::read_text(out / "contact.csv"));
-    std::string line;
-    std::getline(csv, line);
-    while (std::getline(csv, line)) {
-      std::vector<std::string> f;
-      std::istringstream in(line);
-      for (std::string field; std::getline(in, field, ',');) f.push_back(field);
-      run.rows.push_back({std::stod(f.at(0)), std::stod(f.at(4)), 0.0, ""});
-    }
-    return run;
-  }();
+  const ToolResult frictionless = solve(dir, "frictionless", "--set mesh.nx=120 --set mesh.ny=40",
+                                        SIGNORINI_EXAMPLES_DIR "/paper.toml");
   ASSERT_EQ(zero.rows.size(), frictionless.rows.size());
   double peak = 0.0;
   for (const Row& r : frictionless.rows) peak = std::max(peak, r.pressure);
@@ -173,7 +161,8 @@ TEST(FrictionTool, LoadingHistoryWritesEachStep) {
   EXPECT_EQ(s["load_steps"][1]["factor"].get<double>(), 1.0);
   EXPECT_EQ(s["problem"]["loading"]["factors"].size(), 3U);
   // The run's contact.csv is the last step's.
-  EXPECT_EQ(testing::read_text(out / "contact.csv"), testing::read_text(out / "steps/contact_0003.csv"));
+  EXPECT_EQ(testing::read_text(out / "contact.csv"),
+            testing::read_text(out / "steps/contact_0003.csv"));
   // Back at half the load after the full one: the body's balance holds at that factor.
   EXPECT_LT(s["resultants"]["relative_balance"].get<double>(), 1e-10);
   EXPECT_NEAR(s["resultants"]["applied"][1].get<double>(), -0.5 * 2.0, 1e-12);

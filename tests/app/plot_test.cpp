@@ -471,15 +471,14 @@ TEST(Plot, FrictionAddsTheFrictionFigure) {
   if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
   const testing::TemporaryFolder dir;
   const fs::path out = dir / "out";
-  const ToolRun r = run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_coulomb.toml") +
-                                      " -q --set mesh.nx=60 --set mesh.ny=20 --plot -o " +
-                                      quoted(out.string()));
+  const ToolRun r =
+      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/paper_coulomb.toml") +
+                        " -q --set mesh.nx=60 --set mesh.ny=20 --plot -o " + quoted(out.string()));
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   const std::map<std::string, std::string> text = png_text(out / "contact_friction.png");
   EXPECT_EQ(text.count("Title") ? text.at("Title") : "", "contact_friction");
   const std::string description = text.count("Description") ? text.at("Description") : "";
-  EXPECT_TRUE(axes_limits("<dc:description>" + description + "</dc:description>"))
-      << description;
+  EXPECT_TRUE(axes_limits("<dc:description>" + description + "</dc:description>")) << description;
   const ToolRun listed = run_tool(dir, "plot " + quoted(out.string()));
   ASSERT_EQ(listed.status, 0) << listed.err;
   EXPECT_CONTAINS(listed.out, out.string() + "/contact_friction.png");

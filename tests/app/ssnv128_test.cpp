@@ -22,8 +22,9 @@ using testing::run_tool;
 TEST(Ssnv128, HorizontalDisplacementsAlongTheContactFace) {
   const testing::TemporaryFolder dir;
   const fs::path out = dir / "ssnv128";
-  const testing::ToolRun r = run_tool(
-      dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/ssnv128.toml") + " -q -o " + quoted(out.string()));
+  const testing::ToolRun r =
+      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/ssnv128.toml") + " -q -o " +
+                        quoted(out.string()));
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream js(out / "summary.json");
   const nlohmann::json s = nlohmann::json::parse(js);

@@ -96,7 +96,8 @@ TEST(FrictionUzawaGnm, TrescaAgreesWithSemismoothNewtonIn2D) {
   EXPECT_LT(relative(ssn.u, ref.u), 1e-10);
   EXPECT_LT(ssn.summary.kkt.max(), 1e-10);
   // The host's CG path solves the same Newton systems.
-  const ContactResult cg = p.solve(law, ContactMethod::UzawaGnm, LinearSolverType::ConjugateGradient);
+  const ContactResult cg =
+      p.solve(law, ContactMethod::UzawaGnm, LinearSolverType::ConjugateGradient);
   ASSERT_TRUE(cg.summary.converged()) << cg.summary.message;
   EXPECT_LT(relative(cg.u, ref.u), 1e-8);
 }

@@ -15,7 +15,6 @@
 #include "signorini/io/problem_schema.hpp"
 #include "signorini/io/toml_emitter.hpp"
 #include "signorini/problem/model.hpp"
-#include "signorini/problem/model.hpp"
 
 namespace signorini {
 namespace {
@@ -943,31 +942,35 @@ namespace {
 TEST(ProblemFileFriction, ReadsTheLawAndItsParameter) {
   const ProblemSpec tresca =
       parse_problem_string(with("gap = \"0\"", "friction = \"tresca\"\nslip_bound = \"0.1 + x\""),
-                           "test.toml").spec;
+                           "test.toml")
+          .spec;
   ASSERT_EQ(tresca.contacts.size(), 1U);
   EXPECT_EQ(tresca.contacts[0].friction, FrictionModel::Tresca);
   EXPECT_DOUBLE_EQ(tresca.contacts[0].slip_bound(Point(2.0, 0.0, 0.0)), 2.1);
-  const ProblemSpec coulomb = parse_problem_string(
-      with("gap = \"0\"", "friction = \"coulomb\"\nmu = 0.25"), "test.toml").spec;
+  const ProblemSpec coulomb =
+      parse_problem_string(with("gap = \"0\"", "friction = \"coulomb\"\nmu = 0.25"), "test.toml")
+          .spec;
   EXPECT_EQ(coulomb.contacts[0].friction, FrictionModel::Coulomb);
   EXPECT_EQ(coulomb.contacts[0].mu, 0.25);
-  EXPECT_EQ(parse_problem_string(kBase, "test.toml").spec.contacts[0].friction, FrictionModel::None);
+  EXPECT_EQ(parse_problem_string(kBase, "test.toml").spec.contacts[0].friction,
+            FrictionModel::None);
 }
 
 TEST(ProblemFileFriction, BadFrictionInputGetsOneLineNamingTheKey) {
   EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"stick\"")),
                   "contact.friction = \"stick\": expected");
   EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"coulomb\"")), "contact.mu");
-  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"coulomb\"\nmu = -0.1")),
-                  "contact.mu");
+  EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"coulomb\"\nmu = -0.1")), "contact.mu");
   EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"tresca\"")), "contact.slip_bound");
   EXPECT_CONTAINS(error_of(with("gap = \"0\"", "friction = \"tresca\"\nmu = 0.3")),
                   "contact.mu applies with friction = \"coulomb\" only");
   EXPECT_CONTAINS(error_of(with("gap = \"0\"", "slip_bound = \"1\"")),
                   "contact.slip_bound applies with friction = \"tresca\" only");
   // A negative bound is found where it is evaluated, at a contact node.
-  const ProblemSpec negative = parse_problem_string(
-      with("gap = \"0\"", "friction = \"tresca\"\nslip_bound = \"1 - x\""), "test.toml").spec;
+  const ProblemSpec negative =
+      parse_problem_string(with("gap = \"0\"", "friction = \"tresca\"\nslip_bound = \"1 - x\""),
+                           "test.toml")
+          .spec;
   try {
     static_cast<void>(build_model(negative));
     ADD_FAILURE() << "a negative slip bound was accepted";
@@ -988,9 +991,9 @@ TEST(ProblemFileLoading, StepsAndFactors) {
   EXPECT_EQ(parse_problem_string(kBase + "[loading]\nsteps = 4\n", "t.toml").spec.load_factors,
             four);
   const std::vector<double> table = {0.5, 1.0, 0.0};
-  EXPECT_EQ(
-      parse_problem_string(kBase + "[loading]\nfactors = [0.5, 1, 0]\n", "t.toml").spec.load_factors,
-      table);
+  EXPECT_EQ(parse_problem_string(kBase + "[loading]\nfactors = [0.5, 1, 0]\n", "t.toml")
+                .spec.load_factors,
+            table);
   // As an override too, and echoed in the effective settings.
   const LoadedProblem set = parse_problem_string(kBase, "t.toml", {"loading.steps=2"});
   EXPECT_EQ(set.spec.load_factors, (std::vector<double>{0.5, 1.0}));

@@ -297,3 +297,32 @@ json.dump(out, open(sys.argv[1] + "/meshio.json", "w"))
 
 }  // namespace
 }  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// With friction contact.vtu has the tangential traction (Cartesian, along tau = (1, 0) on the
+// paper's bottom edge) and each node's state, as the solver and friction_states give them.
+TEST(ContactVtu, FrictionArrays) {
+  ProblemSpec spec = paper_benchmark(30, 10);
+  spec.contacts[0].friction = FrictionModel::Coulomb;
+  spec.contacts[0].mu = 1.0;
+  const Model model = build_model(spec);
+  const ContactResult r = solve_contact(model.problem, model.solver);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  const testing::VtuContents v = testing::read_vtu_text(contact_vtu(r, model));
+  const std::vector<FrictionState> states = friction_states(*model.friction, r.l, r.tangential);
+  int sticking = 0;
+  for (Index j = 0; j < model.problem.contact.size(); ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    EXPECT_EQ(v.point_data.at("tangential_traction").values[3 * k], r.tangential(0, j));
+    EXPECT_EQ(v.point_data.at("tangential_traction").values[3 * k + 1], 0.0);
+    EXPECT_EQ(v.point_data.at("friction_state").values[k], static_cast<double>(states[k]));
+    sticking += states[k] == FrictionState::Sticking ? 1 : 0;
+  }
+  EXPECT_GT(sticking, 0);
+  EXPECT_EQ(v.point_data.at("friction_state").type, "UInt8");
+}
+
+}  // namespace
+}  // namespace signorini

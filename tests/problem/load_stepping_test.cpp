@@ -73,8 +73,9 @@ TEST(LoadStepping, CoulombDependsOnThePathAndAccumulatesSlip) {
   const Model model = build_model(spec);
   ASSERT_TRUE(model.friction);
   std::vector<ContactResult> steps;
-  const ContactResult back = solve_load_steps(
-      model, tight(model), {0.5, 1.0, 0.5}, [&](int, const ContactResult& r) { steps.push_back(r); });
+  const ContactResult back =
+      solve_load_steps(model, tight(model), {0.5, 1.0, 0.5},
+                       [&](int, const ContactResult& r) { steps.push_back(r); });
   ASSERT_EQ(steps.size(), 3U);
   for (const ContactResult& r : steps) {
     ASSERT_TRUE(r.summary.converged()) << r.summary.message;

@@ -3,10 +3,9 @@
 // and contact set, with the time each phase took, and what the resultants of a solution need
 // (problem/resultants.hpp): the full load vector, the clamped dofs of each clamp, the material.
 
+#include <memory>
 #include <string>
 #include <vector>
-
-#include <memory>
 
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/friction_law.hpp"

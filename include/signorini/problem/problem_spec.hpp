@@ -24,7 +24,7 @@ struct ClampSpec {
   std::array<bool, 3> components{true, true, true};
   /// A pinned node instead of a whole part: the node nearest to this point (on `boundary` when
   /// that is given too), as a point load is placed.
-  std::optional<Point> at;
+  std::optional<Point> at = std::nullopt;
   /// What the reactions call it: the boundary, or "at (x, y)" for a pinned node.
   [[nodiscard]] std::string name() const;
 };

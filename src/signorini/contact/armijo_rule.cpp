@@ -16,8 +16,8 @@ ArmijoStep armijo_step(const ModifiedLagrangian& phi, const ModifiedLagrangian::
   ArmijoStep step;
   // The change of Phi is evaluated without cancellation (method.md section 4, numerical note).
   if (phi.phi_change(dir, 1.0) < 0.0) return step;
-  const Vector hz = phi.forces_of(dir.z);                      // h P(z)
-  const double slope = dir.residual_dot_d + hz.dot(dir.Nd);          // <G(x), d>
+  const Vector hz = phi.forces_of(dir.z);                    // h P(z)
+  const double slope = dir.residual_dot_d + hz.dot(dir.Nd);  // <G(x), d>
   if (slope >= 0.0) return step;  // d is round-off around a minimiser: take it as it is
   double alpha = 1.0;
   do {

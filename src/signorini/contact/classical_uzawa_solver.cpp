@@ -91,8 +91,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
     OuterStepOutcome o;
     OuterStepRecord& rec = o.record;
     // (i) A u = b - N^T H l: the contact pressure acts as a load.
-    const LinearSolveStats st =
-        solver->solve(problem.b - c.N.transpose() * h.cwiseProduct(l), x);
+    const LinearSolveStats st = solver->solve(problem.b - c.N.transpose() * h.cwiseProduct(l), x);
     rec.inner_iterations = 1;
     rec.linear_iterations = st.iterations;
     rec.factorizations = k == 1 ? 1 : 0;

@@ -51,8 +51,8 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
   for (int m = 1; m <= options_.max_gnm_iterations; ++m) {
     // The active set (with friction also each node's derivative of P, method.md "Friction").
     Linearization active = phi.linearize(space.contact_values());
-    IterationEvent ev{IterationEvent::Kind::Inner, outer, m, count_active(active.active), 0.0, 0,
-                      0};
+    IterationEvent ev{
+        IterationEvent::Kind::Inner, outer, m, count_active(active.active), 0.0, 0, 0};
 
     // The active set repeats after a full Newton step: x minimises the quadratic piece that is
     // active at x, so it is the minimiser of Phi and this Newton step would return x itself

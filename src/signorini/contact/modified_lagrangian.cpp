@@ -241,9 +241,8 @@ Vector ModifiedLagrangian::newton_contact_terms(const Linearization& lin) const 
     const Eigen::Map<const Eigen::MatrixXd> D(&lin.blocks[static_cast<std::size_t>(m_ * m_ * j)],
                                               m_, m_);
     const Eigen::Map<const Eigen::VectorXd> c(&lin.offsets[static_cast<std::size_t>(m_ * j)], m_);
-    w.segment(m_ * j, m_) =
-        p_.contact.weights(j) *
-        (c + D * (l_.segment(m_ * j, m_) - r_ * g_hat_.segment(m_ * j, m_)));
+    w.segment(m_ * j, m_) = p_.contact.weights(j) *
+                            (c + D * (l_.segment(m_ * j, m_) - r_ * g_hat_.segment(m_ * j, m_)));
   }
   return w;
 }

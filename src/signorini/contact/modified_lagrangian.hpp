@@ -90,10 +90,10 @@ class ModifiedLagrangian {
   const ContactProblem& p_;
   double r_;
   const ContactLaw& law_;
-  Index m_ = 1;                          // components per node
+  Index m_ = 1;                            // components per node
   const FrictionLaw* friction_ = nullptr;  // the law, where it is frictional
-  Vector g_hat_;                         // g^ per row of N (row_offsets)
-  Vector bounds_;                        // friction: the slip bounds s_j of step (i)
+  Vector g_hat_;                           // g^ per row of N (row_offsets)
+  Vector bounds_;                          // friction: the slip bounds s_j of step (i)
   Vector l_;
   // Friction: psi(z0 + dz) - psi(z0) of node j with its bound, without cancellation where both
   // points are on the same smooth piece.

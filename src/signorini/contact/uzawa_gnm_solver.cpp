@@ -20,7 +20,8 @@ ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolver
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
   const auto system = make_newton_system(problem, phi, options.linear);
   HostNewtonSpace space(problem, *system, start.displacement(problem.A.rows()));
-  run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.N.rows()), out);
+  run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.N.rows()),
+                      out);
   out.summary.timings.merge(system->timings());
   out.u = space.take_x();
   return out;
@@ -37,7 +38,8 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   BackendNewtonSpace space(problem, options, multigrid, *backend, timings,
                            start.displacement(problem.A.rows()));
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
-  run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.N.rows()), out);
+  run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.N.rows()),
+                      out);
   {
     ScopedTimer t(timings, "device download");
     out.u = space.solution();

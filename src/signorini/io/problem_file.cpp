@@ -549,8 +549,7 @@ void read_friction(const Reader& r, const toml::table& t, const std::string& pat
   const auto refuse = [&](const char* key, const char* with) {
     if (t.contains(key))
       r.fail_at(t.get(key)->source(), join(path, key) + " applies with friction = \"" + with +
-                                          "\" only; this boundary has friction = \"" + law +
-                                          "\"");
+                                          "\" only; this boundary has friction = \"" + law + "\"");
   };
   if (contact.friction != FrictionModel::Tresca) refuse("slip_bound", "tresca");
   if (contact.friction != FrictionModel::Coulomb) refuse("mu", "coulomb");
@@ -686,7 +685,8 @@ void read_loading(const Reader& r, const toml::table& root, ProblemSpec& spec) {
     const std::optional<double> v = n.value<double>();
     const std::string key = fmt::format("loading.factors[{}]", i);
     if (!v) r.wrong_type(key, "a number >= 0", n);
-    if (!(*v >= 0.0) || !std::isfinite(*v)) r.out_of_range(key, as_text(*v), "a finite number >= 0", &n);
+    if (!(*v >= 0.0) || !std::isfinite(*v))
+      r.out_of_range(key, as_text(*v), "a finite number >= 0", &n);
     spec.load_factors.push_back(*v);
   }
 }

@@ -30,8 +30,9 @@ std::string load_step_file(const std::string& stem, int step, const std::string&
 void write_load_step(const std::filesystem::path& outdir, int step, const ContactResult& result,
                      const Model& model) {
   create_output_folder(outdir / "steps");
-  write_files_atomically({{outdir / load_step_file("solution", step, "vtu"), solution_vtu(result, model)},
-                          {outdir / load_step_file("contact", step, "csv"), contact_csv(result, model)}});
+  write_files_atomically(
+      {{outdir / load_step_file("solution", step, "vtu"), solution_vtu(result, model)},
+       {outdir / load_step_file("contact", step, "csv"), contact_csv(result, model)}});
   std::string pvd =
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (int k = 1; k <= step; ++k)

@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "signorini/contact/friction_law.hpp"
+#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/nodal_stress.hpp"
 #include "signorini/io/vtu_file.hpp"
@@ -210,6 +212,23 @@ std::string contact_vtu(const ContactResult& result, const Model& model) {
   vtu.add_point_data("gap", 1, gap);
   vtu.add_point_data("deformed_gap", 1, deformed_gap);
   vtu.add_point_data("contact_active", active);
+  if (model.friction) {
+    // Friction: the tangential traction as a Cartesian vector (the tangential part of -sigma n,
+    // as contact_pressure is its normal part) and the state (0 separated, 1 sticking, 2
+    // sliding), as contact.csv has them.
+    const std::vector<FrictionState> states =
+        friction_states(*model.friction, result.l, result.tangential);
+    std::vector<double> traction(static_cast<std::size_t>(3 * m), 0.0);
+    std::vector<std::uint8_t> state(static_cast<std::size_t>(m));
+    for (Index j = 0; j < m; ++j) {
+      const auto k = static_cast<std::size_t>(j);
+      const Eigen::VectorXd t = tangent_basis(c.normals.col(j)) * result.tangential.col(j);
+      for (Index i = 0; i < dim; ++i) traction[3 * k + static_cast<std::size_t>(i)] = t(i);
+      state[k] = static_cast<std::uint8_t>(states[k]);
+    }
+    vtu.add_point_data("tangential_traction", 3, traction, {"X", "Y", "Z"});
+    vtu.add_point_data("friction_state", state);
+  }
   return vtu.take_text();
 }
 

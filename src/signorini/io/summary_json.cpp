@@ -215,8 +215,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     if (c.components[2] && dim == 3) components.push_back("z");
     clamps.push_back({{"boundary", c.boundary}, {"components", components}});
     if (c.at)
-      clamps.back()["at"] =
-          std::vector<double>(c.at->data(), c.at->data() + (dim == 3 ? 3 : 2));
+      clamps.back()["at"] = std::vector<double>(c.at->data(), c.at->data() + (dim == 3 ? 3 : 2));
   }
   problem["clamp"] = clamps;
   if (!spec.displacements.empty()) {

@@ -43,9 +43,9 @@ ContactResult solve_load_steps(const Model& model, const ContactSolverOptions& o
       r.slip = slip;
     }
     const SolveSummary& s = r.summary;
-    history.push_back({t, s.converged(), s.outer_iterations, s.num_active, s.contact_force,
-                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                           .count()});
+    history.push_back(
+        {t, s.converged(), s.outer_iterations, s.num_active, s.contact_force,
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
     r.summary.load_steps = history;
     if (each_step) each_step(static_cast<int>(k) + 1, r);
     if (!s.converged() || k + 1 == factors.size()) return r;

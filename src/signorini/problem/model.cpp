@@ -395,12 +395,14 @@ Model build_model(const ProblemSpec& spec) {
     }
   }
   // Friction: the tangential rows in N and the law per node (friction_law.hpp).
-  std::shared_ptr<const FrictionLaw> friction = make_friction(spec, mesh, dofs, contact_starts, problem.contact);
+  std::shared_ptr<const FrictionLaw> friction =
+      make_friction(spec, mesh, dofs, contact_starts, problem.contact);
   // The solver path from the problem's size (solver_plan.hpp), before the hierarchy that it may
   // call for.
-  SolverPlan plan = plan_solver(
-      spec.solver, ProblemSize{mesh.dim(), mesh.num_nodes(), dofs.num_free(),
-                               problem.contact.size(), physical_memory_bytes(), friction != nullptr});
+  SolverPlan plan =
+      plan_solver(spec.solver,
+                  ProblemSize{mesh.dim(), mesh.num_nodes(), dofs.num_free(), problem.contact.size(),
+                              physical_memory_bytes(), friction != nullptr});
   if (friction) plan.options.law = friction.get();
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = plan.options.linear;
@@ -416,10 +418,10 @@ Model build_model(const ProblemSpec& spec) {
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, owner);
-  return Model{std::move(mesh),          std::move(dofs),   std::move(problem),
-               std::move(multigrid),     plan.options,      plan.reason,
-               std::move(timings),       elasticity,        std::move(loads),
-               std::move(clamps),        std::move(placed), std::move(contact_boundaries),
+  return Model{std::move(mesh),           std::move(dofs),    std::move(problem),
+               std::move(multigrid),      plan.options,       plan.reason,
+               std::move(timings),        elasticity,         std::move(loads),
+               std::move(clamps),         std::move(placed),  std::move(contact_boundaries),
                std::move(contact_starts), std::move(friction)};
 }
 

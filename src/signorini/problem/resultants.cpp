@@ -52,7 +52,8 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   for (Index j = 0; j < c.size(); ++j) {
     Eigen::VectorXd force = -c.weights(j) * l(j) * c.normals.col(j);
     if (friction) force -= c.weights(j) * tangent_basis(c.normals.col(j)) * tangential.col(j);
-    for (int k = 0; k < dim; ++k) contact(c.nodes[static_cast<std::size_t>(j)] * dim + k) += force(k);
+    for (int k = 0; k < dim; ++k)
+      contact(c.nodes[static_cast<std::size_t>(j)] * dim + k) += force(k);
   }
 
   Sum applied, foundation;
