@@ -73,6 +73,28 @@ TEST(FrictionUzawaGnm, ZeroFrictionIsTheFrictionlessSolution) {
   }
 }
 
+// A very large coefficient bonds the touching nodes: no tangential displacement where the node
+// presses, the same as the reference solver's.
+TEST(FrictionUzawaGnm, HugeCoulombCoefficientBondsTheTouchingNodes) {
+  const Frictional p(paper_benchmark(30, 10));
+  const Index nc = p.problem.contact.size();
+  const FrictionLaw law(FrictionKind::Coulomb, 2, Vector::Constant(nc, 1e6));
+  const ContactResult r = p.solve(law, ContactMethod::UzawaGnm);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  const Vector slip = p.T * r.u;
+  const double scale = r.u.lpNorm<Eigen::Infinity>();
+  int touching = 0;
+  for (Index j = 0; j < nc; ++j)
+    if (r.l(j) > 0.0) {
+      ++touching;
+      EXPECT_LE(std::abs(slip(j)), 1e-9 * scale) << "node " << j;
+    }
+  EXPECT_GT(touching, 3);
+  const FrictionSsnResult ref = p.reference(FrictionKind::Coulomb, Vector::Constant(nc, 1e6));
+  ASSERT_TRUE(ref.converged);
+  EXPECT_LT(relative(r.u, ref.u), 1e-8);
+}
+
 TEST(FrictionUzawaGnm, TrescaAgreesWithSemismoothNewtonIn2D) {
   const Frictional p(paper_benchmark(30, 10));
   const Index nc = p.problem.contact.size();
