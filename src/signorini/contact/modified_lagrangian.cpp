@@ -130,27 +130,25 @@ Linearization ModifiedLagrangian::linearize(const Vector& Nx) const {
   return lin;
 }
 
-Vector ModifiedLagrangian::forces_of(const Vector& z) const {
-  if (friction_ == nullptr) return p_.contact.weights.cwiseProduct(law_.project(z));
-  Vector f = Vector::Zero(z.size());
+Vector ModifiedLagrangian::project(const Vector& z) const {
+  if (friction_ == nullptr) return law_.project(z);
+  // With friction the projection with the bound of step (i) (Coulomb's from l^k), node by node;
+  // a node that cannot move (z = -infinity) gets 0.
+  Vector p = Vector::Zero(z.size());
   for (Index j = 0; j < p_.contact.size(); ++j) {
     const Eigen::VectorXd zj = z.segment(m_ * j, m_);
-    if (!zj.allFinite()) continue;  // a node that cannot move
-    f.segment(m_ * j, m_) = p_.contact.weights(j) * project_tresca(zj, bounds_(j)).force;
+    if (zj.allFinite()) p.segment(m_ * j, m_) = project_tresca(zj, bounds_(j)).force;
   }
-  return f;
+  return p;
+}
+
+Vector ModifiedLagrangian::forces_of(const Vector& z) const {
+  return row_weights(p_.contact).cwiseProduct(project(z));
 }
 
 Vector ModifiedLagrangian::updated_multipliers(const Vector& Nx) const {
-  const Vector z = shifted_multipliers(Nx);
-  if (friction_ == nullptr) return law_.project(z);
-  // Step (ii) with the bound of step (i): l^{k+1} = P_{s(l^k)}(z).
-  Vector l = Vector::Zero(z.size());
-  for (Index j = 0; j < p_.contact.size(); ++j) {
-    const Eigen::VectorXd zj = z.segment(m_ * j, m_);
-    if (zj.allFinite()) l.segment(m_ * j, m_) = project_tresca(zj, bounds_(j)).force;
-  }
-  return l;
+  // Step (ii): l^{k+1} = P(z), with friction the bound of step (i).
+  return project(shifted_multipliers(Nx));
 }
 
 Vector ModifiedLagrangian::contact_forces(const Vector& Nx) const {

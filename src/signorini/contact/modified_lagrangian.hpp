@@ -95,6 +95,8 @@ class ModifiedLagrangian {
   Vector g_hat_;                           // g^ per row of N (row_offsets)
   Vector bounds_;                          // friction: the slip bounds s_j of step (i)
   Vector l_;
+  // P(z) node by node: the law's, with friction Tresca's with the bounds of step (i).
+  [[nodiscard]] Vector project(const Vector& z) const;
   // Friction: psi(z0 + dz) - psi(z0) of node j with its bound, without cancellation where both
   // points are on the same smooth piece.
   [[nodiscard]] double potential_change(Index j, const double* z0, const double* dz) const;
