@@ -231,7 +231,7 @@ std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const 
     const std::string where =
         spec.contacts.size() == 1 ? "contact" : fmt::format("contact[{}]", part);
     for (Index j = starts[part]; j < starts[part + 1]; ++j) {
-      const Point x = mesh.node(contact.nodes[static_cast<std::size_t>(j)]);
+      const Point x = mesh.point(contact.nodes[static_cast<std::size_t>(j)]);
       if (c.friction == FrictionModel::Coulomb) mu(j) = c.mu;
       if (c.friction != FrictionModel::Tresca) continue;
       s(j) = c.slip_bound(x);
