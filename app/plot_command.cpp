@@ -12,9 +12,7 @@ int run_plot(const PlotArguments& args) {
   const PlotRun run = plot_results(args.output_dir, args.options, false);
   if (run.status == 0) {
     std::string files;
-    for (const std::string& f :
-         figure_files(args.options.formats, result_dimension(args.output_dir),
-                      result_has_friction(args.output_dir)))
+    for (const std::string& f : drawn_figure_files(args.output_dir, args.options))
       files += (files.empty() ? "" : ", ") + args.output_dir + "/" + f;
     fmt::print("figures: {}\n", files);
     return kSuccess;

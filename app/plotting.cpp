@@ -42,8 +42,9 @@ std::string find_script() {
 
 }  // namespace
 
-std::vector<std::string> figure_files(const std::string& formats, int dimension, bool friction) {
-  // As the script reads --format: lower case, spaces ignored, each format once.
+namespace {
+// The formats as the script reads --format: lower case, spaces ignored, each format once.
+std::vector<std::string> chosen_formats(const std::string& formats) {
   std::vector<std::string> chosen;
   std::size_t start = 0;
   while (start <= formats.size()) {
@@ -55,6 +56,12 @@ std::vector<std::string> figure_files(const std::string& formats, int dimension,
     if (std::find(chosen.begin(), chosen.end(), format) == chosen.end()) chosen.push_back(format);
     start = end + 1;
   }
+  return chosen;
+}
+}  // namespace
+
+std::vector<std::string> figure_files(const std::string& formats, int dimension, bool friction) {
+  const std::vector<std::string> chosen = chosen_formats(formats);
   std::vector<std::string> files;
   const std::vector<const char*> names =
       dimension == 3
@@ -62,9 +69,44 @@ std::vector<std::string> figure_files(const std::string& formats, int dimension,
           : std::vector<const char*>{"contact_displacement", "contact_pressure",
                                      "deformed_von_mises", "convergence"};
   std::vector<const char*> all = names;
-  if (friction && dimension == 2) all.push_back("contact_friction");
+  if (friction) all.push_back(dimension == 3 ? "contact_friction_map" : "contact_friction");
   for (const char* name : all)
     for (const std::string& format : chosen) files.push_back(fmt::format("{}.{}", name, format));
+  return files;
+}
+
+std::vector<std::string> step_figure_files(const std::string& outdir, const std::string& formats,
+                                           const std::string& steps) {
+  std::string text;
+  for (const char c : steps)
+    if (!std::isspace(static_cast<unsigned char>(c))) text += c;
+  if (text.empty()) return {};
+  // The steps: those listed, or with "all" every steps/contact_NNNN.csv there is.
+  std::vector<int> numbers;
+  if (text == "all") {
+    for (int k = 1; std::filesystem::exists(std::filesystem::path(outdir) / "steps" /
+                                            fmt::format("contact_{:04d}.csv", k));
+         ++k)
+      numbers.push_back(k);
+  } else {
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t end = std::min(text.find(',', start), text.size());
+      numbers.push_back(std::stoi(text.substr(start, end - start)));
+      start = end + 1;
+    }
+    std::sort(numbers.begin(), numbers.end());
+    numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
+  }
+  const int dimension = result_dimension(outdir);
+  const bool friction = result_has_friction(outdir);
+  const std::string base = dimension == 3
+                               ? (friction ? "contact_friction_map" : "contact_pressure_map")
+                               : (friction ? "contact_friction" : "contact_pressure");
+  std::vector<std::string> files;
+  for (const int k : numbers)
+    for (const std::string& format : chosen_formats(formats))
+      files.push_back(fmt::format("{}_step_{:04d}.{}", base, k, format));
   return files;
 }
 
@@ -87,6 +129,14 @@ bool has_column(const std::string& outdir, const std::string& name) {
   return false;
 }
 }  // namespace
+
+std::vector<std::string> drawn_figure_files(const std::string& outdir, const PlotOptions& options) {
+  std::vector<std::string> files =
+      figure_files(options.formats, result_dimension(outdir), result_has_friction(outdir));
+  for (std::string& f : step_figure_files(outdir, options.formats, options.steps))
+    files.push_back(std::move(f));
+  return files;
+}
 
 int result_dimension(const std::string& outdir) {
   return has_column(outdir, "z") ? 3 : 2;
@@ -153,6 +203,10 @@ PlotRun plot_results(const std::string& outdir, const PlotOptions& options, bool
   if (options.symmetry != 1) {
     arguments.emplace_back("--symmetry");
     arguments.push_back(std::to_string(options.symmetry));
+  }
+  if (!options.steps.empty()) {
+    arguments.emplace_back("--steps");
+    arguments.push_back(options.steps);
   }
   arguments.emplace_back("--");  // a folder named "-x" is not an option
   arguments.push_back(outdir);

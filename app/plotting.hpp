@@ -20,6 +20,9 @@ struct PlotOptions {
   int symmetry = 1;
   /// The formats, separated by commas: png, svg, pdf (the script checks them).
   std::string formats = "png";
+  /// With a loading history, the load steps whose contact figure is drawn too: numbers
+  /// separated by commas, or "all" (the script checks them); empty: none.
+  std::string steps;
 };
 
 /// The files the script writes into the output folder for `formats` (as PlotOptions::formats)
@@ -27,6 +30,15 @@ struct PlotOptions {
 /// results have friction's columns, and contact_friction is drawn too.
 std::vector<std::string> figure_files(const std::string& formats, int dimension,
                                       bool friction = false);
+
+/// The files of the figures of load steps (PlotOptions::steps, checked by the script before) in
+/// `outdir`: "contact_friction_step_0003.png" and the like, in the order of the steps.
+std::vector<std::string> step_figure_files(const std::string& outdir, const std::string& formats,
+                                           const std::string& steps);
+
+/// Every figure a run of the script with `options` wrote into `outdir` (figure_files and
+/// step_figure_files).
+std::vector<std::string> drawn_figure_files(const std::string& outdir, const PlotOptions& options);
 
 /// The dimension of the results in `outdir`, as the script decides it: 3 if contact.csv has a z
 /// column, else 2 (also when it cannot be read: the script says why).

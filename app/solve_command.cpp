@@ -181,9 +181,7 @@ int solve(const SolveArguments& args, LogFormat format) {
     progress.phase("plotting");
     const PlotRun run = plot_results(args.output_dir, args.plot_options, true);
     if (run.status != 0) return failed_plot(progress, run);
-    const std::vector<std::string> figures =
-        figure_files(args.plot_options.formats, result_dimension(args.output_dir),
-                     result_has_friction(args.output_dir));
+    const std::vector<std::string> figures = drawn_figure_files(args.output_dir, args.plot_options);
     progress.report(fmt::format("figures: {}\n", listed(args.output_dir, figures)),
                     {{"event", "figures"}, {"files", paths(args.output_dir, figures)}});
   }

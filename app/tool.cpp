@@ -112,6 +112,12 @@ int run_tool(int argc, char** argv) {
                    "separated by commas (default: png)")
       ->type_name("LIST")
       ->needs(plot_flag);
+  solve_cmd
+      ->add_option("--plot-steps", solve.plot_options.steps,
+                   "With --plot and a loading history: also draw the contact figure of these load "
+                   "steps, numbers separated by commas or all")
+      ->type_name("LIST")
+      ->needs(plot_flag);
 
   CheckArguments check;
   CLI::App* check_cmd =
@@ -141,6 +147,11 @@ int run_tool(int argc, char** argv) {
                    "profile takes N times its contact force (default 1)")
       ->type_name("N")
       ->check(CLI::PositiveNumber);
+  plot_cmd
+      ->add_option("--steps", plot.options.steps,
+                   "With a loading history: also draw the contact figure of these load steps "
+                   "(from steps/), numbers separated by commas or all")
+      ->type_name("LIST");
   plot_cmd
       ->add_option("--format", plot.options.formats,
                    "The formats of the figures: png, svg or pdf, or several separated by commas "

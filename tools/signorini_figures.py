@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Draws the figures of a signorini run from its output folder (docs/output.md).
 
-    python3 tools/plot_results.py OUTDIR [--format png,svg,pdf] [--scale S] [--quiet]
+    python3 tools/plot_results.py OUTDIR [--format png,svg,pdf] [--scale S] [--steps LIST]
+                                   [--quiet]
     python3 tools/plot_results.py --check [--format ...]  # numpy and matplotlib there? (0 or 2)
 
 This module does the work; tools/plot_results.py, the command, only imports it, so that Python
@@ -27,6 +28,12 @@ and for a 3D problem (contact.csv with a z column):
                            node at its distance from the centre, and Hertz's profile where it
                            applies (a rigid sphere, or --hertz-radius R for a body of radius R)
     convergence            as in 2D
+    contact_friction_map   with friction: each node's state over the contact surface, and the
+                           tangential traction as arrows
+
+With a loading history, --steps 1,3 (or all) draws the contact figure of those steps too, from
+steps/contact_NNNN.csv: contact_friction_step_NNNN (contact_pressure_step_NNNN without friction;
+in 3D contact_friction_map_step_NNNN or contact_pressure_map_step_NNNN).
 
 The unit labels come from the `units` setting (summary.json: problem.units, e.g. "m-MPa"); without
 it the labels carry no units. Each file's description (PNG Description, SVG dc:description, PDF
@@ -226,12 +233,12 @@ def read_summary(outdir):
         raise UsageError(f"cannot read '{path}': {e}")
 
 
-def read_contact_csv(outdir):
-    """The columns of contact.csv as arrays; the normal (n_x, n_y) is (0, -1), the paper's bottom
-    edge, in the files of older versions, which did not write it."""
+def read_contact_csv(outdir, name="contact.csv"):
+    """The columns of contact.csv (or of `name`, a step's) as arrays; the normal (n_x, n_y) is
+    (0, -1), the paper's bottom edge, in the files of older versions, which did not write it."""
     import numpy as np
 
-    path = os.path.join(outdir, "contact.csv")
+    path = os.path.join(outdir, name)
     try:
         with open(path, newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
@@ -259,6 +266,10 @@ def read_contact_csv(outdir):
         columns["boundary"] = names
         if "state" in header and "z" not in header:  # 2D friction
             columns["tangential"] = body[:, header.index("tangential")]
+        if "state" in header:
+            if "z" in header:  # 3D friction: the tangential traction, a Cartesian vector
+                columns["tangential"] = np.stack([body[:, header.index(f"tangential_{a}")]
+                                                  for a in "xyz"], axis=1)
             columns["slip"] = body[:, header.index("slip")]
             columns["state"] = [r[header.index("state")].strip() for r in rows[1:] if r]
         if "z" in header:
@@ -504,9 +515,42 @@ def title_of(summary):
     if "n_dofs" in summary:
         text += f" ({summary['n_dofs']} unknowns)"
     text += f", {summary.get('method', '?')}"
+    steps = summary.get("load_steps")
+    if isinstance(steps, list) and steps:  # a loading history: the step drawn, else the last
+        k = summary.get("_step", len(steps))
+        factor = steps[k - 1].get("factor", 1) if isinstance(steps[k - 1], dict) else 1
+        text += f", load step {k} of {len(steps)} (factor {factor:g})"
     if not summary.get("converged", True):
         text += f" — NOT CONVERGED ({summary.get('termination', '?')})"
     return text
+
+
+def step_view(summary, k):
+    """summary.json as for load step k (from 1) of its loading history: that step's contact
+    force and convergence, and `_step` for the titles (title_of)."""
+    steps = summary.get("load_steps")
+    if not isinstance(steps, list) or not 1 <= k <= len(steps):
+        raise UsageError(f"--steps: no load step {k} in summary.json (" +
+                         (f"steps 1 to {len(steps)})" if isinstance(steps, list) and steps
+                          else "no loading history)"))
+    view = dict(summary)
+    step = steps[k - 1]
+    view["contact_force"] = step.get("contact_force")
+    view["converged"] = step.get("converged", True)
+    view["termination"] = "at this step"
+    view["_step"] = k
+    if isinstance(summary.get("friction"), dict):  # the states: counted from the step's csv
+        view["friction"] = {"law": summary["friction"].get("law", "?")}
+    return view
+
+
+def step_csv(k):
+    """A load step's contact.csv, relative to the output folder (result_writer.cpp)."""
+    return os.path.join("steps", f"contact_{k:04d}.csv")
+
+
+def step_figure(name, k):
+    return f"{name}_step_{k:04d}"
 
 
 # Layout ------------------------------------------------------------------------------------
@@ -787,6 +831,18 @@ def shade_states(ax, t, states):
             ax.axvspan(lo, hi, color=color, alpha=0.13, lw=0, label=text if i == 0 else None)
 
 
+def friction_law(summary):
+    """The friction law as summary.json names it."""
+    friction = summary.get("friction")
+    return friction.get("law", "?") if isinstance(friction, dict) else "?"
+
+
+def state_counts(states):
+    """'12 sticking, 20 sliding, 8 separated' for the nodes' states."""
+    return ", ".join(f"{sum(1 for s in states if s == name)} {name}"
+                     for name in ("sticking", "sliding", "separated"))
+
+
 def figure_friction(summary, contact, units, measure):
     """2D friction: the pressure, the tangential traction (signed, along tau) and its bound where
     the node slides, and the slip on a second axis, with the stick and slip zones shaded."""
@@ -812,20 +868,26 @@ def figure_friction(summary, contact, units, measure):
     ax.set_xlabel(xlabel)
     ax.set_ylabel(axis_label("traction", units.stress, k))
     ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
+    # A small contact zone on a long boundary: zoomed onto it, with as much again either side.
+    touching = np.array([s != "separated" for s in states], dtype=bool)
+    zoomed = False
+    if np.any(touching) and len(t) > 1:
+        lo, hi = float(t[touching].min()), float(t[touching].max())
+        if hi - lo < 0.4 * (float(t.max()) - float(t.min())):
+            pad = max(hi - lo, 1e-12 * max(abs(lo), abs(hi), 1.0))
+            ax.set_xlim(lo - pad, hi + pad)
+            zoomed = True
     right = ax.twinx()
-    ks = power_of_ten(slip)
+    # The slip where the node touches (a separated node moves freely: no slip to speak of).
+    slip = np.where(touching, slip, np.nan)
+    ks = power_of_ten(slip[touching]) if np.any(touching) else 0
     right.plot(t, slip / 10.0 ** ks, color="black", lw=1.0, ls=(0, (4, 2)),
-               label="slip (accumulated)")
+               label="slip (accumulated) where touching")
     right.set_ylabel(axis_label("slip", units.length, ks))
-    right.set_ylim(bottom=0.0, top=max(float(np.nanmax(slip)) / 10.0 ** ks, 1e-300) * 1.1)
-    friction = summary.get("friction", {})
-    counts = ", ".join(f"{friction[s]} {s}" for s in ("sticking", "sliding", "separated")
-                       if isinstance(friction.get(s), int))
-    subtitle = f"Friction ({friction.get('law', '?')}) along the contact boundary" + \
-        (f": {counts}" if counts else "")
-    steps = summary.get("load_steps")
-    if isinstance(steps, list) and steps:
-        subtitle += f", load step {len(steps)} (factor {steps[-1].get('factor', 1):g})"
+    top = float(np.nanmax(slip)) / 10.0 ** ks if np.any(touching) else 1.0
+    right.set_ylim(bottom=0.0, top=max(top, 1e-300) * 1.1)
+    subtitle = f"Friction ({friction_law(summary)}) along the contact boundary: " + \
+        state_counts(states) + (" (zoomed onto the contact zone)" if zoomed else "")
     title = wrapped(title_of(summary) + "\n" + subtitle, 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     ax.grid(True, alpha=0.3)
@@ -1279,6 +1341,77 @@ def node_spacing(a, b):
                                     b[edges[:, 0]] - b[edges[:, 1]])))
 
 
+def zoom_onto_zone(ax, zone, a, b):
+    """A small contact zone (contact_zone) on a large surface: the axes zoomed onto it. Returns
+    whether they were."""
+    import numpy as np
+
+    if zone is None:
+        return False
+    _, ((a0, a1), (b0, b1)) = zone
+    c0, c1 = 0.5 * (a0 + a1), 0.5 * (b0 + b1)  # the middle of the zone's extent
+    size = max(a1 - a0, b1 - b0, node_spacing(a, b) * 4)
+    whole = max(np.ptp(a), np.ptp(b))
+    if size >= 0.4 * whole:
+        return False
+    half = 0.8 * size
+    ax.set_xlim(c0 - half, c0 + half)
+    ax.set_ylim(c1 - half, c1 + half)
+    return True
+
+
+def place_map(fig, ax, measure, title):
+    """A map (equal axes) under its title, as large as the figure allows."""
+    w, h = fig.get_size_inches() * 72.0
+    top_margin = BORDER + measure.height(title) + TITLE_PAD
+    for _ in range(2):
+        left, offset = measure.left(ax)
+        bottom, _ = measure.bottom(ax)
+        left += BORDER
+        bottom += BORDER
+        height = h - bottom - top_margin - offset
+        size = min(w - left - BORDER, height)
+        place(fig, ax, left + 0.5 * (w - left - BORDER - size), bottom, size, height)
+
+
+def figure_friction_map(summary, contact, units, measure):
+    """3D friction: the contact surface seen along its mean normal, each node coloured by its
+    state (sticking, sliding, separated), the tangential traction as arrows in that plane."""
+    import numpy as np
+
+    i, j, a, b = surface_coordinates(contact)
+    states = contact["state"]
+    q = contact["tangential"]
+    fig = new_figure(7.5, 7.0)
+    ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+    for state, color in (("separated", "0.75"), ("sticking", "tab:green"),
+                         ("sliding", "tab:purple")):
+        rows = np.array([s == state for s in states], dtype=bool)
+        if np.any(rows):
+            ax.plot(a[rows], b[rows], "o", color=color, ms=2.5 if len(a) > 2000 else 4,
+                    label=f"{state}: {int(np.count_nonzero(rows))}", zorder=2)
+    moving = np.hypot(q[:, i], q[:, j]) > 0
+    if np.any(moving):
+        arrows = ax.quiver(a[moving], b[moving], q[moving, i], q[moving, j], color="black",
+                           angles="xy", zorder=3, width=0.003)
+        reference = float(np.max(np.hypot(q[:, i], q[:, j])))
+        ax.quiverkey(arrows, 0.82, 1.0, reference, with_unit(f"{reference:.3g}", units.stress)
+                     if units.stress else f"{reference:.3g}", labelpos="W", coordinates="axes",
+                     fontproperties={"size": LEGEND_SIZE})
+    ax.set_aspect("equal")
+    ax.set_xlabel(axis_label(AXIS_NAMES[i], units.length))
+    ax.set_ylabel(axis_label(AXIS_NAMES[j], units.length))
+    zoomed = zoom_onto_zone(ax, contact_zone(contact, i, j), a, b)
+    subtitle = (f"Friction ({friction_law(summary)}) over the contact surface, seen along "
+                f"{AXIS_NAMES[3 - i - j]}; arrows: the tangential traction")
+    subtitle += " (zoomed onto the contact zone)" if zoomed else ""
+    title = wrapped(title_of(summary) + "\n" + subtitle, 7.5)
+    ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
+    ax.legend(fontsize=LEGEND_SIZE, loc="lower right")
+    place_map(fig, ax, measure, title)
+    return fig, describe_limits(ax)
+
+
 def figure_pressure_map(summary, contact, units, measure):
     import numpy as np
 
@@ -1301,17 +1434,7 @@ def figure_pressure_map(summary, contact, units, measure):
     ax.set_aspect("equal")
     ax.set_xlabel(axis_label(AXIS_NAMES[i], units.length))
     ax.set_ylabel(axis_label(AXIS_NAMES[j], units.length))
-    zoomed = False
-    if zone is not None:
-        _, ((a0, a1), (b0, b1)) = zone
-        c0, c1 = 0.5 * (a0 + a1), 0.5 * (b0 + b1)  # the middle of the zone's extent
-        size = max(a1 - a0, b1 - b0, node_spacing(a, b) * 4)
-        whole = max(np.ptp(a), np.ptp(b))
-        if size < 0.4 * whole:  # a small zone on a large surface: zoomed onto it
-            half = 0.8 * size
-            ax.set_xlim(c0 - half, c0 + half)
-            ax.set_ylim(c1 - half, c1 + half)
-            zoomed = True
+    zoomed = zoom_onto_zone(ax, zone, a, b)
     colorbar = fig.colorbar(image, cax=cax)
     colorbar.set_label(axis_label("contact pressure", units.stress, k), fontsize=TEXT_SIZE)
     subtitle = f"Contact pressure over the contact surface, seen along {AXIS_NAMES[3 - i - j]}"
@@ -1507,9 +1630,11 @@ def draw_and_save(outdir, name, make, written, formats):
     gc.collect()
 
 
-def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(None, 1)):
+def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(None, 1),
+         steps=()):
     """Reads the results and draws the figures that `next_figure()` names, until it returns
-    None, into temporary files (listed in `written`); returns the names drawn."""
+    None, into temporary files (listed in `written`); returns the names drawn. `steps`: the load
+    steps whose contact figures are drawn too."""
     import_plotting()
     summary = read_summary(outdir)
     units = units_of_summary(summary, warnings)
@@ -1521,13 +1646,11 @@ def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(Non
             "contact_pressure": lambda: figure_pressure_profile(summary, contact, units, measure,
                                                                 *hertz),
         }
+        if "state" in contact:
+            makers["contact_friction_map"] = lambda: figure_friction_map(summary, contact, units,
+                                                                         measure)
     else:
-        # Shared by the figures along the contact boundary.
-        contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
-        contact["parts"] = boundary_parts(contact)
-        contact["intervals"] = [iv for _, rows in contact["parts"]
-                                for iv in contact_intervals(contact["t"][rows],
-                                                            contact["pressure"][rows] > 0)]
+        along_boundary(contact, units)
         makers = {
             "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),
             "contact_pressure": lambda: figure_pressure(summary, contact, units, measure),
@@ -1538,11 +1661,36 @@ def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(Non
         if "state" in contact:
             makers["contact_friction"] = lambda: figure_friction(summary, contact, units, measure)
     makers["convergence"] = lambda: figure_convergence(summary, measure)
+    three = "z" in contact
+    for k in steps:  # each step's contact.csv, read when its figure is drawn
+        makers[step_figure(step_base(3 if three else 2, "state" in contact), k)] = \
+            lambda k=k: figure_of_step(outdir, summary, k, three, units, measure)
     drawn = []
     while (name := next_figure()) is not None:
         drawn.append(name)
         draw_and_save(outdir, name, makers[name], written, formats)
     return drawn
+
+
+def along_boundary(contact, units):
+    """2D: what the figures along the contact boundary share, added to `contact`."""
+    contact["t"], contact["t_label"] = boundary_coordinate(contact, units)
+    contact["parts"] = boundary_parts(contact)
+    contact["intervals"] = [iv for _, rows in contact["parts"]
+                            for iv in contact_intervals(contact["t"][rows],
+                                                        contact["pressure"][rows] > 0)]
+
+
+def figure_of_step(outdir, summary, k, three, units, measure):
+    """Load step k's figure of the contact (step_base) from its steps/contact_NNNN.csv."""
+    contact = read_contact_csv(outdir, step_csv(k))
+    view = step_view(summary, k)
+    friction = "state" in contact
+    if three:
+        return (figure_friction_map if friction else figure_pressure_map)(view, contact, units,
+                                                                           measure)
+    along_boundary(contact, units)
+    return (figure_friction if friction else figure_pressure)(view, contact, units, measure)
 
 
 def cores():
@@ -1558,10 +1706,24 @@ ORDER = ["deformed_von_mises", "convergence", "contact_displacement", "contact_p
 ORDER_3D = ["contact_pressure_map", "convergence", "contact_pressure"]
 
 
-def order_of(dimension, friction=False):
+def step_base(dimension, friction):
+    """The figure drawn for each load step that --steps chooses."""
     if dimension == 3:
-        return ORDER_3D
-    return ORDER + ["contact_friction"] if friction else ORDER
+        return "contact_friction_map" if friction else "contact_pressure_map"
+    return "contact_friction" if friction else "contact_pressure"
+
+
+def figure_names(dimension, friction=False, steps=()):
+    """The figures, in the order of docs/output.md."""
+    names = list(FIGURES_3D if dimension == 3 else FIGURES)
+    if friction:
+        names.append("contact_friction_map" if dimension == 3 else "contact_friction")
+    return names + [step_figure(step_base(dimension, friction), k) for k in steps]
+
+
+def order_of(dimension, friction=False, steps=()):
+    first = ORDER_3D if dimension == 3 else ORDER
+    return first + [n for n in figure_names(dimension, friction, steps) if n not in first]
 
 
 class Helper:
@@ -1570,7 +1732,7 @@ class Helper:
     one at a time, so that a process that is faster (or started sooner) draws more; the helper
     reports the files it wrote, or its error, through another pipe."""
 
-    def __init__(self, outdir, scale, formats, order, hertz=(None, 1)):
+    def __init__(self, outdir, scale, formats, order, hertz=(None, 1), steps=()):
         self.outdir = outdir
         self.formats = formats
         self.order = order
@@ -1583,8 +1745,8 @@ class Helper:
         self.pid = os.fork()
         if self.pid == 0:
             os.close(report_read)
-            self.run(queue_read, report_write, outdir, scale, formats, order,
-                     hertz)  # does not return
+            self.run(queue_read, report_write, outdir, scale, formats, order, hertz,
+                     steps)  # does not return
         os.close(report_write)
         self.queue = queue_read
         self.report = report_read
@@ -1596,7 +1758,7 @@ class Helper:
         return self.order[index[0]] if index else None
 
     @staticmethod
-    def run(queue, report_end, outdir, scale, formats, order, hertz):
+    def run(queue, report_end, outdir, scale, formats, order, hertz, steps):
         status, written = 0, []
 
         def next_figure():
@@ -1605,7 +1767,7 @@ class Helper:
 
         try:
             drawn = draw(outdir, next_figure, scale, written, formats, warnings=False,
-                         hertz=hertz)
+                         hertz=hertz, steps=steps)
             report = {"drawn": drawn}
         except UsageError as e:
             status, report = 2, {"usage": str(e)}
@@ -1664,23 +1826,25 @@ class Helper:
             pass
 
 
-def save_all(outdir, scale, quiet, formats, hertz=(None, 1)):
+def save_all(outdir, scale, quiet, formats, hertz=(None, 1), steps=()):
     """Every file is written under a temporary name first and renamed at the end, so that a
     failure leaves no half-written picture and keeps the pictures of an earlier run. With two
     cores or more, two processes draw the figures (about half of the time)."""
     dimension = contact_dimension(outdir)
     friction = contact_friction(outdir)
-    order = order_of(dimension, friction)
+    order = order_of(dimension, friction, steps)
     helper = None
     if cores() >= 2 and hasattr(os, "fork"):
-        helper = Helper(outdir, scale, formats, order, hertz)
+        helper = Helper(outdir, scale, formats, order, hertz, steps)
     written, mine = [], []
     try:
         if helper is None:
             figures = iter(order)
-            draw(outdir, lambda: next(figures, None), scale, written, formats, hertz=hertz)
+            draw(outdir, lambda: next(figures, None), scale, written, formats, hertz=hertz,
+                 steps=steps)
         else:
-            mine = draw(outdir, helper.next_figure, scale, written, formats, hertz=hertz)
+            mine = draw(outdir, helper.next_figure, scale, written, formats, hertz=hertz,
+                        steps=steps)
             waiting, helper = helper, None
             try:
                 theirs = waiting.finish()
@@ -1701,10 +1865,34 @@ def save_all(outdir, scale, quiet, formats, hertz=(None, 1)):
                 os.unlink(tmp)
     if not quiet:
         print("figures: " + ", ".join(os.path.join(outdir, f"{n}.{fmt}")
-                                      for n in (FIGURES_3D if dimension == 3 else
-                                                FIGURES + (["contact_friction"] if friction
-                                                           else []))
+                                      for n in figure_names(dimension, friction, steps)
                                       for fmt in formats))
+
+
+def chosen_steps(outdir, text):
+    """The load steps of --steps ("1,3" or "all"; "" none), each checked to be one of the
+    history's with its contact.csv in steps/."""
+    text = text.replace(" ", "")
+    if not text:
+        return []
+    steps = read_summary(outdir).get("load_steps")
+    count = len(steps) if isinstance(steps, list) else 0
+    if count == 0:
+        raise UsageError(f"--steps {text}: '{outdir}' has no loading history (summary.json has "
+                         "no load_steps)")
+    if text == "all":
+        chosen = list(range(1, count + 1))
+    else:
+        try:
+            chosen = [int(k) for k in text.split(",")]
+        except ValueError:
+            raise UsageError(f"--steps {text}: expected step numbers separated by commas, or all")
+    for k in chosen:
+        if not 1 <= k <= count:
+            raise UsageError(f"--steps {text}: step {k} is not one of the history's, 1 to {count}")
+        if not os.path.exists(os.path.join(outdir, step_csv(k))):
+            raise UsageError(f"'{os.path.join(outdir, step_csv(k))}' not found")
+    return sorted(set(chosen))
 
 
 def main(argv):
@@ -1723,6 +1911,9 @@ def main(argv):
     parser.add_argument("--symmetry", type=int, default=1, metavar="N",
                         help="3D: the model is 1/N of the body (symmetry planes held by rollers: "
                              "2, 4 or 8); Hertz's profile takes N times its contact force")
+    parser.add_argument("--steps", default="", metavar="LIST",
+                        help="with a loading history: also draw the contact figure of these load "
+                             "steps (numbers separated by commas, or 'all'), from steps/")
     parser.add_argument("--quiet", action="store_true", help="print nothing but errors")
     parser.add_argument("--check", action="store_true",
                         help="only check that numpy and matplotlib are installed")
@@ -1744,7 +1935,9 @@ def main(argv):
         if args.symmetry < 1:
             raise UsageError(f"--symmetry {args.symmetry}: expected a whole number >= 1")
         check_results(args.outdir)
-        save_all(args.outdir, args.scale, args.quiet, formats, (args.hertz_radius, args.symmetry))
+        steps = chosen_steps(args.outdir, args.steps)
+        save_all(args.outdir, args.scale, args.quiet, formats, (args.hertz_radius, args.symmetry),
+                 steps)
     except UsageError as e:
         fail(2, e)
     return 0

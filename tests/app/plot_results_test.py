@@ -9,6 +9,7 @@ Needs numpy (python3-numpy); matplotlib is not imported.
 """
 
 import importlib.util
+import json
 import os
 import sys
 import tempfile
@@ -157,6 +158,51 @@ class HelpersTest(unittest.TestCase):
         self.assertEqual(label, "arc length along each contact boundary")
 
 
+class StepsTest(unittest.TestCase):
+    """--steps: the load steps of a history, checked against summary.json and steps/."""
+
+    def folder(self, d, steps):
+        with open(os.path.join(d, "summary.json"), "w") as f:
+            json.dump({"load_steps": [{"factor": (k + 1) / steps, "contact_force": 1.0 + k}
+                                      for k in range(steps)]} if steps else {}, f)
+        os.makedirs(os.path.join(d, "steps"), exist_ok=True)
+        for k in range(1, steps + 1):
+            with open(os.path.join(d, plot.step_csv(k)), "w") as f:
+                f.write("x,y\n")
+
+    def test_chosen_steps(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.folder(d, 3)
+            self.assertEqual(plot.chosen_steps(d, ""), [])
+            self.assertEqual(plot.chosen_steps(d, "3, 1,3"), [1, 3])
+            self.assertEqual(plot.chosen_steps(d, "all"), [1, 2, 3])
+            with self.assertRaisesRegex(plot.UsageError, "step 4 is not one of the history's"):
+                plot.chosen_steps(d, "4")
+            with self.assertRaisesRegex(plot.UsageError, "expected step numbers"):
+                plot.chosen_steps(d, "one")
+            os.unlink(os.path.join(d, plot.step_csv(2)))
+            with self.assertRaisesRegex(plot.UsageError, "contact_0002.csv' not found"):
+                plot.chosen_steps(d, "2")
+        with tempfile.TemporaryDirectory() as d:
+            self.folder(d, 0)
+            with self.assertRaisesRegex(plot.UsageError, "no loading history"):
+                plot.chosen_steps(d, "1")
+
+    def test_the_view_of_a_step(self):
+        summary = {"contact_force": 9.0, "friction": {"law": "coulomb", "sticking": 3},
+                   "load_steps": [{"factor": 0.5, "contact_force": 4.0, "converged": True},
+                                  {"factor": 1.0, "contact_force": 9.0, "converged": True}]}
+        view = plot.step_view(summary, 1)
+        self.assertEqual(view["contact_force"], 4.0)
+        self.assertEqual(view["friction"], {"law": "coulomb"})
+        self.assertIn("load step 1 of 2 (factor 0.5)", plot.title_of(view))
+        self.assertIn("load step 2 of 2 (factor 1)", plot.title_of(summary))
+        self.assertEqual(plot.figure_names(2, True, [2])[-1], "contact_friction_step_0002")
+        self.assertEqual(plot.figure_names(3, True, [1])[-2:],
+                         ["contact_friction_map", "contact_friction_map_step_0001"])
+        self.assertEqual(plot.figure_names(3, False, [1])[-1], "contact_pressure_map_step_0001")
+
+
 class ReadingTest(unittest.TestCase):
     def write(self, folder, name, text):
         with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
@@ -258,7 +304,7 @@ class TwoProcessesTest(unittest.TestCase):
         here = os.getpid()
 
         def fake_draw(outdir, next_figure, scale, written, formats, warnings=True,
-                      hertz=(None, 1)):
+                      hertz=(None, 1), steps=()):
             if os.getpid() == here:
                 time.sleep(0.3)
                 if fails == "here":

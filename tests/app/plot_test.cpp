@@ -486,3 +486,44 @@ TEST(Plot, FrictionAddsTheFrictionFigure) {
 
 }  // namespace
 }  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// A loading history: --plot-steps draws the contact figure of the steps asked for (from
+// steps/contact_NNNN.csv), the tool lists them, and a step that is not there is refused with
+// exit status 2. In 3D with friction the friction map is drawn too.
+TEST(Plot, LoadStepsAndTheFrictionMap) {
+  if (!have_matplotlib()) GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "out";
+  const ToolRun r =
+      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/cattaneo_mindlin.toml") +
+                        " --plot --plot-steps 2,4 -o " + quoted(out.string()));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  for (const char* name : {"contact_friction_step_0002", "contact_friction_step_0004"}) {
+    const fs::path png = out / (std::string(name) + ".png");
+    ASSERT_TRUE(fs::exists(png)) << png;
+    const std::map<std::string, std::string> text = png_text(png);
+    EXPECT_EQ(text.count("Title") ? text.at("Title") : "", name);
+    EXPECT_CONTAINS(r.out, png.string());
+  }
+  EXPECT_FALSE(fs::exists(out / "contact_friction_step_0001.png"));
+  const ToolRun bad = run_tool(dir, "plot " + quoted(out.string()) + " --steps 9");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_CONTAINS(bad.err, "step 9 is not one of the history's, 1 to 4");
+
+  const fs::path out3 = dir / "out3";
+  const ToolRun three =
+      run_tool(dir, "solve " + quoted(SIGNORINI_EXAMPLES_DIR "/box_on_sphere.toml") +
+                        " -q --set 'contact.friction=\"coulomb\"' --set contact.mu=0.2 --set "
+                        "loading.steps=2 --plot --plot-steps all -o " +
+                        quoted(out3.string()));
+  ASSERT_EQ(three.status, 0) << three.out << three.err;
+  EXPECT_TRUE(fs::exists(out3 / "contact_friction_map.png"));
+  EXPECT_TRUE(fs::exists(out3 / "contact_friction_map_step_0001.png"));
+  EXPECT_TRUE(fs::exists(out3 / "contact_friction_map_step_0002.png"));
+}
+
+}  // namespace
+}  // namespace signorini

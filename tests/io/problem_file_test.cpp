@@ -1009,6 +1009,54 @@ TEST(ProblemFileLoading, BadLoadingGetsOneLineNamingTheKey) {
   EXPECT_CONTAINS(error_of(kBase + "[loading]\nstep = 3\n"), "loading");
 }
 
+// kBase with the right end's traction given `factors` of its own.
+std::string with_own_factors(const std::string& factors) {
+  std::string text = kBase;
+  const std::string p = "p = [\"0\", \"1\"]\n";
+  text.replace(text.find(p), p.size(), p + "factors = " + factors + "\n");
+  return text;
+}
+
+TEST(ProblemFileLoading, EntriesWithFactorsOfTheirOwn) {
+  const std::string body = "[body_force]\nf = [\"0\", \"-1\"]\nfactors = [1, 0.5]\n";
+  const std::string more =
+      "[[point_load]]\nat = [1.5, 1.0]\nforce = [0, -1]\nfactors = [0, 1]\n"
+      "[[pressure]]\nboundary = \"top\"\np = 2\nfactors = [3, 0]\n"
+      "[[displacement]]\nboundary = \"right\"\nx = 1e-6\nfactors = [0, -1]\n";
+  const LoadedProblem loaded = parse_problem_string(
+      with_own_factors("[0, 2.5]") + body + more + "[loading]\nsteps = 2\n", "t.toml");
+  const ProblemSpec& spec = loaded.spec;
+  EXPECT_EQ(spec.tractions[0].factors, (std::vector<double>{0.0, 2.5}));
+  EXPECT_TRUE(spec.tractions[1].factors.empty());
+  EXPECT_EQ(spec.body_force_factors, (std::vector<double>{1.0, 0.5}));
+  EXPECT_EQ(spec.point_loads[0].factors, (std::vector<double>{0.0, 1.0}));
+  EXPECT_EQ(spec.pressures[0].factors, (std::vector<double>{3.0, 0.0}));
+  EXPECT_EQ(spec.displacements[0].factors, (std::vector<double>{0.0, -1.0}));
+  // The effective settings keep them: read again, they give the same.
+  const ProblemSpec again = parse_problem_string(loaded.effective_toml, "effective.toml").spec;
+  EXPECT_EQ(again.tractions[0].factors, spec.tractions[0].factors);
+  EXPECT_EQ(again.body_force_factors, spec.body_force_factors);
+  EXPECT_EQ(again.point_loads[0].factors, spec.point_loads[0].factors);
+  EXPECT_EQ(again.pressures[0].factors, spec.pressures[0].factors);
+  EXPECT_EQ(again.displacements[0].factors, spec.displacements[0].factors);
+}
+
+TEST(ProblemFileLoading, BadOwnFactorsGetOneLineNamingTheKey) {
+  EXPECT_CONTAINS(error_of(with_own_factors("[0, 1]")), "traction[0].factors");
+  EXPECT_CONTAINS(error_of(with_own_factors("[0, 1]")), "[loading]");
+  EXPECT_CONTAINS(error_of(with_own_factors("[0, 1]") + "[loading]\nsteps = 3\n"),
+                  "traction[0].factors: expected 3 load factors, one per step of [loading], got 2");
+  EXPECT_CONTAINS(error_of(with_own_factors("[0, \"a\"]") + "[loading]\nsteps = 2\n"),
+                  "traction[0].factors[1]");
+  EXPECT_CONTAINS(error_of(with_own_factors("[]") + "[loading]\nsteps = 2\n"),
+                  "traction[0].factors");
+  EXPECT_CONTAINS(error_of(with_own_factors("0.5") + "[loading]\nsteps = 2\n"),
+                  "traction[0].factors");
+  EXPECT_CONTAINS(error_of(kBase + "[body_force]\nf = [\"0\", \"-1\"]\nfactors = [1]\n"
+                                   "[loading]\nsteps = 2\n"),
+                  "body_force.factors: expected 2");
+}
+
 }  // namespace
 }  // namespace signorini
 

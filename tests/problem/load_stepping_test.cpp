@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <string>
+
+#include "signorini/core/error.hpp"
 #include "signorini/io/problem_file.hpp"
 
 namespace signorini {
@@ -91,6 +95,73 @@ TEST(LoadStepping, CoulombDependsOnThePathAndAccumulatesSlip) {
   ASSERT_EQ(s2.size(), model.problem.contact.size());
   for (Index j = 0; j < s2.size(); ++j) EXPECT_GE(s2(j), s0(j) - 1e-15);
   EXPECT_GT((s2 - s0).maxCoeff(), 0.0);
+}
+
+// Loads and displacements with factors of their own: at each step the model is the one whose
+// entries are each scaled by their factor (the others by the history's), built directly; so are
+// its free loads, gaps, applied loads and full displacements, and (frictionless: the path does
+// not matter) the solution of each step.
+TEST(LoadStepping, OwnFactorsActAsTheEntriesScaledAlone) {
+  const std::vector<double> history = {0.8, 1.0};
+  const std::vector<double> traction = {0.0, 0.5}, point = {0.0, 3.0}, pull = {1.0, 0.25};
+  const auto spec_of = [&](std::optional<std::size_t> step) {
+    ProblemSpec spec = paper_benchmark(12, 4);
+    PointLoadSpec pl;
+    pl.at = Point(1.5, 1.0, 0.0);
+    pl.force = Eigen::Vector3d(0.0, -0.2, 0.0);
+    spec.point_loads = {pl};
+    DisplacementSpec d;
+    d.boundary = "right";
+    d.values[0] = [](const Point&) { return -2e-6; };
+    d.texts[0] = "-2e-6";
+    spec.displacements = {d};
+    if (!step) {  // the loading history, each entry's own factors
+      spec.load_factors = history;
+      spec.tractions[0].factors = traction;
+      spec.point_loads[0].factors = point;
+      spec.displacements[0].factors = pull;
+      return spec;
+    }
+    const std::size_t k = *step;  // the same, each entry scaled by its factor of step k
+    const auto scaled = [](VectorField f, double t) {
+      return [f, t](const Point& x) -> Eigen::Vector3d { return t * f(x); };
+    };
+    spec.tractions[0].p = scaled(spec.tractions[0].p, traction[k]);
+    spec.tractions[1].p = scaled(spec.tractions[1].p, history[k]);
+    spec.point_loads[0].force *= point[k];
+    spec.displacements[0].values[0] = [t = pull[k]](const Point&) { return -2e-6 * t; };
+    return spec;
+  };
+  const Model model = build_model(spec_of(std::nullopt));
+  ASSERT_EQ(model.load_groups.size(), 3U);
+  std::vector<ContactResult> steps;
+  static_cast<void>(solve_load_steps(model, tight(model), history,
+                                     [&](int, const ContactResult& r) { steps.push_back(r); }));
+  ASSERT_EQ(steps.size(), 2U);
+  for (std::size_t k = 0; k < history.size(); ++k) {
+    const Model direct = build_model(spec_of(k));
+    const int step = static_cast<int>(k) + 1;
+    const double t = history[k];
+    EXPECT_LT(relative(model.free_loads(t, step), direct.problem.b), 1e-13) << step;
+    EXPECT_LT(relative(model.applied_loads(t, step), direct.loads), 1e-13) << step;
+    EXPECT_LT((model.contact_gaps(t, step) - direct.problem.contact.gaps).norm(), 1e-18) << step;
+    const ContactResult r = solve_contact(direct.problem, tight(direct));
+    ASSERT_TRUE(r.summary.converged());
+    ASSERT_GT(r.summary.num_active, 0);
+    ASSERT_TRUE(steps[k].summary.converged());
+    EXPECT_EQ(steps[k].load_step, step);
+    EXPECT_LT(relative(steps[k].u, r.u), 1e-8) << step;
+    EXPECT_LT(relative(steps[k].l, r.l), 1e-8) << step;
+    EXPECT_LT(relative(model.full_displacement(steps[k]), direct.dofs.expand(r.u)), 1e-8) << step;
+  }
+  // A history of another length than the entries' own factors is refused, naming the entry.
+  try {
+    static_cast<void>(solve_load_steps(model, tight(model), {1.0}));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("traction[0].factors: expected 1"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -26,6 +26,9 @@ struct ContactResult {
   /// The load factor of the loads and prescribed displacements this solution is for (a step of
   /// a loading history; 1 otherwise): the writers expand u with the prescribed values times it.
   double load_factor = 1.0;
+  /// The step of a loading history it is (from 1; 0: none), which picks the factors of the
+  /// loads that have their own (problem/model.hpp, Model::load_groups).
+  int load_step = 0;
   SolveSummary summary;
 };
 

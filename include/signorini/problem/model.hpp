@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "signorini/contact/contact_problem.hpp"
+#include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/core/timing_table.hpp"
 #include "signorini/fem/dof_map.hpp"
@@ -32,6 +33,16 @@ struct PlacedPointLoad {
   Point at = Point::Zero();
   double distance = 0.0;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
+};
+
+/// A load or prescribed-displacement entry with load factors of its own in a loading history
+/// (an entry's `factors`, problem-format.md [loading]); the others follow the history's factor.
+struct LoadGroup {
+  std::string entry;                   ///< "traction[1]", for messages
+  std::vector<double> factors;         ///< one per step of the history
+  Vector loads;                        ///< full: the entry's loads at factor 1 (empty: none)
+  std::vector<Index> prescribed_dofs;  ///< full dofs whose prescribed value is the entry's
+  Vector b;                            ///< free: its part of problem.b at factor 1
 };
 
 struct Model {
@@ -60,9 +71,28 @@ struct Model {
   /// The friction law when a contact boundary has friction (null otherwise): problem.contact
   /// then has the tangential rows in N, and solver.law points to this law.
   std::shared_ptr<const FrictionLaw> friction;
+  /// The entries with load factors of their own (empty without).
+  std::vector<LoadGroup> load_groups;
 
   /// The name of the contact boundary of contact-set row j.
   [[nodiscard]] const std::string& contact_boundary_of(Index j) const;
+
+  // A state of a loading history: `factor` on the loads and prescribed displacements without
+  // factors of their own, each load group's at step `step` (from 1; 0: outside a history, the
+  // groups at `factor` too). problem.b, loads and the contact gaps are those at factor 1.
+  /// Per full dof, the factor of its prescribed value.
+  [[nodiscard]] Vector prescribed_scales(double factor, int step) const;
+  /// The applied loads on the full dofs.
+  [[nodiscard]] Vector applied_loads(double factor, int step) const;
+  /// The loads on the free dofs, b = f - K u_D.
+  [[nodiscard]] Vector free_loads(double factor, int step) const;
+  /// The contact set's gaps: g - nu . u_D at the node (fem/contact_boundary.cpp) with u_D scaled.
+  [[nodiscard]] Vector contact_gaps(double factor, int step) const;
+  /// The full displacement of a solution u (free dofs), with the prescribed values scaled.
+  [[nodiscard]] Vector full_displacement(const Vector& u, double factor, int step) const;
+  [[nodiscard]] Vector full_displacement(const ContactResult& r) const {
+    return full_displacement(r.u, r.load_factor, r.load_step);
+  }
 };
 
 /// Throws InputError on anything unusable: unknown boundary names, rigid motions that the clamps

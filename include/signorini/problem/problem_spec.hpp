@@ -44,6 +44,9 @@ struct DisplacementSpec {
   /// other from u . n, a corner of two normal entries both.
   ScalarField normal;
   std::string normal_text;
+  /// Its own load factors, one per step of the loading history (ProblemSpec::load_factors);
+  /// empty: it follows the history's.
+  std::vector<double> factors = {};
 };
 
 /// A pressure p(x) normal to a boundary part: the traction -p n, n the outward unit normal at
@@ -52,15 +55,17 @@ struct DisplacementSpec {
 struct PressureSpec {
   std::string boundary;
   ScalarField p;
-  std::string text;  ///< how p was given, for reports
+  std::string text;                  ///< how p was given, for reports
+  std::vector<double> factors = {};  ///< as DisplacementSpec::factors
 };
 
 /// sigma(u) n = p on a boundary part (Gamma_N), or on the part of it inside `region`.
 struct TractionSpec {
   std::string boundary;
   VectorField p;
-  std::string description;  ///< how p was given (e.g. the expressions), for reports
-  CoordinateBox region;     ///< unbounded: the whole boundary part
+  std::string description;           ///< how p was given (e.g. the expressions), for reports
+  CoordinateBox region;              ///< unbounded: the whole boundary part
+  std::vector<double> factors = {};  ///< as DisplacementSpec::factors
 };
 
 /// A force at one mesh node: the node nearest to `at` (on `boundary` if it is not empty). In 2D
@@ -69,6 +74,7 @@ struct PointLoadSpec {
   Point at = Point::Zero();
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   std::string boundary;
+  std::vector<double> factors = {};  ///< as DisplacementSpec::factors
 };
 
 /// The friction law of a contact boundary (docs/method.md, "Friction").
@@ -154,12 +160,15 @@ struct ProblemSpec {
   std::vector<PointLoadSpec> point_loads;
   VectorField body_force;  ///< empty: no body force
   std::string body_force_description;
+  std::vector<double> body_force_factors;  ///< as DisplacementSpec::factors
   /// The contact boundaries, each with its obstacle (at least one); their nodes form one
   /// contact set, in this order.
   std::vector<ContactSpec> contacts;
   /// [loading]: the load factors of a loading history, each applied to every load and
   /// prescribed displacement (not to the gaps), solved in turn and each step warm-started from
-  /// the last (friction's answer depends on the path). Empty: one solve at factor 1.
+  /// the last (friction's answer depends on the path). Empty: one solve at factor 1. A load or
+  /// displacement entry with `factors` of its own (as many) follows those instead: a body
+  /// pressed first and then sheared.
   std::vector<double> load_factors;
   ContactSolverOptions solver;
 };

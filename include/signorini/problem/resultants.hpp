@@ -38,7 +38,8 @@ struct Resultants {
 /// with K u formed cell by cell (fem/elasticity_assembly.hpp internal_forces). With friction,
 /// `tangential` (ContactResult::tangential) adds the tangential contact forces.
 Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l,
-                              const Matrix& tangential = {}, double load_factor = 1.0);
+                              const Matrix& tangential = {}, double load_factor = 1.0,
+                              int load_step = 0);
 /// The resultants of a solution (its tangential forces and load factor included).
 Resultants compute_resultants(const Model& model, const ContactResult& result);
 

@@ -170,9 +170,10 @@ double ModifiedLagrangian::potential_change(Index j, const double* z0, const dou
   n1 = std::sqrt(n1);
   if (n0 < s && n1 < s)
     change += 0.5 * dot;  // |z1|^2 - |z0|^2 = dz . (z0 + z1)
-  else if (n0 >= s && n1 >= s)
-    change += s * (n1 - n0);
-  else {
+  else if (n0 >= s && n1 >= s) {
+    // s (|z1| - |z0|) without cancellation; nothing where s = 0 (no tangential force).
+    if (s > 0.0) change += s * dot / (n0 + n1);
+  } else {
     const auto psi = [s](double n) { return n < s ? 0.5 * n * n : s * (n - 0.5 * s); };
     change += psi(n1) - psi(n0);
   }

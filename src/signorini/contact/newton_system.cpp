@@ -36,6 +36,7 @@ class SparseNewtonSystem final : public NewtonSystem {
     }
     current_ = active;
     has_factor_ = true;
+    has_linearization_ = false;  // the factor is of this active set now
   }
   void set_linearization(const Linearization& lin) override {
     if (lin.blocks.empty()) {
@@ -54,6 +55,9 @@ class SparseNewtonSystem final : public NewtonSystem {
     ++factorizations_;
     current_linearization_ = lin;
     has_linearization_ = true;
+    // The factor is no longer that of an active set: a step whose blocks are all 0 and 1 (no
+    // node sliding, set_active above) must factorise again, not reuse it.
+    has_factor_ = false;
   }
   LinearSolveStats solve(const Vector& rhs, Vector& x) override { return solver_->solve(rhs, x); }
   [[nodiscard]] const TimingTable& timings() const override { return solver_->timings(); }

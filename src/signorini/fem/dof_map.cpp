@@ -55,10 +55,7 @@ void DofMap::prescribe(Index node, int component, double value) {
 }
 
 Vector DofMap::prescribed_values() const {
-  if (values_.size() == 0) return Vector::Zero(num_dofs());
-  Vector full = values_;
-  rotate_frames(full, /*to_local=*/false);
-  return full;
+  return prescribed_values(Vector::Ones(num_dofs()));
 }
 
 void DofMap::finalize(const std::vector<Index>& node_order) {
@@ -85,12 +82,24 @@ void DofMap::finalize(const std::vector<Index>& node_order) {
 }
 
 Vector DofMap::expand(const Vector& free_values, double prescribed_scale) const {
-  Vector full = values_.size() == 0 ? Vector::Zero(num_dofs()) : Vector(prescribed_scale * values_);
+  return expand(free_values, Vector::Constant(num_dofs(), prescribed_scale));
+}
+
+Vector DofMap::expand(const Vector& free_values, const Vector& scales) const {
+  Vector full =
+      values_.size() == 0 ? Vector::Zero(num_dofs()) : Vector(scales.cwiseProduct(values_));
   for (Index d = 0; d < num_dofs(); ++d) {
     const Index f = free_[static_cast<std::size_t>(d)];
     if (f >= 0) full(d) = free_values(f);
   }
   if (has_frames()) rotate_frames(full, /*to_local=*/false);
+  return full;
+}
+
+Vector DofMap::prescribed_values(const Vector& scales) const {
+  if (values_.size() == 0) return Vector::Zero(num_dofs());
+  Vector full = scales.cwiseProduct(values_);
+  rotate_frames(full, /*to_local=*/false);
   return full;
 }
 

@@ -53,7 +53,7 @@ struct FrictionColumns {
 // the Cartesian vector u - u_n nu; no arc length.
 std::string contact_csv_3d(const ContactResult& result, const Model& model) {
   const ContactSet& c = model.problem.contact;
-  const Vector u = model.dofs.expand(result.u, result.load_factor);
+  const Vector u = model.full_displacement(result);
   const FrictionColumns friction(model, result);
   std::string out =
       "x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary" + friction.header() + "\n";
@@ -83,7 +83,7 @@ std::string contact_csv(const ContactResult& result, const Model& model) {
   if (model.mesh.dim() == 3) return contact_csv_3d(result, model);
   const ContactSet& c = model.problem.contact;
   // result.u holds the free dofs only; expand() adds the prescribed values (0 for clamps).
-  const Vector u = model.dofs.expand(result.u, result.load_factor);
+  const Vector u = model.full_displacement(result);
   const FrictionColumns friction(model, result);
   std::string out = "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary" + friction.header() + "\n";
   // s: the arc length along the contact nodes of each contact boundary in their order (chords

@@ -71,6 +71,7 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
       out.value("x_range", std::vector<double>{box.lower[0], box.upper[0]});
     if (std::isfinite(box.lower[1]))
       out.value("y_range", std::vector<double>{box.lower[1], box.upper[1]});
+    if (!spec.tractions[i].factors.empty()) out.value("factors", spec.tractions[i].factors);
   }
   for (const PressureSpec& p : spec.pressures) {
     out.array_table("pressure");
@@ -81,10 +82,12 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
     out.value("at", std::vector<double>(pl.at.data(), pl.at.data() + dim));
     out.value("force", std::vector<double>(pl.force.data(), pl.force.data() + dim));
     if (!pl.boundary.empty()) out.value("boundary", pl.boundary);
+    if (!pl.factors.empty()) out.value("factors", pl.factors);
   }
   if (!texts.body_force.empty()) {
     out.table("body_force");
     out.value("f", texts.body_force);
+    if (!spec.body_force_factors.empty()) out.value("factors", spec.body_force_factors);
   }
   // One contact boundary as [contact], as the files mostly give it; several as [[contact]].
   for (const ContactSpec& c : spec.contacts) {

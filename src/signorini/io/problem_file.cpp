@@ -405,6 +405,27 @@ void read_range(const Reader& r, const Dimension& dim, const toml::table& t,
   box.upper[static_cast<std::size_t>(axis)] = v[1];
 }
 
+// `factors` of a load or displacement entry: its own load factors, one per step of [loading]
+// (counted against it by check_own_factors once that is read). Any finite numbers: a shear may
+// reverse.
+std::vector<double> own_factors(const Reader& r, const toml::table& t, const std::string& path) {
+  const toml::node* n = t.get("factors");
+  if (n == nullptr) return {};
+  const std::string key = join(path, "factors");
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->empty())
+    r.wrong_type(key, "a non-empty array of numbers, one load factor per step of [loading]", *n);
+  std::vector<double> out;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = *a->get(i);
+    const std::optional<double> v = e.value<double>();
+    if (!v) r.wrong_type(element(key, i), "a number", e);
+    if (!std::isfinite(*v)) r.out_of_range(element(key, i), as_text(*v), "a finite number", &e);
+    out.push_back(*v);
+  }
+  return out;
+}
+
 void read_tractions(const Reader& r, const Dimension& dim, const toml::table& root,
                     ProblemSpec& spec, ExpressionTexts& texts, std::vector<std::string>& warnings) {
   const auto entries = r.array_of_tables(root, "traction");
@@ -422,6 +443,7 @@ void read_tractions(const Reader& r, const Dimension& dim, const toml::table& ro
     tr.description = describe(p);
     read_range(r, dim, t, path, "x_range", 0, tr.region);
     read_range(r, dim, t, path, "y_range", 1, tr.region);
+    tr.factors = own_factors(r, t, path);
     for (std::size_t k = 0; k < p.size(); ++k)
       if (looks_discontinuous(p[k]))
         warnings.push_back(r.file() + ": " + element(join(path, "p"), k) + " = '" + one_line(p[k]) +
@@ -475,6 +497,7 @@ void read_displacements(const Reader& r, const Dimension& dim, const toml::table
                                      "expressions of x, y, z)"
                                    : "the displacement to prescribe: x, y and/or z (in 3D), or "
                                      "normal (numbers or expressions of x, y, z)");
+    d.factors = own_factors(r, t, path);
     spec.displacements.push_back(std::move(d));
   }
 }
@@ -492,6 +515,7 @@ void read_pressures(const Reader& r, const toml::table& root, ProblemSpec& spec)
     p.text = required(r, r.expression(t, path, "p"), key,
                       "a number or an expression of x, y: the pressure (force per area)");
     p.p = scalar_formula(r, key, p.text);
+    p.factors = own_factors(r, t, path);
     spec.pressures.push_back(std::move(p));
   }
 }
@@ -513,6 +537,7 @@ void read_point_loads(const Reader& r, const Dimension& dim, const toml::table& 
         required_point(r, dim, t, path, "force",
                        "[fx, fy] ([fx, fy, fz] in 3D): the force (per unit thickness in 2D)");
     pl.boundary = r.string(t, path, "boundary").value_or("");
+    pl.factors = own_factors(r, t, path);
     spec.point_loads.push_back(std::move(pl));
   }
 }
@@ -527,6 +552,7 @@ void read_body_force(const Reader& r, const Dimension& dim, const toml::table& r
   spec.body_force = finite_vector_field(
       with_file(r, [&] { return make_vector_field(f, "body_force.f"); }), "body_force.f", f);
   spec.body_force_description = describe(f);
+  spec.body_force_factors = own_factors(r, *t, "body_force");
   texts.body_force = f;
 }
 
@@ -691,6 +717,29 @@ void read_loading(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   }
 }
 
+// The entries' own factors (own_factors): one per step of [loading], which they need.
+void check_own_factors(const Reader& r, const toml::table& root, const ProblemSpec& spec) {
+  const auto check = [&](const toml::table& t, const std::string& path) {
+    const toml::node* n = t.get("factors");
+    if (n == nullptr) return;
+    const std::string key = join(path, "factors");
+    if (spec.load_factors.empty())
+      r.fail_at(n->source(), key +
+                                 ": an entry's own load factors belong to a loading history: "
+                                 "add a [loading] section (steps or factors) with as many steps");
+    const std::size_t size = n->as_array()->size();
+    if (size != spec.load_factors.size())
+      r.fail_at(n->source(),
+                fmt::format("{}: expected {} load factors, one per step of [loading], got {}", key,
+                            spec.load_factors.size(), size));
+  };
+  for (const char* name : {"displacement", "traction", "pressure", "point_load"}) {
+    const auto entries = r.array_of_tables(root, name);
+    for (std::size_t i = 0; i < entries.size(); ++i) check(*entries[i], element(name, i));
+  }
+  if (const toml::table* t = r.table(root, "", "body_force")) check(*t, "body_force");
+}
+
 // [contact] (one contact boundary) or [[contact]] (several, each with its obstacle).
 void read_contacts(const Reader& r, const Dimension& dim, const toml::table& root,
                    ProblemSpec& spec) {
@@ -804,6 +853,7 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   read_body_force(r, dim, root, spec, texts);
   read_contacts(r, dim, root, spec);
   read_loading(r, root, spec);
+  check_own_factors(r, root, spec);
   read_solver(r, root, spec);
   check_memory(r, spec);
   out.effective_toml = effective_toml(spec, texts);

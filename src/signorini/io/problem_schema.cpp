@@ -275,6 +275,15 @@ const OptionTable<P>& clamp_options() {
   return table;
 }
 
+// `factors` of a load or displacement entry (problem_file.cpp, own_factors).
+void own_factors_option(OptionTable<P>& t) {
+  t.custom("factors", "array of numbers, one per load step",
+           "its own load factors in a loading history, instead of `[loading]`'s: for example a "
+           "shear after a press, `[0, 0.5, 1]` beside `[loading] factors = [1, 1, 1]`; needs "
+           "`[loading]`")
+      .default_text("`[loading]`'s");
+}
+
 const OptionTable<P>& displacement_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("displacement", true);
@@ -297,6 +306,7 @@ const OptionTable<P>& displacement_options() {
              "problems only so far")
         .unit("L")
         .default_text("free");
+    own_factors_option(t);
     return t;
   }();
   return table;
@@ -312,6 +322,7 @@ const OptionTable<P>& pressure_options() {
              "pushes into the body")
         .unit("S")
         .required();
+    own_factors_option(t);
     return t;
   }();
   return table;
@@ -333,6 +344,7 @@ const OptionTable<P>& traction_options() {
     t.custom("y_range", "array of 2 numbers [lower, upper]", "likewise in y")
         .unit("L")
         .default_text("the whole part");
+    own_factors_option(t);
     return t;
   }();
   return table;
@@ -351,6 +363,7 @@ const OptionTable<P>& point_load_options() {
         .required();
     t.custom("boundary", "string", "look for the nearest node on this boundary part only")
         .default_text("all nodes");
+    own_factors_option(t);
     return t;
   }();
   return table;
@@ -364,6 +377,7 @@ const OptionTable<P>& body_force_options() {
              "f = 0")
         .unit("S/L")
         .default_text("required in the section");
+    own_factors_option(t);
     return t;
   }();
   return table;
@@ -439,8 +453,8 @@ const OptionTable<P>& loading_options() {
     OptionTable<P> t("loading");
     t.custom("steps", "integer >= 1",
              "proportional loading in this many equal steps: load factors 1/steps, 2/steps, .., "
-             "1 on every load and prescribed displacement (not on the gaps), each step "
-             "warm-started from the last")
+             "1 on every load and prescribed displacement without `factors` of its own (not on "
+             "the gaps), each step warm-started from the last")
         .default_text("1 (without the section: one solve)");
     t.custom("factors", "array of numbers >= 0",
              "or a table of load factors, in the order they are applied (for example "
@@ -516,16 +530,20 @@ std::vector<std::pair<std::string, OptionValue>> displacement_values(
   std::vector<std::pair<std::string, OptionValue>> out{{"boundary", displacement.boundary}};
   if (displacement.normal) {
     out.emplace_back("normal", displacement.normal_text);
-    return out;
+  } else {
+    const char* names[] = {"x", "y", "z"};
+    for (std::size_t k = 0; k < 3; ++k)
+      if (displacement.values[k]) out.emplace_back(names[k], displacement.texts[k]);
   }
-  const char* names[] = {"x", "y", "z"};
-  for (std::size_t k = 0; k < 3; ++k)
-    if (displacement.values[k]) out.emplace_back(names[k], displacement.texts[k]);
+  if (!displacement.factors.empty()) out.emplace_back("factors", displacement.factors);
   return out;
 }
 
 std::vector<std::pair<std::string, OptionValue>> pressure_values(const PressureSpec& pressure) {
-  return {{"boundary", pressure.boundary}, {"p", pressure.text}};
+  std::vector<std::pair<std::string, OptionValue>> out{{"boundary", pressure.boundary},
+                                                       {"p", pressure.text}};
+  if (!pressure.factors.empty()) out.emplace_back("factors", pressure.factors);
+  return out;
 }
 
 std::vector<std::pair<std::string, OptionValue>> region_values(const RegionMaterialSpec& region) {

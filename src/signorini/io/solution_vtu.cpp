@@ -28,7 +28,7 @@ struct NodalFields {
 NodalFields nodal_fields(const ContactResult& result, const Model& model) {
   const Index n = model.mesh.num_nodes();
   NodalFields f;
-  f.u = model.dofs.expand(result.u, result.load_factor);
+  f.u = model.full_displacement(result);
   f.stress = nodal_stress(model.mesh, model.elasticity, f.u);  // YZ, XZ are 0 in 2D
   f.pressure.assign(static_cast<std::size_t>(n), 0.0);
   f.gap.assign(static_cast<std::size_t>(n), 0.0);
@@ -144,7 +144,7 @@ std::string contact_vtu(const ContactResult& result, const Model& model) {
   const int dim = mesh.dim();
   const ContactSet& c = model.problem.contact;
   const Index m = c.size();
-  const Vector u = model.dofs.expand(result.u, result.load_factor);
+  const Vector u = model.full_displacement(result);
 
   Eigen::MatrixXd points(dim, m);
   for (Index j = 0; j < m; ++j) points.col(j) = mesh.node(c.nodes[static_cast<std::size_t>(j)]);

@@ -228,6 +228,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     json tr = {{"boundary", t.boundary}, {"p", t.description}};
     if (std::isfinite(t.region.lower[0])) tr["x_range"] = {t.region.lower[0], t.region.upper[0]};
     if (std::isfinite(t.region.lower[1])) tr["y_range"] = {t.region.lower[1], t.region.upper[1]};
+    if (!t.factors.empty()) tr["factors"] = t.factors;
     tractions.push_back(tr);
   }
   problem["traction"] = tractions;
@@ -236,7 +237,11 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
     for (const PressureSpec& p : spec.pressures)
       problem["pressure"].push_back(values_json(pressure_values(p)));
   }
-  if (spec.body_force) problem["body_force"] = {{"f", spec.body_force_description}};
+  if (spec.body_force) {
+    problem["body_force"] = {{"f", spec.body_force_description}};
+    if (!spec.body_force_factors.empty())
+      problem["body_force"]["factors"] = spec.body_force_factors;
+  }
   // One contact boundary as the object of [contact], several as the array of [[contact]].
   json contacts = json::array();
   for (const ContactSpec& c : spec.contacts) {

@@ -340,16 +340,30 @@ Model build_model(const ProblemSpec& spec) {
   }
   Vector loads = Vector::Zero(dofs.num_dofs());
   std::vector<PlacedPointLoad> placed;
+  std::vector<LoadGroup> groups;
   {
     ScopedTimer t(timings, "loads");
-    for (const TractionSpec& tr : spec.tractions)
+    // Where an entry's loads go: a group of its own when it has load factors of its own, so
+    // that each step of a loading history can scale it alone (Model::free_loads).
+    const auto into = [&](const std::vector<double>& factors, std::string entry) -> Vector& {
+      if (factors.empty()) return loads;
+      groups.push_back({std::move(entry), factors, Vector::Zero(dofs.num_dofs()), {}, {}});
+      return groups.back().loads;
+    };
+    for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
+      const TractionSpec& tr = spec.tractions[i];
       add_traction_forces(mesh, mesh.boundary_part(tr.boundary), tr.p, spec.boundary_gauss_points,
-                          loads, "traction on '" + tr.boundary + "'", tr.region);
+                          into(tr.factors, fmt::format("traction[{}]", i)),
+                          "traction on '" + tr.boundary + "'", tr.region);
+    }
     for (std::size_t i = 0; i < spec.pressures.size(); ++i)
       add_pressure_forces(mesh, mesh.boundary_part(spec.pressures[i].boundary), spec.pressures[i].p,
-                          spec.boundary_gauss_points, loads, fmt::format("pressure[{}].p", i));
+                          spec.boundary_gauss_points,
+                          into(spec.pressures[i].factors, fmt::format("pressure[{}]", i)),
+                          fmt::format("pressure[{}].p", i));
     if (spec.body_force)
-      add_body_forces(mesh, spec.body_force, spec.elasticity.gauss_points, loads);
+      add_body_forces(mesh, spec.body_force, spec.elasticity.gauss_points,
+                      into(spec.body_force_factors, "body_force"));
     for (std::size_t i = 0; i < spec.point_loads.size(); ++i) {
       const PointLoadSpec& pl = spec.point_loads[i];
       if (!pl.at.allFinite() || !pl.force.allFinite())
@@ -362,24 +376,40 @@ Model build_model(const ProblemSpec& spec) {
       p.at = mesh.point(p.node);
       p.distance = (p.at - pl.at).norm();
       p.force = pl.force;
-      for (int k = 0; k < mesh.dim(); ++k) loads(p.node * mesh.dim() + k) += pl.force(k);
+      Vector& target = into(pl.factors, fmt::format("point_load[{}]", i));
+      for (int k = 0; k < mesh.dim(); ++k) target(p.node * mesh.dim() + k) += pl.force(k);
       placed.push_back(p);
     }
-    if (dofs.has_prescribed_values()) {
-      // Nonzero prescribed displacements u_D: the free dofs see the load f - K u_D (K u_D formed
-      // only in the cells that touch a prescribed value), and the full solution is u_D plus the
-      // free part (DofMap::expand).
-      const Vector u_d = dofs.prescribed_values();
+    for (std::size_t i = 0; i < spec.displacements.size(); ++i) {
+      if (spec.displacements[i].factors.empty()) continue;
+      LoadGroup g{fmt::format("displacement[{}]", i), spec.displacements[i].factors, {}, {}, {}};
+      for (std::size_t d = 0; d < owner.size(); ++d)
+        if (owner[d] == static_cast<int>(spec.clamps.size() + i))
+          g.prescribed_dofs.push_back(static_cast<Index>(d));
+      groups.push_back(std::move(g));
+    }
+    // The free loads b = f - K u_D: nonzero prescribed displacements u_D load the free dofs (K
+    // u_D formed only in the cells that touch a prescribed value), and the full solution is u_D
+    // plus the free part (DofMap::expand). b is linear in f and u_D: each group's part is kept
+    // for the steps of a loading history.
+    const auto free_part = [&](const Vector& f, const Vector& u_d) -> Vector {
+      if (!dofs.has_prescribed_values()) return dofs.restrict_to_free(f);
       const auto touches = [&](Index cell) {
         for (const Index node : mesh.cell(cell))
           for (int k = 0; k < mesh.dim(); ++k)
             if (u_d(node * mesh.dim() + k) != 0.0) return true;
         return false;
       };
-      problem.b = dofs.restrict_to_free(loads - internal_forces(mesh, elasticity, u_d, touches));
-    } else {
-      problem.b = dofs.restrict_to_free(loads);
+      return dofs.restrict_to_free(f - internal_forces(mesh, elasticity, u_d, touches));
+    };
+    for (LoadGroup& g : groups) {
+      Vector scales = Vector::Zero(dofs.num_dofs());
+      for (const Index d : g.prescribed_dofs) scales(d) = 1.0;
+      const Vector u_d = dofs.prescribed_values(scales);
+      g.b = free_part(g.loads.size() != 0 ? g.loads : Vector(Vector::Zero(dofs.num_dofs())), u_d);
+      if (g.loads.size() != 0) loads += g.loads;
     }
+    problem.b = free_part(loads, dofs.prescribed_values());
   }
   std::vector<std::string> contact_boundaries;
   std::vector<Index> contact_starts{0};
@@ -418,11 +448,68 @@ Model build_model(const ProblemSpec& spec) {
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, owner);
-  return Model{std::move(mesh),           std::move(dofs),    std::move(problem),
-               std::move(multigrid),      plan.options,       plan.reason,
-               std::move(timings),        elasticity,         std::move(loads),
-               std::move(clamps),         std::move(placed),  std::move(contact_boundaries),
-               std::move(contact_starts), std::move(friction)};
+  return Model{std::move(mesh),           std::move(dofs),     std::move(problem),
+               std::move(multigrid),      plan.options,        plan.reason,
+               std::move(timings),        elasticity,          std::move(loads),
+               std::move(clamps),         std::move(placed),   std::move(contact_boundaries),
+               std::move(contact_starts), std::move(friction), std::move(groups)};
+}
+
+namespace {
+
+// Group g's factor in the state (factor, step) (model.hpp).
+double group_factor(const LoadGroup& g, double factor, int step) {
+  if (step <= 0) return factor;
+  if (static_cast<std::size_t>(step) > g.factors.size())
+    throw InputError(fmt::format("{}.factors: no load factor for step {} (it has {})", g.entry,
+                                 step, g.factors.size()));
+  return g.factors[static_cast<std::size_t>(step - 1)];
+}
+
+}  // namespace
+
+Vector Model::prescribed_scales(double factor, int step) const {
+  Vector s = Vector::Constant(dofs.num_dofs(), factor);
+  for (const LoadGroup& g : load_groups) {
+    const double t = group_factor(g, factor, step);
+    for (const Index d : g.prescribed_dofs) s(d) = t;
+  }
+  return s;
+}
+
+// Each is linear in the loads and u_D: the whole at `factor`, and each group's part moved from
+// `factor` to its own.
+Vector Model::applied_loads(double factor, int step) const {
+  Vector f = factor * loads;
+  for (const LoadGroup& g : load_groups)
+    if (g.loads.size() != 0) f += (group_factor(g, factor, step) - factor) * g.loads;
+  return f;
+}
+
+Vector Model::free_loads(double factor, int step) const {
+  Vector b = factor * problem.b;
+  for (const LoadGroup& g : load_groups) b += (group_factor(g, factor, step) - factor) * g.b;
+  return b;
+}
+
+Vector Model::contact_gaps(double factor, int step) const {
+  const ContactSet& c = problem.contact;
+  if (!dofs.has_prescribed_values()) return c.gaps;
+  // The gaps are g - nu . u_D (fem/contact_boundary.cpp): at scaled u_D they grow by
+  // nu . (u_D - u_D scaled).
+  const Vector rest =
+      dofs.prescribed_values(Vector::Ones(dofs.num_dofs()) - prescribed_scales(factor, step));
+  Vector gaps = c.gaps;
+  const int dim = dofs.dim();
+  for (Index j = 0; j < c.size(); ++j) {
+    const Index node = c.nodes[static_cast<std::size_t>(j)];
+    gaps(j) += c.normals.col(j).dot(rest.segment(node * dim, dim));
+  }
+  return gaps;
+}
+
+Vector Model::full_displacement(const Vector& u, double factor, int step) const {
+  return dofs.expand(u, prescribed_scales(factor, step));
 }
 
 const std::string& Model::contact_boundary_of(Index j) const {

@@ -33,11 +33,12 @@ std::string vector_text(const Eigen::Vector3d& v, int dim) {
 }  // namespace
 
 Resultants compute_resultants(const Model& model, const ContactResult& result) {
-  return compute_resultants(model, result.u, result.l, result.tangential, result.load_factor);
+  return compute_resultants(model, result.u, result.l, result.tangential, result.load_factor,
+                            result.load_step);
 }
 
 Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l,
-                              const Matrix& tangential, double load_factor) {
+                              const Matrix& tangential, double load_factor, int load_step) {
   const Mesh& mesh = model.mesh;
   const int dim = mesh.dim();
   Resultants r;
@@ -57,8 +58,9 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   }
 
   Sum applied, foundation;
+  const Vector loads = model.applied_loads(load_factor, load_step);
   for (Index i = 0; i < model.dofs.num_dofs(); ++i) {
-    if (model.loads(i) != 0.0) applied.add(mesh, r.reference, i, load_factor * model.loads(i));
+    if (loads(i) != 0.0) applied.add(mesh, r.reference, i, loads(i));
     if (contact(i) != 0.0) foundation.add(mesh, r.reference, i, contact(i));
   }
   r.applied = applied.force;
@@ -67,7 +69,7 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   r.contact_moment = foundation.moment;
 
   // K u only where it is needed: in the cells that touch a clamped dof.
-  const Vector full_u = model.dofs.expand(u, load_factor);
+  const Vector full_u = model.full_displacement(u, load_factor, load_step);
   const auto touches_clamp = [&](Index cell) {
     for (const Index node : mesh.cell(cell))
       for (int k = 0; k < dim; ++k)
@@ -82,7 +84,7 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   for (const ClampedPart& part : model.clamped_parts) {
     Sum reaction;
     for (const Index dof : part.dofs)
-      reaction.add(mesh, r.reference, dof, Ku(dof) - load_factor * model.loads(dof) - contact(dof));
+      reaction.add(mesh, r.reference, dof, Ku(dof) - loads(dof) - contact(dof));
     r.reactions.push_back({part.boundary, reaction.force, reaction.moment});
     total += reaction.force;
     total_moment += reaction.moment;
