@@ -264,12 +264,10 @@ def read_contact_csv(outdir, name="contact.csv"):
         # The contact boundary of each row (one name in files of one boundary or older ones).
         names = ([r[boundary[0]] for r in rows[1:] if r] if boundary else [""] * len(body))
         columns["boundary"] = names
-        if "state" in header and "z" not in header:  # 2D friction
-            columns["tangential"] = body[:, header.index("tangential")]
-        if "state" in header:
-            if "z" in header:  # 3D friction: the tangential traction, a Cartesian vector
-                columns["tangential"] = np.stack([body[:, header.index(f"tangential_{a}")]
-                                                  for a in "xyz"], axis=1)
+        if "state" in header:  # friction: in 3D the tangential traction a Cartesian vector
+            columns["tangential"] = (np.stack([body[:, header.index(f"tangential_{a}")]
+                                               for a in "xyz"], axis=1) if "z" in header
+                                     else body[:, header.index("tangential")])
             columns["slip"] = body[:, header.index("slip")]
             columns["state"] = [r[header.index("state")].strip() for r in rows[1:] if r]
         if "z" in header:
@@ -290,26 +288,25 @@ def read_contact_csv(outdir, name="contact.csv"):
     return columns
 
 
-def contact_friction(outdir):
-    """True if contact.csv has friction's columns (a `state` column), read before numpy is
-    imported."""
+def contact_header(outdir):
+    """The column names of contact.csv, read before numpy is imported, so that the list of
+    figures is known at once; none when it cannot be read (check_results and read_contact_csv
+    say why)."""
     try:
         with open(os.path.join(outdir, "contact.csv"), encoding="utf-8") as f:
-            header = [h.strip() for h in f.readline().split(",")]
+            return [h.strip() for h in f.readline().split(",")]
     except OSError:
-        return False
-    return "state" in header
+        return []
+
+
+def contact_friction(outdir):
+    """True if contact.csv has friction's columns (a `state` column)."""
+    return "state" in contact_header(outdir)
 
 
 def contact_dimension(outdir):
-    """3 if contact.csv has a z column (a 3D problem), else 2; read before numpy is imported, so
-    that the list of figures is known at once."""
-    try:
-        with open(os.path.join(outdir, "contact.csv"), encoding="utf-8") as f:
-            header = [h.strip() for h in f.readline().split(",")]
-    except OSError:
-        return 2  # said by check_results and read_contact_csv
-    return 3 if "z" in header else 2
+    """3 if contact.csv has a z column (a 3D problem), else 2."""
+    return 3 if "z" in contact_header(outdir) else 2
 
 
 def check_results(outdir):
@@ -1360,18 +1357,24 @@ def zoom_onto_zone(ax, zone, a, b):
     return True
 
 
-def place_map(fig, ax, measure, title):
-    """A map (equal axes) under its title, as large as the figure allows."""
+def place_map(fig, ax, measure, title, cax=None):
+    """A map (equal axes) under its title, as large as the figure allows: with a colour bar
+    `cax` to its right, without one centred."""
     w, h = fig.get_size_inches() * 72.0
     top_margin = BORDER + measure.height(title) + TITLE_PAD
+    bar = 12.0 + 14.0 + 46.0 + 2 * TEXT_SIZE if cax else 0.0  # the bar, its ticks and label
     for _ in range(2):
         left, offset = measure.left(ax)
         bottom, _ = measure.bottom(ax)
         left += BORDER
         bottom += BORDER
         height = h - bottom - top_margin - offset
-        size = min(w - left - BORDER, height)
-        place(fig, ax, left + 0.5 * (w - left - BORDER - size), bottom, size, height)
+        size = min(w - left - bar - BORDER, height)
+        if cax:
+            place(fig, ax, left, bottom, size, height)
+            place(fig, cax, left + size + 12.0, bottom, 14.0, height)
+        else:
+            place(fig, ax, left + 0.5 * (w - left - BORDER - size), bottom, size, height)
 
 
 def figure_friction_map(summary, contact, units, measure):
@@ -1448,17 +1451,7 @@ def figure_pressure_map(summary, contact, units, measure):
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize=LEGEND_SIZE, loc="upper right", facecolor="0.3", labelcolor="white")
-    w, h = fig.get_size_inches() * 72.0
-    top_margin = BORDER + measure.height(title) + TITLE_PAD
-    for _ in range(2):
-        left, offset = measure.left(ax)
-        bottom, _ = measure.bottom(ax)
-        left += BORDER
-        bottom += BORDER
-        bar = 12.0 + 14.0 + 46.0 + 2 * TEXT_SIZE  # the colour bar, its ticks and its label
-        size = min(w - left - bar - BORDER, h - bottom - top_margin - offset)
-        place(fig, ax, left, bottom, size, h - bottom - top_margin - offset)
-        place(fig, cax, left + size + 12.0, bottom, 14.0, h - bottom - top_margin - offset)
+    place_map(fig, ax, measure, title, cax)
     return fig, describe_limits(ax)
 
 
@@ -1717,7 +1710,7 @@ def figure_names(dimension, friction=False, steps=()):
     """The figures, in the order of docs/output.md."""
     names = list(FIGURES_3D if dimension == 3 else FIGURES)
     if friction:
-        names.append("contact_friction_map" if dimension == 3 else "contact_friction")
+        names.append(step_base(dimension, True))
     return names + [step_figure(step_base(dimension, friction), k) for k in steps]
 
 

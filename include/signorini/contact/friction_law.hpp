@@ -89,6 +89,14 @@ void add_tangential_rows(ContactSet& contact, const SparseMatrix& T);
 /// set).
 [[nodiscard]] Vector row_weights(const ContactSet& contact);
 
+/// Nodes with a positive normal multiplier in l, `components` values per node (the layout of
+/// the methods: the normal first).
+[[nodiscard]] Index count_in_contact(const Vector& l, Index components);
+
+/// The methods' layout, d values per node (the normal, then the tangents), from a pressure per
+/// node and the tangential multipliers ((d - 1) x nodes, ContactResult::tangential).
+[[nodiscard]] Vector node_multipliers(const Vector& pressure, const Matrix& tangential);
+
 /// The normal rows of a frictional N (rows d j): the frictionless N of the same set.
 [[nodiscard]] SparseMatrix normal_rows(const ContactSet& contact);
 

@@ -71,10 +71,10 @@ class DofMap {
   /// dofs): u_D.
   [[nodiscard]] Vector prescribed_values() const;
   /// Full displacement (num_dofs) from a free vector: the free values, and the prescribed values
-  /// (u_D, zero for plain clamps) at the clamped dofs, times `prescribed_scale` (a load factor).
-  [[nodiscard]] Vector expand(const Vector& free_values, double prescribed_scale = 1.0) const;
-  /// Likewise with a factor per full dof (in the node's axes, as value()): its prescribed value
-  /// times scales(dof).
+  /// (u_D, zero for plain clamps) at the clamped dofs.
+  [[nodiscard]] Vector expand(const Vector& free_values) const;
+  /// Likewise with a factor per full dof (in the node's axes, as value(); a step of a loading
+  /// history, Model::full_displacement): its prescribed value times scales(dof).
   [[nodiscard]] Vector expand(const Vector& free_values, const Vector& scales) const;
   /// The prescribed displacement times a factor per full dof, Cartesian.
   [[nodiscard]] Vector prescribed_values(const Vector& scales) const;

@@ -106,8 +106,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
     for (Index j = 0; j < c.size(); ++j)
       if (!c.movable[static_cast<std::size_t>(j)]) o.l.segment(m * j, m).setZero();
     rec.dual_change = relative_change(o.l, l);
-    rec.active_set_size = 0;
-    for (Index j = 0; j < c.size(); ++j) rec.active_set_size += o.l(m * j) > 0.0 ? 1 : 0;
+    rec.active_set_size = count_in_contact(o.l, m);
     if (rec.dual_change < options.uzawa_tolerance) {
       o.stop = Termination::Converged;
       o.message = dual_change_message(rec, options.uzawa_tolerance, k,

@@ -231,15 +231,9 @@ void ContactSolver::warm_start(const ContactResult& previous) {
   if (previous.u.size() != m.problem->A.rows() || previous.l.size() != c.size() ||
       (k > 1 && (previous.tangential.rows() != k - 1 || previous.tangential.cols() != c.size())))
     throw InputError("ContactSolver::warm_start: the result is not one of this problem");
-  Vector l = previous.l;
-  if (k > 1) {  // the layout of the methods: d values per node
-    l.resize(k * c.size());
-    for (Index j = 0; j < c.size(); ++j) {
-      l(k * j) = previous.l(j);
-      l.segment(k * j + 1, k - 1) = previous.tangential.col(j);
-    }
-  }
-  impl_->start = MethodStart{l, previous.u};
+  // The layout of the methods: with friction d values per node.
+  impl_->start = MethodStart{k > 1 ? node_multipliers(previous.l, previous.tangential) : previous.l,
+                             previous.u};
 }
 
 void ContactSolver::set_slip_origin(const Vector& u) {
@@ -348,9 +342,9 @@ ContactResult ContactSolver::solve() {
   s.contact_force = c.weights.dot(result.l);
   s.contact_force_vector.setZero();
   s.contact_force_vector.head(c.normals.rows()) = -(c.normals * c.weights.cwiseProduct(result.l));
-  for (Index j = 0; j < result.tangential.cols(); ++j)  // friction: the tangential forces too
+  if (result.tangential.size() > 0)  // friction: the tangential forces too
     s.contact_force_vector.head(c.normals.rows()) -=
-        c.weights(j) * tangent_basis(c.normals.col(j)) * result.tangential.col(j);
+        cartesian_tangential(c.normals, result.tangential) * c.weights;
   s.num_active = (result.l.array() > 0.0).count();
 
   // Converged means the KKT conditions hold, not only that the method's rule was met: a

@@ -64,13 +64,8 @@ double FrictionLaw::penalty_change(double /*z0*/, double /*dz*/) const {
 
 std::vector<FrictionState> friction_states(const FrictionLaw& law, const Vector& pressure,
                                            const Matrix& tangential) {
-  const Index m = law.components(), nc = pressure.size();
-  Vector l(m * nc);
-  for (Index j = 0; j < nc; ++j) {
-    l(m * j) = pressure(j);
-    l.segment(m * j + 1, m - 1) = tangential.col(j);
-  }
-  const Vector bound = law.slip_bounds(l);
+  const Index nc = pressure.size();
+  const Vector bound = law.slip_bounds(node_multipliers(pressure, tangential));
   std::vector<FrictionState> states(static_cast<std::size_t>(nc), FrictionState::Separated);
   for (Index j = 0; j < nc; ++j) {
     const double t = tangential.col(j).norm();
@@ -123,6 +118,22 @@ Vector row_weights(const ContactSet& contact) {
   Vector h(m * contact.size());
   for (Index j = 0; j < contact.size(); ++j) h.segment(m * j, m).setConstant(contact.weights(j));
   return h;
+}
+
+Index count_in_contact(const Vector& l, Index components) {
+  Index n = 0;
+  for (Index j = 0; j < l.size(); j += components) n += l(j) > 0.0 ? 1 : 0;
+  return n;
+}
+
+Vector node_multipliers(const Vector& pressure, const Matrix& tangential) {
+  const Index m = 1 + tangential.rows(), nc = pressure.size();
+  Vector l(m * nc);
+  for (Index j = 0; j < nc; ++j) {
+    l(m * j) = pressure(j);
+    l.segment(m * j + 1, m - 1) = tangential.col(j);
+  }
+  return l;
 }
 
 SparseMatrix normal_rows(const ContactSet& contact) {

@@ -42,8 +42,7 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw&
   // B = [N; T] node by node: row d j the normal, rows d j + 1 .. the tangents.
   const SparseMatrix& B = cs.N;
   const Vector g_hat = row_offsets(cs);
-  Vector w(d * nc);
-  for (Index j = 0; j < nc; ++j) w.segment(d * j, d).setConstant(cs.weights(j));
+  const Vector w = row_weights(cs);
   const SparseMatrix BtW = SparseMatrix(B.transpose()) * w.asDiagonal();
   const Eigen::SparseMatrix<double, Eigen::RowMajor> B_rows = B;  // for the rows of a node
   const double c = o.c > 0.0 ? o.c : p.A.diagonal().mean() / cs.weights.mean();

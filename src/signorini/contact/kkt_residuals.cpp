@@ -17,9 +17,7 @@ KktResiduals frictional_kkt_residuals(const ContactProblem& p, const Vector& u, 
   const ContactSet& c = p.contact;
   const Index m = c.components, nc = c.size();
   KktResiduals k;
-  Vector hl(m * nc);
-  for (Index j = 0; j < nc; ++j) hl.segment(m * j, m) = c.weights(j) * l.segment(m * j, m);
-  const Vector reaction = c.N.transpose() * hl;
+  const Vector reaction = c.N.transpose() * row_weights(c).cwiseProduct(l);
   const double b_norm = std::max(p.b.norm(), reaction.norm());
   k.equilibrium = b_norm > 0.0 ? (stiffness_product(p, u) - p.b + reaction).norm() / b_norm : 0.0;
   const Vector rows = c.N * u - row_offsets(c);  // gap residual, then slip v_j

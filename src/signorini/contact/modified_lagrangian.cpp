@@ -40,30 +40,32 @@ ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r,
       throw InputError("a frictional contact set needs a FrictionLaw with one bound per node");
   }
   g_hat_ = row_offsets(p_.contact);
+  h_ = row_weights(p_.contact);
   set_multipliers(Vector::Zero(m_ * p_.contact.size()));
 }
 
 // Made at the first hessian(): only the host's sparse Newton systems need it, not the backend
-// path or the condensed problems' dense systems.
-const std::vector<std::vector<std::pair<Index, double>>>& ModifiedLagrangian::block_entries()
+// path or the condensed problems' dense systems. Rows a and b of node j list its free dofs with
+// the components of its normal (and tangents); N^T D N adds D_ab (N_a)_p (N_b)_q to the (p, q)
+// entries of node j's block, which A has since the dofs of one node always couple.
+const std::vector<std::vector<ModifiedLagrangian::BlockEntry>>& ModifiedLagrangian::node_entries()
     const {
-  if (block_entries_ready_) return block_entries_;
-  const SparseMatrix& N = p_.contact.N;
-  // Row j of N lists the free dofs of node j with the normal components; N^T diag N adds
-  // nu_a nu_b to the (a, b) entries of node j's block, which A has since the dofs of one node
-  // always couple.
-  const SparseMatrix Nt = N.transpose();  // column j = row j of N
-  block_entries_.resize(static_cast<std::size_t>(N.rows()));
-  for (Index j = 0; j < N.rows(); ++j) {
-    for (SparseMatrix::InnerIterator ia(Nt, j); ia; ++ia)
-      for (SparseMatrix::InnerIterator ib(Nt, j); ib; ++ib) {
-        const Index pos = find_entry(p_.A, ia.row(), ib.row());
-        if (pos < 0) throw NumericalError("contact node block missing from the stiffness pattern");
-        block_entries_[static_cast<std::size_t>(j)].emplace_back(pos, ia.value() * ib.value());
-      }
-  }
-  block_entries_ready_ = true;
-  return block_entries_;
+  if (node_entries_ready_) return node_entries_;
+  const SparseMatrix Nt = p_.contact.N.transpose();  // column i = row i of N
+  node_entries_.resize(static_cast<std::size_t>(p_.contact.size()));
+  for (Index j = 0; j < p_.contact.size(); ++j)
+    for (Index a = 0; a < m_; ++a)
+      for (Index b = 0; b < m_; ++b)
+        for (SparseMatrix::InnerIterator ia(Nt, m_ * j + a); ia; ++ia)
+          for (SparseMatrix::InnerIterator ib(Nt, m_ * j + b); ib; ++ib) {
+            const Index pos = find_entry(p_.A, ia.row(), ib.row());
+            if (pos < 0)
+              throw NumericalError("contact node block missing from the stiffness pattern");
+            node_entries_[static_cast<std::size_t>(j)].push_back(
+                {pos, static_cast<int>(a + m_ * b), ia.value() * ib.value()});
+          }
+  node_entries_ready_ = true;
+  return node_entries_;
 }
 
 void ModifiedLagrangian::set_multipliers(const Vector& l) {
@@ -83,12 +85,6 @@ Vector ModifiedLagrangian::shifted_multipliers(const Vector& Nx) const {
 
 ActiveSet ModifiedLagrangian::active_set(const Vector& Nx) const {
   return law_.active_set(shifted_multipliers(Nx));
-}
-
-Index ModifiedLagrangian::count_in_contact(const Vector& l) const {
-  Index n = 0;
-  for (Index j = 0; j < l.size(); j += m_) n += l(j) > 0.0 ? 1 : 0;
-  return n;
 }
 
 Linearization ModifiedLagrangian::linearize(const Vector& Nx) const {
@@ -143,7 +139,7 @@ Vector ModifiedLagrangian::project(const Vector& z) const {
 }
 
 Vector ModifiedLagrangian::forces_of(const Vector& z) const {
-  return row_weights(p_.contact).cwiseProduct(project(z));
+  return h_.cwiseProduct(project(z));
 }
 
 Vector ModifiedLagrangian::updated_multipliers(const Vector& Nx) const {
@@ -180,25 +176,6 @@ double ModifiedLagrangian::potential_change(Index j, const double* z0, const dou
   return change;
 }
 
-const std::vector<std::vector<ModifiedLagrangian::BlockEntry>>&
-ModifiedLagrangian::friction_entries() const {
-  if (!friction_entries_.empty() || p_.contact.size() == 0) return friction_entries_;
-  const SparseMatrix Nt = p_.contact.N.transpose();  // column i = row i of N
-  friction_entries_.resize(static_cast<std::size_t>(p_.contact.size()));
-  for (Index j = 0; j < p_.contact.size(); ++j)
-    for (Index a = 0; a < m_; ++a)
-      for (Index b = 0; b < m_; ++b)
-        for (SparseMatrix::InnerIterator ia(Nt, m_ * j + a); ia; ++ia)
-          for (SparseMatrix::InnerIterator ib(Nt, m_ * j + b); ib; ++ib) {
-            const Index pos = find_entry(p_.A, ia.row(), ib.row());
-            if (pos < 0)
-              throw NumericalError("contact node block missing from the stiffness pattern");
-            friction_entries_[static_cast<std::size_t>(j)].push_back(
-                {pos, static_cast<int>(a + m_ * b), ia.value() * ib.value()});
-          }
-  return friction_entries_;
-}
-
 Vector ModifiedLagrangian::gradient(const Vector& residual, const Vector& Nx) const {
   return residual + p_.contact.N.transpose() * contact_forces(Nx);
 }
@@ -207,11 +184,13 @@ void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const
   if (H.nonZeros() != p_.A.nonZeros()) H = p_.A;
   std::copy(p_.A.valuePtr(), p_.A.valuePtr() + p_.A.nonZeros(), H.valuePtr());
   double* v = H.valuePtr();
-  for (std::size_t j = 0; j < active.size(); ++j) {
-    if (!active[j]) continue;
-    // Row j of N belongs to node j / m (friction in 2D: lin.rows).
-    const double scale = r_ * p_.contact.weights(static_cast<Index>(j) / m_);
-    for (const auto& [pos, c] : block_entries()[j]) v[pos] += scale * c;
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    if (!active[i]) continue;
+    // Row i of N is row a of node i / m (friction in 2D: lin.rows): the (a, a) terms.
+    const auto node = static_cast<Index>(i) / m_, a = static_cast<Index>(i) % m_;
+    const double scale = r_ * p_.contact.weights(node);
+    for (const BlockEntry& e : node_entries()[static_cast<std::size_t>(node)])
+      if (e.ab == a * (m_ + 1)) v[e.pos] += scale * e.value;
   }
 }
 
@@ -228,7 +207,7 @@ void ModifiedLagrangian::hessian(const Linearization& lin, SparseMatrix& H) cons
   for (Index j = 0; j < p_.contact.size(); ++j) {
     const double* D = &lin.blocks[static_cast<std::size_t>(m_ * m_ * j)];
     const double scale = r_ * p_.contact.weights(j);
-    for (const BlockEntry& e : friction_entries()[static_cast<std::size_t>(j)])
+    for (const BlockEntry& e : node_entries()[static_cast<std::size_t>(j)])
       if (D[e.ab] != 0.0) v[e.pos] += scale * D[e.ab] * e.value;
   }
 }

@@ -41,8 +41,6 @@ class ModifiedLagrangian {
   /// The generalised derivative of P at z(x): the active set, and with friction each node's
   /// block and offset.
   [[nodiscard]] Linearization linearize(const Vector& Nx) const;
-  /// Nodes with a positive normal multiplier in l (a vector of this law's layout).
-  [[nodiscard]] Index count_in_contact(const Vector& l) const;
   /// P(z): the multipliers of Uzawa's step (ii) at x (non-movable nodes 0).
   [[nodiscard]] Vector updated_multipliers(const Vector& Nx) const;
 
@@ -93,6 +91,7 @@ class ModifiedLagrangian {
   Index m_ = 1;                            // components per node
   const FrictionLaw* friction_ = nullptr;  // the law, where it is frictional
   Vector g_hat_;                           // g^ per row of N (row_offsets)
+  Vector h_;                               // h per row of N (row_weights)
   Vector bounds_;                          // friction: the slip bounds s_j of step (i)
   Vector l_;
   // P(z) node by node: the law's, with friction Tresca's with the bounds of step (i).
@@ -100,19 +99,16 @@ class ModifiedLagrangian {
   // Friction: psi(z0 + dz) - psi(z0) of node j with its bound, without cancellation where both
   // points are on the same smooth piece.
   [[nodiscard]] double potential_change(Index j, const double* z0, const double* dz) const;
-  // Friction: per node j, the positions in A's value array of its node block, which entry
-  // (a, b) of D_j they take, and (N_a)_p (N_b)_q there.
+  // Per contact node j, the positions in A's value array of its node block, which entry (a, b)
+  // of D_j (column-major; 0 without friction) they take, and (N_a)_p (N_b)_q there.
   struct BlockEntry {
     Index pos;
     int ab;
     double value;
   };
-  [[nodiscard]] const std::vector<std::vector<BlockEntry>>& friction_entries() const;
-  mutable std::vector<std::vector<BlockEntry>> friction_entries_;
-  // For each contact node j: positions in A's value array of its node block and nu_a nu_b there.
-  [[nodiscard]] const std::vector<std::vector<std::pair<Index, double>>>& block_entries() const;
-  mutable std::vector<std::vector<std::pair<Index, double>>> block_entries_;
-  mutable bool block_entries_ready_ = false;
+  [[nodiscard]] const std::vector<std::vector<BlockEntry>>& node_entries() const;
+  mutable std::vector<std::vector<BlockEntry>> node_entries_;
+  mutable bool node_entries_ready_ = false;
 };
 
 }  // namespace signorini

@@ -17,4 +17,12 @@ Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& nu) {
   return basis;
 }
 
+Eigen::MatrixXd cartesian_tangential(const Eigen::MatrixXd& normals,
+                                     const Eigen::MatrixXd& tangential) {
+  Eigen::MatrixXd out(normals.rows(), tangential.cols());
+  for (Eigen::Index j = 0; j < tangential.cols(); ++j)
+    out.col(j) = tangent_basis(normals.col(j)) * tangential.col(j);
+  return out;
+}
+
 }  // namespace signorini

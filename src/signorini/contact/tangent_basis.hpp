@@ -12,4 +12,9 @@ namespace signorini {
 /// (nu, t_1, t_2) is right-handed.
 [[nodiscard]] Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& nu);
 
+/// Tangential values per node ((d - 1) x nodes, each in the tangent_basis of its column of the
+/// unit normals, d x nodes; ContactResult::tangential) as Cartesian vectors, d x nodes.
+[[nodiscard]] Eigen::MatrixXd cartesian_tangential(const Eigen::MatrixXd& normals,
+                                                   const Eigen::MatrixXd& tangential);
+
 }  // namespace signorini

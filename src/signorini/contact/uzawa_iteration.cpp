@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/outer_iteration.hpp"
 
@@ -43,7 +44,7 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
     rec.factor_updates = g.factor_updates;
     rec.inner_residual = g.residual;
     if (g.termination != Termination::Converged) {
-      rec.active_set_size = phi.count_in_contact(l);
+      rec.active_set_size = count_in_contact(l, phi.components());
       o.stop = g.termination;
       o.message = g.message;
       return o;
@@ -54,7 +55,7 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
     o.l = phi.updated_multipliers(space.contact_values());
     rec.dual_change = relative_change(o.l, l);
     previous_change = rec.dual_change;
-    rec.active_set_size = phi.count_in_contact(o.l);
+    rec.active_set_size = count_in_contact(o.l, phi.components());
     if (rec.dual_change < options.uzawa_tolerance) {
       o.stop = Termination::Converged;
       o.message = dual_change_message(rec, options.uzawa_tolerance, k, "Uzawa steps");

@@ -5,7 +5,8 @@
 // (contact_set.hpp). Together, (N x)_j and (T x)_j are node j's displacement in the frame
 // (nu_j, t_1, .., t_{d-1}).
 //
-// Status: built and tested (tests/fem/contact_tangents_test.cpp); no solver uses it yet.
+// Used by friction (problem/model.cpp adds T to N: contact/friction_law.hpp); tested in
+// tests/fem/contact_tangents_test.cpp.
 
 #include "signorini/contact/contact_set.hpp"
 #include "signorini/contact/tangent_basis.hpp"

@@ -81,8 +81,8 @@ void DofMap::finalize(const std::vector<Index>& node_order) {
   finalized_ = true;
 }
 
-Vector DofMap::expand(const Vector& free_values, double prescribed_scale) const {
-  return expand(free_values, Vector::Constant(num_dofs(), prescribed_scale));
+Vector DofMap::expand(const Vector& free_values) const {
+  return expand(free_values, Vector::Ones(num_dofs()));
 }
 
 Vector DofMap::expand(const Vector& free_values, const Vector& scales) const {

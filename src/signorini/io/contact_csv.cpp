@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/fem/contact_tangents.hpp"
 
 namespace signorini {
 
@@ -24,11 +24,15 @@ struct FrictionColumns {
   const Model& model;
   const ContactResult& result;
   std::vector<FrictionState> states;
+  Matrix cartesian;  // 3D: the tangential traction as a Cartesian vector per node
   FrictionColumns(const Model& m, const ContactResult& r)
       : model(m),
         result(r),
         states(m.friction ? friction_states(*m.friction, r.l, r.tangential)
-                          : std::vector<FrictionState>{}) {}
+                          : std::vector<FrictionState>{}),
+        cartesian(m.friction && m.mesh.dim() == 3
+                      ? cartesian_tangential(m.problem.contact.normals, r.tangential)
+                      : Matrix()) {}
   [[nodiscard]] bool on() const { return model.friction != nullptr; }
   [[nodiscard]] std::string header() const {
     if (!on()) return "";
@@ -42,10 +46,8 @@ struct FrictionColumns {
     const double slip = result.slip.size() > j ? result.slip(j) : 0.0;
     if (model.mesh.dim() == 2)
       return fmt::format(",{:.17g},{:.17g},{}", result.tangential(0, j) + 0.0, slip, state);
-    const Eigen::MatrixXd basis = tangent_basis(model.problem.contact.normals.col(j));
-    const Eigen::Vector3d t = basis * result.tangential.col(j);
-    return fmt::format(",{:.17g},{:.17g},{:.17g},{:.17g},{}", t(0) + 0.0, t(1) + 0.0, t(2) + 0.0,
-                       slip, state);
+    return fmt::format(",{:.17g},{:.17g},{:.17g},{:.17g},{}", cartesian(0, j) + 0.0,
+                       cartesian(1, j) + 0.0, cartesian(2, j) + 0.0, slip, state);
   }
 };
 

@@ -405,25 +405,32 @@ void read_range(const Reader& r, const Dimension& dim, const toml::table& t,
   box.upper[static_cast<std::size_t>(axis)] = v[1];
 }
 
-// `factors` of a load or displacement entry: its own load factors, one per step of [loading]
-// (counted against it by check_own_factors once that is read). Any finite numbers: a shear may
-// reverse.
-std::vector<double> own_factors(const Reader& r, const toml::table& t, const std::string& path) {
-  const toml::node* n = t.get("factors");
-  if (n == nullptr) return {};
-  const std::string key = join(path, "factors");
-  const toml::array* a = n->as_array();
-  if (a == nullptr || a->empty())
-    r.wrong_type(key, "a non-empty array of numbers, one load factor per step of [loading]", *n);
+// An array of load factors at `key`: finite numbers, and >= 0 where `non_negative` (the
+// history's own; an entry's may be negative: a shear may reverse).
+std::vector<double> factor_array(const Reader& r, const toml::node& n, const std::string& key,
+                                 const std::string& expected, bool non_negative) {
+  const toml::array* a = n.as_array();
+  if (a == nullptr || a->empty()) r.wrong_type(key, expected, n);
+  const std::string number = non_negative ? "a number >= 0" : "a number";
   std::vector<double> out;
   for (std::size_t i = 0; i < a->size(); ++i) {
     const toml::node& e = *a->get(i);
     const std::optional<double> v = e.value<double>();
-    if (!v) r.wrong_type(element(key, i), "a number", e);
-    if (!std::isfinite(*v)) r.out_of_range(element(key, i), as_text(*v), "a finite number", &e);
+    if (!v) r.wrong_type(element(key, i), number, e);
+    if (!std::isfinite(*v) || (non_negative && !(*v >= 0.0)))
+      r.out_of_range(element(key, i), as_text(*v), "a finite " + number.substr(2), &e);
     out.push_back(*v);
   }
   return out;
+}
+
+// `factors` of a load or displacement entry: its own load factors, one per step of [loading]
+// (counted against it by check_own_factors once that is read).
+std::vector<double> own_factors(const Reader& r, const toml::table& t, const std::string& path) {
+  const toml::node* n = t.get("factors");
+  if (n == nullptr) return {};
+  return factor_array(r, *n, join(path, "factors"),
+                      "a non-empty array of numbers, one load factor per step of [loading]", false);
 }
 
 void read_tractions(const Reader& r, const Dimension& dim, const toml::table& root,
@@ -703,18 +710,8 @@ void read_loading(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   }
   if (factors == nullptr)
     r.missing("loading.steps", "an integer >= 1 (or loading.factors, an array of numbers >= 0)");
-  const toml::array* a = factors->as_array();
-  if (a == nullptr || a->empty())
-    r.wrong_type("loading.factors", "a non-empty array of numbers >= 0", *factors);
-  for (std::size_t i = 0; i < a->size(); ++i) {
-    const toml::node& n = *a->get(i);
-    const std::optional<double> v = n.value<double>();
-    const std::string key = fmt::format("loading.factors[{}]", i);
-    if (!v) r.wrong_type(key, "a number >= 0", n);
-    if (!(*v >= 0.0) || !std::isfinite(*v))
-      r.out_of_range(key, as_text(*v), "a finite number >= 0", &n);
-    spec.load_factors.push_back(*v);
-  }
+  spec.load_factors =
+      factor_array(r, *factors, "loading.factors", "a non-empty array of numbers >= 0", true);
 }
 
 // The entries' own factors (own_factors): one per step of [loading], which they need.

@@ -218,12 +218,12 @@ std::string contact_vtu(const ContactResult& result, const Model& model) {
     // sliding), as contact.csv has them.
     const std::vector<FrictionState> states =
         friction_states(*model.friction, result.l, result.tangential);
+    const Matrix t = cartesian_tangential(c.normals, result.tangential);
     std::vector<double> traction(static_cast<std::size_t>(3 * m), 0.0);
     std::vector<std::uint8_t> state(static_cast<std::size_t>(m));
     for (Index j = 0; j < m; ++j) {
       const auto k = static_cast<std::size_t>(j);
-      const Eigen::VectorXd t = tangent_basis(c.normals.col(j)) * result.tangential.col(j);
-      for (Index i = 0; i < dim; ++i) traction[3 * k + static_cast<std::size_t>(i)] = t(i);
+      for (Index i = 0; i < dim; ++i) traction[3 * k + static_cast<std::size_t>(i)] = t(i, j);
       state[k] = static_cast<std::uint8_t>(states[k]);
     }
     vtu.add_point_data("tangential_traction", 3, traction, {"X", "Y", "Z"});

@@ -120,6 +120,21 @@ double MultigridPreconditioner::fine_lambda_max() const {
   return levels_.front()->smoother ? levels_.front()->smoother->lambda_max() : 0.0;
 }
 
+double MultigridPreconditioner::block_unknowns_bound(Index block) {
+  if (block == block_bound_size_) return block_bound_;
+  block_bound_ = 0.0;
+  for (std::size_t first = 0; first < fine_row_columns_.size();
+       first += static_cast<std::size_t>(block)) {
+    std::vector<Index> columns;
+    for (std::size_t a = first; a < first + static_cast<std::size_t>(block); ++a)
+      for (const Index col : fine_row_columns_[a])
+        if (std::find(columns.begin(), columns.end(), col) == columns.end()) columns.push_back(col);
+    block_bound_ = std::max(block_bound_, static_cast<double>(columns.size()));
+  }
+  block_bound_size_ = block;
+  return block_bound_;
+}
+
 void MultigridPreconditioner::refresh() {
   recorded_.reset();
   const Vector& c = levels_.front()->op->weights();
@@ -137,18 +152,13 @@ void MultigridPreconditioner::refresh() {
   const Index block = levels_.front()->op->block_size();
   if (fine_lambda_without_contact_ > 0.0) {
     fine_bound = fine_lambda_without_contact_;
-    for (Index j = 0; j < c.size(); ++j) {
-      if (!(c(j) > 0.0) && block == 1) continue;
-      double entries = static_cast<double>(fine_normal_entries_[static_cast<std::size_t>(j)]);
-      if (block > 1) {
-        std::vector<Index> columns;
-        for (Index a = j - j % block; a < j - j % block + block; ++a)
-          for (const Index col : fine_row_columns_[static_cast<std::size_t>(a)])
-            if (std::find(columns.begin(), columns.end(), col) == columns.end())
-              columns.push_back(col);
-        entries = static_cast<double>(columns.size());
-      }
-      fine_bound = std::max(fine_bound, entries);
+    if (block > 1) {
+      fine_bound = std::max(fine_bound, block_unknowns_bound(block));
+    } else {
+      for (Index j = 0; j < c.size(); ++j)
+        if (c(j) > 0.0)
+          fine_bound = std::max(
+              fine_bound, static_cast<double>(fine_normal_entries_[static_cast<std::size_t>(j)]));
     }
   }
   for (std::size_t l = 0; l < levels_.size(); ++l) {

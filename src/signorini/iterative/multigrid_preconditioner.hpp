@@ -82,6 +82,11 @@ class MultigridPreconditioner final : public Preconditioner {
   double fine_lambda_without_contact_ = 0.0;
   std::vector<int> fine_normal_entries_;
   std::vector<std::vector<Index>> fine_row_columns_;  // the unknowns of each row of N
+  // Block weights (friction in 3D): the most unknowns that one node's `block` rows of N touch
+  // together, the bound of refresh(), computed once per block size.
+  double block_unknowns_bound(Index block);
+  Index block_bound_size_ = 0;
+  double block_bound_ = 0.0;
   // The coarsest level's solve: on a GPU its explicit inverse, applied by one dense product; on
   // the CPU its Cholesky factor, applied by two triangular solves (as fast for one vector, and
   // the inverse cost twice the factorisation again at every refresh).

@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
-#include "signorini/fem/contact_tangents.hpp"
+#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 
 namespace signorini {
@@ -50,9 +50,10 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   const ContactSet& c = model.problem.contact;
   Vector contact = Vector::Zero(model.dofs.num_dofs());
   const bool friction = tangential.cols() == c.size() && tangential.size() > 0;
+  const Matrix along = friction ? cartesian_tangential(c.normals, tangential) : Matrix();
   for (Index j = 0; j < c.size(); ++j) {
     Eigen::VectorXd force = -c.weights(j) * l(j) * c.normals.col(j);
-    if (friction) force -= c.weights(j) * tangent_basis(c.normals.col(j)) * tangential.col(j);
+    if (friction) force -= c.weights(j) * along.col(j);
     for (int k = 0; k < dim; ++k)
       contact(c.nodes[static_cast<std::size_t>(j)] * dim + k) += force(k);
   }
