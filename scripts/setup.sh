@@ -18,6 +18,9 @@ packages=(
   # PETSc with Open MPI (and hypre, MUMPS, PT-Scotch): the distributed engine and signorini-mpi
   # (docs/distributed.md), and the PETSc peer of the benchmarks (python3-petsc4py).
   petsc-dev python3-petsc4py
+  # The Python package (python/, docs/python.md): pybind11 and the interpreter's headers to build
+  # it, pytest for its tests.
+  pybind11-dev python3-dev python3-pytest
 )
 
 missing=()

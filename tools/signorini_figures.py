@@ -507,6 +507,8 @@ def title_of(summary):
             text += f" of {cell} cells"
     elif mesh.get("type") == "box":
         text = f"{name}: a box mesh"
+    elif mesh.get("type") == "given":  # arrays from a program (the Python package)
+        text = f"{name}: a given mesh of {mesh.get('cells', '?')} cells"
     else:  # a mesh from a file
         text = f"{name}: {os.path.basename(str(mesh.get('file', '?')))}"
     if "n_dofs" in summary:

@@ -16,6 +16,7 @@
 #include "signorini/io/summary_json.hpp"
 #include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
+#include "signorini/mesh/mesh_arrays.hpp"
 #include "signorini/mesh/mesh.hpp"
 #include "signorini/mesh/mesh_description.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"

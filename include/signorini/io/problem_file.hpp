@@ -4,9 +4,11 @@
 // keys, types, ranges) before any work starts, and every error is one line naming the file and
 // the key.
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "signorini/mesh/mesh.hpp"
 #include "signorini/problem/memory_estimate.hpp"
 #include "signorini/problem/problem_spec.hpp"
 
@@ -31,12 +33,18 @@ struct LoadedProblem {
 /// created; "clamp.0.boundary" indexes an array of tables. Throws InputError: "cannot read
 /// '<path>': <reason>", "<path>:<line>:<column>: TOML syntax error: ...", or "<path>: ..." for
 /// unknown keys, missing keys, wrong types and values out of range.
+///
+/// `mesh`: a mesh the program gives (mesh/mesh_arrays.hpp) instead of the file's [mesh], which
+/// must then be left out (mesh.type is then "given", and points and vectors are checked against
+/// the mesh's dimension as the file is read).
 LoadedProblem read_problem_file(const std::string& path,
-                                const std::vector<std::string>& overrides = {});
+                                const std::vector<std::string>& overrides = {},
+                                std::shared_ptr<const Mesh> mesh = nullptr);
 
 /// As read_problem_file, from the text of a file; `name_for_errors` stands for the file name in
 /// messages (and gives the default problem name, its stem).
 LoadedProblem parse_problem_string(const std::string& toml_text, const std::string& name_for_errors,
-                                   const std::vector<std::string>& overrides = {});
+                                   const std::vector<std::string>& overrides = {},
+                                   std::shared_ptr<const Mesh> mesh = nullptr);
 
 }  // namespace signorini

@@ -4,6 +4,7 @@
 // directly.
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "signorini/fem/rigid_obstacle.hpp"
 #include "signorini/fem/vector_field.hpp"
 #include "signorini/mesh/box_mesh.hpp"
+#include "signorini/mesh/mesh.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 
 namespace signorini {
@@ -114,14 +116,21 @@ struct RegionMaterialSpec {
 };
 
 /// Where the mesh comes from: the structured rectangle (2D), a Gmsh file (2D or 3D), the
-/// structured box (3D).
-enum class MeshType { Rectangle, Gmsh, Box };
+/// structured box (3D), or a mesh the program gives (ProblemSpec::given_mesh: arrays from Python
+/// or C++, mesh/mesh_arrays.hpp), which no problem file can name.
+enum class MeshType { Rectangle, Gmsh, Box, Given };
 
+/// The mesh types a problem file's [mesh] type may name.
 inline constexpr EnumNames<MeshType, 3> kMeshTypeNames{{
     {MeshType::Rectangle, "rectangle"},
     {MeshType::Gmsh, "gmsh"},
     {MeshType::Box, "box"},
 }};
+
+/// The structured meshes, made from a few numbers (the keys of [mesh]).
+constexpr bool is_structured(MeshType t) {
+  return t == MeshType::Rectangle || t == MeshType::Box;
+}
 
 /// The dimension that a key of a problem file implies: a point or vector of 3 numbers, component
 /// z or a cylinder a 3D problem; x_range a 2D one. A file on a Gmsh mesh cannot know the mesh's
@@ -147,6 +156,8 @@ struct ProblemSpec {
   /// The .msh file (or a .geo file, meshed by the gmsh program) for mesh_type = Gmsh; the
   /// problem-file reader makes a relative path relative to the problem file's folder.
   std::string mesh_file;
+  /// The mesh for mesh_type = Given (read_problem_file's `mesh`, or set in C++).
+  std::shared_ptr<const Mesh> given_mesh;
   /// What a problem file's keys say the dimension is, for build_model to check against the
   /// mesh (ImpliedDimension). Empty in specs built in C++.
   ImpliedDimension implied_dimension;

@@ -32,8 +32,16 @@ std::string effective_toml(const ProblemSpec& spec, const ExpressionTexts& texts
   TomlEmitter out;
   emit_options(out, top_level_options(), spec);
   if (!spec.units.empty()) out.value("units", spec.units);
-  out.table("mesh");
-  emit_options(out, mesh_options(), spec);
+  if (spec.mesh_type == MeshType::Given) {
+    // No text can say a mesh given as arrays: the log says what it was instead.
+    out.comment(spec.given_mesh ? "[mesh]: given by the program (" +
+                                      std::to_string(spec.given_mesh->num_nodes()) + " nodes, " +
+                                      std::to_string(spec.given_mesh->num_cells()) + " cells)"
+                                : "[mesh]: given by the program");
+  } else {
+    out.table("mesh");
+    emit_options(out, mesh_options(), spec);
+  }
   out.table("material");
   emit_options(out, material_options(), spec);
   for (const RegionMaterialSpec& m : spec.region_materials) {

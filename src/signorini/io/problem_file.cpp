@@ -20,6 +20,7 @@
 #include "signorini/io/expression.hpp"
 #include "signorini/io/overrides.hpp"
 #include "signorini/io/problem_schema.hpp"
+#include "signorini/io/problem_table.hpp"
 #include "signorini/io/suggestion.hpp"
 #include "signorini/io/syntax_explanations.hpp"
 #include "signorini/io/toml_reader.hpp"
@@ -75,10 +76,14 @@ class Dimension {
         "key '" + key + "' gives " + given + " (" + std::to_string(dim) + "D problems only)";
     if (spec_.mesh_type != MeshType::Gmsh) {
       if (dim != known())
-        r_.fail_at(n.source(), says + ", but the mesh is " + std::to_string(known()) +
-                                   "D (mesh.type = \"" +
-                                   std::string(enum_to_string(kMeshTypeNames, spec_.mesh_type)) +
-                                   "\"): expected " + instead);
+        r_.fail_at(
+            n.source(),
+            says + ", but the mesh is " + std::to_string(known()) + "D (" +
+                (spec_.mesh_type == MeshType::Given
+                     ? std::string("the given mesh")
+                     : "mesh.type = \"" +
+                           std::string(enum_to_string(kMeshTypeNames, spec_.mesh_type)) + "\"") +
+                "): expected " + instead);
       return;
     }
     ImpliedDimension& first = spec_.implied_dimension;
@@ -154,7 +159,19 @@ void read_top_level(const Reader& r, const toml::table& root, ProblemSpec& spec)
   }
 }
 
-void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
+void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec,
+               std::shared_ptr<const Mesh> given) {
+  if (given) {
+    // The program gives the mesh (arrays, mesh/mesh_arrays.hpp): a [mesh] section would be a
+    // second one, and one of them would be silently ignored.
+    if (const toml::node* n = root.get("mesh"); n != nullptr)
+      r.fail_at(n->source(),
+                "section [mesh]: the mesh is given by the program (a Mesh argument); leave "
+                "[mesh] out");
+    spec.mesh_type = MeshType::Given;
+    spec.given_mesh = std::move(given);
+    return;
+  }
   const toml::table* t = r.table(root, "", "mesh");
   if (t == nullptr)
     r.missing("mesh",
@@ -165,7 +182,7 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   read_options(r, *t, mesh_options(), spec);
   check_options(r, t, mesh_options(), spec);
   // mesh.cell takes the names of both structured meshes; each takes its own.
-  if (spec.mesh_type != MeshType::Gmsh && !cell_fits_mesh(spec)) {
+  if (is_structured(spec.mesh_type) && !cell_fits_mesh(spec)) {
     const bool box = spec.mesh_type == MeshType::Box;
     const toml::node* cell = t->get("cell");
     r.fail_at(
@@ -177,7 +194,7 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
             (box ? enum_choices(kBoxCellNames) : enum_choices(kRectangleCellNames)));
   }
   // Which keys a type needs (those it has no use for were refused by check_options).
-  if (spec.mesh_type != MeshType::Gmsh) {
+  if (is_structured(spec.mesh_type)) {
     const bool box = spec.mesh_type == MeshType::Box;
     const std::vector<const char*> keys =
         box ? std::vector<const char*>{"length", "width", "height", "nx", "ny", "nz"}
@@ -196,9 +213,16 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec) {
   }
 }
 
-// The cell type of a structured mesh, for the warning about locking (a Gmsh mesh's cells are known
-// only when it is read: it is warned about as the rectangle's default, quad4, would be).
+// The cell type of the mesh, for the warning about locking: a structured mesh's, a given mesh's
+// first linear type (or its first type). A Gmsh mesh's cells are known only when it is read: it is
+// warned about as the rectangle's default, quad4, would be.
 CellType structured_cell(const ProblemSpec& spec) {
+  if (spec.mesh_type == MeshType::Given && spec.given_mesh) {
+    const std::vector<CellType> types = spec.given_mesh->cell_types();
+    for (const CellType t : types)
+      if (cell_order(t) == 1) return t;
+    return types.front();
+  }
   return spec.mesh_type == MeshType::Box ? spec.box.cell : spec.mesh.cell;
 }
 
@@ -785,7 +809,8 @@ void read_solver(const Reader& r, const toml::table& root, ProblemSpec& spec) {
 // A mesh that cannot fit is refused now rather than after minutes of assembly, or by the
 // out-of-memory killer.
 void check_memory(const Reader& r, const ProblemSpec& spec) {
-  if (spec.mesh_type == MeshType::Gmsh) return;  // a file's size is known when it is read
+  // A file's size is known when it is read, a given mesh's by its caller.
+  if (!is_structured(spec.mesh_type)) return;
   const bool box = spec.mesh_type == MeshType::Box;
   // Quadratic cells: the lattice of half steps.
   const double p = cell_order(box ? spec.box.cell : spec.mesh.cell);
@@ -810,7 +835,8 @@ void check_memory(const Reader& r, const ProblemSpec& spec) {
 }  // namespace
 
 LoadedProblem parse_problem_string(const std::string& toml_text, const std::string& name_for_errors,
-                                   const std::vector<std::string>& overrides) {
+                                   const std::vector<std::string>& overrides,
+                                   std::shared_ptr<const Mesh> mesh) {
   toml::table root;
   try {
     root = toml::parse(toml_text, name_for_errors);
@@ -823,7 +849,12 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
                                  e.source().begin.line, e.source().begin.column,
                                  one_line(std::string(e.description()))));
   }
+  return read_problem_table(std::move(root), name_for_errors, overrides, std::move(mesh));
+}
 
+LoadedProblem read_problem_table(toml::table root, const std::string& name_for_errors,
+                                 const std::vector<std::string>& overrides,
+                                 std::shared_ptr<const Mesh> mesh) {
   std::set<std::string> overridden;
   {
     const Reader pre(name_for_errors, {}, problem_schema());
@@ -837,7 +868,7 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   ProblemSpec& spec = out.spec;
   ExpressionTexts texts;
   read_top_level(r, root, spec);
-  read_mesh(r, root, spec);
+  read_mesh(r, root, spec, std::move(mesh));
   const Dimension dim(r, spec);  // known from the mesh type, or implied by the keys that follow
   read_material(r, dim, root, spec, out.warnings);
   read_regions(r, root, spec, out.warnings);
@@ -857,8 +888,8 @@ LoadedProblem parse_problem_string(const std::string& toml_text, const std::stri
   return out;
 }
 
-LoadedProblem read_problem_file(const std::string& path,
-                                const std::vector<std::string>& overrides) {
+LoadedProblem read_problem_file(const std::string& path, const std::vector<std::string>& overrides,
+                                std::shared_ptr<const Mesh> mesh) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError("cannot read '" + path + "': is a directory");
@@ -867,7 +898,7 @@ LoadedProblem read_problem_file(const std::string& path,
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError("cannot read '" + path + "': " + std::strerror(errno));
-  return parse_problem_string(text.str(), path, overrides);
+  return parse_problem_string(text.str(), path, overrides, std::move(mesh));
 }
 
 }  // namespace signorini

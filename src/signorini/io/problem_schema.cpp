@@ -86,7 +86,7 @@ const OptionTable<P>& top_level_options() {
 const auto rectangle_mesh = [](const P& s) { return s.mesh_type == MeshType::Rectangle; };
 const auto gmsh_mesh = [](const P& s) { return s.mesh_type == MeshType::Gmsh; };
 const auto box_mesh = [](const P& s) { return s.mesh_type == MeshType::Box; };
-const auto structured_mesh = [](const P& s) { return s.mesh_type != MeshType::Gmsh; };
+const auto structured_mesh = [](const P& s) { return is_structured(s.mesh_type); };
 constexpr const char* kStructuredWords = "type = \"rectangle\" or \"box\"";
 constexpr const char* kBoxWords = "type = \"box\"";
 
@@ -189,6 +189,8 @@ int stated_dimension(const ProblemSpec& spec) {
       return 2;
     case MeshType::Box:
       return 3;
+    case MeshType::Given:
+      return spec.given_mesh ? spec.given_mesh->dim() : 0;
     case MeshType::Gmsh:
       break;
   }

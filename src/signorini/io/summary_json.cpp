@@ -199,7 +199,16 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   // formulas say how each was given.
   json problem = options_json(top_level_options(), spec);
   problem["units"] = spec.units.empty() ? json(nullptr) : json(spec.units);
-  problem["mesh"] = options_json(mesh_options(), spec);
+  if (spec.mesh_type == MeshType::Given) {
+    // A mesh the program gave (mesh/mesh_arrays.hpp): no keys say it, its sizes do.
+    problem["mesh"] = {{"type", "given"}};
+    if (spec.given_mesh) {
+      problem["mesh"]["nodes"] = spec.given_mesh->num_nodes();
+      problem["mesh"]["cells"] = spec.given_mesh->num_cells();
+    }
+  } else {
+    problem["mesh"] = options_json(mesh_options(), spec);
+  }
   problem["material"] = options_json(material_options(), spec);
   if (!spec.region_materials.empty()) {
     problem["region"] = json::array();

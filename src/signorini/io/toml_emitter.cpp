@@ -63,6 +63,10 @@ void TomlEmitter::header(std::string_view line) {
   text_ += '\n';
 }
 
+void TomlEmitter::comment(std::string_view text) {
+  header(fmt::format("# {}", text));
+}
+
 void TomlEmitter::table(std::string_view name) {
   header(fmt::format("[{}]", name));
 }

@@ -31,6 +31,8 @@ class TomlEmitter {
   /// An option's value as toml_value() spells it.
   void value(std::string_view key, const OptionValue& option);
 
+  /// A comment line ("# text") with a blank line before it, as a table's header has.
+  void comment(std::string_view text);
   [[nodiscard]] const std::string& text() const { return text_; }
 
  private:

@@ -18,6 +18,8 @@
 #include <unordered_map>
 
 #include "signorini/core/error.hpp"
+#include "signorini/mesh/cell_orientation.hpp"
+#include "signorini/mesh/facet_matching.hpp"
 
 namespace signorini {
 
@@ -476,79 +478,6 @@ std::string physical_name(const Parsed& p, int dim, int tag) {
   return it != p.physical_names.end() ? it->second : std::to_string(tag);
 }
 
-// Mirrors a clockwise cell: corners reversed (keeping node 0), mid-edge nodes with them.
-void mirror(CellType t, Index* v) {
-  switch (t) {
-    case CellType::Tri3:
-      std::swap(v[1], v[2]);
-      return;
-    case CellType::Tri6:
-      std::swap(v[1], v[2]);
-      std::swap(v[3], v[5]);
-      return;
-    case CellType::Quad4:
-      std::swap(v[1], v[3]);
-      return;
-    case CellType::Quad8:
-    case CellType::Quad9:
-      std::swap(v[1], v[3]);
-      std::swap(v[4], v[7]);
-      std::swap(v[5], v[6]);
-      return;
-    default:
-      return;
-  }
-}
-
-// A facet (an edge in 2D, a face in 3D) by its sorted corners, -1 after them: the same from both
-// cells it bounds and from the boundary element on it, whatever their node orders.
-using FacetKey = std::array<Index, 4>;
-
-struct FacetKeyHash {
-  std::size_t operator()(const FacetKey& k) const {
-    std::uint64_t h = 0;
-    for (const Index v : k) h = (h ^ static_cast<std::uint64_t>(v)) * 0x9e3779b97f4a7c15ULL;
-    return static_cast<std::size_t>(h ^ (h >> 32));
-  }
-};
-
-// The key of `n` corners; nullopt if one is a node no cell uses (numbered -1).
-template <class Corner>
-std::optional<FacetKey> facet_key(int n, Corner corner) {
-  FacetKey k;
-  k.fill(-1);
-  for (int a = 0; a < n; ++a) {
-    k[static_cast<std::size_t>(a)] = corner(a);
-    if (k[static_cast<std::size_t>(a)] < 0) return std::nullopt;
-  }
-  std::sort(k.begin(), k.begin() + n);
-  return k;
-}
-
-// The smallest of det J at the corners of a volume cell, up to a positive factor: the triple
-// product of the edges from each corner (one for a tetrahedron, whose det J is constant; for a
-// hexahedron, each corner with its neighbours along xi, eta, zeta, taken right-handed).
-double min_corner_det(CellType t, const Index* v, const Eigen::MatrixXd& x) {
-  const auto triple = [&](int a, int b, int c, int d) {
-    const Eigen::Vector3d o = x.col(v[a]);
-    const Eigen::Vector3d e1 = x.col(v[b]) - o, e2 = x.col(v[c]) - o, e3 = x.col(v[d]) - o;
-    return e1(0) * (e2(1) * e3(2) - e2(2) * e3(1)) - e1(1) * (e2(0) * e3(2) - e2(2) * e3(0)) +
-           e1(2) * (e2(0) * e3(1) - e2(1) * e3(0));
-  };
-  if (corners_per_cell(t) == 4) return triple(0, 1, 2, 3);
-  static constexpr std::array<std::array<int, 4>, 8> kHexCorners{{{0, 1, 3, 4},
-                                                                  {1, 2, 0, 5},
-                                                                  {2, 3, 1, 6},
-                                                                  {3, 0, 2, 7},
-                                                                  {4, 7, 5, 0},
-                                                                  {5, 4, 6, 1},
-                                                                  {6, 5, 7, 2},
-                                                                  {7, 6, 4, 3}}};
-  double m = INFINITY;
-  for (const auto& [a, b, c, d] : kHexCorners) m = std::min(m, triple(a, b, c, d));
-  return m;
-}
-
 }  // namespace
 
 Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
@@ -673,13 +602,7 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
           node_slot(raw, i, raw.nodes[static_cast<std::size_t>(k)]))]);
     Index* v = cells.data() + first;
     if (dim == 2) {
-      const int corners = corners_per_cell(t);
-      double area2 = 0.0;  // shoelace over the corners
-      for (int a = 0; a < corners; ++a) {
-        const Index m = v[a], q = v[(a + 1) % corners];
-        area2 += xy(0, m) * xy(1, q) - xy(0, q) * xy(1, m);
-      }
-      if (area2 < 0.0) mirror(t, v);
+      if (signed_corner_area2(t, v, xy) < 0.0) mirror_cell(t, v);
     } else if (const double det = min_corner_det(t, v, xy); !(det > 0.0)) {
       // Gmsh writes positive volumes; a hand-written or converted file may not, and a cell
       // turned inside out must not reach the assembly as a negative stiffness.
@@ -716,46 +639,20 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   // triangle or quadrilateral in 3D) matched to the cell facet with the same corners. Their keys
   // go into a table first (a boundary's worth), then every cell facet is looked up in it.
   std::vector<std::vector<Index>> bound_nodes(bounds.types.size());
-  std::vector<std::optional<FacetKey>> bound_keys(bounds.types.size());
-  std::unordered_map<FacetKey, Facet, FacetKeyHash> facets;
+  std::vector<BoundaryElement> elements(bounds.types.size());
   for (std::size_t i = 0; i < bounds.types.size(); ++i) {
     if (bounds.group[i] == 0) continue;  // a surface of a 3D mesh in no physical group
     for (Index k = bounds.offsets[i]; k < bounds.offsets[i + 1]; ++k) {
       const Index s = node_slot(bounds, i, bounds.nodes[static_cast<std::size_t>(k)]);
       bound_nodes[i].push_back(number[static_cast<std::size_t>(s)]);
     }
-    const auto& v = bound_nodes[i];
-    bound_keys[i] = facet_key(corners_per_cell(*cell_type_of(bounds.types[i])),
-                              [&](int a) { return v[static_cast<std::size_t>(a)]; });
-    if (bound_keys[i]) facets.emplace(*bound_keys[i], Facet{-1, 0});
+    elements[i] = {bound_nodes[i], corners_per_cell(*cell_type_of(bounds.types[i]))};
   }
-  if (!facets.empty())
-    for (Index c = 0; c < mesh.num_cells(); ++c)
-      for (int f = 0; f < facets_per_cell(mesh.cell_type(c)); ++f) {
-        const auto local = facet_local_nodes(mesh.cell_type(c), f);
-        const auto cell = mesh.cell(c);
-        const auto k = facet_key(corners_per_cell(facet_type(mesh.cell_type(c))), [&](int a) {
-          return cell[static_cast<std::size_t>(local[static_cast<std::size_t>(a)])];
-        });
-        const auto it = facets.find(*k);
-        if (it != facets.end() && it->second.cell < 0) it->second = Facet{c, f};
-      }
+  const std::vector<std::optional<Facet>> matched = match_facets(mesh, elements);
   std::map<int, std::vector<Facet>> parts;
   for (std::size_t i = 0; i < bounds.types.size(); ++i) {
     if (bounds.group[i] == 0) continue;
-    std::vector<Index>& v = bound_nodes[i];  // sorted below: not needed in file order after
-    const auto it = bound_keys[i] ? facets.find(*bound_keys[i]) : facets.end();
-    bool match = it != facets.end() && it->second.cell >= 0;
-    // An element with more than its corners (a second-order one) must have the facet's nodes;
-    // one of the first order names the facet by its corners alone.
-    if (match &&
-        v.size() > static_cast<std::size_t>(corners_per_cell(*cell_type_of(bounds.types[i])))) {
-      std::vector<Index> fn = mesh.facet_nodes(it->second);
-      std::sort(fn.begin(), fn.end());
-      std::sort(v.begin(), v.end());
-      match = fn == v;
-    }
-    if (!match)
+    if (!matched[i])
       throw InputError(
           name + (dim == 3 ? ": surface element " : ": line element ") +
           std::to_string(bounds.tags[i]) + " (physical group '" +
@@ -763,7 +660,7 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
           (dim == 3 ? "') is not a face of any 3D element"
                     : "') is not an edge of any 2D element"));
     for (const int t : p.groups[static_cast<std::size_t>(bounds.group[i])])
-      parts[t].push_back(it->second);
+      parts[t].push_back(*matched[i]);
   }
   for (auto& [t, part] : parts) {
     // In cell order, whatever the order of the elements in the file (the same sums in any

@@ -258,9 +258,12 @@ Model build_model(const ProblemSpec& spec) {
   require_loads_off_contact(spec);
   TimingTable timings;
   ScopedTimer mesh_timer(timings, "mesh");
-  Mesh mesh = spec.mesh_type == MeshType::Gmsh  ? read_mesh_file(spec.mesh_file)
-              : spec.mesh_type == MeshType::Box ? make_box_mesh(spec.box)
-                                                : make_rectangle_mesh(spec.mesh);
+  if (spec.mesh_type == MeshType::Given && !spec.given_mesh)
+    throw InputError("mesh type \"given\" without a mesh (ProblemSpec::given_mesh)");
+  Mesh mesh = spec.mesh_type == MeshType::Gmsh    ? read_mesh_file(spec.mesh_file)
+              : spec.mesh_type == MeshType::Given ? Mesh(*spec.given_mesh)
+              : spec.mesh_type == MeshType::Box   ? make_box_mesh(spec.box)
+                                                  : make_rectangle_mesh(spec.mesh);
   // A problem file on a Gmsh mesh gives points and vectors with as many components as it
   // chooses; now that the mesh is read, they must match it.
   if (const ImpliedDimension& d = spec.implied_dimension;
@@ -286,13 +289,12 @@ Model build_model(const ProblemSpec& spec) {
     elasticity.region_materials[r] = m.material;
   }
   std::vector<int> owner;
-  // A mesh from a file comes in its generator's order; its unknowns are numbered along the
-  // Z-order curve instead, so that each product with the stiffness finds a row's columns near
-  // each other in memory (fem/node_ordering.hpp). The generated meshes are numbered row by row
-  // already. The mesh's own node numbers, and so the result files, stay as they are.
-  DofMap dofs =
-      number_dofs(mesh, spec.clamps, spec.displacements, owner,
-                  spec.mesh_type == MeshType::Gmsh ? z_order(mesh) : std::vector<Index>{});
+  // A mesh from a file (or a program) comes in its generator's order; its unknowns are numbered
+  // along the Z-order curve instead, so that each product with the stiffness finds a row's
+  // columns near each other in memory (fem/node_ordering.hpp). The generated meshes are numbered
+  // row by row already. The mesh's own node numbers, and so the result files, stay as they are.
+  DofMap dofs = number_dofs(mesh, spec.clamps, spec.displacements, owner,
+                            is_structured(spec.mesh_type) ? std::vector<Index>{} : z_order(mesh));
   mesh_timer.stop();
   if (dofs.num_free() == 0) throw InputError("every dof is clamped: nothing to solve");
   require_no_free_rigid_motion(mesh, dofs);

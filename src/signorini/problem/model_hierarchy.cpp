@@ -22,7 +22,8 @@ MultigridHierarchy make_model_hierarchy(const ProblemSpec& spec, const Mesh& mes
     throw InputError(fmt::format(
         "solver.linear.coarsening = \"geometric\" halves rectangles of quad4 cells, not {}; "
         "use \"auto\" or \"aggregation\"",
-        spec.mesh_type == MeshType::Gmsh ? std::string("a mesh from a file")
+        spec.mesh_type == MeshType::Gmsh    ? std::string("a mesh from a file")
+        : spec.mesh_type == MeshType::Given ? std::string("a given mesh")
         : spec.mesh_type == MeshType::Box
             ? std::string("a box of 3D cells")
             : std::string(enum_to_string(kCellTypeNames, spec.mesh.cell))));

@@ -1,0 +1,29 @@
+#pragma once
+// The parts of the extension module signorini._signorini, one file each (module.cpp joins them).
+
+#include <pybind11/pybind11.h>
+
+#include "bound_objects.hpp"
+
+namespace signorini::python {
+
+namespace py = pybind11;
+
+void bind_errors(py::module_& m);
+void bind_mesh(py::module_& m);
+void bind_problem(py::module_& m);
+void bind_model(py::module_& m);
+void bind_result(py::module_& m);
+void bind_solver(py::module_& m);
+
+/// A Result object for a solution of `data`'s model.
+py::object make_result(ContactResult result, std::shared_ptr<const ModelData> data);
+
+/// Raises signorini.ConvergenceError, with the Result as its `result`, where a solve stopped
+/// short of convergence (except when a callback stopped it: the caller asked for that).
+void raise_if_not_converged(const py::object& result);
+
+/// The model of a Problem or a Model argument (a Problem is built here, the GIL released).
+std::shared_ptr<const ModelData> model_of(const py::object& problem_or_model);
+
+}  // namespace signorini::python
