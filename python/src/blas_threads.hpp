@@ -8,29 +8,56 @@
 
 #include <dlfcn.h>
 
+#include <mutex>
+
 namespace signorini::python {
 
+/// While one exists (in any thread: solves in several threads count together), OpenBLAS runs on
+/// one thread; the last one to go puts back the number it found.
 class SingleThreadedBlas {
  public:
   SingleThreadedBlas() {
-    static const auto set =
-        reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    static const auto get =
-        reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    if (set == nullptr || get == nullptr) return;
-    set_ = set;
-    saved_ = get();
-    if (saved_ != 1) set_(1);
+    const Api& api = openblas();
+    if (api.set == nullptr) return;
+    const std::lock_guard lock(state().mutex);
+    if (state().users++ == 0) {
+      state().saved = api.get();
+      if (state().saved != 1) api.set(1);
+    }
   }
   ~SingleThreadedBlas() {
-    if (set_ != nullptr && saved_ != 1) set_(saved_);
+    const Api& api = openblas();
+    if (api.set == nullptr) return;
+    const std::lock_guard lock(state().mutex);
+    if (--state().users == 0 && state().saved != 1) api.set(state().saved);
   }
   SingleThreadedBlas(const SingleThreadedBlas&) = delete;
   SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
 
  private:
-  void (*set_)(int) = nullptr;
-  int saved_ = 1;
+  struct Api {
+    void (*set)(int) = nullptr;
+    int (*get)() = nullptr;
+  };
+  struct State {
+    std::mutex mutex;
+    int users = 0;
+    int saved = 1;
+  };
+  static const Api& openblas() {
+    static const Api api = [] {
+      Api a;
+      a.set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+      a.get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+      if (a.get == nullptr) a.set = nullptr;
+      return a;
+    }();
+    return api;
+  }
+  static State& state() {
+    static State s;
+    return s;
+  }
 };
 
 }  // namespace signorini::python

@@ -30,8 +30,7 @@ std::vector<Index> node_numbers(const py::handle& values, py::ssize_t columns,
                                 const std::string& what) {
   const py::array raw = py::array::ensure(values);
   if (!raw) throw InputError(fmt::format("mesh: {}: expected an integer array", what));
-  if (raw.size() > 0 && !py::isinstance<py::array_t<std::int64_t>>(raw) &&
-      raw.dtype().kind() != 'i' && raw.dtype().kind() != 'u')
+  if (raw.size() > 0 && raw.dtype().kind() != 'i' && raw.dtype().kind() != 'u')
     throw InputError(fmt::format("mesh: {}: expected integers (node numbers), got dtype {}", what,
                                  py::str(raw.dtype()).cast<std::string>()));
   const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw);

@@ -1,7 +1,6 @@
 #include "python_to_toml.hpp"
 
 #include <fmt/format.h>
-#include <pybind11/numpy.h>
 
 #include <cmath>
 #include <sstream>
@@ -17,6 +16,15 @@ using Value = std::variant<bool, std::int64_t, double, std::string, toml::array,
 
 std::string type_of(const py::handle& v) {
   return py::str(py::type::of(v).attr("__name__"));
+}
+
+// Whether v is an instance of numpy's `name` (bool_, floating, ndarray): false where numpy has
+// not been imported, in which case no value can be one (and a dict of plain values does not
+// import it).
+bool is_numpy(const py::handle& v, const char* name) {
+  const py::dict modules = py::module_::import("sys").attr("modules");
+  if (!modules.contains("numpy")) return false;
+  return py::isinstance(v, modules["numpy"].attr(name));
 }
 
 Value convert(const py::handle& v, const std::string& key, const std::string& what);
@@ -41,12 +49,11 @@ Value convert(const py::handle& v, const std::string& key, const std::string& wh
     throw InputError(fmt::format(
         "{}: key '{}' is None: give a value, or leave the key out for its default", what, key));
   if (PyBool_Check(o)) return o == Py_True;
-  if (py::isinstance(v, py::module_::import("numpy").attr("bool_"))) return PyObject_IsTrue(o) == 1;
+  if (is_numpy(v, "bool_")) return PyObject_IsTrue(o) == 1;
   if (py::isinstance<py::str>(v)) return v.cast<std::string>();
   // Before the numbers: an array has __index__ too (for its 0-d integer kind).
-  if (py::isinstance<py::array>(v)) return convert(v.attr("tolist")(), key, what);
-  if (PyFloat_Check(o) || py::isinstance(v, py::module_::import("numpy").attr("floating")))
-    return PyFloat_AsDouble(o);
+  if (is_numpy(v, "ndarray")) return convert(v.attr("tolist")(), key, what);
+  if (PyFloat_Check(o) || is_numpy(v, "floating")) return PyFloat_AsDouble(o);
   if (PyIndex_Check(o)) {
     int overflow = 0;
     const py::object i = py::reinterpret_steal<py::object>(PyNumber_Index(o));
@@ -124,9 +131,8 @@ std::string toml_value_text(const py::handle& value, const std::string& key,
     // Element by element, so that every float keeps all its digits.
     std::string out = "[";
     std::size_t i = 0;
-    const py::object items = py::isinstance<py::array>(value)
-                                 ? py::object(value.attr("tolist")())
-                                 : py::reinterpret_borrow<py::object>(value);
+    const py::object items = is_numpy(value, "ndarray") ? py::object(value.attr("tolist")())
+                                                        : py::reinterpret_borrow<py::object>(value);
     for (const py::handle item : py::reinterpret_borrow<py::sequence>(items)) {
       out += (i == 0 ? "" : ", ") + toml_value_text(item, fmt::format("{}[{}]", key, i), what);
       ++i;
