@@ -14,6 +14,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/core/types.hpp"
+#include "signorini/linalg/detail/huge_page_memory.hpp"
 
 namespace signorini::detail {
 
@@ -32,6 +33,7 @@ using CholmodInt = SuiteSparse_long;
 struct CholmodCommon {
   cholmod_common common{};
   CholmodCommon() {
+    use_huge_pages_for_cholmod();  // before CHOLMOD's first allocation (huge_page_memory.hpp)
     cholmod_l_start(&common);
     common.print = 0;
     common.error_handler = nullptr;
