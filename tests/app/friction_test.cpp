@@ -65,7 +65,7 @@ TEST(FrictionTool, CoulombExampleMeetsTheLawNodeByNode) {
   const nlohmann::json& s = run.summary;
   ASSERT_TRUE(s["converged"].get<bool>()) << s["message"];
   EXPECT_EQ(s["friction"]["law"], "coulomb");
-  EXPECT_EQ(s["path"], "sparse_direct");
+  EXPECT_EQ(s["path"], "condensed_direct");  // 2D friction: condensed onto the contact dofs
   EXPECT_LT(s["kkt"]["friction_bound"].get<double>(), 1e-7);
   EXPECT_LT(s["kkt"]["slip"].get<double>(), 1e-7);
   // The tangential contact forces are in the resultants: the body is in balance.

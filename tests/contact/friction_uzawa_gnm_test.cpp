@@ -33,11 +33,14 @@ struct Frictional {
     add_tangential_rows(problem.contact, T);
   }
   [[nodiscard]] int dim() const { return problem.contact.components; }
+  // With Cholmod, `condensed` picks the condensed path (the default) or the sparse direct one.
   [[nodiscard]] ContactResult solve(const FrictionLaw& law, ContactMethod method,
-                                    LinearSolverType linear = LinearSolverType::Cholmod) const {
+                                    LinearSolverType linear = LinearSolverType::Cholmod,
+                                    bool condensed = true) const {
     ContactSolverOptions o;
     o.method = method;
     o.law = &law;
+    o.schur_complement = condensed;
     o.uzawa_tolerance = 1e-12;
     o.linear.type = linear;
     o.linear.cg_tolerance = 1e-14;
@@ -177,11 +180,60 @@ TEST(FrictionUzawaGnm, BlockOnBallExampleConvergesForEveryCoefficient) {
     const FrictionSsnResult ref = p.reference(FrictionKind::Coulomb, Vector::Constant(nc, mu));
     ASSERT_TRUE(ref.converged) << mu;
     const FrictionLaw coulomb(FrictionKind::Coulomb, 3, Vector::Constant(nc, mu));
-    const ContactResult r = p.solve(coulomb, ContactMethod::UzawaGnm);
+    const ContactResult r =
+        p.solve(coulomb, ContactMethod::UzawaGnm, LinearSolverType::Cholmod, false);
+    ASSERT_EQ(r.summary.path, SolvePath::SparseDirect);
     ASSERT_TRUE(r.summary.converged()) << mu << ": " << r.summary.message;
     EXPECT_LT(relative(r.u, ref.u), 1e-8) << mu;
     EXPECT_LT(force_difference(r, ref), 1e-8) << mu;
     EXPECT_LT(r.summary.kkt.max(), 1e-9) << mu;
+  }
+}
+
+// The condensed path (CondensedProblem onto the contact nodes' free dofs, the dense Newton
+// system: in 2D the active rows with rank-one updates, in 3D the blocks formed densely) against
+// the sparse direct path on the full problem, for Uzawa-GNM and classical Uzawa, Tresca and
+// Coulomb; and from a warm start with a slip origin (a load step), as the load stepping runs it.
+TEST(FrictionUzawaGnm, CondensedPathAgreesWithTheSparseDirectOne) {
+  for (const bool three_d : {false, true}) {
+    const Frictional p(three_d ? testing::ball_on_block(8, 3e-2) : paper_benchmark(30, 10));
+    const Index nc = p.problem.contact.size();
+    const FrictionLaw coulomb(FrictionKind::Coulomb, p.dim(), Vector::Constant(nc, 0.3));
+    const FrictionLaw tresca(FrictionKind::Tresca, p.dim(), Vector::Constant(nc, 0.05));
+    for (const FrictionLaw* law : {&coulomb, &tresca})
+      for (const ContactMethod method : {ContactMethod::UzawaGnm, ContactMethod::ClassicalUzawa}) {
+        if (three_d && method == ContactMethod::ClassicalUzawa) continue;  // slow, tested above
+        SCOPED_TRACE(std::string(three_d ? "3D " : "2D ") + std::string(law->name()) + " " +
+                     std::string(enum_to_string(kContactMethodNames, method)));
+        const ContactResult condensed = p.solve(*law, method);
+        const ContactResult full = p.solve(*law, method, LinearSolverType::Cholmod, false);
+        ASSERT_EQ(condensed.summary.path, SolvePath::CondensedDirect);
+        ASSERT_EQ(full.summary.path, SolvePath::SparseDirect);
+        ASSERT_TRUE(condensed.summary.converged()) << condensed.summary.message;
+        ASSERT_TRUE(full.summary.converged()) << full.summary.message;
+        EXPECT_LT(relative(condensed.u, full.u), 1e-9);
+        EXPECT_LT(relative(condensed.l, full.l), 1e-8);
+        EXPECT_LT(relative(condensed.tangential.reshaped(), full.tangential.reshaped()), 1e-8);
+        EXPECT_LT(condensed.summary.kkt.max(), 1e-9);
+      }
+    // A second step: loads 1.5 times, from the first step's solution, slip from there.
+    Vector steps[2];
+    for (const bool condensed : {true, false}) {
+      ContactSolverOptions o;
+      o.law = &coulomb;
+      o.uzawa_tolerance = 1e-12;
+      o.schur_complement = condensed;
+      ContactSolver solver(p.problem, o);
+      const ContactResult first = solver.solve();
+      solver.set_loads(1.5 * p.problem.b);
+      solver.warm_start(first);
+      solver.set_slip_origin(first.u);
+      const ContactResult second = solver.solve();
+      ASSERT_TRUE(second.summary.converged()) << second.summary.message;
+      EXPECT_TRUE(second.summary.warm_started);
+      steps[condensed ? 0 : 1] = second.u;
+    }
+    EXPECT_LT(relative(steps[0], steps[1]), 1e-9) << (three_d ? "3D" : "2D");
   }
 }
 

@@ -29,18 +29,27 @@ TEST(SolverPlan, TwoDimensionalProblemsStayCondensedWhileTheyFit) {
 // Friction: never condensed (the condensation is onto the normal displacements); in 3D above
 // the threshold Uzawa-GNM goes iterative as without friction, semismooth Newton (a sparse LU of
 // the KKT system) and classical Uzawa stay direct.
-TEST(SolverPlan, FrictionIsNeverCondensedAndGoesIterativeWithUzawaGnmOnly) {
+TEST(SolverPlan, FrictionIsCondensedIn2DAndGoesIterativeWithUzawaGnmOnly) {
   ContactSolverOptions given;
   const SolverPlan two = plan_solver(given, {2, 309123, 617604, 961, 24 * kGB, true});
-  EXPECT_FALSE(two.options.schur_complement);
+  EXPECT_TRUE(two.options.schur_complement);
   EXPECT_EQ(two.options.linear.type, LinearSolverType::Cholmod);
-  EXPECT_CONTAINS(two.reason, "sparse direct: friction");
+  // Two unknowns per contact node: four times the frictionless dense matrix (30 MB).
+  EXPECT_CONTAINS(two.reason,
+                  "condensed direct: 961 contact nodes with friction (every free dof of each), "
+                  "a dense matrix of about 118 MB");
+  const SolverPlan small3d = plan_solver(given, {3, 3000, 9000, 300, 24 * kGB, true});
+  EXPECT_FALSE(small3d.options.schur_complement);
+  EXPECT_CONTAINS(small3d.reason, "sparse direct: friction in 3D");
   const SolverPlan three = plan_solver(given, {3, 35000, 100000, 1681, 24 * kGB, true});
   EXPECT_EQ(three.options.linear.type, LinearSolverType::ConjugateGradient);
   given.method = ContactMethod::SemismoothNewton;
   const SolverPlan ssn = plan_solver(given, {3, 35000, 100000, 1681, 24 * kGB, true});
   EXPECT_EQ(ssn.options.linear.type, LinearSolverType::Cholmod);
   EXPECT_FALSE(ssn.options.schur_complement);
+  const SolverPlan ssn2d = plan_solver(given, {2, 309123, 617604, 961, 24 * kGB, true});
+  EXPECT_FALSE(ssn2d.options.schur_complement);
+  EXPECT_CONTAINS(ssn2d.reason, "semismooth Newton with friction");
 }
 
 TEST(SolverPlan, ACondensedMatrixThatDoesNotFitGoesSparseDirect) {

@@ -9,26 +9,36 @@ CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
   const Index parts = SchurComplement::automatic_parts(full.A.rows(), threads);
   const ContactSet& c = full.contact;
   const Index nc = c.size();
+  const bool friction = c.components > 1;
   Vector b_rotated;
-  {
+  if (friction) {
+    // Every dof that a row of N touches: the contact nodes' free dofs, in their order.
+    std::vector<char> touched(static_cast<std::size_t>(full.A.rows()), 0);
+    for (Index k = 0; k < c.N.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(c.N, k); it; ++it)
+        if (it.value() != 0.0) touched[static_cast<std::size_t>(it.col())] = 1;
+    for (std::size_t i = 0; i < touched.size(); ++i)
+      if (touched[i] != 0) kept_.push_back(static_cast<Index>(i));
+    b_rotated = full.b;
+  } else {
     ScopedTimer t(timings_, "condensation rotation");
     rotation_ = make_normal_rotation(c, full.A.rows());
     for (Index j = 0; j < nc; ++j)
       if (c.movable[static_cast<std::size_t>(j)])
-        normal_dofs_.push_back(rotation_.normal_dof[static_cast<std::size_t>(j)]);
+        kept_.push_back(rotation_.normal_dof[static_cast<std::size_t>(j)]);
     b_rotated = rotation_.to_rotated(full.b);
   }
   if (rotation_.identity()) {
-    schur_ = std::make_unique<SchurComplement>(full.A, normal_dofs_, parts);  // no copy of A
+    schur_ = std::make_unique<SchurComplement>(full.A, kept_, parts);  // no copy of A
   } else {
     SparseMatrix A_rotated = [&] {
       ScopedTimer t(timings_, "condensation rotation");
       return rotate_matrix(full.A, rotation_);
     }();
-    schur_ = std::make_unique<SchurComplement>(std::move(A_rotated), normal_dofs_, parts);
+    schur_ = std::make_unique<SchurComplement>(std::move(A_rotated), kept_, parts);
   }
   ScopedTimer t(timings_, "condensation setup");
-  const auto nm = static_cast<Index>(normal_dofs_.size());
+  const auto nm = static_cast<Index>(kept_.size());
   // S itself, a dense matrix with every entry stored (dense_storage.hpp), so that the generic
   // methods apply to it and the dense Newton systems read it without a copy.
   reduced_.A = schur_->release_matrix();
@@ -41,11 +51,26 @@ CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
   rc.gaps = c.gaps;
   rc.movable = c.movable;
   std::vector<Eigen::Triplet<double, int>> nt;
-  Index k = 0;
-  for (Index j = 0; j < nc; ++j)
-    if (c.movable[static_cast<std::size_t>(j)])
-      nt.emplace_back(static_cast<int>(j), static_cast<int>(k++), rotation_.scale(j));
-  rc.N.resize(nc, nm);
+  if (friction) {
+    // N's rows as they are, on the kept columns.
+    rc.components = c.components;
+    rc.slip_origin = c.slip_origin;
+    std::vector<Index> column(static_cast<std::size_t>(full.A.rows()), -1);
+    for (std::size_t k = 0; k < kept_.size(); ++k)
+      column[static_cast<std::size_t>(kept_[k])] = static_cast<Index>(k);
+    for (Index k = 0; k < c.N.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(c.N, k); it; ++it)
+        if (it.value() != 0.0)
+          nt.emplace_back(static_cast<int>(it.row()),
+                          static_cast<int>(column[static_cast<std::size_t>(it.col())]), it.value());
+    rc.N.resize(c.N.rows(), nm);
+  } else {
+    Index k = 0;
+    for (Index j = 0; j < nc; ++j)
+      if (c.movable[static_cast<std::size_t>(j)])
+        nt.emplace_back(static_cast<int>(j), static_cast<int>(k++), rotation_.scale(j));
+    rc.N.resize(nc, nm);
+  }
   rc.N.setFromTriplets(nt.begin(), nt.end());
 }
 
@@ -63,9 +88,8 @@ void CondensedProblem::set_load(const Vector& b) {
 
 Vector CondensedProblem::condense(const Vector& u) const {
   const Vector y = rotation_.to_rotated(u);  // Q^T u: node j's normal displacement at normal_dofs_
-  Vector v(static_cast<Index>(normal_dofs_.size()));
-  for (std::size_t k = 0; k < normal_dofs_.size(); ++k)
-    v(static_cast<Index>(k)) = y(normal_dofs_[k]);
+  Vector v(static_cast<Index>(kept_.size()));
+  for (std::size_t k = 0; k < kept_.size(); ++k) v(static_cast<Index>(k)) = y(kept_[k]);
   return v;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// The contact problem condensed onto the normal displacements of its contact nodes.
+// The contact problem condensed onto the normal displacements of its contact nodes (with
+// friction: onto every free dof of its contact nodes).
 //
 // The contact terms of (16) involve only (x . nu)_j. Rotating each contact node's free dofs so
 // that one of them is the normal displacement (a Householder reflection per node) and
@@ -11,6 +12,12 @@
 // taken as it is, without rotation). Every method then iterates on the small dense problem
 // at no cost per iteration beyond the contact boundary, and the displacement is recovered at the
 // end by one solve. The solution is that of the full problem (tested to 1e-10).
+//
+// With friction (contact.components = d) the tangential rows of N need the tangential
+// displacements too: the problem is condensed, without rotation, onto the free dofs that N's rows
+// touch (those of the contact nodes, d per node where none is clamped), and the reduced N is N's
+// columns there. The dense problem is then d times larger per side, still small beside the
+// sparse one in 2D (docs/solvers.md, "Friction").
 
 #include <memory>
 
@@ -41,15 +48,20 @@ class CondensedProblem {
   void set_load(const Vector& b);
   /// New gaps of the contact nodes (the condensed problem has the same).
   void set_gaps(const Vector& gaps) { reduced_.contact.gaps = gaps; }
+  /// Friction: the slip origin of the contact set (ContactSet::slip_origin; the reduced N has
+  /// the same rows).
+  void set_slip_origin(const Vector& origin) { reduced_.contact.slip_origin = origin; }
   /// The condensed unknowns v of a displacement u of the full problem: its normal components at
-  /// the movable contact nodes (a warm start).
+  /// the movable contact nodes (with friction: its values at the kept dofs), for a warm start.
   [[nodiscard]] Vector condense(const Vector& u) const;
   [[nodiscard]] TimingTable timings() const;
 
  private:
   ContactProblem reduced_;
-  NormalRotation rotation_;         // x = Q y
-  std::vector<Index> normal_dofs_;  // rotated unknown that is node j's normal displacement
+  NormalRotation rotation_;  // x = Q y
+  // The (rotated) unknowns kept: node j's normal displacement per movable node; with friction
+  // the free dofs of the contact nodes.
+  std::vector<Index> kept_;
   std::unique_ptr<SchurComplement> schur_;
   TimingTable timings_;
 };

@@ -161,11 +161,13 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
         "N per node",
         law.name(), law.components(), problem.contact.components));
   if (law.components() > 1) {
-    // Friction (method.md, "Friction") runs on the full problem: the condensation is onto the
-    // normal displacements. The backend's Newton matrix takes the nodes' blocks for Uzawa-GNM;
-    // semismooth Newton's friction solver factorises the whole KKT system, and the distributed
-    // Newton matrices hold diag(c) on the normal rows only.
-    if (m.path == SolvePath::CondensedDirect) m.path = SolvePath::SparseDirect;
+    // Friction (method.md, "Friction"): Uzawa-GNM and classical Uzawa run condensed onto the
+    // contact nodes' free dofs (CondensedProblem). The backend's Newton matrix takes the nodes'
+    // blocks for Uzawa-GNM; semismooth Newton's friction solver factorises the whole KKT system
+    // (the full problem's), and the distributed Newton matrices hold diag(c) on the normal rows
+    // only.
+    if (m.path == SolvePath::CondensedDirect && m.options.method == ContactMethod::SemismoothNewton)
+      m.path = SolvePath::SparseDirect;
     if (m.path == SolvePath::Distributed ||
         (m.path == SolvePath::Backend && m.options.method != ContactMethod::UzawaGnm))
       throw InputError(fmt::format(
@@ -247,6 +249,7 @@ void ContactSolver::set_slip_origin(const Vector& u) {
   Vector origin(static_cast<Index>(k - 1) * c.size());
   for (Index j = 0; j < c.size(); ++j)
     origin.segment((k - 1) * j, k - 1) = rows.segment(k * j + 1, k - 1);
+  if (m.condensed) m.condensed->set_slip_origin(origin);
   m.own_problem().contact.slip_origin = std::move(origin);
 }
 

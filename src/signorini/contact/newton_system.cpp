@@ -143,6 +143,41 @@ class DenseNewtonSystem final : public NewtonSystem {
         A_(dense_data(problem.A, owned_), problem.A.rows(), problem.A.cols()),
         Nt_(problem.contact.N.transpose()) {}
 
+  void set_linearization(const Linearization& lin) override {
+    if (lin.blocks.empty()) {
+      set_active(lin.active);
+      return;
+    }
+    if (!lin.rows.empty()) {  // 2D friction: the active rows of N, with rank-one updates
+      set_active(lin.rows);
+      return;
+    }
+    // 3D friction: H = A + r sum_j h_j N_j^T D_j N_j, formed and factorised again whenever the
+    // blocks change (they vary continuously on sliding nodes).
+    if (has_linearization_ && lin == current_linearization_) return;
+    const Index m = p_.contact.components;
+    Eigen::MatrixXd& H = solver_.workspace(A_.rows());
+    H.triangularView<Eigen::Lower>() = A_;
+    for (Index j = 0; j < p_.contact.size(); ++j) {
+      const double* D = &lin.blocks[static_cast<std::size_t>(m * m * j)];
+      const double scale = r_ * p_.contact.weights(j);
+      for (Index a = 0; a < m; ++a)
+        for (Index b = 0; b < m; ++b) {
+          const double d = D[a + m * b];
+          if (d == 0.0) continue;
+          for (SparseMatrix::InnerIterator ia(Nt_, m * j + a); ia; ++ia)
+            for (SparseMatrix::InnerIterator ib(Nt_, m * j + b); ib; ++ib)
+              if (ia.row() >= ib.row())
+                H(ia.row(), ib.row()) += scale * d * ia.value() * ib.value();
+        }
+    }
+    solver_.factorize_in_place();
+    ++factorizations_;
+    current_linearization_ = lin;
+    has_linearization_ = true;
+    has_factor_ = false;  // not the factor of an active set (SparseNewtonSystem says why)
+  }
+
   void set_active(const ActiveSet& active) override {
     if (has_factor_ && active == current_) return;
     std::vector<Index> changed;
@@ -187,10 +222,10 @@ class DenseNewtonSystem final : public NewtonSystem {
   [[nodiscard]] const TimingTable& timings() const override { return solver_.timings(); }
 
  private:
-  // sqrt(r h_j) n_j: H(P) = A + sum_{j in P} v_j v_j^T.
+  // sqrt(r h_j) n_j: H(P) = A + sum_{j in P} v_j v_j^T (row j of N, of node j / components).
   Vector node_vector(Index j) const {
     Vector v = Vector::Zero(A_.rows());
-    const double scale = std::sqrt(r_ * p_.contact.weights(j));
+    const double scale = std::sqrt(r_ * p_.contact.weights(j / p_.contact.components));
     for (SparseMatrix::InnerIterator it(Nt_, j); it; ++it) v(it.row()) = scale * it.value();
     return v;
   }
@@ -209,6 +244,8 @@ class DenseNewtonSystem final : public NewtonSystem {
   DenseCholeskySolver solver_;
   ActiveSet current_;
   bool has_factor_ = false;
+  Linearization current_linearization_;  // friction's in 3D, where it was set
+  bool has_linearization_ = false;
   std::size_t updates_since_factorization_ = 0;
 };
 

@@ -19,13 +19,9 @@ class NewtonSystem {
   virtual ~NewtonSystem() = default;
   /// Makes H(P) the current matrix (no work if P is the current active set).
   virtual void set_active(const ActiveSet& active) = 0;
-  /// The same for any law (friction's per-node blocks: the sparse systems refactorise when they
-  /// change; the dense one refuses them).
-  virtual void set_linearization(const Linearization& lin) {
-    if (!lin.blocks.empty())
-      throw InputError("friction: the dense Newton system takes frictionless laws only");
-    set_active(lin.active);
-  }
+  /// The same for any law (friction's per-node blocks: in 2D the active rows of N, updated as
+  /// an active set; in 3D the systems refactorise when the blocks change).
+  virtual void set_linearization(const Linearization& lin) = 0;
   virtual LinearSolveStats solve(const Vector& rhs, Vector& x) = 0;
   [[nodiscard]] int factorizations() const { return factorizations_; }
   [[nodiscard]] int updates() const { return updates_; }

@@ -66,15 +66,18 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
         fmt::format("a sparse factor of about {} would exceed half of the {} of "
                     "this machine",
                     gigabytes(factor), gigabytes(size.memory_bytes)));
-  if (size.friction) {
+  if (size.friction && (size.dimension == 3 || given.method == ContactMethod::SemismoothNewton)) {
     o.schur_complement = false;
     plan.reason =
-        "sparse direct: friction runs on the full problem (the condensed path is onto the "
-        "normal displacements)";
+        size.dimension == 3
+            ? "sparse direct: friction in 3D (condensed, its Newton matrix would be formed and "
+              "factorised densely at every GNM step: docs/solvers.md)"
+            : "sparse direct: semismooth Newton with friction factorises the full KKT system";
     return plan;
   }
   if (!given.schur_complement) return as_configured("schur_complement = false");
-  const double nc = static_cast<double>(size.contact_nodes);
+  // With friction the condensed unknowns are every free dof of the contact nodes.
+  const double nc = static_cast<double>(size.contact_nodes) * (size.friction ? size.dimension : 1);
   const double dense = kCondensedBytesPerEntry * nc * nc;
   if (memory_known && dense > 0.25 * size.memory_bytes) {
     o.schur_complement = false;
@@ -84,8 +87,10 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
         thousands(size.contact_nodes), gigabytes(dense), gigabytes(size.memory_bytes));
     return plan;
   }
-  plan.reason = fmt::format("condensed direct: {} contact nodes, a dense matrix of about {}",
-                            thousands(size.contact_nodes), gigabytes(dense));
+  plan.reason = fmt::format("condensed direct: {} contact nodes{}, a dense matrix of about {}",
+                            thousands(size.contact_nodes),
+                            size.friction ? " with friction (every free dof of each)" : "",
+                            gigabytes(dense));
   return plan;
 }
 
