@@ -114,30 +114,23 @@ int solve(const SolveArguments& args, LogFormat format) {
   progress.phase("contact solve");
   ContactSolverOptions solver = model.solver;  // the path planned from the problem's size
   solver.observer = [&progress](const IterationEvent& e) { progress.iteration(e); };
-  ContactResult result;
-  if (spec.load_factors.empty()) {
-    result = solve_contact(model.problem, solver, &model.multigrid);
-  } else {
-    // [loading]: each step's files as it is solved (steps/, solution.pvd); the last step's
-    // results are the run's (write_results below).
-    result =
-        solve_load_steps(model, solver, spec.load_factors, [&](int step, const ContactResult& r) {
-          const LoadStepRecord& s = r.summary.load_steps.back();
-          progress.report(
-              fmt::format("load step {} of {}: factor {:g}, {} ({} outer iterations, {} nodes in "
-                          "contact)\n",
-                          step, spec.load_factors.size(), s.factor,
-                          s.converged ? "converged" : "NOT converged", s.outer_iterations,
-                          s.active),
-              {{"event", "load_step"},
-               {"step", step},
-               {"factor", s.factor},
-               {"converged", s.converged},
-               {"outer_iterations", s.outer_iterations}});
-          if (root) write_load_step(args.output_dir, step, r, model);
-        });
-  }
-  result.summary.path_reason = model.solver_reason;
+  // [loading]: each step's files as it is solved (steps/, solution.pvd); the last step's
+  // results are the run's (write_results below).
+  ContactResult result =
+      solve_model(model, solver, spec.load_factors, [&](int step, const ContactResult& r) {
+        const LoadStepRecord& s = r.summary.load_steps.back();
+        progress.report(
+            fmt::format("load step {} of {}: factor {:g}, {} ({} outer iterations, {} nodes in "
+                        "contact)\n",
+                        step, spec.load_factors.size(), s.factor,
+                        s.converged ? "converged" : "NOT converged", s.outer_iterations, s.active),
+            {{"event", "load_step"},
+             {"step", step},
+             {"factor", s.factor},
+             {"converged", s.converged},
+             {"outer_iterations", s.outer_iterations}});
+        if (root) write_load_step(args.output_dir, step, r, model);
+      });
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
   // Once, for the report, the log and summary.json.

@@ -16,6 +16,18 @@ void bind_model(py::module_& m);
 void bind_result(py::module_& m);
 void bind_solver(py::module_& m);
 
+/// A path argument (str or os.PathLike) as text.
+inline std::string path_text(const py::handle& path) {
+  return py::str(py::module_::import("os").attr("fspath")(path));
+}
+
+/// A timing table as {phase: seconds}.
+inline py::dict timings_dict(const TimingTable& t) {
+  py::dict d;
+  for (const auto& [phase, seconds] : t.phases()) d[py::str(phase)] = seconds;
+  return d;
+}
+
 /// A Result object for a solution of `data`'s model.
 py::object make_result(ContactResult result, std::shared_ptr<const ModelData> data);
 

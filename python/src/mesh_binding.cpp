@@ -107,7 +107,7 @@ converts a meshio.Mesh.)")
       .def_static(
           "read",
           [](const py::object& path) {
-            const std::string p = py::str(py::module_::import("os").attr("fspath")(path));
+            const std::string p = path_text(path);
             py::gil_scoped_release release;
             return PyMesh{std::make_shared<const Mesh>(read_mesh_file(p))};
           },

@@ -118,12 +118,7 @@ Model(problem)   problem: a signorini.Problem)")
       .def_property_readonly("solver_reason",
                              [](const PyModel& s) { return s.data->model.solver_reason; })
       .def_property_readonly("timings",
-                             [](const PyModel& s) {
-                               py::dict d;
-                               for (const auto& [phase, seconds] : s.data->model.timings.phases())
-                                 d[py::str(phase)] = seconds;
-                               return d;
-                             })
+                             [](const PyModel& s) { return timings_dict(s.data->model.timings); })
       .def("__repr__", [](const PyModel& s) {
         const Model& md = s.data->model;
         return "<signorini.Model '" + s.data->loaded->spec.name +

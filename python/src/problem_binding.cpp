@@ -47,7 +47,7 @@ PyProblem make_problem(const py::object& source, const py::object& mesh,
   if (!py::isinstance<py::str>(source) && !py::hasattr(source, "__fspath__"))
     throw InputError("Problem: expected the path of a problem file or a dict, got a " +
                      py::str(py::type::of(source).attr("__name__")).cast<std::string>());
-  const std::string path = py::str(py::module_::import("os").attr("fspath")(source));
+  const std::string path = path_text(source);
   const std::vector<std::string> o = override_list(overrides, path);
   py::gil_scoped_release release;
   return PyProblem{

@@ -172,17 +172,11 @@ writes the tool's result files.)")
       .def_property_readonly("load_factor", [](const PyResult& r) { return r.result.load_factor; })
       .def_property_readonly("load_step", [](const PyResult& r) { return r.result.load_step; })
       .def_property_readonly(
-          "timings",
-          [](const PyResult& r) {
-            py::dict d;
-            for (const auto& [phase, seconds] : r.result.summary.timings.phases())
-              d[py::str(phase)] = seconds;
-            return d;
-          })
+          "timings", [](const PyResult& r) { return timings_dict(r.result.summary.timings); })
       .def(
           "write",
           [](const PyResult& r, const py::object& folder) {
-            const std::string f = py::str(py::module_::import("os").attr("fspath")(folder));
+            const std::string f = path_text(folder);
             py::gil_scoped_release release;
             const Resultants resultants = compute_resultants(r.data->model, r.result);
             write_results(f, r.result, r.data->model, r.data->loaded->spec, resultants);

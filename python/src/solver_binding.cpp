@@ -86,8 +86,7 @@ py::object solve_problem(const py::object& problem, const py::object& output,
   const std::shared_ptr<const ModelData> data = model_of(problem);
   const Model& model = data->model;
   const ProblemSpec& spec = data->loaded->spec;
-  const std::string folder =
-      output.is_none() ? "" : py::str(py::module_::import("os").attr("fspath")(output));
+  const std::string folder = output.is_none() ? "" : path_text(output);
   if (!folder.empty()) create_output_folder(folder);  // before the solve: a bad folder fails fast
   std::exception_ptr error;
   ContactSolverOptions options = model.solver;
@@ -96,22 +95,17 @@ py::object solve_problem(const py::object& problem, const py::object& output,
   {
     py::gil_scoped_release release;
     const SingleThreadedBlas blas;
-    if (spec.load_factors.empty()) {
-      result = solve_contact(model.problem, options, &model.multigrid);
-    } else {
-      result = solve_load_steps(model, options, spec.load_factors,
-                                [&](int step, const ContactResult& r) {
-                                  if (!folder.empty()) write_load_step(folder, step, r, model);
-                                  if (each_step.is_none() || error) return;
-                                  py::gil_scoped_acquire gil;
-                                  try {
-                                    ContactResult copy = r;
-                                    each_step(step, make_result(std::move(copy), data));
-                                  } catch (...) {
-                                    error = std::current_exception();
-                                  }
-                                });
-    }
+    result = solve_model(model, options, spec.load_factors, [&](int step, const ContactResult& r) {
+      if (!folder.empty()) write_load_step(folder, step, r, model);
+      if (each_step.is_none() || error) return;
+      py::gil_scoped_acquire gil;
+      try {
+        ContactResult copy = r;
+        each_step(step, make_result(std::move(copy), data));
+      } catch (...) {
+        error = std::current_exception();
+      }
+    });
   }
   rethrow_callback_error(error);
   py::object out = make_result(std::move(result), data);

@@ -26,4 +26,11 @@ using LoadStepSink = std::function<void(int step, const ContactResult& result)>;
                                              const std::vector<double>& factors,
                                              const LoadStepSink& each_step = {});
 
+/// What `signorini solve` solves: the model's loading history where it has one (`factors` not
+/// empty, each step given to `each_step`), otherwise one solve of model.problem; the result's
+/// summary says why the path was chosen (Model::solver_reason).
+[[nodiscard]] ContactResult solve_model(const Model& model, const ContactSolverOptions& options,
+                                        const std::vector<double>& factors,
+                                        const LoadStepSink& each_step = {});
+
 }  // namespace signorini

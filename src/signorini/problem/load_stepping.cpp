@@ -56,4 +56,12 @@ ContactResult solve_load_steps(const Model& model, const ContactSolverOptions& o
   return previous;  // not reached
 }
 
+ContactResult solve_model(const Model& model, const ContactSolverOptions& options,
+                          const std::vector<double>& factors, const LoadStepSink& each_step) {
+  ContactResult r = factors.empty() ? solve_contact(model.problem, options, &model.multigrid)
+                                    : solve_load_steps(model, options, factors, each_step);
+  r.summary.path_reason = model.solver_reason;
+  return r;
+}
+
 }  // namespace signorini
