@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The tool under mpirun (docs/distributed.md): `mpirun -n 2 signorini solve` on the paper's
-# problem and on the 3D example gives the serial answer (the same Uzawa steps, energies to 1e-10,
+# problem, on SSNV128's friction history and on the 3D example gives the serial answer (the same Uzawa steps, energies to 1e-10,
 # contact pressures and displacements to 1e-8), written once by rank 0; bad input stops every
 # rank with one message, exit status 2, and leaves earlier results as they were.
 #   mpirun_solve_test.sh SIGNORINI MPIRUN EXAMPLES_DIR
@@ -44,6 +44,30 @@ ssn=(--set mesh.nx=60 --set mesh.ny=20 --set solver.method='"semismooth_newton"'
 "$tool" solve "$examples/paper.toml" -q -o "$tmp/ssn_serial" "${ssn[@]}"
 run_mpi solve "$examples/paper.toml" -q -o "$tmp/ssn_mpi" "${ssn[@]}"
 compare "$tmp/ssn_serial" "$tmp/ssn_mpi"
+
+# Friction with a loading history (Code_Aster's SSNV128, Coulomb, five proportional steps):
+# every step's contact.csv as the serial run's, the tangential traction, slip and node states
+# too, and the .pvd time series written once.
+"$tool" solve "$examples/ssnv128.toml" -q -o "$tmp/friction_serial"
+run_mpi solve "$examples/ssnv128.toml" -q -o "$tmp/friction_mpi"
+compare "$tmp/friction_serial" "$tmp/friction_mpi"
+/usr/bin/python3 - "$tmp/friction_serial" "$tmp/friction_mpi" <<'PY'
+import csv, glob, json, os, sys
+serial, mpi = sys.argv[1:3]
+reason = json.load(open(f"{mpi}/summary.json"))["path_reason"]
+assert reason.startswith("distributed on 2 MPI ranks"), reason
+steps = sorted(os.path.basename(f) for f in glob.glob(f"{serial}/steps/contact_*.csv"))
+assert len(steps) == 5 and os.path.exists(f"{mpi}/solution.pvd"), steps
+for name in ["../contact.csv"] + steps:
+    a, b = (list(csv.DictReader(open(f"{d}/steps/{name}"))) for d in (serial, mpi))
+    assert len(a) == len(b) > 0, name
+    assert [r["state"] for r in a] == [r["state"] for r in b], name
+    for key in ("pressure", "tangential", "slip", "u_t"):
+        scale = max(abs(float(r[key])) for r in a)
+        worst = max(abs(float(r[key]) - float(s[key])) for r, s in zip(a, b))
+        assert worst <= 1e-8 * scale, f"{name} {key} differs by {worst:.2e} of {scale:.2e}"
+print(f"ok: friction under mpirun, {len(steps)} load steps as the serial run's")
+PY
 
 "$tool" solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_serial"
 run_mpi solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi"

@@ -162,22 +162,20 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
         law.name(), law.components(), problem.contact.components));
   if (law.components() > 1) {
     // Friction (method.md, "Friction"): Uzawa-GNM and classical Uzawa run condensed onto the
-    // contact nodes' free dofs (CondensedProblem). The backend's Newton matrix takes the nodes'
-    // blocks for Uzawa-GNM; semismooth Newton's friction solver factorises the whole KKT system
-    // (the full problem's), and the distributed Newton matrices hold diag(c) on the normal rows
-    // only.
+    // contact nodes' free dofs (CondensedProblem). The backend's and the distributed Newton
+    // matrices take the nodes' blocks for Uzawa-GNM; semismooth Newton's friction solver
+    // factorises the whole KKT system (the full problem's, in one process).
     if (m.path == SolvePath::CondensedDirect && m.options.method == ContactMethod::SemismoothNewton)
       m.path = SolvePath::SparseDirect;
-    if (m.path == SolvePath::Distributed ||
-        (m.path == SolvePath::Backend && m.options.method != ContactMethod::UzawaGnm))
-      throw InputError(fmt::format(
-          "the contact law \"{}\" (friction) runs {} not with {} (docs/solvers.md)", law.name(),
-          m.path == SolvePath::Distributed ? "in one process," : "on the host's sparse paths,",
-          m.path == SolvePath::Distributed
-              ? "solver.distributed"
-              : fmt::format("solver.method = \"{}\" on the multigrid or GPU path; use "
-                            "\"uzawa_gnm\" there",
-                            enum_to_string(kContactMethodNames, m.options.method))));
+    if ((m.path == SolvePath::Distributed || m.path == SolvePath::Backend) &&
+        m.options.method != ContactMethod::UzawaGnm)
+      throw InputError(
+          fmt::format("the contact law \"{}\" (friction) with solver.method = \"{}\" runs {}; use "
+                      "\"uzawa_gnm\" there (docs/solvers.md)",
+                      law.name(), enum_to_string(kContactMethodNames, m.options.method),
+                      m.path == SolvePath::Distributed
+                          ? "in one process, not on the distributed path (solver.distributed)"
+                          : "on the host's sparse paths, not on the multigrid or GPU path"));
   }
   if (problem.partitioned() && m.path != SolvePath::Distributed)
     throw InputError(

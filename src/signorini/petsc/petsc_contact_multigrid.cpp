@@ -178,7 +178,7 @@ ContactMultigrid::~ContactMultigrid() {
   VecDestroy(&c_);
 }
 
-void ContactMultigrid::set_weights(const Vector& c) {
+void ContactMultigrid::set_weights(const Vector& c, int block_unknowns) {
   PetscScalar* a = nullptr;
   check(VecGetArray(c_, &a), "diag(c)");
   for (std::size_t k = 0; k < row_j_.size(); ++k) a[k] = c(row_j_[k]);
@@ -197,10 +197,13 @@ void ContactMultigrid::set_weights(const Vector& c) {
   }
   // The fine level: instead of 10 products with H, the bound of multigrid_preconditioner.cpp
   // (refresh()): lambda_max(D_H^-1 H) <= max(lambda_A, the most nonzero components of an active
-  // n_j); with GAMG's interval [0.1, 1.1] x lambda_max.
-  int entries = 0;
-  for (std::size_t k = 0; k < row_j_.size(); ++k)
-    if (c(row_j_[k]) > 0.0) entries = std::max(entries, row_entries_[k]);
+  // n_j, or with friction's blocks the unknowns that a node's rows touch together: a positive
+  // semidefinite k x k block E has lambda_max(diag(E)^-1 E) <= k); with GAMG's interval
+  // [0.1, 1.1] x lambda_max.
+  int entries = block_unknowns;
+  if (block_unknowns == 0)
+    for (std::size_t k = 0; k < row_j_.size(); ++k)
+      if (c(row_j_[k]) > 0.0) entries = std::max(entries, row_entries_[k]);
   MPI_Allreduce(MPI_IN_PLACE, &entries, 1, MPI_INT, MPI_MAX, comm_);
   const double bound = std::max(fine_lambda_a_, static_cast<double>(entries));
   KSP fine = nullptr;

@@ -41,8 +41,11 @@ class ContactMultigrid {
   ContactMultigrid& operator=(const ContactMultigrid&) = delete;
 
   /// The coarse levels' matrices A_l + N_l^T diag(c) N_l for c_j (every rank the whole vector,
-  /// indexed by contact node). The fine level's is the KSP's operator, which the caller updates.
-  void set_weights(const Vector& c);
+  /// indexed by row of N). The fine level's is the KSP's operator, which the caller updates.
+  /// `block_unknowns`: with friction's coupled blocks on the fine level (c then their
+  /// diagonal), the most unknowns that one node's rows touch on this rank, which bounds the
+  /// fine smoother's eigenvalue in place of the rows' own counts; 0 without.
+  void set_weights(const Vector& c, int block_unknowns = 0);
 
   /// Unknowns per level, finest first.
   [[nodiscard]] const std::vector<PetscInt>& level_sizes() const { return sizes_; }

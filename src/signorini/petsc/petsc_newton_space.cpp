@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
@@ -19,7 +21,8 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
       padding_(problem.node_of_unknown, problem.A.rows()) {
   ScopedTimer timer(timings_, "distributed set-up");
   n_ = problem.A.rows();
-  nc_ = problem.contact.size();
+  nc_ = problem.contact.N.rows();
+  components_ = problem.contact.components;
   const bool keeps_levels = petsc::keeps_gamg_levels(o_);
   // The unknowns in whole node blocks (node_padding.hpp): this rank's range [first, last) of
   // unknowns becomes [lo_, hi_) of slots.
@@ -111,7 +114,7 @@ void PetscNewtonSpace::set_active(const ActiveSet& active, double r) {
   // c_j = r h_j on the active nodes, 0 elsewhere: H's blocks here, the levels' terms below.
   Vector c = Vector::Zero(nc_);
   for (Index j = 0; j < nc_; ++j)
-    if (active[static_cast<std::size_t>(j)]) c(j) = r * p_.contact.weights(j);
+    if (active[static_cast<std::size_t>(j)]) c(j) = r * p_.contact.weights(j / components_);
   check(MatCopy(A_, H_, SAME_NONZERO_PATTERN), "the Newton matrix");
   std::vector<PetscScalar> block;
   for (const petsc::ContactRow& row : rows_) {
@@ -131,6 +134,69 @@ void PetscNewtonSpace::set_active(const ActiveSet& active, double r) {
   check(KSPSetOperators(ksp_, H_, H_), "KSP");  // the preconditioner is set up again
   active_ = active;
   has_active_ = true;
+  has_linearization_ = false;
+  ++refreshes_;
+}
+
+// H = A + sum_j B_j^T (r h_j D_j) B_j (docs/method.md, "Friction"), B_j the node's rows of N (its
+// normal and tangents on its dofs) and D_j the derivative of the projection onto the friction
+// set at z_j (lin.blocks, column-major). The blocks are exact on the fine level; the coarse
+// levels take W's diagonal, as the serial multigrid does (multigrid_preconditioner.cpp).
+void PetscNewtonSpace::set_linearization(const Linearization& lin, double r) {
+  if (lin.blocks.empty()) {
+    set_active(lin.active, r);
+    return;
+  }
+  if (has_linearization_ && lin == linearization_) return;
+  ScopedTimer t(timings_, "preconditioner setup");
+  const Index m = components_;
+  check(MatCopy(A_, H_, SAME_NONZERO_PATTERN), "the Newton matrix");
+  Vector diagonal = Vector::Zero(nc_);  // W's diagonal, for the coarse levels
+  int widest = 0;  // the most unknowns that one node's rows touch, for the fine smoother's bound
+  std::vector<PetscInt> dofs;
+  std::vector<PetscScalar> block;
+  for (std::size_t first = 0; first < rows_.size();) {
+    const Index node = rows_[first].j / m;
+    std::size_t last = first;
+    while (last < rows_.size() && rows_[last].j / m == node) ++last;
+    dofs.clear();
+    for (std::size_t a = first; a < last; ++a)
+      for (const PetscInt dof : rows_[a].dofs)
+        if (std::find(dofs.begin(), dofs.end(), dof) == dofs.end()) dofs.push_back(dof);
+    const std::size_t k = dofs.size();
+    const auto at = [&](PetscInt dof) {
+      return static_cast<std::size_t>(std::find(dofs.begin(), dofs.end(), dof) - dofs.begin());
+    };
+    block.assign(k * k, 0.0);
+    bool any = false;
+    const double c = r * p_.contact.weights(node);
+    for (std::size_t a = first; a < last; ++a)
+      for (std::size_t b = first; b < last; ++b) {
+        const Index ra = rows_[a].j % m, rb = rows_[b].j % m;
+        const double w = c * lin.blocks[static_cast<std::size_t>(m * m * node + ra + m * rb)];
+        if (a == b) diagonal(rows_[a].j) = w;
+        if (w == 0.0) continue;
+        any = true;
+        for (std::size_t p = 0; p < rows_[a].dofs.size(); ++p)
+          for (std::size_t q = 0; q < rows_[b].dofs.size(); ++q)
+            block[at(rows_[a].dofs[p]) * k + at(rows_[b].dofs[q])] +=
+                w * rows_[a].normal[p] * rows_[b].normal[q];
+      }
+    if (any) {
+      widest = std::max(widest, static_cast<int>(k));
+      check(MatSetValues(H_, static_cast<PetscInt>(k), dofs.data(), static_cast<PetscInt>(k),
+                         dofs.data(), block.data(), ADD_VALUES),
+            "the Newton matrix");
+    }
+    first = last;
+  }
+  check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
+  check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
+  if (multigrid_) multigrid_->set_weights(diagonal, widest);
+  check(KSPSetOperators(ksp_, H_, H_), "KSP");  // the preconditioner is set up again
+  linearization_ = lin;
+  has_linearization_ = true;
+  has_active_ = false;
   ++refreshes_;
 }
 

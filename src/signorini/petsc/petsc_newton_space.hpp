@@ -32,6 +32,9 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
 
   [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
   void set_active(const ActiveSet& active, double r) override;
+  /// Friction's nodes' blocks: H = A + N^T W N, W = blockdiag(r h_j D_j) (docs/method.md,
+  /// "Friction"); each node's rows of N lie on its own dofs, so on the rank that owns them.
+  void set_linearization(const Linearization& lin, double r) override;
   NewtonSolveStats solve(const Vector& terms) override;
   void set_linear_tolerance(double tolerance) override { linear_tolerance_ = tolerance; }
   void direction(ModifiedLagrangian::Direction& dir) override;
@@ -57,9 +60,10 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   TimingTable& timings_;
   MPI_Comm comm_;
   petsc::NodePadding padding_;
-  Matrix modes_;  // p_.near_null_space on the slots, where padded
-  Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;
-  std::vector<petsc::ContactRow> rows_;  // the contact rows whose dofs this rank owns
+  Matrix modes_;                            // p_.near_null_space on the slots, where padded
+  Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;  // nc_: the rows of N (d per node with friction)
+  Index components_ = 1;                    // rows of N per contact node
+  std::vector<petsc::ContactRow> rows_;     // the contact rows whose dofs this rank owns
   Mat A_ = nullptr, H_ = nullptr;
   Vec b_ = nullptr, x_ = nullptr, x_new_ = nullptr, residual_ = nullptr, d_ = nullptr,
       Ad_ = nullptr, work_ = nullptr;
@@ -69,6 +73,8 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   std::string description_;
   ActiveSet active_;
   bool has_active_ = false;
+  Linearization linearization_;  // the last blocks set (friction)
+  bool has_linearization_ = false;
   Vector Nx_;
   double last_t_ = 1.0;
   double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance

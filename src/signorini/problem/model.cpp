@@ -221,10 +221,6 @@ std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const 
   bool any = false;
   for (const ContactSpec& c : spec.contacts) any = any || c.friction != FrictionModel::None;
   if (!any) return nullptr;
-  if (distributed_path(spec.solver))
-    throw InputError(
-        "contact.friction: friction runs in one process for now, not on the distributed path "
-        "(run without mpirun, or set solver.distributed = \"off\")");
   Vector s = Vector::Zero(contact.size()), mu = Vector::Zero(contact.size());
   for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
     const ContactSpec& c = spec.contacts[part];
