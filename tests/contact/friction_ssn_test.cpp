@@ -83,13 +83,15 @@ TEST(FrictionSsn, HugeBoundBondsTheContactTangentially) {
   EXPECT_LE((p.T * r.u).lpNorm<Eigen::Infinity>(), 1e-12 * r.u.lpNorm<Eigen::Infinity>());
 }
 
-// Coulomb at mu = 0.3 (every node in contact slides), 1 and 2 (a stick zone in the middle): the
-// tangential conditions, and the same answer as Tresca with s_j = mu times Coulomb's pressure.
-// (At mu = 5 the iteration fails on this problem: its globalisation, a backtracking on the
-// residual from the frictionless start, is not enough there.)
+// Coulomb at mu = 0.3 (every node in contact slides), 1, 2 and 5 (a stick zone in the middle,
+// growing with mu): the tangential conditions, and the same answer as Tresca with s_j = mu times
+// Coulomb's pressure. (With the complementarity constant c equal to the body's stiffness per
+// area, the default before, the iteration cycled at mu = 5 on this problem; at mu = 20 one node
+// still cycles between sticking and sliding on this coarse mesh, for every c tried.)
 TEST(FrictionSsn, CoulombIsTrescaWithTheBoundOfItsPressure) {
   const Paper p;
-  for (const double mu : {0.3, 1.0, 2.0}) {
+  for (const double mu : {0.3, 1.0, 2.0, 5.0}) {
+    SCOPED_TRACE(::testing::Message() << "mu = " << mu);
     const FrictionSsnResult coulomb = p.solve(FrictionKind::Coulomb, mu);
     expect_tangential_kkt(p, coulomb, FrictionKind::Coulomb, mu);
     FrictionLawSpec tresca{FrictionKind::Tresca, mu * coulomb.force.row(0).transpose()};
@@ -108,6 +110,30 @@ TEST(FrictionSsn, CoulombIsTrescaWithTheBoundOfItsPressure) {
       EXPECT_LT(sliding, in_contact) << "mu = " << mu << ": a stick zone expected";
     }
   }
+}
+
+// A tolerance below what the factorisation resolves: the iteration stops at the rounding floor
+// (the nodes' states settled and the residual no longer halving) and says so, with the same
+// answer as the one that met the ordinary tolerance; without the floor rule it runs to its limit.
+TEST(FrictionSsn, StopsAtTheRoundingFloorOfAnUnreachableTolerance) {
+  const Paper p;
+  const FrictionLawSpec law{FrictionKind::Coulomb,
+                            Vector::Constant(p.model.problem.contact.size(), 1.0)};
+  const FrictionSsnResult reached = solve_friction_ssn(p.model.problem, p.T, law);
+  ASSERT_TRUE(reached.converged);
+  EXPECT_FALSE(reached.at_rounding_floor);
+  FrictionSsnOptions o;
+  o.tolerance = 1e-20;
+  const FrictionSsnResult floor = solve_friction_ssn(p.model.problem, p.T, law, o);
+  ASSERT_TRUE(floor.converged);
+  EXPECT_TRUE(floor.at_rounding_floor);
+  EXPECT_LT(std::max(floor.equilibrium, floor.projection), 1e-11);
+  EXPECT_LT(relative(floor.u, reached.u), 1e-12);
+  o.floor_tolerance = 0.0;
+  o.max_iterations = 30;
+  const FrictionSsnResult limit = solve_friction_ssn(p.model.problem, p.T, law, o);
+  EXPECT_FALSE(limit.converged);
+  EXPECT_EQ(limit.iterations, 30);
 }
 
 // In 3D (a block pressed 0.03 onto a rigid ball, two tangential directions per node; b = 0, the

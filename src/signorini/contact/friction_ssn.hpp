@@ -10,14 +10,15 @@
 // P's generalised derivative D:
 //   [ A        B^T W ] [dx     ]     [ A x - b + B^T W lambda ]
 //   [ -c D B   I - D ] [dlambda] = - [ lambda - P(z)           ]
-// solved by a sparse LU (the matrix is not symmetric). A node without a free normal unknown keeps
-// lambda_j = 0. A frictional law starts from the frictionless solution (the same law with zero
-// bounds), and each step is halved until the residual decreases.
+// solved by a sparse LU (UMFPACK: the matrix is not symmetric). A node without a free normal
+// unknown keeps lambda_j = 0. A frictional law starts from the frictionless solution (the same law
+// with zero bounds), and each step is halved until the residual decreases.
 //
 // It is `solver.method = "semismooth_newton"` for a frictional problem (contact_methods.hpp),
-// for small and medium problems (a sparse LU of the whole KKT matrix at each step). On the
-// paper's problem it converges for Coulomb up to mu = 2 and fails at mu = 5
-// (tests/contact/friction_ssn_test.cpp): a better globalisation is still to come.
+// for small and medium problems (a sparse LU of the whole KKT matrix at each step). The constant c
+// decides whether it converges at large friction coefficients: with a tenth of the body's normal
+// stiffness per area it solves the paper's strip for Coulomb from mu = 0.3 to 20
+// (tests/contact/friction_ssn_test.cpp), with the stiffness itself it cycled from mu = 5.
 
 #include <vector>
 
@@ -38,7 +39,12 @@ struct FrictionSsnOptions {
   /// Converged when ||A x - b + B^T W lambda|| <= tolerance max(||b||, ||B^T W lambda||) and
   /// ||lambda - P(z)|| <= tolerance ||lambda||.
   double tolerance = 1e-12;
-  /// The complementarity constant c; 0: mean(diag A) / mean(weights).
+  /// Also converged at the rounding floor: a step that kept every node's state and did not
+  /// halve the residual, when that is below this (the KKT matrix's factorisation resolves
+  /// the residual to a level that grows with the mesh: 2e-12 at 240 x 80 on the paper's strip).
+  double floor_tolerance = 1e-9;
+  /// The complementarity constant c; 0: a tenth of the body's normal stiffness per area at the
+  /// contact nodes (automatic_r(problem, 0.1)).
   double c = 0.0;
 };
 
@@ -50,6 +56,7 @@ struct FrictionSsnResult {
   double equilibrium = 0.0;  ///< ||A u - b + B^T W lambda|| / ||b||
   double projection = 0.0;   ///< ||lambda - P(z)|| / ||lambda||
   bool converged = false;
+  bool at_rounding_floor = false;  ///< converged by FrictionSsnOptions::floor_tolerance
   std::vector<double> history;  ///< max(equilibrium, projection) at each iterate, the start first
 };
 
