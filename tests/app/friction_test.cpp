@@ -170,3 +170,95 @@ TEST(FrictionTool, LoadingHistoryWritesEachStep) {
 
 }  // namespace
 }  // namespace signorini
+
+namespace signorini {
+namespace {
+
+// contact.csv's columns by name: every row's values of those whose names start with `prefix`
+// (pressure; tangential, or tangential_x, _y and _z in 3D), and the states.
+struct Columns {
+  std::vector<std::vector<double>> values;  // per row: the chosen columns' values
+  std::vector<std::string> states;
+};
+
+Columns read_columns(const fs::path& csv_path, const std::vector<std::string>& prefixes) {
+  std::istringstream csv(testing::read_text(csv_path));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> header;
+  std::istringstream names(line);
+  for (std::string f; std::getline(names, f, ',');) header.push_back(f);
+  std::vector<std::size_t> chosen;
+  std::size_t state = header.size();
+  for (std::size_t k = 0; k < header.size(); ++k) {
+    if (header[k] == "state") state = k;
+    for (const std::string& p : prefixes)
+      if (header[k].rfind(p, 0) == 0) chosen.push_back(k);
+  }
+  Columns out;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::istringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) f.push_back(field);
+    std::vector<double> row;
+    for (const std::size_t k : chosen) row.push_back(std::stod(f.at(k)));
+    out.values.push_back(std::move(row));
+    out.states.push_back(state < f.size() ? f[state] : "");
+  }
+  return out;
+}
+
+// The friction issue's check: the three methods agree to 1e-8 on every friction example, in 2D
+// and 3D, loading histories included (each step's contact.csv): the pressures and tangential
+// tractions to 1e-8 of the peak pressure, and every node's state.
+TEST(FrictionTool, ThreeMethodsAgreeOnEveryFrictionExample) {
+  const testing::TemporaryFolder dir;
+  const std::string tight = " --set solver.uzawa_tolerance=1e-12";
+  const std::vector<std::pair<std::string, std::string>> examples = {
+      {"paper_coulomb.toml", "--set mesh.nx=60 --set mesh.ny=20" + tight},
+      {"ssnv128.toml", tight},
+      {"cattaneo_mindlin.toml", tight},
+      {"box_on_sphere.toml", "--set " + quoted("contact.friction=\"coulomb\"") +
+                                 " --set contact.mu=0.2 --set mesh.nx=6 --set mesh.ny=6" + tight}};
+  for (const auto& [example, extra] : examples) {
+    SCOPED_TRACE(example);
+    std::vector<fs::path> outs;
+    for (const char* method : {"uzawa_gnm", "semismooth_newton", "classical_uzawa"}) {
+      const fs::path out = dir / (example + "_" + method);
+      const ToolRun r = run_tool(
+          dir, "solve " + quoted(std::string(SIGNORINI_EXAMPLES_DIR "/") + example) + " -q " +
+                   extra + " --set " + quoted(std::string("solver.method=\"") + method + "\"") +
+                   " -o " + quoted(out.string()));
+      ASSERT_EQ(r.status, 0) << method << ": " << r.err;
+      outs.push_back(out);
+    }
+    // The run's contact.csv and, for a loading history, each step's.
+    std::vector<fs::path> files = {"contact.csv"};
+    if (fs::exists(outs[0] / "steps"))
+      for (const auto& e : fs::directory_iterator(outs[0] / "steps"))
+        if (e.path().extension() == ".csv")
+          files.push_back(fs::path("steps") / e.path().filename());
+    for (const fs::path& file : files) {
+      SCOPED_TRACE(file.string());
+      const Columns pressure = read_columns(outs[0] / file, {"pressure"});
+      double peak = 0.0;
+      for (const auto& row : pressure.values) peak = std::max(peak, row.at(0));
+      ASSERT_GT(peak, 0.0);
+      const Columns gnm = read_columns(outs[0] / file, {"pressure", "tangential"});
+      ASSERT_GE(gnm.values.at(0).size(), 2U);
+      for (std::size_t m = 1; m < outs.size(); ++m) {
+        const Columns other = read_columns(outs[m] / file, {"pressure", "tangential"});
+        ASSERT_EQ(other.values.size(), gnm.values.size());
+        double worst = 0.0;
+        for (std::size_t j = 0; j < gnm.values.size(); ++j)
+          for (std::size_t k = 0; k < gnm.values[j].size(); ++k)
+            worst = std::max(worst, std::abs(other.values[j][k] - gnm.values[j][k]));
+        EXPECT_LE(worst, 1e-8 * peak) << outs[m].filename();
+        EXPECT_EQ(other.states, gnm.states) << outs[m].filename();
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace signorini
