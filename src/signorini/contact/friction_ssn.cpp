@@ -48,8 +48,8 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw&
   // The complementarity constant: a tenth of the body's normal stiffness per area at the contact
   // (automatic_r with the factor 0.1). Measured on the paper's strip with Coulomb's law: from
   // about half of that stiffness up (Uzawa-GNM's r is 10 times it) the iteration cycles at
-  // mu = 5, below a twentieth it slows at mu = 20; a tenth converged in 3-6 steps for mu from
-  // 0.3 to 20 at every size tried (docs/method.md, "Friction").
+  // mu = 5, below a twentieth it slows at mu = 20; a tenth converged in 3-9 steps for mu from
+  // 0.3 to 5 on every mesh tried (docs/method.md, "Friction").
   const double c = o.c > 0.0 ? o.c : automatic_r(p, 0.1);
 
   FrictionSsnResult r;

@@ -221,6 +221,11 @@ std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const 
   bool any = false;
   for (const ContactSpec& c : spec.contacts) any = any || c.friction != FrictionModel::None;
   if (!any) return nullptr;
+  if (spec.solver.method == ContactMethod::SemismoothNewton && distributed_path(spec.solver))
+    throw InputError(
+        "solver.method = \"semismooth_newton\" with contact.friction runs in one process (it "
+        "factorises the whole KKT system): use \"uzawa_gnm\" on the distributed path, or run "
+        "without mpirun");
   Vector s = Vector::Zero(contact.size()), mu = Vector::Zero(contact.size());
   for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
     const ContactSpec& c = spec.contacts[part];
