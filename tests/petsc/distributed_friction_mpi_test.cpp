@@ -42,6 +42,17 @@ ProblemSpec with_friction(ProblemSpec spec, FrictionModel model, double value) {
   return spec;
 }
 
+// The distributed solve of the partitioned model and the serial solve on this rank, checked
+// against each other (expect_same_frictional_solve).
+std::pair<ContactResult, ContactResult> solve_both_ways(const ProblemSpec& spec) {
+  const Model part = testing::distributed_model(spec);
+  ContactResult distributed = testing::distributed_solve(part, part.solver);
+  const Model whole = testing::serial_model(spec);
+  ContactResult serial = testing::serial_solve(whole, whole.solver);
+  expect_same_frictional_solve(distributed, serial);
+  return {std::move(distributed), std::move(serial)};
+}
+
 // The paper's strip with Coulomb's and Tresca's laws: MUMPS's distributed factorisation of
 // H = A + N^T W N on the partitioned model, against the serial condensed path.
 TEST(DistributedFriction, PaperStripWithMumpsMatchesTheSerialSolve) {
@@ -50,11 +61,7 @@ TEST(DistributedFriction, PaperStripWithMumpsMatchesTheSerialSolve) {
     SCOPED_TRACE(model == FrictionModel::Coulomb ? "Coulomb" : "Tresca");
     ProblemSpec spec = with_friction(paper_benchmark(40, 12), model, value);
     spec.solver.uzawa_tolerance = 1e-11;
-    const Model part = testing::distributed_model(spec);
-    const ContactResult distributed = testing::distributed_solve(part, part.solver);
-    const Model whole = testing::serial_model(spec);
-    const ContactResult serial = testing::serial_solve(whole, whole.solver);
-    expect_same_frictional_solve(distributed, serial);
+    const auto [distributed, serial] = solve_both_ways(spec);
     EXPECT_NE(distributed.summary.device.find("MUMPS"), std::string::npos)
         << distributed.summary.device;
     // Both solve their Newton systems exactly, with the same matrix: the same GNM steps.
@@ -76,11 +83,7 @@ TEST(DistributedFriction, BallOnBlockWithGamgMatchesTheSerialSolve) {
   spec.solver.linear.cg_tolerance = 1e-13;
   spec.solver.inner_tolerance = InnerTolerance::Fixed;
   spec.solver.uzawa_tolerance = 1e-10;
-  const Model part = testing::distributed_model(spec);
-  const ContactResult distributed = testing::distributed_solve(part, part.solver);
-  const Model whole = testing::serial_model(spec);
-  const ContactResult serial = testing::serial_solve(whole, whole.solver);
-  expect_same_frictional_solve(distributed, serial);
+  const auto [distributed, serial] = solve_both_ways(spec);
   EXPECT_NE(distributed.summary.device.find("PC mg (GAMG's levels, kept"), std::string::npos)
       << distributed.summary.device;
   // Some nodes slide (their blocks are not the identity's): |t| reaches mu p somewhere.
