@@ -17,8 +17,8 @@
 // It is `solver.method = "semismooth_newton"` for a frictional problem (contact_methods.hpp),
 // for small and medium problems (a sparse LU of the whole KKT matrix at each step). The constant c
 // decides whether it converges at large friction coefficients: with a tenth of the body's normal
-// stiffness per area it solves the paper's strip for Coulomb from mu = 0.3 to 20
-// (tests/contact/friction_ssn_test.cpp), with the stiffness itself it cycled from mu = 5.
+// stiffness per area it solves the paper's strip for Coulomb from mu = 0.3 to 5 on every mesh
+// tried (tests/contact/friction_ssn_test.cpp), with the stiffness itself it cycled from mu = 5.
 
 #include <vector>
 

@@ -38,17 +38,12 @@ class SparseNewtonSystem final : public NewtonSystem {
     has_factor_ = true;
     has_linearization_ = false;  // the factor is of this active set now
   }
-  void set_linearization(const Linearization& lin) override {
-    if (lin.blocks.empty()) {
-      set_active(lin.active);
-      return;
-    }
-    if (!lin.rows.empty()) {  // 2D friction: the active rows of N, with factor updates
-      set_active(lin.rows);
-      return;
-    }
-    // Friction: the blocks D_j vary continuously on sliding nodes in 3D, so H is formed and
-    // factorised again whenever the linearisation changes (no rank-one updates).
+  LinearSolveStats solve(const Vector& rhs, Vector& x) override { return solver_->solve(rhs, x); }
+  [[nodiscard]] const TimingTable& timings() const override { return solver_->timings(); }
+
+ protected:
+  // No rank-one updates: the blocks change on every sliding node.
+  void set_blocks(const Linearization& lin) override {
     if (has_linearization_ && lin == current_linearization_) return;
     phi_.hessian(lin, H_);
     solver_->factorize(H_);
@@ -59,8 +54,6 @@ class SparseNewtonSystem final : public NewtonSystem {
     // node sliding, set_active above) must factorise again, not reuse it.
     has_factor_ = false;
   }
-  LinearSolveStats solve(const Vector& rhs, Vector& x) override { return solver_->solve(rhs, x); }
-  [[nodiscard]] const TimingTable& timings() const override { return solver_->timings(); }
 
  private:
   Linearization current_linearization_;  // friction's, where it was set
@@ -143,17 +136,7 @@ class DenseNewtonSystem final : public NewtonSystem {
         A_(dense_data(problem.A, owned_), problem.A.rows(), problem.A.cols()),
         Nt_(problem.contact.N.transpose()) {}
 
-  void set_linearization(const Linearization& lin) override {
-    if (lin.blocks.empty()) {
-      set_active(lin.active);
-      return;
-    }
-    if (!lin.rows.empty()) {  // 2D friction: the active rows of N, with rank-one updates
-      set_active(lin.rows);
-      return;
-    }
-    // 3D friction: H = A + r sum_j h_j N_j^T D_j N_j, formed and factorised again whenever the
-    // blocks change (they vary continuously on sliding nodes).
+  void set_blocks(const Linearization& lin) override {
     if (has_linearization_ && lin == current_linearization_) return;
     const Index m = p_.contact.components;
     Eigen::MatrixXd& H = solver_.workspace(A_.rows());

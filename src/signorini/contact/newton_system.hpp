@@ -19,9 +19,17 @@ class NewtonSystem {
   virtual ~NewtonSystem() = default;
   /// Makes H(P) the current matrix (no work if P is the current active set).
   virtual void set_active(const ActiveSet& active) = 0;
-  /// The same for any law (friction's per-node blocks: in 2D the active rows of N, updated as
-  /// an active set; in 3D the systems refactorise when the blocks change).
-  virtual void set_linearization(const Linearization& lin) = 0;
+  /// The same for any law: a frictionless one is its active set; friction in 2D is the active
+  /// rows of N (every D_j diagonal, 0 or 1), updated as an active set; friction's coupled blocks
+  /// in 3D go to set_blocks.
+  void set_linearization(const Linearization& lin) {
+    if (lin.blocks.empty())
+      set_active(lin.active);
+    else if (!lin.rows.empty())
+      set_active(lin.rows);
+    else
+      set_blocks(lin);
+  }
   virtual LinearSolveStats solve(const Vector& rhs, Vector& x) = 0;
   [[nodiscard]] int factorizations() const { return factorizations_; }
   [[nodiscard]] int updates() const { return updates_; }
@@ -30,6 +38,10 @@ class NewtonSystem {
  protected:
   int factorizations_ = 0;  // numeric factorisations so far
   int updates_ = 0;         // rank-one factor updates and downdates so far
+
+  /// H = A + r sum_j h_j N_j^T D_j N_j with friction's blocks D_j (3D: they vary continuously
+  /// on sliding nodes), formed and factorised again whenever they change.
+  virtual void set_blocks(const Linearization& lin) = 0;
 };
 
 /// A sparse system (CHOLMOD or CG, analysed once) for the "cholmod" and "cg" linear solvers, a

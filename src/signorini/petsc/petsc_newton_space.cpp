@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
@@ -105,43 +106,28 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
   description_ = choice.description;
 }
 
-// H(P) = A + sum_{j in P} r h_j n_j n_j^T (17): A's values again, then each active node's block
-// on its own rows. Every rank calls this with the same P (the loop is replicated), so the
-// collective assembly is met by all.
+// H(P) = A + sum_{j in P} r h_j n_j n_j^T (17): each active node's rank-one block on its own
+// rows. Every rank calls this with the same P (the loop is replicated), so the collective
+// assembly is met by all.
 void PetscNewtonSpace::set_active(const ActiveSet& active, double r) {
   if (has_active_ && active == active_) return;
   ScopedTimer t(timings_, "preconditioner setup");
-  // c_j = r h_j on the active nodes, 0 elsewhere: H's blocks here, the levels' terms below.
-  Vector c = Vector::Zero(nc_);
-  for (Index j = 0; j < nc_; ++j)
-    if (active[static_cast<std::size_t>(j)]) c(j) = r * p_.contact.weights(j / components_);
-  check(MatCopy(A_, H_, SAME_NONZERO_PATTERN), "the Newton matrix");
-  std::vector<PetscScalar> block;
-  for (const petsc::ContactRow& row : rows_) {
-    if (c(row.j) == 0.0) continue;
-    const std::size_t k = row.dofs.size();
-    block.assign(k * k, 0.0);
-    for (std::size_t a = 0; a < k; ++a)
-      for (std::size_t b = 0; b < k; ++b)
-        block[a * k + b] = c(row.j) * row.normal[a] * row.normal[b];
-    check(MatSetValues(H_, static_cast<PetscInt>(k), row.dofs.data(), static_cast<PetscInt>(k),
-                       row.dofs.data(), block.data(), ADD_VALUES),
-          "the Newton matrix");
-  }
-  check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
-  check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
-  if (multigrid_) multigrid_->set_weights(c);
-  check(KSPSetOperators(ksp_, H_, H_), "KSP");  // the preconditioner is set up again
+  form_newton_matrix(
+      [&](Index a, Index b) {
+        return a == b && active[static_cast<std::size_t>(a)]
+                   ? r * p_.contact.weights(a / components_)
+                   : 0.0;
+      },
+      false);
   active_ = active;
   has_active_ = true;
   has_linearization_ = false;
-  ++refreshes_;
 }
 
-// H = A + sum_j B_j^T (r h_j D_j) B_j (docs/method.md, "Friction"), B_j the node's rows of N (its
-// normal and tangents on its dofs) and D_j the derivative of the projection onto the friction
-// set at z_j (lin.blocks, column-major). The blocks are exact on the fine level; the coarse
-// levels take W's diagonal, as the serial multigrid does (multigrid_preconditioner.cpp).
+// H = A + sum_j B_j^T (r h_j D_j) B_j (docs/method.md, "Friction"), D_j the derivative of the
+// projection onto the friction set at z_j (lin.blocks, column-major). The blocks are exact on
+// the fine level; the coarse levels take W's diagonal, as the serial multigrid does
+// (multigrid_preconditioner.cpp).
 void PetscNewtonSpace::set_linearization(const Linearization& lin, double r) {
   if (lin.blocks.empty()) {
     set_active(lin.active, r);
@@ -150,15 +136,32 @@ void PetscNewtonSpace::set_linearization(const Linearization& lin, double r) {
   if (has_linearization_ && lin == linearization_) return;
   ScopedTimer t(timings_, "preconditioner setup");
   const Index m = components_;
+  form_newton_matrix(
+      [&](Index a, Index b) {
+        const Index node = a / m;
+        return r * p_.contact.weights(node) *
+               lin.blocks[static_cast<std::size_t>(m * m * node + a % m + m * (b % m))];
+      },
+      true);
+  linearization_ = lin;
+  has_linearization_ = true;
+  has_active_ = false;
+}
+
+// H = A + sum_j B_j^T W_j B_j over the contact nodes whose unknowns this rank owns, B_j the
+// node's rows of N (its normal, and with friction its tangents, all on its own dofs), then the
+// preconditioner: the coarse levels with W's diagonal.
+void PetscNewtonSpace::form_newton_matrix(const std::function<double(Index, Index)>& weight,
+                                          bool coupled_rows) {
   check(MatCopy(A_, H_, SAME_NONZERO_PATTERN), "the Newton matrix");
-  Vector diagonal = Vector::Zero(nc_);  // W's diagonal, for the coarse levels
+  Vector diagonal = Vector::Zero(nc_);  // W's diagonal, for the coarse levels (this rank's rows)
   int widest = 0;  // the most unknowns that one node's rows touch, for the fine smoother's bound
   std::vector<PetscInt> dofs;
   std::vector<PetscScalar> block;
   for (std::size_t first = 0; first < rows_.size();) {
-    const Index node = rows_[first].j / m;
+    const Index node = rows_[first].j / components_;
     std::size_t last = first;
-    while (last < rows_.size() && rows_[last].j / m == node) ++last;
+    while (last < rows_.size() && rows_[last].j / components_ == node) ++last;
     dofs.clear();
     for (std::size_t a = first; a < last; ++a)
       for (const PetscInt dof : rows_[a].dofs)
@@ -169,11 +172,9 @@ void PetscNewtonSpace::set_linearization(const Linearization& lin, double r) {
     };
     block.assign(k * k, 0.0);
     bool any = false;
-    const double c = r * p_.contact.weights(node);
     for (std::size_t a = first; a < last; ++a)
       for (std::size_t b = first; b < last; ++b) {
-        const Index ra = rows_[a].j % m, rb = rows_[b].j % m;
-        const double w = c * lin.blocks[static_cast<std::size_t>(m * m * node + ra + m * rb)];
+        const double w = weight(rows_[a].j, rows_[b].j);
         if (a == b) diagonal(rows_[a].j) = w;
         if (w == 0.0) continue;
         any = true;
@@ -192,11 +193,8 @@ void PetscNewtonSpace::set_linearization(const Linearization& lin, double r) {
   }
   check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
   check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
-  if (multigrid_) multigrid_->set_weights(diagonal, widest);
+  if (multigrid_) multigrid_->set_weights(diagonal, coupled_rows ? widest : 0);
   check(KSPSetOperators(ksp_, H_, H_), "KSP");  // the preconditioner is set up again
-  linearization_ = lin;
-  has_linearization_ = true;
-  has_active_ = false;
   ++refreshes_;
 }
 

@@ -11,6 +11,7 @@
 
 #include <petscksp.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -48,6 +49,11 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
  private:
   Vector contact_values_of(Vec v);
   void add_contact_transpose(const Vector& values, Vec v);  // v += N^T values
+  // H = A + sum_j B_j^T W_j B_j, W_j(a, b) = weight(row a, row b) of N for two rows of node j
+  // (set_active: diag(c) on the normal rows; set_linearization: friction's blocks), and the
+  // preconditioner set up for it; `coupled_rows`: the fine smoother's bound counts the unknowns
+  // that a node's rows touch together (friction's blocks) rather than each row's own.
+  void form_newton_matrix(const std::function<double(Index, Index)>& weight, bool coupled_rows);
   void set_up_solver(Mat A_aij, bool keeps_levels);
 
   // The rigid-body modes on the slots.

@@ -61,13 +61,6 @@ ContactResult solve_model(const Model& model, const ContactSolverOptions& option
   ContactResult r = factors.empty() ? solve_contact(model.problem, options, &model.multigrid)
                                     : solve_load_steps(model, options, factors, each_step);
   r.summary.path_reason = model.solver_reason;
-  // On the distributed path the plan's choice names how the Newton systems are solved there
-  // (docs/distributed.md: a direct choice becomes MUMPS, the multigrid GAMG), not the path.
-  if (r.summary.path == SolvePath::Distributed)
-    r.summary.path_reason = fmt::format(
-        "distributed on {} MPI ranks; the Newton systems as the "
-        "serial plan chose: {}",
-        r.summary.ranks, model.solver_reason);
   return r;
 }
 

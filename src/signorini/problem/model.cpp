@@ -437,6 +437,12 @@ Model build_model(const ProblemSpec& spec) {
                   ProblemSize{mesh.dim(), mesh.num_nodes(), dofs.num_free(), problem.contact.size(),
                               physical_memory_bytes(), friction != nullptr});
   if (friction) plan.options.law = friction.get();
+  // On the distributed path the plan's choice names how the Newton systems are solved there
+  // (docs/distributed.md: a direct choice becomes MUMPS, the multigrid GAMG), not the path.
+  if (distributed)
+    plan.reason =
+        fmt::format("distributed on {} MPI ranks; the Newton systems as the serial plan chose: {}",
+                    required_distributed_engine().size(), plan.reason);
   MultigridHierarchy multigrid;
   const LinearSolverOptions& linear = plan.options.linear;
   const bool multigrid_cg = linear.type == LinearSolverType::ConjugateGradient &&
