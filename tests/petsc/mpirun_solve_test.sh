@@ -144,3 +144,13 @@ run_mpi solve "$examples/paper.toml" -q -o /proc/no-such-folder 2> "$tmp/stderr"
 lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
 [ "$lines" -eq 1 ] || { echo "unusable -o: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }
 echo "ok: unusable output folder under mpirun"
+
+# A distributed factorisation that fails says MUMPS's reason: here its working memory capped at
+# 1 MB (ICNTL(23)), so INFOG(1) = -19; status 3, as for any solve that does not converge.
+status=0
+run_mpi solve "$examples/paper.toml" -q -o "$tmp/mumps_failed" \
+  --set 'solver.petsc_options="-mat_mumps_icntl_23 1"' 2> "$tmp/stderr" || status=$?
+[ "$status" -eq 3 ] || { echo "failed MUMPS: exit status $status, expected 3"; cat "$tmp/stderr"; exit 1; }
+grep -q "DIVERGED_PC_FAILED, MUMPS INFOG(1) = -19" "$tmp/stderr" ||
+  { echo "failed MUMPS: the message does not give INFOG(1)"; cat "$tmp/stderr"; exit 1; }
+echo "ok: a failed MUMPS factorisation names INFOG(1)"

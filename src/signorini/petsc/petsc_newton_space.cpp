@@ -48,8 +48,14 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
       check(PetscObjectReference(reinterpret_cast<PetscObject>(A_)), "A");
     }
   }
-  check(MatDuplicate(A_, MAT_COPY_VALUES, &H_), "the Newton matrix");
-  petsc::mark_spd(H_, "the Newton matrix");
+  // The Newton matrix H starts as a copy of A. With GAMG's kept levels it is made after their
+  // set-up, once the AIJ copy of A is freed, so that the process never holds the three at once
+  // (docs/distributed.md, "Memory per rank").
+  const auto make_newton_matrix = [&] {
+    check(MatDuplicate(A_, MAT_COPY_VALUES, &H_), "the Newton matrix");
+    petsc::mark_spd(H_, "the Newton matrix");
+  };
+  if (!keeps_levels) make_newton_matrix();
 
   check(MatCreateVecs(A_, &x_, &b_), "vectors");
   for (Vec* v : {&x_new_, &residual_, &d_, &Ad_, &work_}) check(VecDuplicate(x_, v), "vectors");
@@ -71,6 +77,10 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   }
   set_up_solver(A_aij, keeps_levels);
   check(MatDestroy(&A_aij), "A");
+  if (keeps_levels) {
+    make_newton_matrix();
+    check(KSPSetOperators(ksp_, H_, H_), "KSP");
+  }
   active_.assign(static_cast<std::size_t>(nc_), false);
   Nx_ = contact_values_of(x_);
 }
@@ -101,7 +111,7 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
       return fmt::format("{}; levels of {} unknowns", what, sizes);
     };
   const petsc::KspChoice choice =
-      petsc::configure_ksp(ksp_, H_, o_, modes(), lo_, hi_, true, keep_levels);
+      petsc::configure_ksp(ksp_, H_ != nullptr ? H_ : A_, o_, modes(), lo_, hi_, true, keep_levels);
   direct_ = choice.direct;
   description_ = choice.description;
 }
