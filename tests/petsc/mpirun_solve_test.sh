@@ -154,3 +154,19 @@ run_mpi solve "$examples/paper.toml" -q -o "$tmp/mumps_failed" \
 grep -q "DIVERGED_PC_FAILED, MUMPS INFOG(1) = -19" "$tmp/stderr" ||
   { echo "failed MUMPS: the message does not give INFOG(1)"; cat "$tmp/stderr"; exit 1; }
 echo "ok: a failed MUMPS factorisation names INFOG(1)"
+
+# A work space estimated short (INFOG(1) = -9, forced here by a negative ICNTL(14), as MUMPS's
+# run-time scheduling on many ranks may cause by itself): the factorisation is done again with
+# ICNTL(14) raised, the solve goes on to the serial answer, and the summary says so. Semismooth
+# Newton too (its own PETSc solver).
+run_mpi solve "$examples/paper.toml" -q -o "$tmp/mumps_retried" --set mesh.nx=120 --set mesh.ny=40 \
+  --set 'solver.petsc_options="-mat_mumps_icntl_14 -50"'
+compare "$tmp/paper_serial" "$tmp/mumps_retried"
+grep -q "work space raised to ICNTL(14)" "$tmp/mumps_retried/summary.json" ||
+  { echo "a retried MUMPS factorisation: summary.json does not say so"; exit 1; }
+run_mpi solve "$examples/paper.toml" -q -o "$tmp/ssn_retried" "${ssn[@]}" \
+  --set 'solver.petsc_options="-mat_mumps_icntl_14 -50"'
+compare "$tmp/ssn_serial" "$tmp/ssn_retried"
+grep -q "work space raised to ICNTL(14)" "$tmp/ssn_retried/summary.json" ||
+  { echo "a retried MUMPS factorisation (semismooth Newton): summary.json does not say so"; exit 1; }
+echo "ok: a short MUMPS work space raised and the factorisation done again"

@@ -87,11 +87,11 @@ LinearSolveStats PetscActiveSetSolver::solve(const ActiveSet& S, Vector& l, Vect
   check(KSPSetOperators(ksp_, K_, K_), "KSP");
   const double tolerance = tolerance_ > 0.0 ? tolerance_ : o_.linear.cg_tolerance;
   if (!direct_) petsc::set_ksp_tolerance(ksp_, o_, tolerance, n_);
+  petsc::KspOutcome k;
   {
     ScopedTimer t(timings_, "linear solve");
-    check(KSPSolve(ksp_, rhs_, y_), "KSPSolve");
+    k = petsc::solve(ksp_, rhs_, y_, direct_, workspace_);
   }
-  const petsc::KspOutcome k = petsc::ksp_outcome(ksp_, rhs_, direct_);
   // Multipliers from the reactions: (A_r y)_{a_j} + s_j h_j l_j = (b_r)_{a_j} on S; each rank
   // its own nodes, summed over the ranks (the others add exact zeros).
   check(MatMult(Ar_, y_, reaction_), "the reactions");

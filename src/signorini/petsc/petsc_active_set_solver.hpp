@@ -9,10 +9,13 @@
 
 #include <petscksp.h>
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "signorini/contact/normal_rotation.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
 
 namespace signorini {
 
@@ -29,7 +32,9 @@ class PetscActiveSetSolver final : public DistributedActiveSetSolver {
   [[nodiscard]] Vector displacement() const override;
   [[nodiscard]] bool iterative() const override { return !direct_; }
   void set_tolerance(double tolerance) override { tolerance_ = tolerance; }
-  [[nodiscard]] std::string linear_solver_description() const override { return description_; }
+  [[nodiscard]] std::string linear_solver_description() const override {
+    return petsc::with_workspace_note(description_, workspace_);
+  }
 
  private:
   const ContactProblem& p_;
@@ -45,7 +50,8 @@ class PetscActiveSetSolver final : public DistributedActiveSetSolver {
   double diagonal_ = 1.0;  // of the fixed rows: the mean of A_r's, to keep K's scale
   bool direct_ = false;
   std::string description_;
-  double tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance
+  std::optional<PetscInt> workspace_;  // ICNTL(14), where a short work space raised it
+  double tolerance_ = 0.0;             // 0: o_.linear.cg_tolerance
 };
 
 }  // namespace signorini

@@ -297,11 +297,12 @@ KspOutcome ksp_outcome(KSP ksp, Vec rhs, bool direct) {
       // analysis's estimate plus ICNTL(14) percent was short, as it may be when MUMPS's dynamic
       // scheduling on many ranks differs from the estimate's.
       constexpr PetscInt short_workspace[] = {-8, -9, -11, -12, -14, -15, -17, -20};
-      if (std::find(std::begin(short_workspace), std::end(short_workspace), infog1) !=
-          std::end(short_workspace))
+      out.short_workspace = std::find(std::begin(short_workspace), std::end(short_workspace),
+                                      infog1) != std::end(short_workspace);
+      if (out.short_workspace)
         out.reason +=
-            ": its work space was estimated short; solver.petsc_options = "
-            "\"-mat_mumps_icntl_14 100\" gives it 100 % more";
+            ": its work space was estimated short, also with ICNTL(14) raised three times; "
+            "solver.petsc_options = \"-mat_mumps_icntl_14 400\" gives it 400 % more";
     }
   }
   if (!direct) {
@@ -314,6 +315,50 @@ KspOutcome ksp_outcome(KSP ksp, Vec rhs, bool direct) {
     out.residual = bnorm > 0.0 ? rnorm / bnorm : rnorm;
   }
   return out;
+}
+
+KspOutcome solve(KSP ksp, Vec rhs, Vec x, bool direct, std::optional<PetscInt>& raised) {
+  check(KSPSolve(ksp, rhs, x), "KSPSolve");
+  KspOutcome out = ksp_outcome(ksp, rhs, direct);
+  // MUMPS sizes its work arrays from the analysis's estimate plus ICNTL(14) percent; where the
+  // factorisation needed more (on many ranks MUMPS shares out parts of the work at run time,
+  // which the estimate cannot foresee), its manual's remedy is a larger ICNTL(14) and the
+  // factorisation again. Each rank sees the same failure (MUMPS's INFOG is global), so all
+  // retry together.
+  for (int attempt = 0; attempt < 3 && out.short_workspace; ++attempt) {
+    PC pc = nullptr;
+    Mat F = nullptr, H = nullptr;
+    PetscInt percent = 0;
+    check(KSPGetPC(ksp, &pc), "MUMPS's work space");
+    check(PCFactorGetMatrix(pc, &F), "MUMPS's work space");
+    check(MatMumpsGetIcntl(F, 14, &percent), "MUMPS's work space");
+    raised = std::max(percent + 50, 2 * percent);
+    // A failed factorisation cannot be repeated numerically (PETSc's MUMPS interface keeps the
+    // failure): the PC starts afresh, analysis included, which reads ICNTL(14) from the options
+    // database, where the raised value goes (over any that petsc_options gave).
+    const char* prefix = nullptr;
+    check(KSPGetOptionsPrefix(ksp, &prefix), "MUMPS's work space");
+    const std::string key = fmt::format("-{}mat_mumps_icntl_14", prefix != nullptr ? prefix : "");
+    check(PetscOptionsSetValue(nullptr, key.c_str(), std::to_string(*raised).c_str()),
+          "MUMPS's work space");
+    check(KSPGetOperators(ksp, &H, nullptr), "MUMPS's work space");
+    check(PetscObjectReference(reinterpret_cast<PetscObject>(H)), "MUMPS's work space");
+    check(PCReset(pc), "MUMPS's work space");
+    check(KSPSetOperators(ksp, H, H), "MUMPS's work space");
+    check(MatDestroy(&H), "MUMPS's work space");  // (the reference taken above)
+    check(KSPSolve(ksp, rhs, x), "KSPSolve");
+    out = ksp_outcome(ksp, rhs, direct);
+  }
+  return out;
+}
+
+std::string with_workspace_note(const std::string& description,
+                                const std::optional<PetscInt>& raised) {
+  if (!raised) return description;
+  return fmt::format(
+      "{} (MUMPS's work space raised to ICNTL(14) = {} after a factorisation "
+      "that needed more)",
+      description, *raised);
 }
 
 void set_ksp_tolerance(KSP ksp, const ContactSolverOptions& o, double tolerance, Index n) {

@@ -7,6 +7,7 @@
 #include <petscksp.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -77,8 +78,20 @@ struct KspOutcome {
   int iterations = 0;
   double residual = 0.0;
   std::string reason;  ///< PETSc's name of the reason, e.g. "DIVERGED_ITS"
+  /// MUMPS's factorisation failed for a work array smaller than it needed (INFOG(1) one of
+  /// -8, -9, -11, -12, -14, -15, -17, -20): more work space (ICNTL(14)) may let it through.
+  bool short_workspace = false;
 };
 [[nodiscard]] KspOutcome ksp_outcome(KSP ksp, Vec rhs, bool direct);
+
+/// KSPSolve(ksp, rhs, x), and where MUMPS's factorisation failed for a work space estimated short
+/// (KspOutcome::short_workspace), the factorisation again with ICNTL(14) raised, at most three
+/// times. `raised` becomes the last ICNTL(14) set (unchanged where none was needed).
+[[nodiscard]] KspOutcome solve(KSP ksp, Vec rhs, Vec x, bool direct,
+                               std::optional<PetscInt>& raised);
+/// A solver's description, with the ICNTL(14) that solve() raised MUMPS's work space to, if any.
+[[nodiscard]] std::string with_workspace_note(const std::string& description,
+                                              const std::optional<PetscInt>& raised);
 
 /// Sets the relative tolerance and iteration limit of an iterative KSP.
 void set_ksp_tolerance(KSP ksp, const ContactSolverOptions& options, double tolerance, Index n);

@@ -215,11 +215,11 @@ NewtonSolveStats PetscNewtonSpace::solve(const Vector& terms) {
   check(VecCopy(x_, x_new_), "the initial guess");
   const double tolerance = linear_tolerance_ > 0.0 ? linear_tolerance_ : o_.linear.cg_tolerance;
   if (!direct_) petsc::set_ksp_tolerance(ksp_, o_, tolerance, n_);
+  petsc::KspOutcome k;
   {
     ScopedTimer t(timings_, "linear solve");
-    check(KSPSolve(ksp_, work_, x_new_), "KSPSolve");
+    k = petsc::solve(ksp_, work_, x_new_, direct_, workspace_);
   }
-  const petsc::KspOutcome k = petsc::ksp_outcome(ksp_, work_, direct_);
   NewtonSolveStats out;
   out.converged = k.converged;
   out.iterations = k.iterations;

@@ -13,10 +13,13 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/petsc/node_padding.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_contact_multigrid.hpp"
 
 namespace signorini {
@@ -44,7 +47,9 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   [[nodiscard]] int factorizations() const override { return refreshes_; }
 
   [[nodiscard]] Vector gathered_solution() override;
-  [[nodiscard]] std::string linear_solver_description() const override { return description_; }
+  [[nodiscard]] std::string linear_solver_description() const override {
+    return petsc::with_workspace_note(description_, workspace_);
+  }
 
  private:
   Vector contact_values_of(Vec v);
@@ -77,6 +82,7 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   std::unique_ptr<petsc::ContactMultigrid> multigrid_;  // CG with GAMG's levels kept
   bool direct_ = false;
   std::string description_;
+  std::optional<PetscInt> workspace_;  // ICNTL(14), where a short work space raised it
   ActiveSet active_;
   bool has_active_ = false;
   Linearization linearization_;  // the last blocks set (friction)
