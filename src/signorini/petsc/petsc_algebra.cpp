@@ -335,7 +335,8 @@ KspOutcome solve(KSP ksp, Vec rhs, Vec x, bool direct, std::optional<PetscInt>& 
     raised = std::max(percent + 50, 2 * percent);
     // A failed factorisation cannot be repeated numerically (PETSc's MUMPS interface keeps the
     // failure): the PC starts afresh, analysis included, which reads ICNTL(14) from the options
-    // database, where the raised value goes (over any that petsc_options gave).
+    // database, where the raised value goes (over any that petsc_options gave; it stays there for
+    // the process's later factorisations, which the same estimate would fail alike).
     const char* prefix = nullptr;
     check(KSPGetOptionsPrefix(ksp, &prefix), "MUMPS's work space");
     const std::string key = fmt::format("-{}mat_mumps_icntl_14", prefix != nullptr ? prefix : "");
