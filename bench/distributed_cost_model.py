@@ -3,7 +3,8 @@
 of docs/performance.md ("Distributed runs: measurements and a cost model").
 
 For each size N of examples/box_on_sphere.toml (N x N x N/2 hex8 cells, CG with GAMG's levels
-kept, the plan's choice) and each rank count (1 rank: solver.distributed = "petsc"; more:
+kept, the plan's choice; or with --problem hertz, examples/hertz_sphere.toml on gmsh meshes of
+tetrahedra, sizes given as -clscale) and each rank count (1 rank: solver.distributed = "petsc"; more:
 mpirun -n R, oversubscribed where R exceeds the cores), one run prints:
 
   - the whole process from the shell and the peak memory of the largest rank (/usr/bin/time
@@ -16,6 +17,7 @@ and, from the runs on the two largest rank counts, a fit of the memory per rank 
 R + D / ranks: R held by every rank whatever the count, D shared among them.
 
   python3 bench/distributed_cost_model.py --sizes 24 40 64 88 --ranks 1 2 4
+  python3 bench/distributed_cost_model.py --problem hertz --sizes 0.5 0.185 --ranks 1 2 4
 
 Times on more ranks than cores measure the message counts and the memory, not the speed.
 SIGNORINI names the serial executable (default: the release build; signorini-mpi beside it)."""
@@ -42,29 +44,42 @@ def number(pattern, text, column):
     return float(fields[column]) if column < len(fields) else None
 
 
-def run(exe, mpirun, n, ranks, out):
-    sets = ["--set", f"mesh.nx={n}", "--set", f"mesh.ny={n}", "--set", f"mesh.nz={n // 2}",
+def problem_of(kind, size, work):
+    """The problem file and its --set options for one size."""
+    if kind == "box":
+        n = int(size)
+        return ROOT / "examples/box_on_sphere.toml", [
+            "--set", f"mesh.nx={n}", "--set", f"mesh.ny={n}", "--set", f"mesh.nz={n // 2}",
             "--set", 'mesh.cell="hex8"']
-    tool = [str(exe.parent / "signorini-mpi"), "solve", str(ROOT / "examples/box_on_sphere.toml"),
-            "-q", "-o", str(out)] + sets
-    timed = ["/usr/bin/time", "-f", "RANKTIME %e %M"]
+    if shutil.which("gmsh") is None:
+        sys.exit("distributed_cost_model.py: --problem hertz needs the gmsh program")
+    mesh = work / f"hertz_{size:g}.msh"
+    subprocess.run(["gmsh", "-3", str(ROOT / "examples/gmsh/hertz_sphere.geo"), "-clscale",
+                    str(size), "-format", "msh41", "-bin", "-o", str(mesh), "-v", "1"], check=True)
+    return ROOT / "examples/hertz_sphere.toml", ["--set", f'mesh.file="{mesh}"']
+
+
+def run(exe, mpirun, problem, sets, ranks, out):
+    tool = [str(exe.parent / "signorini-mpi"), "solve", str(problem), "-q", "-o", str(out)] + sets
+    # Each rank's /usr/bin/time writes a file of its own: on stderr the ranks' lines may be
+    # interleaved by mpirun's forwarding.
+    stamp = out.parent / f"{out.name}.time"
+    timed = ["bash", "-c",
+             'exec /usr/bin/time -f "%e %M" -o "$0.${OMPI_COMM_WORLD_RANK:-0}" "$@"', str(stamp)]
     if ranks == 1:
         cmd = timed + tool + ["--set", 'solver.distributed="petsc"']
     else:
         cmd = [mpirun, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks)] + timed + tool
     env = dict(os.environ, PETSC_OPTIONS="-log_view")
-    for _ in range(3):  # (mpirun has lost a rank's /usr/bin/time line once: run again)
-        p = subprocess.run(cmd, capture_output=True, text=True, env=env)
-        if p.returncode != 0 or len(re.findall("RANKTIME", p.stderr)) == ranks:
-            break
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
     if p.returncode != 0:
         said = [l for l in (p.stdout + p.stderr).splitlines() if "signorini" in l]
         sys.exit(f"distributed_cost_model.py: {' '.join(cmd)} failed (status {p.returncode}):\n"
                  + "\n".join(said[-10:] or [p.stderr[-2000:]]))
-    per_rank = [(float(t), int(k) / 1024.0)
-                for t, k in re.findall(r"RANKTIME ([0-9.]+) ([0-9]+)", p.stderr)]
-    if len(per_rank) != ranks:
-        sys.exit(f"distributed_cost_model.py: {len(per_rank)} of {ranks} ranks timed")
+    per_rank = []
+    for r in range(ranks):
+        t, k = pathlib.Path(f"{stamp}.{r}").read_text().split()[-2:]
+        per_rank.append((float(t), int(k) / 1024.0))
     text = p.stdout + p.stderr
     s = json.loads((out / "summary.json").read_text())
     return {
@@ -86,7 +101,11 @@ def run(exe, mpirun, n, ranks, out):
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--sizes", type=int, nargs="+", default=[24, 40, 64, 88])
+    ap.add_argument("--problem", choices=["box", "hertz"], default="box",
+                    help="box: examples/box_on_sphere.toml on N x N x N/2 hex8 cells (sizes: N); "
+                         "hertz: examples/hertz_sphere.toml on a gmsh mesh of hertz_sphere.geo "
+                         "(sizes: -clscale; 0.185 makes about a million unknowns)")
+    ap.add_argument("--sizes", type=float, nargs="+", default=[24, 40, 64, 88])
     ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2, 4])
     args = ap.parse_args()
     exe = pathlib.Path(os.environ.get("SIGNORINI", ROOT / "build/release/app/signorini"))
@@ -100,7 +119,8 @@ def main():
         print("|---|---|---|---|---|---|---|---|---|")
         fits = []
         for n in args.sizes:
-            rows = [run(exe, mpirun, n, r, work / f"out_{n}_{r}") for r in args.ranks]
+            problem, sets = problem_of(args.problem, n, work)
+            rows = [run(exe, mpirun, problem, sets, r, work / f"out_{n:g}_{r}") for r in args.ranks]
             for row in rows:
                 per = row["gnm"] * row["ranks"]
                 print(f"| {row['unknowns']:,} | {row['ranks']} | {row['wall']:.2f} s "
