@@ -2,6 +2,7 @@
 // Shared fixtures for the tests: the paper's benchmark at small sizes, solved once per size.
 
 #include <map>
+#include <string>
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
@@ -30,6 +31,20 @@ inline ProblemWithHierarchy paper_problem_with_hierarchy(Index nx) {
   h.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
   h.kind = HierarchyKind::Geometric;
   return {model.problem, std::move(h)};
+}
+
+/// `spec` with every contact boundary given the friction law `model`: Coulomb's coefficient
+/// `value`, or Tresca's constant slip bound `value`.
+inline ProblemSpec with_friction(ProblemSpec spec, FrictionModel model, double value) {
+  for (ContactSpec& c : spec.contacts) {
+    c.friction = model;
+    if (model == FrictionModel::Coulomb) c.mu = value;
+    if (model == FrictionModel::Tresca) {
+      c.slip_bound = [value](const Point&) { return value; };
+      c.slip_bound_text = std::to_string(value);
+    }
+  }
+  return spec;
 }
 
 /// Relative difference ||a - b|| / ||b||.

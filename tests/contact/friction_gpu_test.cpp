@@ -19,11 +19,9 @@ TEST(GpuFriction, CoulombMatchesTheCpuBackendIn2DAnd3D) {
   if (report.gpus.empty()) GTEST_SKIP() << "no CUDA GPU: " << report.problem;
   for (const bool three_d : {false, true}) {
     SCOPED_TRACE(three_d ? "3D" : "2D");
-    ProblemSpec spec = three_d ? testing::ball_on_block(12, 3e-2) : paper_benchmark(60, 20);
-    for (ContactSpec& c : spec.contacts) {
-      c.friction = FrictionModel::Coulomb;
-      c.mu = three_d ? 0.2 : 0.5;
-    }
+    ProblemSpec spec =
+        testing::with_friction(three_d ? testing::ball_on_block(12, 3e-2) : paper_benchmark(60, 20),
+                               FrictionModel::Coulomb, three_d ? 0.2 : 0.5);
     spec.solver.automatic_path = false;
     spec.solver.linear.type = LinearSolverType::ConjugateGradient;
     spec.solver.linear.preconditioner = PreconditionerType::Multigrid;

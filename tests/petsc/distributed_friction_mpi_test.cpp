@@ -17,6 +17,7 @@ namespace signorini {
 namespace {
 
 using testing::relative_difference;
+using testing::with_friction;
 
 void expect_same_frictional_solve(const ContactResult& distributed, const ContactResult& serial) {
   testing::expect_distributed_agrees(distributed, serial);
@@ -28,18 +29,6 @@ void expect_same_frictional_solve(const ContactResult& distributed, const Contac
             1e-8);
   // Friction did something: some node carries a tangential force.
   EXPECT_GT(serial.tangential.cwiseAbs().maxCoeff(), 0.0);
-}
-
-ProblemSpec with_friction(ProblemSpec spec, FrictionModel model, double value) {
-  for (ContactSpec& c : spec.contacts) {
-    c.friction = model;
-    if (model == FrictionModel::Coulomb) c.mu = value;
-    if (model == FrictionModel::Tresca) {
-      c.slip_bound = [value](const Point&) { return value; };
-      c.slip_bound_text = std::to_string(value);
-    }
-  }
-  return spec;
 }
 
 // The distributed solve of the partitioned model and the serial solve on this rank, checked

@@ -170,3 +170,13 @@ compare "$tmp/ssn_serial" "$tmp/ssn_retried"
 grep -q "work space raised to ICNTL(14)" "$tmp/ssn_retried/summary.json" ||
   { echo "a retried MUMPS factorisation (semismooth Newton): summary.json does not say so"; exit 1; }
 echo "ok: a short MUMPS work space raised and the factorisation done again"
+
+# Still short after three raises (ICNTL(14) = -1000 stays negative): status 3, and the message
+# says what was tried and which option gives more.
+status=0
+run_mpi solve "$examples/paper.toml" -q -o "$tmp/mumps_short" \
+  --set 'solver.petsc_options="-mat_mumps_icntl_14 -1000"' 2> "$tmp/stderr" || status=$?
+[ "$status" -eq 3 ] || { echo "MUMPS short three times: exit status $status, expected 3"; cat "$tmp/stderr"; exit 1; }
+grep -q "INFOG(1) = -9, INFOG(2) = [0-9]*: its work space was estimated short, also with ICNTL(14) raised three times" "$tmp/stderr" ||
+  { echo "MUMPS short three times: the message does not say so"; cat "$tmp/stderr"; exit 1; }
+echo "ok: a work space still short after three raises is reported"

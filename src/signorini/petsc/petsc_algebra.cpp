@@ -299,10 +299,6 @@ KspOutcome ksp_outcome(KSP ksp, Vec rhs, bool direct) {
       constexpr PetscInt short_workspace[] = {-8, -9, -11, -12, -14, -15, -17, -20};
       out.short_workspace = std::find(std::begin(short_workspace), std::end(short_workspace),
                                       infog1) != std::end(short_workspace);
-      if (out.short_workspace)
-        out.reason +=
-            ": its work space was estimated short, also with ICNTL(14) raised three times; "
-            "solver.petsc_options = \"-mat_mumps_icntl_14 400\" gives it 400 % more";
     }
   }
   if (!direct) {
@@ -350,6 +346,10 @@ KspOutcome solve(KSP ksp, Vec rhs, Vec x, bool direct, std::optional<PetscInt>& 
     check(KSPSolve(ksp, rhs, x), "KSPSolve");
     out = ksp_outcome(ksp, rhs, direct);
   }
+  if (out.short_workspace)
+    out.reason +=
+        ": its work space was estimated short, also with ICNTL(14) raised three times; "
+        "solver.petsc_options = \"-mat_mumps_icntl_14 400\" gives it 400 % more";
   return out;
 }
 
