@@ -7,6 +7,7 @@
 
 #include <Eigen/QR>
 
+#include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
@@ -49,6 +50,20 @@ TEST(RigidBodyModes, LeaveOutClampedDofs) {
       EXPECT_EQ(B(f, k), 1.0);      // translation along k
       EXPECT_EQ(B(f, 1 - k), 0.0);  // not across
     }
+}
+
+// A rank of a distributed run makes its own rows only: the same numbers as the whole's.
+TEST(RigidBodyModes, ARangeOfRowsIsThoseRowsOfTheWhole) {
+  const ProblemSpec spec = paper_benchmark(6, 2);
+  const Mesh mesh = make_rectangle_mesh(spec.mesh);
+  const DofMap dofs = make_dof_map(mesh, spec.clamps);
+  const Matrix whole = rigid_body_modes(mesh, dofs);
+  const Index first = 5, end = dofs.num_free() - 3;
+  const Matrix part = rigid_body_modes(mesh, dofs, first, end);
+  ASSERT_EQ(part.rows(), end - first);
+  EXPECT_EQ(part, whole.middleRows(first, end - first));
+  EXPECT_EQ(rigid_body_modes(mesh, dofs, 0, 0).rows(), 0);
+  EXPECT_THROW((void)rigid_body_modes(mesh, dofs, 3, dofs.num_free() + 1), NumericalError);
 }
 
 }  // namespace

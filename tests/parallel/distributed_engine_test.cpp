@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "../test_problems.hpp"
 #include "signorini/core/error.hpp"
 
@@ -24,17 +26,24 @@ TEST(DistributedEngine, WithoutAnEngineTheSerialPathsRun) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("signorini-mpi"), std::string::npos) << e.what();
   }
-  // The products of a whole problem are the serial ones.
+  // The products and sums of a whole problem are the serial ones.
   const ContactProblem& p = testing::paper_model(30).problem;
   const Vector u = Vector::LinSpaced(p.A.rows(), -1.0, 1.0);
-  EXPECT_EQ(stiffness_product(p, u), p.A * u);
+  EXPECT_FALSE(p.partitioned());
+  EXPECT_EQ(p.first_row(), 0);
+  EXPECT_EQ(p.end_row(), p.A.rows());
+  EXPECT_EQ(held_stiffness_rows(p, u), p.A * u);
+  const double energy = 0.5 * u.dot(p.A * u) - p.b.dot(u);
+  EXPECT_NEAR(quadratic_energy(p, u), energy, 1e-14 * std::abs(energy));
+  EXPECT_EQ(load_norm(p), p.b.norm());
 }
 
 TEST(DistributedEngine, APartitionedProblemNeedsItsEngine) {
   ContactProblem p = testing::paper_model(30).problem;
   p.row_starts = {0, p.A.rows()};
   const Vector u = Vector::Ones(p.A.rows());
-  EXPECT_THROW((void)stiffness_product(p, u), InputError);
+  EXPECT_THROW((void)quadratic_energy(p, u), InputError);
+  EXPECT_THROW((void)load_norm(p), InputError);
   EXPECT_THROW((void)solve_contact(p, ContactSolverOptions{}), InputError);
 }
 

@@ -68,7 +68,18 @@ TEST(DistributedModel, EachRankAssemblesItsOwnColumns) {
   const Vector Au_whole = whole.problem.A * u_whole;
   Vector Au(A.rows());
   for (Index i = 0; i < A.rows(); ++i) Au(i) = Au_whole(w(i));
-  EXPECT_LT(relative_difference(stiffness_product(part.problem, u), Au), 1e-14);
+  // Each rank holds its rows of A u, of b and of the near-null space (none here: the direct
+  // solver), and the sums over the unknowns add up over the ranks.
+  EXPECT_EQ(part.problem.first_row(), lo);
+  EXPECT_EQ(part.problem.end_row(), hi);
+  EXPECT_LT(relative_difference(held_stiffness_rows(part.problem, u), Au.segment(lo, hi - lo)),
+            1e-14);
+  ASSERT_EQ(part.problem.b.size(), hi - lo);
+  for (Index i = lo; i < hi; ++i)
+    EXPECT_EQ(part.problem.b(i - lo), whole.problem.b(w(i))) << "row " << i;
+  EXPECT_NEAR(load_norm(part.problem), whole.problem.b.norm(), 1e-14 * whole.problem.b.norm());
+  const double energy = 0.5 * u_whole.dot(Au_whole) - whole.problem.b.dot(u_whole);
+  EXPECT_NEAR(quadratic_energy(part.problem, u), energy, 1e-12 * std::abs(energy));
   EXPECT_NEAR(automatic_r(part.problem, 10.0), automatic_r(whole.problem, 10.0),
               1e-12 * automatic_r(whole.problem, 10.0));
   // A partitioned problem is the distributed path's only.
@@ -120,6 +131,8 @@ TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
   const ProblemSpec spec = ball_with_multigrid(8);
   const Model model = testing::distributed_model(spec);
   ASSERT_EQ(model.problem.near_null_space.cols(), 6);
+  ASSERT_EQ(model.problem.near_null_space.rows(),
+            model.problem.end_row() - model.problem.first_row());  // this rank's rows
   ASSERT_EQ(model.problem.node_of_unknown.size(), static_cast<std::size_t>(model.problem.A.rows()));
   const ContactResult distributed = testing::distributed_solve(model, model.solver);
   const Model serial_model = testing::serial_model(spec);

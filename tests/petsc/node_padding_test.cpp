@@ -60,14 +60,21 @@ TEST(NodePadding, MatrixHoldsAOnTheSlotsAndADiagonalOnThePadding) {
 TEST(NodePadding, VectorsGoToTheSlotsAndBack) {
   const NodePadding p(kNodes, 6);
   const Vector v = Vector::LinSpaced(6, 1.0, 6.0);
-  const Vector padded = p.vector(v);
+  const Vector padded = p.rows(v, 0, 6);
   ASSERT_EQ(padded.size(), 9);
   EXPECT_EQ(padded(4), 0.0);
   EXPECT_EQ(padded(5), 0.0);
   EXPECT_EQ(padded(8), 0.0);
   EXPECT_EQ(p.unknowns(padded), v);
   const Matrix modes = Matrix::Ones(6, 2);
-  EXPECT_EQ(p.columns(modes).colwise().sum(), Matrix::Constant(1, 2, 6.0));
+  EXPECT_EQ(p.rows(modes, 0, 6).colwise().sum(), Matrix::Constant(1, 2, 6.0));
+  // One rank's rows [3, 6) (unknowns 3, 4, 5): slots [3, 9), their padding slots 4, 5 and 8.
+  const Vector part = p.rows(Vector(v.segment(3, 3)), 3, 6);
+  ASSERT_EQ(part.size(), 6);
+  EXPECT_EQ(part, padded.segment(3, 6));
+  const Matrix part_modes = p.rows(Matrix(modes.bottomRows(3)), 3, 6);
+  ASSERT_EQ(part_modes.rows(), 6);
+  EXPECT_EQ(part_modes.col(1), padded.segment(3, 6).cwiseSign());
 }
 
 TEST(NodePadding, LeavesWholeBlocksAlone) {

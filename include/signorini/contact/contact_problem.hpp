@@ -10,22 +10,39 @@ namespace signorini {
 
 struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
-  Vector b;        ///< load vector
+  Vector b;        ///< load vector (a partitioned problem: this rank's rows only)
   ContactSet contact;
   /// Optional aids for a distributed solve (docs/distributed.md), empty unless build_model plans
   /// one: the near-null space of A for algebraic multigrid (the rigid-body modes on the free
-  /// dofs, n x 3 in 2D, n x 6 in 3D), and the mesh node of each free dof, so that the dofs of a
-  /// node stay on one rank.
+  /// dofs, n x 3 in 2D, n x 6 in 3D; a partitioned problem: this rank's rows only), and the mesh
+  /// node of each free dof (all n), so that the dofs of a node stay on one rank.
   Matrix near_null_space = {};
   std::vector<Index> node_of_unknown = {};
-  /// Non-empty for a partitioned problem (docs/distributed.md): rank r of a distributed run owns
-  /// the free dofs [row_starts[r], row_starts[r + 1]), and A holds only their columns (by
-  /// symmetry their rows), the other columns empty; products with A are then sums over the
-  /// ranks (parallel/distributed_engine.hpp, stiffness_product). Only the distributed path
-  /// solves such a problem.
+  /// Non-empty for a partitioned problem (docs/distributed.md): rank `rank` of a distributed run
+  /// owns the free dofs [row_starts[rank], row_starts[rank + 1]); A holds only their columns (by
+  /// symmetry their rows), the other columns empty, and b and the near-null space only their
+  /// rows. The contact set is whole on every rank. Products with A and the sums over the
+  /// unknowns (the energy, the KKT residuals) are then sums over the ranks
+  /// (parallel/distributed_engine.hpp). Only the distributed path solves such a problem.
   std::vector<Index> row_starts = {};
+  int rank = 0;
 
   [[nodiscard]] bool partitioned() const { return !row_starts.empty(); }
+  /// The unknowns of the whole problem (A is n x n on every rank).
+  [[nodiscard]] Index unknowns() const { return A.rows(); }
+  /// The first unknown whose row this process holds, and one past the last: [0, n) unless
+  /// partitioned.
+  [[nodiscard]] Index first_row() const {
+    return partitioned() ? row_starts[static_cast<std::size_t>(rank)] : 0;
+  }
+  [[nodiscard]] Index end_row() const {
+    return partitioned() ? row_starts[static_cast<std::size_t>(rank) + 1] : A.rows();
+  }
+  /// The rows of a vector of all n unknowns that this process holds (all of it unless
+  /// partitioned), as b is held.
+  [[nodiscard]] Vector held_rows(const Vector& whole) const {
+    return partitioned() ? Vector(whole.segment(first_row(), end_row() - first_row())) : whole;
+  }
 };
 
 }  // namespace signorini

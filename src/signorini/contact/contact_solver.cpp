@@ -143,7 +143,8 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
     : impl_(std::make_unique<Impl>()) {
   validate(given);
   const Index n = problem.A.rows();
-  if (problem.A.cols() != n || problem.b.size() != n || problem.contact.N.cols() != n)
+  if (problem.A.cols() != n || problem.b.size() != problem.end_row() - problem.first_row() ||
+      problem.contact.N.cols() != n)
     throw InputError("contact problem: sizes of A, b and N do not match");
   Impl& m = *impl_;
   m.problem = &problem;
@@ -323,7 +324,7 @@ ContactResult ContactSolver::solve() {
   s.kkt_tolerance = options.kkt_tolerance;
   const ContactLaw& law = contact_law(options);
   s.kkt = kkt_residuals(problem, result.u, result.l, law);
-  s.energy = 0.5 * result.u.dot(stiffness_product(problem, result.u)) - problem.b.dot(result.u);
+  s.energy = quadratic_energy(problem, result.u);
   s.lagrangian = ModifiedLagrangian::value(problem, *options.r, result.u, result.l, law);
   const ContactSet& c = problem.contact;
   if (c.components > 1) {

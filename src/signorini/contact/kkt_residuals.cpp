@@ -11,6 +11,16 @@ namespace signorini {
 
 namespace {
 
+// ||A u - b + N^T W l|| / max(||b||, ||N^T W l||) (`reaction` = N^T W l, all n rows: the contact
+// set is whole on every rank). A partitioned problem sums its rows' squares over the ranks.
+double equilibrium_residual(const ContactProblem& p, const Vector& u, const Vector& reaction) {
+  const double b_norm = std::max(load_norm(p), reaction.norm());
+  if (!(b_norm > 0.0)) return 0.0;
+  double squares = (held_stiffness_rows(p, u) - p.b + p.held_rows(reaction)).squaredNorm();
+  sum_over_ranks(p, &squares, 1);
+  return std::sqrt(squares) / b_norm;
+}
+
 // With friction: the rows of N per node (normal, tangents), the multipliers likewise.
 KktResiduals frictional_kkt_residuals(const ContactProblem& p, const Vector& u, const Vector& l,
                                       const FrictionLaw& law) {
@@ -18,8 +28,7 @@ KktResiduals frictional_kkt_residuals(const ContactProblem& p, const Vector& u, 
   const Index m = c.components, nc = c.size();
   KktResiduals k;
   const Vector reaction = c.N.transpose() * row_weights(c).cwiseProduct(l);
-  const double b_norm = std::max(p.b.norm(), reaction.norm());
-  k.equilibrium = b_norm > 0.0 ? (stiffness_product(p, u) - p.b + reaction).norm() / b_norm : 0.0;
+  k.equilibrium = equilibrium_residual(p, u, reaction);
   const Vector rows = c.N * u - row_offsets(c);  // gap residual, then slip v_j
   const double length = std::max(u.lpNorm<Eigen::Infinity>(),
                                  c.gaps.size() > 0 ? c.gaps.lpNorm<Eigen::Infinity>() : 0.0);
@@ -56,8 +65,7 @@ KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vecto
   }
   KktResiduals k;
   const Vector reaction = c.N.transpose() * c.weights.cwiseProduct(l);
-  const double b_norm = std::max(p.b.norm(), reaction.norm());
-  k.equilibrium = b_norm > 0.0 ? (stiffness_product(p, u) - p.b + reaction).norm() / b_norm : 0.0;
+  k.equilibrium = equilibrium_residual(p, u, reaction);
 
   const Vector gap_residual = c.N * u - c.gaps;  // <= 0 where feasible
   const double length = std::max(u.lpNorm<Eigen::Infinity>(),

@@ -284,7 +284,7 @@ double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector
       if (p.contact.movable[static_cast<std::size_t>(j)])
         penalty += 2.0 * p.contact.weights(j) *
                    phi.potential_change(j, &phi.l_(phi.m_ * j), &shift(phi.m_ * j));
-    return 0.5 * u.dot(stiffness_product(p, u)) - p.b.dot(u) + penalty / (2.0 * r);
+    return quadratic_energy(p, u) + penalty / (2.0 * r);
   }
   for (Index j = 0; j < l.size(); ++j) {
     if (!p.contact.movable[static_cast<std::size_t>(j)]) continue;
@@ -293,7 +293,7 @@ double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector
     const double diff = law.penalty_change(l(j), r * (Nu(j) - p.contact.gaps(j)));
     penalty += p.contact.weights(j) * diff;
   }
-  return 0.5 * u.dot(stiffness_product(p, u)) - p.b.dot(u) + penalty / (2.0 * r);
+  return quadratic_energy(p, u) + penalty / (2.0 * r);
 }
 
 }  // namespace signorini

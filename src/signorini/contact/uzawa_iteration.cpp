@@ -7,13 +7,14 @@
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/outer_iteration.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
 void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
                          ModifiedLagrangian& phi, NewtonSpace& space, Vector l0,
                          ContactResult& out) {
-  const GeneralizedNewton gnm(options, problem.b.norm());
+  const GeneralizedNewton gnm(options, load_norm(problem));
   OuterLoop loop;
   loop.max_steps = options.max_uzawa_iterations;
   double previous_change = 1.0;     // ||l^k - l^(k-1)|| / ||l^k|| of the previous step

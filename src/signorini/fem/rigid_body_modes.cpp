@@ -6,16 +6,20 @@
 
 namespace signorini {
 
-Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs) {
+Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs, Index first, Index end) {
   if (mesh.dim() != dofs.dim() || mesh.num_nodes() != dofs.num_nodes())
     throw NumericalError("rigid_body_modes: the dof map does not match the mesh");
   const int dim = dofs.dim();
   if (dim != 2 && dim != 3)
     throw NumericalError(fmt::format("rigid_body_modes: {}D meshes are not supported", dim));
   const int count = dim == 2 ? 3 : 6;
+  if (end < 0) end = dofs.num_free();
+  if (first < 0 || first > end || end > dofs.num_free())
+    throw NumericalError(fmt::format("rigid_body_modes: rows [{}, {}) of {} free dofs", first, end,
+                                     dofs.num_free()));
   // The rotations about the centroid keep their columns as well scaled as the translations'.
   const Eigen::VectorXd centre = mesh.coordinates().rowwise().mean();
-  Matrix B = Matrix::Zero(dofs.num_free(), count);
+  Matrix B = Matrix::Zero(end - first, count);
   Eigen::Matrix<double, 3, 6> modes;
   for (Index node = 0; node < dofs.num_nodes(); ++node) {
     const Eigen::VectorXd x = mesh.node(node) - centre;
@@ -35,8 +39,8 @@ Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs) {
     }
     for (int k = 0; k < dim; ++k) {
       const Index f = dofs.free_index(node, k);
-      if (f < 0) continue;
-      B.row(f) = modes.row(k).head(count);
+      if (f < first || f >= end) continue;  // (f < 0: not free)
+      B.row(f - first) = modes.row(k).head(count);
     }
   }
   return B;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "signorini/core/error.hpp"
 
 namespace signorini {
@@ -36,10 +38,30 @@ void sum_over_ranks(const ContactProblem& problem, double* values, Index count) 
   registered->sum(values, count);
 }
 
-Vector stiffness_product(const ContactProblem& problem, const Vector& u) {
-  Vector Au = problem.A * u;
-  sum_over_ranks(problem, Au.data(), Au.size());
-  return Au;
+Vector held_stiffness_rows(const ContactProblem& problem, const Vector& u) {
+  if (!problem.partitioned()) return problem.A * u;
+  // Row i of A is its column i, which a partitioned A holds for the rows it owns.
+  const Index first = problem.first_row(), end = problem.end_row();
+  Vector rows(end - first);
+  for (Index i = first; i < end; ++i) {
+    double s = 0.0;
+    for (SparseMatrix::InnerIterator it(problem.A, i); it; ++it) s += it.value() * u(it.row());
+    rows(i - first) = s;
+  }
+  return rows;
+}
+
+double quadratic_energy(const ContactProblem& problem, const Vector& u) {
+  const Vector held = problem.held_rows(u);
+  double e = 0.5 * held.dot(held_stiffness_rows(problem, u)) - problem.b.dot(held);
+  sum_over_ranks(problem, &e, 1);
+  return e;
+}
+
+double load_norm(const ContactProblem& problem) {
+  double squares = problem.b.squaredNorm();
+  sum_over_ranks(problem, &squares, 1);
+  return std::sqrt(squares);
 }
 
 bool distributed_path(const ContactSolverOptions& options) {

@@ -78,9 +78,15 @@ void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
 /// Registers (or, with null, removes) the engine; not owned, it must outlive its use.
 void set_distributed_engine(DistributedEngine* engine);
 
-/// A u for any problem: for a partitioned one (ContactProblem::partitioned) each rank's
-/// columns' share, summed over the ranks of the registered engine (a collective call).
-[[nodiscard]] Vector stiffness_product(const ContactProblem& problem, const Vector& u);
+/// The rows of A u that this process holds (ContactProblem::first_row to end_row; all of them
+/// unless partitioned), u being all n unknowns. No message: a partitioned A holds the columns of
+/// these rows, and A is symmetric.
+[[nodiscard]] Vector held_stiffness_rows(const ContactProblem& problem, const Vector& u);
+/// 1/2 <A u, u> - <b, u>, u being all n unknowns (a collective call where partitioned: a
+/// single number is summed over the ranks).
+[[nodiscard]] double quadratic_energy(const ContactProblem& problem, const Vector& u);
+/// ||b|| over all n unknowns (a collective call where partitioned).
+[[nodiscard]] double load_norm(const ContactProblem& problem);
 /// Sums values over the ranks where the problem is partitioned (a collective call then).
 void sum_over_ranks(const ContactProblem& problem, double* values, Index count);
 

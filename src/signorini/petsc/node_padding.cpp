@@ -87,17 +87,19 @@ SparseMatrix NodePadding::matrix(const SparseMatrix& A, Index lo, Index hi) cons
   return P;
 }
 
-Vector NodePadding::vector(const Vector& v) const {
-  if (!active()) return v;
-  Vector out = Vector::Zero(size_);
-  for (Index i = 0; i < n_; ++i) out(slot(i)) = v(i);
+Vector NodePadding::rows(const Vector& rows, Index first, Index last) const {
+  if (!active()) return rows;
+  const Index lo = start(first);
+  Vector out = Vector::Zero(start(last) - lo);
+  for (Index i = first; i < last; ++i) out(slot(i) - lo) = rows(i - first);
   return out;
 }
 
-Matrix NodePadding::columns(const Matrix& m) const {
-  if (!active() || m.rows() == 0) return m;
-  Matrix out = Matrix::Zero(size_, m.cols());
-  for (Index i = 0; i < n_; ++i) out.row(slot(i)) = m.row(i);
+Matrix NodePadding::rows(const Matrix& rows, Index first, Index last) const {
+  if (!active() || rows.rows() == 0) return rows;
+  const Index lo = start(first);
+  Matrix out = Matrix::Zero(start(last) - lo, rows.cols());
+  for (Index i = first; i < last; ++i) out.row(slot(i) - lo) = rows.row(i - first);
   return out;
 }
 

@@ -40,9 +40,10 @@ class NodePadding {
   /// A's columns [lo, hi) (by symmetry its rows) on the slots, the padding slots of their nodes
   /// with a diagonal entry; the other columns empty.
   [[nodiscard]] SparseMatrix matrix(const SparseMatrix& A, Index lo, Index hi) const;
-  /// v (n entries, or n rows) on the slots, zero on the padding slots.
-  [[nodiscard]] Vector vector(const Vector& v) const;
-  [[nodiscard]] Matrix columns(const Matrix& m) const;
+  /// The rows [first, last) of a vector (`rows`: last - first entries, or rows of a matrix) on
+  /// their slots [start(first), start(last)), zero on the padding slots.
+  [[nodiscard]] Vector rows(const Vector& rows, Index first, Index last) const;
+  [[nodiscard]] Matrix rows(const Matrix& rows, Index first, Index last) const;
   /// The unknowns' entries of a vector on the slots.
   [[nodiscard]] Vector unknowns(const Vector& slots) const;
 

@@ -33,7 +33,13 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
   petsc::mark_spd(K_, "the Newton matrix");
   check(MatCreateVecs(Ar_, &y_, &br_), "vectors");
   for (Vec* v : {&rhs_, &fixed_values_, &reaction_}) check(VecDuplicate(y_, v), "vectors");
-  petsc::set_local(br_, rotation_.to_rotated(problem.b), lo_, hi_);
+  // b and the near-null space hold this rank's rows only (ContactProblem), x0 every unknown.
+  const auto rotated_rows = [&](const auto& rows) -> Vector {
+    Vector whole = Vector::Zero(n_);
+    whole.segment(lo_, hi_ - lo_) = rows;
+    return rotation_.to_rotated(whole).segment(lo_, hi_ - lo_);
+  };
+  petsc::set_owned(br_, rotated_rows(problem.b));
   petsc::set_local(y_, rotation_.to_rotated(x0), lo_, hi_);
   check(MatGetDiagonal(Ar_, reaction_), "the diagonal");
   PetscScalar sum = 0.0;
@@ -41,13 +47,13 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
   if (n_ > 0 && sum > 0.0) diagonal_ = sum / static_cast<double>(n_);
   // The rigid-body modes in the rotated unknowns, for GAMG.
   Matrix modes;
-  if (problem.near_null_space.rows() == n_) {
-    modes.resize(n_, problem.near_null_space.cols());
+  if (problem.near_null_space.cols() > 0) {  // (on every rank alike: a collective choice)
+    modes.resize(hi_ - lo_, problem.near_null_space.cols());
     for (Index k = 0; k < modes.cols(); ++k)
-      modes.col(k) = rotation_.to_rotated(problem.near_null_space.col(k));
+      modes.col(k) = rotated_rows(problem.near_null_space.col(k));
   }
   check(KSPCreate(comm_, &ksp_), "KSP");
-  const petsc::KspChoice choice = petsc::configure_ksp(ksp_, K_, o_, modes, lo_, hi_, false);
+  const petsc::KspChoice choice = petsc::configure_ksp(ksp_, K_, o_, modes, false);
   direct_ = choice.direct;
   description_ = choice.description;
 }

@@ -136,6 +136,18 @@ void set_local(Vec v, const Vector& whole, Index lo, Index hi) {
   check(VecRestoreArray(v, &a), "a distributed vector");
 }
 
+void set_owned(Vec v, const Vector& rows) {
+  PetscInt m = 0;
+  check(VecGetLocalSize(v, &m), "a distributed vector");
+  if (m != rows.size())
+    throw NumericalError(
+        fmt::format("PETSc: {} values for a rank's {} entries of a vector", rows.size(), m));
+  PetscScalar* a = nullptr;
+  check(VecGetArray(v, &a), "a distributed vector");
+  for (PetscInt i = 0; i < m; ++i) a[i] = rows(i);
+  check(VecRestoreArray(v, &a), "a distributed vector");
+}
+
 Vector gather(Vec v) {
   VecScatter scatter = nullptr;
   Vec all = nullptr;
@@ -159,12 +171,12 @@ namespace {
 // wants them so) by modified Gram-Schmidt with global dot products; a mode that is (nearly) a
 // combination of the others, as a rotation about an axis on which every free dof is held, is
 // dropped.
-std::vector<Vec> near_null_vectors(const Matrix& modes, Index lo, Index hi, Mat like) {
+std::vector<Vec> near_null_vectors(const Matrix& modes, Mat like) {
   std::vector<Vec> out;
   for (Index k = 0; k < modes.cols(); ++k) {
     Vec v = nullptr;
     check(MatCreateVecs(like, &v, nullptr), "near-null space");
-    set_local(v, modes.col(k), lo, hi);
+    set_owned(v, modes.col(k));
     PetscReal before = 0.0, after = 0.0;
     check(VecNorm(v, NORM_2, &before), "near-null space");
     for (Vec u : out) {
@@ -185,13 +197,13 @@ std::vector<Vec> near_null_vectors(const Matrix& modes, Index lo, Index hi, Mat 
 
 }  // namespace
 
-std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space, Index lo, Index hi) {
+std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space) {
   PetscInt rows = 0;
-  check(MatGetSize(M, &rows, nullptr), "near-null space");
+  check(MatGetLocalSize(M, &rows, nullptr), "near-null space");
   if (near_null_space.rows() != rows)
-    throw NumericalError(fmt::format("PETSc: a near-null space of {} rows for {} unknowns",
+    throw NumericalError(fmt::format("PETSc: a near-null space of {} rows for a rank's {} rows",
                                      near_null_space.rows(), rows));
-  std::vector<Vec> vecs = near_null_vectors(near_null_space, lo, hi, M);
+  std::vector<Vec> vecs = near_null_vectors(near_null_space, M);
   MatNullSpace space = nullptr;
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(M));
   check(MatNullSpaceCreate(comm, PETSC_FALSE, static_cast<PetscInt>(vecs.size()), vecs.data(),
@@ -220,7 +232,7 @@ bool keeps_gamg_levels(const ContactSolverOptions& o) {
 }
 
 KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
-                        const Matrix& near_null_space, Index lo, Index hi, bool reuse_interpolation,
+                        const Matrix& near_null_space, bool reuse_interpolation,
                         const MultigridBuilder& multigrid) {
   KspChoice choice;
   std::string built;
@@ -249,7 +261,7 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
       // them from its first smoothed-aggregation estimate, that of A, which the penalty of a new
       // active set exceeds, and the smoother diverges (CG stops with DIVERGED_INDEFINITE_PC).
       check(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE), "GAMG");
-      if (near_null_space.rows() > 0) modes = attach_near_null_space(H, near_null_space, lo, hi);
+      if (near_null_space.cols() > 0) modes = attach_near_null_space(H, near_null_space);
     } else {
       check(PCSetType(pc, PCJACOBI), "Jacobi");
     }

@@ -35,12 +35,14 @@ void mark_spd(Mat M, const char* what);
 [[nodiscard]] Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm,
                              PetscInt block);
 
-/// Attaches the columns of `near_null_space` (whole, made orthonormal; this rank's rows [lo, hi))
-/// to M as its near-null space, for GAMG; returns how many were kept.
-std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space, Index lo, Index hi);
+/// Attaches the columns of `near_null_space` (this rank's rows of M; made orthonormal over the
+/// ranks) to M as its near-null space, for GAMG; returns how many were kept.
+std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space);
 
 /// v's entries [lo, hi) (this rank's) from the whole vector `whole`.
 void set_local(Vec v, const Vector& whole, Index lo, Index hi);
+/// v's entries on this rank from `rows`, as many as the rank holds.
+void set_owned(Vec v, const Vector& rows);
 
 /// The whole vector on every rank.
 [[nodiscard]] Vector gather(Vec v);
@@ -63,13 +65,14 @@ void insert_petsc_options(const ContactSolverOptions& options);
 using MultigridBuilder = std::function<std::string(PC pc)>;
 
 /// Sets `ksp` up for the operator H from the serial options: "cg" with "multigrid" -> CG with GAMG
-/// on the columns of `near_null_space` (whole, made orthonormal; none when it is empty), "cg"
+/// on the columns of `near_null_space` (this rank's rows, made orthonormal; none when it is
+/// empty), "cg"
 /// with "jacobi" -> CG with Jacobi, a direct solver -> MUMPS's Cholesky factorisation; CG measures
 /// the unpreconditioned residual and starts from the given x. Then solver.petsc_options.
 /// `reuse_interpolation`: GAMG keeps its prolongators when H's values change. `multigrid`, where
 /// given (the caller asks keeps_gamg_levels), makes the multigrid of "cg" with "multigrid".
 KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& options,
-                        const Matrix& near_null_space, Index lo, Index hi, bool reuse_interpolation,
+                        const Matrix& near_null_space, bool reuse_interpolation,
                         const MultigridBuilder& multigrid = {});
 
 /// Relative residual, iterations and convergence of the last KSPSolve with right-hand side rhs.

@@ -30,7 +30,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   const auto [first, last] = petsc::owned_rows(problem, comm_);
   lo_ = padding_.start(first);
   hi_ = padding_.start(last);
-  if (padding_.active()) modes_ = padding_.columns(problem.near_null_space);
+  if (padding_.active()) modes_ = padding_.rows(problem.near_null_space, first, last);
 
   // A in AIJ for GAMG's set-up, and in node blocks for the products (petsc_algebra.hpp,
   // block_rows). (The padded copy of A is freed before GAMG's set-up.)
@@ -59,8 +59,9 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
 
   check(MatCreateVecs(A_, &x_, &b_), "vectors");
   for (Vec* v : {&x_new_, &residual_, &d_, &Ad_, &work_}) check(VecDuplicate(x_, v), "vectors");
-  petsc::set_local(b_, padding_.vector(problem.b), lo_, hi_);
-  petsc::set_local(x_, padding_.vector(x0), lo_, hi_);
+  // (b holds this rank's rows only, x0 every unknown: ContactProblem.)
+  petsc::set_owned(b_, padding_.rows(problem.b, first, last));
+  petsc::set_owned(x_, padding_.rows(Vector(x0.segment(first, last - first)), first, last));
   check(MatMult(A_, x_, residual_), "A x");  // A x - b at x0
   check(VecAXPY(residual_, -1.0, b_), "A x - b");
 
@@ -101,9 +102,8 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
   if (keeps_levels)
     keep_levels = [&](PC pc) {
       std::string what = "GAMG's levels, kept for every active set";
-      if (modes().rows() > 0)
-        what += fmt::format(", {} rigid-body modes",
-                            petsc::attach_near_null_space(A_aij, modes(), lo_, hi_));
+      if (modes().cols() > 0)  // (on every rank alike, whatever its rows: collective)
+        what += fmt::format(", {} rigid-body modes", petsc::attach_near_null_space(A_aij, modes()));
       multigrid_ = std::make_unique<petsc::ContactMultigrid>(pc, A_aij, A_, rows_, comm_);
       std::string sizes;
       for (const PetscInt n : multigrid_->level_sizes())
@@ -111,7 +111,7 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
       return fmt::format("{}; levels of {} unknowns", what, sizes);
     };
   const petsc::KspChoice choice =
-      petsc::configure_ksp(ksp_, H_ != nullptr ? H_ : A_, o_, modes(), lo_, hi_, true, keep_levels);
+      petsc::configure_ksp(ksp_, H_ != nullptr ? H_ : A_, o_, modes(), true, keep_levels);
   direct_ = choice.direct;
   description_ = choice.description;
 }

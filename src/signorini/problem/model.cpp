@@ -323,6 +323,7 @@ Model build_model(const ProblemSpec& spec) {
     if (problem.row_starts.empty())
       problem.row_starts = row_partition(dofs.num_free(), engine.size(), problem.node_of_unknown,
                                          SparseMatrix(0, dofs.num_free()));
+    problem.rank = engine.rank();
   }
   {
     ScopedTimer t(timings, "assembly");
@@ -409,10 +410,12 @@ Model build_model(const ProblemSpec& spec) {
       Vector scales = Vector::Zero(dofs.num_dofs());
       for (const Index d : g.prescribed_dofs) scales(d) = 1.0;
       const Vector u_d = dofs.prescribed_values(scales);
-      g.b = free_part(g.loads.size() != 0 ? g.loads : Vector(Vector::Zero(dofs.num_dofs())), u_d);
+      g.b = problem.held_rows(
+          free_part(g.loads.size() != 0 ? g.loads : Vector(Vector::Zero(dofs.num_dofs())), u_d));
       if (g.loads.size() != 0) loads += g.loads;
     }
-    problem.b = free_part(loads, dofs.prescribed_values());
+    // (A distributed run keeps its own rows of b: ContactProblem.)
+    problem.b = problem.held_rows(free_part(loads, dofs.prescribed_values()));
   }
   std::vector<std::string> contact_boundaries;
   std::vector<Index> contact_starts{0};
@@ -449,7 +452,10 @@ Model build_model(const ProblemSpec& spec) {
                             linear.preconditioner == PreconditionerType::Multigrid;
   if (distributed) {
     // PETSc's algebraic multigrid builds its own levels, from the rigid-body modes.
-    if (multigrid_cg) problem.near_null_space = rigid_body_modes(mesh, dofs);
+    // (Each rank its own rows: 6 numbers per unknown in 3D.)
+    if (multigrid_cg)
+      problem.near_null_space =
+          rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row());
   } else if (multigrid_cg) {
     ScopedTimer t(timings, "multigrid hierarchy");
     // (The plan changes neither the coarsening nor the smoother, which the hierarchy reads from
