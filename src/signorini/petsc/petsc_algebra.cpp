@@ -236,7 +236,7 @@ KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,
                         const MultigridBuilder& multigrid) {
   KspChoice choice;
   std::string built;
-  check(KSPSetOperators(ksp, H, H), "KSP");
+  if (H != nullptr) check(KSPSetOperators(ksp, H, H), "KSP");
   PC pc = nullptr;
   check(KSPGetPC(ksp, &pc), "KSP");
   std::size_t modes = 0;

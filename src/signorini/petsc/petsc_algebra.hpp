@@ -66,11 +66,12 @@ using MultigridBuilder = std::function<std::string(PC pc)>;
 
 /// Sets `ksp` up for the operator H from the serial options: "cg" with "multigrid" -> CG with GAMG
 /// on the columns of `near_null_space` (this rank's rows, made orthonormal; none when it is
-/// empty), "cg"
-/// with "jacobi" -> CG with Jacobi, a direct solver -> MUMPS's Cholesky factorisation; CG measures
-/// the unpreconditioned residual and starts from the given x. Then solver.petsc_options.
-/// `reuse_interpolation`: GAMG keeps its prolongators when H's values change. `multigrid`, where
-/// given (the caller asks keeps_gamg_levels), makes the multigrid of "cg" with "multigrid".
+/// empty), "cg" with "jacobi" -> CG with Jacobi, a direct solver -> MUMPS's Cholesky
+/// factorisation; CG measures the unpreconditioned residual and starts from the given x. Then
+/// solver.petsc_options. `reuse_interpolation`: GAMG keeps its prolongators when H's values
+/// change. `multigrid`, where given (the caller asks keeps_gamg_levels), makes the multigrid of
+/// "cg" with "multigrid"; H may then be null, the caller giving the KSP its operator later (the
+/// multigrid's levels do not need it).
 KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& options,
                         const Matrix& near_null_space, bool reuse_interpolation,
                         const MultigridBuilder& multigrid = {});

@@ -61,7 +61,7 @@ double jacobi_lambda_max(Mat A) {
 
 }  // namespace
 
-ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<ContactRow>& rows,
+ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows,
                                    MPI_Comm comm)
     : pc_(pc), comm_(comm) {
   // GAMG once, on A; PETSc's options for GAMG (-pc_gamg_*) apply to it.
@@ -161,7 +161,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<
     }
     if (l > 0 || L == 1) make_smoother(k);
   }
-  fine_lambda_a_ = jacobi_lambda_max(A);
+  fine_lambda_a_ = jacobi_lambda_max(A_setup);
   sizes_.push_back(cols);
   for (std::size_t l = levels_.size(); l-- > 0;) {
     PetscInt n = 0;

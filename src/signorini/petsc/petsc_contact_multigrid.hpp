@@ -31,11 +31,11 @@ struct ContactRow {
 
 class ContactMultigrid {
  public:
-  /// Sets GAMG up on `A_setup` (an AIJ matrix, with its near-null space attached) and makes `pc`
-  /// a PCMG on GAMG's levels, whose finest operator is the one the KSP of `pc` is given.
-  /// `A` is the fine level's A (the same values as A_setup, in any format), `rows` this rank's
-  /// contact rows (of the fine level's unknowns).
-  ContactMultigrid(PC pc, Mat A_setup, Mat A, const std::vector<ContactRow>& rows, MPI_Comm comm);
+  /// Sets GAMG up on `A_setup` (the fine level's A as an AIJ matrix, with its near-null space
+  /// attached; only needed during the call) and makes `pc` a PCMG on GAMG's levels, whose finest
+  /// operator is the one the KSP of `pc` is given. `rows`: this rank's contact rows (of the fine
+  /// level's unknowns).
+  ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows, MPI_Comm comm);
   ~ContactMultigrid();
   ContactMultigrid(const ContactMultigrid&) = delete;
   ContactMultigrid& operator=(const ContactMultigrid&) = delete;
