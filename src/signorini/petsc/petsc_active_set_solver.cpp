@@ -63,6 +63,7 @@ PetscActiveSetSolver::~PetscActiveSetSolver() {
   for (Vec* v : {&br_, &y_, &rhs_, &fixed_values_, &reaction_}) VecDestroy(v);
   MatDestroy(&K_);
   MatDestroy(&Ar_);
+  petsc::give_back_freed_memory();  // before the results are written (docs/distributed.md)
 }
 
 LinearSolveStats PetscActiveSetSolver::solve(const ActiveSet& S, Vector& l, Vector& gap_residual) {

@@ -6,6 +6,9 @@
 #include <iterator>
 #include <string>
 #include <vector>
+#if defined(__GLIBC__)
+#include <malloc.h>  // malloc_trim
+#endif
 
 #include "signorini/core/error.hpp"
 #include "signorini/parallel/row_partition.hpp"
@@ -127,6 +130,12 @@ Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscIn
   check(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY), "a block matrix");
   mark_spd(M, "a block matrix");
   return M;
+}
+
+void give_back_freed_memory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
 }
 
 void set_local(Vec v, const Vector& whole, Index lo, Index hi) {

@@ -39,6 +39,13 @@ void mark_spd(Mat M, const char* what);
 /// ranks) to M as its near-null space, for GAMG; returns how many were kept.
 std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space);
 
+/// Returns the memory that the process has freed to the system (glibc keeps freed blocks in the
+/// process's heap, where later allocations fit only in part, and its resident size stays): after
+/// GAMG's set-up and when a Newton space is destroyed, so that neither the node-block matrices
+/// made next nor the results written after a solve raise the peak (docs/distributed.md, "Memory
+/// per rank"). Nothing elsewhere than glibc.
+void give_back_freed_memory();
+
 /// v's entries [lo, hi) (this rank's) from the whole vector `whole`.
 void set_local(Vec v, const Vector& whole, Index lo, Index hi);
 /// v's entries on this rank from `rows`, as many as the rank holds.

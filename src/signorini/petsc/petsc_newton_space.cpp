@@ -4,9 +4,6 @@
 
 #include <algorithm>
 #include <functional>
-#if defined(__GLIBC__)
-#include <malloc.h>  // malloc_trim
-#endif
 
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
@@ -79,12 +76,10 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   }
   set_up_solver(A_aij, keeps_levels);
   check(MatDestroy(&A_aij), "A");
-#if defined(__GLIBC__)
-  // glibc keeps what the AIJ copy and GAMG's set-up freed in the process's heap, where A's and
-  // H's node blocks, made next, fit only in part: without giving it back, the peak was 135 MB
-  // higher on one rank at 405,600 unknowns (docs/distributed.md, "Memory per rank").
-  malloc_trim(0);
-#endif
+  // What the AIJ copy and GAMG's set-up freed goes back to the system: A's and H's node blocks,
+  // made next, would fit in it only in part (135 MB higher a peak on one rank at 405,600
+  // unknowns without it; docs/distributed.md, "Memory per rank").
+  petsc::give_back_freed_memory();
   if (keeps_levels) {
     A_ = from_slots(&petsc::block_rows);
     make_newton_matrix();
@@ -100,6 +95,7 @@ PetscNewtonSpace::~PetscNewtonSpace() {
   for (Vec* v : {&b_, &x_, &x_new_, &residual_, &d_, &Ad_, &work_}) VecDestroy(v);
   MatDestroy(&H_);
   MatDestroy(&A_);
+  petsc::give_back_freed_memory();  // before the results are written (docs/distributed.md)
 }
 
 void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
