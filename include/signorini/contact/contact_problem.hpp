@@ -28,8 +28,6 @@ struct ContactProblem {
   int rank = 0;
 
   [[nodiscard]] bool partitioned() const { return !row_starts.empty(); }
-  /// The unknowns of the whole problem (A is n x n on every rank).
-  [[nodiscard]] Index unknowns() const { return A.rows(); }
   /// The first unknown whose row this process holds, and one past the last: [0, n) unless
   /// partitioned.
   [[nodiscard]] Index first_row() const {

@@ -43,7 +43,7 @@ std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space);
 /// process's heap, where later allocations fit only in part, and its resident size stays): after
 /// GAMG's set-up and when a Newton space is destroyed, so that neither the node-block matrices
 /// made next nor the results written after a solve raise the peak (docs/distributed.md, "Memory
-/// per rank"). Nothing elsewhere than glibc.
+/// per rank"). A no-op without glibc.
 void give_back_freed_memory();
 
 /// v's entries [lo, hi) (this rank's) from the whole vector `whole`.
