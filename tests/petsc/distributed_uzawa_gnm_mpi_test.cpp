@@ -11,6 +11,7 @@
 #include "../test_problems.hpp"
 #include "mpi_test_problems.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/problem/problem_spec.hpp"
 
 namespace signorini {
@@ -142,6 +143,23 @@ TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
       << distributed.summary.device;
   EXPECT_NE(distributed.summary.device.find("6 rigid-body modes"), std::string::npos);
   EXPECT_GT(cg_iterations(distributed), 0);
+}
+
+// A problem that every rank holds whole (a library caller's, not partitioned by build_model):
+// each rank takes its rows of A, b and the rigid-body modes from it, and the answers are the
+// serial ones, with GAMG and with MUMPS's semismooth Newton.
+TEST(DistributedUzawaGnm, AWholeProblemGivesTheSerialAnswersToo) {
+  Model whole = testing::serial_model(ball_with_multigrid(6));
+  ASSERT_FALSE(whole.problem.partitioned());
+  whole.problem.near_null_space = rigid_body_modes(whole.mesh, whole.dofs);
+  whole.problem.node_of_unknown = free_dof_nodes(whole.dofs);
+  expect_same_solve(testing::distributed_solve(whole, whole.solver),
+                    testing::serial_solve(whole, whole.solver));
+  ContactSolverOptions ssn = whole.solver;
+  ssn.method = ContactMethod::SemismoothNewton;
+  ssn.linear.type = LinearSolverType::Cholmod;
+  testing::expect_distributed_agrees(testing::distributed_solve(whole, ssn),
+                                     testing::serial_solve(whole, ssn));
 }
 
 // GAMG's levels kept, with the contact term N_l^T diag(c) N_l on each, precondition as well as

@@ -12,6 +12,18 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 run_mpi() { "$mpirun" --allow-run-as-root --oversubscribe -n 2 "$tool" "$@"; }
 
+# Runs the tool under mpirun expecting it to stop: exit status $2 and the grep pattern $3 in its
+# stderr ($tmp/stderr, kept for further checks); $1 names the case where it does not.
+expect_stop() {
+  local what=$1 expected=$2 pattern=$3 status=0
+  shift 3
+  run_mpi "$@" 2> "$tmp/stderr" || status=$?
+  [ "$status" -eq "$expected" ] ||
+    { echo "$what: exit status $status, expected $expected"; cat "$tmp/stderr"; exit 1; }
+  grep -q "$pattern" "$tmp/stderr" ||
+    { echo "$what: the message does not say '$pattern'"; cat "$tmp/stderr"; exit 1; }
+}
+
 compare() {  # serial folder, distributed folder
   /usr/bin/python3 - "$1" "$2" <<'PY'
 import csv, json, sys
@@ -114,13 +126,10 @@ PY
 
 # Bad input: one message from rank 0, status 2, the earlier results untouched.
 before=$(md5sum "$tmp/paper_mpi/summary.json")
-status=0
-run_mpi solve "$examples/paper.toml" -q -o "$tmp/paper_mpi" --set material.E=-1 \
-  2> "$tmp/stderr" || status=$?
-[ "$status" -eq 2 ] || { echo "bad input: exit status $status, expected 2"; cat "$tmp/stderr"; exit 1; }
+expect_stop "bad input" 2 "material.E" solve "$examples/paper.toml" -q -o "$tmp/paper_mpi" \
+  --set material.E=-1
 lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
 [ "$lines" -eq 1 ] || { echo "bad input: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }
-grep -q "material.E" "$tmp/stderr" || { echo "the message does not name the key"; cat "$tmp/stderr"; exit 1; }
 [ "$before" = "$(md5sum "$tmp/paper_mpi/summary.json")" ] || { echo "earlier results changed"; exit 1; }
 echo "ok: bad input under mpirun"
 
@@ -138,21 +147,16 @@ status=0
 echo "ok: a killed rank stops the run (status $status), earlier results kept"
 
 # An output folder that rank 0 cannot make: every rank stops before the solve, one message.
-status=0
-run_mpi solve "$examples/paper.toml" -q -o /proc/no-such-folder 2> "$tmp/stderr" || status=$?
-[ "$status" -eq 2 ] || { echo "unusable -o: exit status $status, expected 2"; cat "$tmp/stderr"; exit 1; }
+expect_stop "unusable -o" 2 "no-such-folder" solve "$examples/paper.toml" -q -o /proc/no-such-folder
 lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
 [ "$lines" -eq 1 ] || { echo "unusable -o: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }
 echo "ok: unusable output folder under mpirun"
 
 # A distributed factorisation that fails says MUMPS's reason: here its working memory capped at
 # 1 MB (ICNTL(23)), so INFOG(1) = -19; status 3, as for any solve that does not converge.
-status=0
-run_mpi solve "$examples/paper.toml" -q -o "$tmp/mumps_failed" \
-  --set 'solver.petsc_options="-mat_mumps_icntl_23 1"' 2> "$tmp/stderr" || status=$?
-[ "$status" -eq 3 ] || { echo "failed MUMPS: exit status $status, expected 3"; cat "$tmp/stderr"; exit 1; }
-grep -q "DIVERGED_PC_FAILED, MUMPS INFOG(1) = -19" "$tmp/stderr" ||
-  { echo "failed MUMPS: the message does not give INFOG(1)"; cat "$tmp/stderr"; exit 1; }
+expect_stop "failed MUMPS" 3 "DIVERGED_PC_FAILED, MUMPS INFOG(1) = -19" \
+  solve "$examples/paper.toml" -q -o "$tmp/mumps_failed" \
+  --set 'solver.petsc_options="-mat_mumps_icntl_23 1"'
 echo "ok: a failed MUMPS factorisation names INFOG(1)"
 
 # A work space estimated short (INFOG(1) = -9, forced here by a negative ICNTL(14), as MUMPS's
@@ -173,10 +177,8 @@ echo "ok: a short MUMPS work space raised and the factorisation done again"
 
 # Still short after three raises (ICNTL(14) = -1000 stays negative): status 3, and the message
 # says what was tried and which option gives more.
-status=0
-run_mpi solve "$examples/paper.toml" -q -o "$tmp/mumps_short" \
-  --set 'solver.petsc_options="-mat_mumps_icntl_14 -1000"' 2> "$tmp/stderr" || status=$?
-[ "$status" -eq 3 ] || { echo "MUMPS short three times: exit status $status, expected 3"; cat "$tmp/stderr"; exit 1; }
-grep -q "INFOG(1) = -9, INFOG(2) = [0-9]*: its work space was estimated short, also with ICNTL(14) raised three times" "$tmp/stderr" ||
-  { echo "MUMPS short three times: the message does not say so"; cat "$tmp/stderr"; exit 1; }
+expect_stop "MUMPS short three times" 3 \
+  "INFOG(1) = -9, INFOG(2) = [0-9]*: its work space was estimated short, also with ICNTL(14) raised three times" \
+  solve "$examples/paper.toml" -q -o "$tmp/mumps_short" \
+  --set 'solver.petsc_options="-mat_mumps_icntl_14 -1000"'
 echo "ok: a work space still short after three raises is reported"

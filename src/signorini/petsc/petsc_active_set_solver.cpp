@@ -33,14 +33,15 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
   petsc::mark_spd(K_, "the Newton matrix");
   check(MatCreateVecs(Ar_, &y_, &br_), "vectors");
   for (Vec* v : {&rhs_, &fixed_values_, &reaction_}) check(VecDuplicate(y_, v), "vectors");
-  // b and the near-null space hold this rank's rows only (ContactProblem), x0 every unknown.
+  // This rank's rows of b and of the near-null space (petsc::rank_rows), and of x0 (every
+  // unknown), rotated: the rotation mixes only one node's unknowns, which are on one rank.
   const auto rotated_rows = [&](const auto& rows) -> Vector {
     Vector whole = Vector::Zero(n_);
     whole.segment(lo_, hi_ - lo_) = rows;
     return rotation_.to_rotated(whole).segment(lo_, hi_ - lo_);
   };
-  petsc::set_owned(br_, rotated_rows(problem.b));
-  petsc::set_local(y_, rotation_.to_rotated(x0), lo_, hi_);
+  petsc::set_owned(br_, rotated_rows(petsc::rank_rows(problem, problem.b, lo_, hi_)));
+  petsc::set_owned(y_, rotated_rows(x0.segment(lo_, hi_ - lo_)));
   check(MatGetDiagonal(Ar_, reaction_), "the diagonal");
   PetscScalar sum = 0.0;
   check(VecSum(reaction_, &sum), "the diagonal");
@@ -48,9 +49,9 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
   // The rigid-body modes in the rotated unknowns, for GAMG.
   Matrix modes;
   if (problem.near_null_space.cols() > 0) {  // (on every rank alike: a collective choice)
-    modes.resize(hi_ - lo_, problem.near_null_space.cols());
-    for (Index k = 0; k < modes.cols(); ++k)
-      modes.col(k) = rotated_rows(problem.near_null_space.col(k));
+    const Matrix rows = petsc::rank_rows(problem, problem.near_null_space, lo_, hi_);
+    modes.resize(hi_ - lo_, rows.cols());
+    for (Index k = 0; k < modes.cols(); ++k) modes.col(k) = rotated_rows(rows.col(k));
   }
   check(KSPCreate(comm_, &ksp_), "KSP");
   const petsc::KspChoice choice = petsc::configure_ksp(ksp_, K_, o_, modes, false);

@@ -138,11 +138,12 @@ void give_back_freed_memory() {
 #endif
 }
 
-void set_local(Vec v, const Vector& whole, Index lo, Index hi) {
-  PetscScalar* a = nullptr;
-  check(VecGetArray(v, &a), "a distributed vector");
-  for (Index i = lo; i < hi; ++i) a[i - lo] = whole(i);
-  check(VecRestoreArray(v, &a), "a distributed vector");
+Vector rank_rows(const ContactProblem& problem, const Vector& v, Index first, Index last) {
+  return problem.partitioned() ? v : Vector(v.segment(first, last - first));
+}
+
+Matrix rank_rows(const ContactProblem& problem, const Matrix& m, Index first, Index last) {
+  return problem.partitioned() || m.size() == 0 ? m : Matrix(m.middleRows(first, last - first));
 }
 
 void set_owned(Vec v, const Vector& rows) {

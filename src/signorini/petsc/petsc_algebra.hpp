@@ -46,8 +46,14 @@ std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space);
 /// per rank"). A no-op without glibc.
 void give_back_freed_memory();
 
-/// v's entries [lo, hi) (this rank's) from the whole vector `whole`.
-void set_local(Vec v, const Vector& whole, Index lo, Index hi);
+/// The rows [first, last) of this rank of `v`, a vector (or the columns of a matrix) of the
+/// problem's rows, such as b or the near-null space: v itself for a partitioned problem, which
+/// holds only these (ContactProblem), else those rows of the whole.
+[[nodiscard]] Vector rank_rows(const ContactProblem& problem, const Vector& v, Index first,
+                               Index last);
+[[nodiscard]] Matrix rank_rows(const ContactProblem& problem, const Matrix& m, Index first,
+                               Index last);
+
 /// v's entries on this rank from `rows`, as many as the rank holds.
 void set_owned(Vec v, const Vector& rows);
 

@@ -30,7 +30,9 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   const auto [first, last] = petsc::owned_rows(problem, comm_);
   lo_ = padding_.start(first);
   hi_ = padding_.start(last);
-  if (padding_.active()) modes_ = padding_.rows(problem.near_null_space, first, last);
+  if (padding_.active() || !problem.partitioned())
+    modes_ =
+        padding_.rows(petsc::rank_rows(problem, problem.near_null_space, first, last), first, last);
 
   // A in AIJ for GAMG's set-up, and in node blocks for the products (petsc_algebra.hpp,
   // block_rows), each from A on the slots (a padded copy of A, only where a node has padding
@@ -57,8 +59,9 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
 
   check(MatCreateVecs(A_aij, &x_, &b_), "vectors");
   for (Vec* v : {&x_new_, &residual_, &d_, &Ad_, &work_}) check(VecDuplicate(x_, v), "vectors");
-  // (b holds this rank's rows only, x0 every unknown: ContactProblem.)
-  petsc::set_owned(b_, padding_.rows(problem.b, first, last));
+  // (x0 has every unknown.)
+  petsc::set_owned(b_,
+                   padding_.rows(petsc::rank_rows(problem, problem.b, first, last), first, last));
   petsc::set_owned(x_, padding_.rows(Vector(x0.segment(first, last - first)), first, last));
   check(MatMult(A_aij, x_, residual_), "A x");  // A x - b at x0
   check(VecAXPY(residual_, -1.0, b_), "A x - b");

@@ -61,9 +61,10 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   void form_newton_matrix(const std::function<double(Index, Index)>& weight, bool coupled_rows);
   void set_up_solver(Mat A_aij, bool keeps_levels);
 
-  // The rigid-body modes on the slots.
+  // The rigid-body modes of this rank's slots (a partitioned problem's own rows, unpadded, need
+  // no copy).
   [[nodiscard]] const Matrix& modes() const {
-    return padding_.active() ? modes_ : p_.near_null_space;
+    return padding_.active() || !p_.partitioned() ? modes_ : p_.near_null_space;
   }
 
   const ContactProblem& p_;
@@ -71,7 +72,7 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   TimingTable& timings_;
   MPI_Comm comm_;
   petsc::NodePadding padding_;
-  Matrix modes_;                            // p_.near_null_space on the slots, where padded
+  Matrix modes_;                            // this rank's rows of the modes on its slots (modes())
   Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;  // nc_: the rows of N (d per node with friction)
   Index components_ = 1;                    // rows of N per contact node
   std::vector<petsc::ContactRow> rows_;     // the contact rows whose dofs this rank owns
