@@ -133,9 +133,10 @@ int solve(const SolveArguments& args, LogFormat format) {
       });
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
-  // Once, for the report, the log and summary.json.
-  const Resultants resultants = compute_resultants(model, result);
-  {
+  // Once, for the report, the log and summary.json: on rank 0, which holds the whole model (the
+  // others hold their parts of the mesh: docs/distributed.md).
+  const Resultants resultants = root ? compute_resultants(model, result) : Resultants{};
+  if (root) {
     nlohmann::json event = summary_to_json(result, model, spec, resultants);
     event.erase("problem");  // the settings event has it
     event["event"] = "summary";

@@ -40,7 +40,7 @@ TEST(DistributedSemismoothNewton, PaperProblemWithMumpsTakesTheSerialSteps) {
   gnm.uzawa_tolerance = 1e-12;
   const ContactResult uzawa = testing::distributed_solve(model, gnm);
   ASSERT_TRUE(uzawa.summary.converged()) << uzawa.summary.message;
-  EXPECT_LT(relative_difference(uzawa.u, distributed.u), 1e-8);
+  EXPECT_LT(testing::relative_difference_where_known(uzawa.u, distributed.u), 1e-8);
 }
 
 TEST(DistributedSemismoothNewton, BallOnBlockWithGamgTakesTheSerialSteps) {

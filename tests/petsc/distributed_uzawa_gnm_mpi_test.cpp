@@ -30,8 +30,23 @@ void expect_same_solve(const ContactResult& distributed, const ContactResult& se
 
 // The partitioned model: each rank holds the columns of its own unknowns only, and they add up
 // to the serial A.
+void expect_own_columns(const ProblemSpec& spec);
+
 TEST(DistributedModel, EachRankAssemblesItsOwnColumns) {
-  const ProblemSpec spec = paper_benchmark(30, 10);
+  expect_own_columns(paper_benchmark(30, 10));
+}
+
+// A Gmsh mesh, numbered in Z-order and then rank by rank, with rollers: a rank's part of the
+// mesh keeps its nodes in the whole mesh's order, not the numbering's, and the columns' rows
+// must still come in order.
+TEST(DistributedModel, EachRankAssemblesItsOwnColumnsOfAGmshMeshOnRollers) {
+  ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
+  spec.solver.automatic_path = false;
+  spec.solver.linear.type = LinearSolverType::Cholmod;
+  expect_own_columns(spec);
+}
+
+void expect_own_columns(const ProblemSpec& spec) {
   const Model part = testing::distributed_model(spec);
   const Model whole = testing::serial_model(spec);
   ASSERT_TRUE(part.problem.partitioned());
@@ -40,14 +55,35 @@ TEST(DistributedModel, EachRankAssemblesItsOwnColumns) {
   const Index lo = part.problem.row_starts[static_cast<std::size_t>(engine.rank())];
   const Index hi = part.problem.row_starts[static_cast<std::size_t>(engine.rank()) + 1];
   // The two models number the unknowns differently (the distributed one rank by rank, after
-  // the partition): whole_of[i] is the serial number of the distributed model's unknown i.
+  // the partition): whole_of[i] is the serial number of the distributed model's unknown i. A
+  // rank other than 0 holds its part of the mesh only (Model::is_part): the whole mesh's node
+  // of each unknown (ContactProblem::node_of_unknown), and its free components in order, give
+  // the rest.
   const SparseMatrix& A = part.problem.A;
+  EXPECT_EQ(part.is_part(), engine.size() > 1 && engine.rank() != 0);
   std::vector<Index> whole_of(static_cast<std::size_t>(A.rows()), -1);
-  for (Index node = 0; node < part.dofs.num_nodes(); ++node)
+  for (Index i = 0, offset = 0; i < A.rows(); ++i) {
+    const Index node = part.problem.node_of_unknown[static_cast<std::size_t>(i)];
+    offset = i > 0 && part.problem.node_of_unknown[static_cast<std::size_t>(i) - 1] == node
+                 ? offset + 1
+                 : 0;
+    for (int k = 0, seen = 0; k < whole.dofs.dim(); ++k)
+      if (whole.dofs.free_index(node, k) >= 0 && seen++ == offset)
+        whole_of[static_cast<std::size_t>(i)] = whole.dofs.free_index(node, k);
+    ASSERT_GE(whole_of[static_cast<std::size_t>(i)], 0) << "unknown " << i;
+  }
+  // (And the part's own numbering agrees with it at the part's nodes.)
+  for (Index v = 0; v < part.dofs.num_nodes(); ++v) {
+    const Index node = part.is_part() ? part.global_nodes[static_cast<std::size_t>(v)] : v;
     for (int k = 0; k < part.dofs.dim(); ++k)
-      if (part.dofs.free_index(node, k) >= 0)
-        whole_of[static_cast<std::size_t>(part.dofs.free_index(node, k))] =
-            whole.dofs.free_index(node, k);
+      if (const Index f = part.dofs.free_index(v, k); f >= 0) {
+        EXPECT_EQ(whole_of[static_cast<std::size_t>(f)], whole.dofs.free_index(node, k));
+      }
+  }
+  // Each column's rows in increasing order (what products and coeff() take for granted).
+  for (Index col = 0; col < A.outerSize(); ++col)
+    for (Index k = A.outerIndexPtr()[col] + 1; k < A.outerIndexPtr()[col + 1]; ++k)
+      ASSERT_LT(A.innerIndexPtr()[k - 1], A.innerIndexPtr()[k]) << "column " << col;
   const auto w = [&](Index i) { return whole_of[static_cast<std::size_t>(i)]; };
   const double scale = whole.problem.A.norm();  // (sums in another order: rounding differs)
   for (Index col = 0; col < A.cols(); ++col) {

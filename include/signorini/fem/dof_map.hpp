@@ -10,6 +10,7 @@
 // ([[displacement]] normal). Full vectors (expand, restrict_to_free, prescribed_values) are always
 // Cartesian; the free dofs, value() and is_clamped() are in the node's frame.
 
+#include <utility>
 #include <vector>
 
 #include "signorini/core/types.hpp"
@@ -19,6 +20,16 @@ namespace signorini {
 class DofMap {
  public:
   DofMap(Index num_nodes, int dim);
+  /// A numbering given whole, finalized: per dof (node * dim + component) its free number or -1,
+  /// `num_free` free dofs in all (more than `free` numbers where the nodes are part of a larger
+  /// mesh: parallel/model_part.hpp); per dof the prescribed value (`values`, empty: all 0); the
+  /// nodes with local axes and their axes (`frames`).
+  DofMap(int dim, std::vector<Index> free, Index num_free, Vector values = {},
+         const std::vector<std::pair<Index, Eigen::Matrix2d>>& frames = {});
+
+  /// The numbering of `nodes` (increasing) alone, with their free numbers, prescribed values and
+  /// axes: node i of the result is nodes[i]. num_free() stays that of the whole.
+  [[nodiscard]] DofMap part(const std::vector<Index>& nodes) const;
 
   /// Gives a node local axes: the columns of Q (orthonormal), its components from now on those
   /// along them. Call before clamping the node's components, and before finalize().
@@ -43,8 +54,9 @@ class DofMap {
   /// fem/node_ordering.hpp). Further clamp() calls are errors.
   void finalize(const std::vector<Index>& node_order = {});
 
-  /// The node's place in the numbering of the free dofs (the node itself without a node order):
-  /// a node's free dofs come after those of every node of lower place.
+  /// The node's place in the numbering of the free dofs (the node itself without a node order;
+  /// in a given numbering its first free number): a node's free dofs come after those of every
+  /// node of lower place.
   [[nodiscard]] Index node_place(Index node) const {
     return place_.empty() ? node : place_[static_cast<std::size_t>(node)];
   }

@@ -73,6 +73,24 @@ struct Model {
   std::shared_ptr<const FrictionLaw> friction;
   /// The entries with load factors of their own (empty without).
   std::vector<LoadGroup> load_groups;
+  /// What prescribed displacements take off the contact gaps (contact_gaps): per contact row j
+  /// and component k of its node, nu_j . (the component's axis) times the prescribed value;
+  /// dim x contact size, empty when nothing is prescribed. The load group of each (column-major
+  /// like the matrix; -1: the history's factor).
+  Eigen::MatrixXd contact_gap_shift;
+  std::vector<int> contact_gap_shift_group;
+  /// On a rank of a distributed run other than rank 0 (docs/distributed.md, "The mesh in
+  /// parts"), `mesh` and `dofs` are the rank's part: node i of `mesh` is node global_nodes[i]
+  /// of the whole mesh (increasing). `loads`, `clamped_parts` and `point_loads` are then empty,
+  /// the load groups hold their factors, b's rows and the part's prescribed dofs, and
+  /// problem.contact (whole on every rank) names the whole mesh's nodes. Empty: the mesh is
+  /// whole.
+  std::vector<Index> global_nodes;
+
+  /// Whether `mesh` is a part of the whole (a rank's, global_nodes).
+  [[nodiscard]] bool is_part() const { return !global_nodes.empty(); }
+  /// The node of `mesh` that is node `node` of the whole mesh; -1 where the part lacks it.
+  [[nodiscard]] Index local_node(Index node) const;
 
   /// The name of the contact boundary of contact-set row j.
   [[nodiscard]] const std::string& contact_boundary_of(Index j) const;

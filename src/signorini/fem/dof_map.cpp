@@ -1,11 +1,51 @@
 #include "signorini/fem/dof_map.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace signorini {
 
 DofMap::DofMap(Index num_nodes, int dim)
     : num_nodes_(num_nodes), dim_(dim), free_(static_cast<std::size_t>(num_nodes * dim), 0) {}
+
+DofMap::DofMap(int dim, std::vector<Index> free, Index num_free, Vector values,
+               const std::vector<std::pair<Index, Eigen::Matrix2d>>& frames)
+    : num_nodes_(static_cast<Index>(free.size()) / dim),
+      dim_(dim),
+      free_(std::move(free)),
+      values_(std::move(values)) {
+  if (static_cast<Index>(free_.size()) != num_nodes_ * dim_ ||
+      (values_.size() != 0 && values_.size() != num_dofs()))
+    throw std::logic_error("DofMap: a given numbering of the wrong size");
+  for (const auto& [node, Q] : frames) set_frame(node, Q);
+  num_free_ = num_free;
+  // The nodes' places in the numbering (node_place): by their first free number, the nodes
+  // without one after all the others.
+  place_.resize(static_cast<std::size_t>(num_nodes_));
+  for (Index node = 0; node < num_nodes_; ++node) {
+    Index place = num_free + node;
+    for (int k = 0; k < dim_; ++k)
+      if (const Index f = free_index(node, k); f >= 0) place = std::min(place, f);
+    place_[static_cast<std::size_t>(node)] = place;
+  }
+  finalized_ = true;
+}
+
+DofMap DofMap::part(const std::vector<Index>& nodes) const {
+  std::vector<Index> free;
+  free.reserve(nodes.size() * static_cast<std::size_t>(dim_));
+  Vector values = values_.size() == 0 ? Vector() : Vector(static_cast<Index>(nodes.size()) * dim_);
+  std::vector<std::pair<Index, Eigen::Matrix2d>> frames;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    for (int k = 0; k < dim_; ++k) {
+      free.push_back(free_index(nodes[i], k));
+      if (values.size() != 0) values(static_cast<Index>(i) * dim_ + k) = value(nodes[i], k);
+    }
+    if (has_frame(nodes[i])) frames.emplace_back(static_cast<Index>(i), frame(nodes[i]));
+  }
+  return DofMap(dim_, std::move(free), num_free_, std::move(values), frames);
+}
 
 void DofMap::set_frame(Index node, const Eigen::Matrix2d& Q) {
   if (dim_ != 2) throw std::logic_error("DofMap::set_frame: local axes are 2D only so far");

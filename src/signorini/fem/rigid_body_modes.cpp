@@ -6,7 +6,8 @@
 
 namespace signorini {
 
-Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs, Index first, Index end) {
+Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs, Index first, Index end,
+                        const Eigen::VectorXd* centre_given) {
   if (mesh.dim() != dofs.dim() || mesh.num_nodes() != dofs.num_nodes())
     throw NumericalError("rigid_body_modes: the dof map does not match the mesh");
   const int dim = dofs.dim();
@@ -18,7 +19,9 @@ Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs, Index first, Index
     throw NumericalError(fmt::format("rigid_body_modes: rows [{}, {}) of {} free dofs", first, end,
                                      dofs.num_free()));
   // The rotations about the centroid keep their columns as well scaled as the translations'.
-  const Eigen::VectorXd centre = mesh.coordinates().rowwise().mean();
+  const Eigen::VectorXd centre = centre_given != nullptr
+                                     ? *centre_given
+                                     : Eigen::VectorXd(mesh.coordinates().rowwise().mean());
   Matrix B = Matrix::Zero(end - first, count);
   Eigen::Matrix<double, 3, 6> modes;
   for (Index node = 0; node < dofs.num_nodes(); ++node) {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "signorini/core/error.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/io/atomic_file.hpp"
@@ -51,26 +53,25 @@ namespace {
 
 // The cells whose piece of solution.pvtu rank `rank` of `ranks` writes: those whose first node
 // with a free dof lies in the rank's range of the distributed solve (parallel/row_partition.hpp);
-// a cell with no free dof goes to rank 0.
+// a cell with no free dof goes to rank 0. On a rank's part of the mesh (Model::is_part) the
+// cells of the part that the rank writes.
 std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
-  const ContactProblem& p = model.problem;
-  const Index n = p.A.rows();
-  const std::vector<Index> starts = partition_of(p, ranks);
-  const std::vector<Index> node_of =
-      p.node_of_unknown.empty() ? free_dof_nodes(model.dofs) : p.node_of_unknown;
-  std::vector<int> owner(static_cast<std::size_t>(model.mesh.num_nodes()), -1);
-  int r = 0;
-  for (Index i = 0; i < n; ++i) {
-    while (i >= starts[static_cast<std::size_t>(r) + 1]) ++r;
-    const auto node = static_cast<std::size_t>(node_of[static_cast<std::size_t>(i)]);
-    if (owner[node] < 0) owner[node] = r;
-  }
+  const std::vector<Index> starts = partition_of(model.problem, ranks);
+  const DofMap& dofs = model.dofs;
+  const auto rank_of = [&](Index node) {
+    for (int k = 0; k < dofs.dim(); ++k)
+      if (const Index f = dofs.free_index(node, k); f >= 0)
+        return static_cast<int>(std::upper_bound(starts.begin(), starts.end(), f) -
+                                starts.begin()) -
+               1;
+    return -1;
+  };
   std::vector<Index> cells;
   for (Index c = 0; c < model.mesh.num_cells(); ++c) {
     int cell_owner = 0;
     for (const Index k : model.mesh.cell(c))
-      if (owner[static_cast<std::size_t>(k)] >= 0) {
-        cell_owner = owner[static_cast<std::size_t>(k)];
+      if (const int r = rank_of(k); r >= 0) {
+        cell_owner = r;
         break;
       }
     if (cell_owner == rank) cells.push_back(c);
@@ -79,9 +80,10 @@ std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
 }
 
 // A distributed run (docs/distributed.md): rank 0 writes summary.json, contact.csv, contact.vtu,
-// solution.vtu (whole, while every rank holds the whole model) and solution.pvtu; every rank
-// writes its piece solution_<rank>.vtu. Every rank stages its files first and the renames
-// follow only when all have, so that a failure on any rank leaves the earlier results whole.
+// solution.vtu (whole, from the whole mesh that rank 0 holds) and solution.pvtu; every rank
+// writes its piece solution_<rank>.vtu (the others from their parts of the mesh). Every rank stages
+// its files first and the renames follow only when all have, so that a failure on any rank leaves
+// the earlier results whole.
 void write_distributed(const std::filesystem::path& outdir, const ContactResult& result,
                        const Model& model, const ProblemSpec& spec, const Resultants& resultants,
                        const DistributedEngine& engine) {

@@ -36,7 +36,10 @@ NodalFields nodal_fields(const ContactResult& result, const Model& model) {
   f.on_boundary.assign(static_cast<std::size_t>(n), 0);
   const ContactSet& c = model.problem.contact;
   for (Index j = 0; j < c.size(); ++j) {
-    const auto node = static_cast<std::size_t>(c.nodes[static_cast<std::size_t>(j)]);
+    // (The contact set names the whole mesh's nodes; a rank's part has some of them.)
+    const Index local = model.local_node(c.nodes[static_cast<std::size_t>(j)]);
+    if (local < 0) continue;
+    const auto node = static_cast<std::size_t>(local);
     f.pressure[node] = result.l(j);
     f.gap[node] = c.gaps(j);
     f.active[node] = flag(result.l(j) > 0.0);  // as SolveSummary::num_active counts them

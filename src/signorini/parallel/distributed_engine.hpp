@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "signorini/contact/active_set_solver.hpp"
 #include "signorini/contact/contact_problem.hpp"
@@ -62,6 +63,12 @@ class DistributedEngine {
   virtual void sum(double* values, Index count) const = 0;
   /// True on every rank when `flag` is true on any (a collective call).
   [[nodiscard]] virtual bool any(bool flag) const = 0;
+  /// Rank 0's `bytes` on every rank (a collective call; the others' are replaced).
+  virtual void broadcast(std::vector<char>& bytes) const = 0;
+  /// From rank 0 to rank `to` (> 0), which takes them with receive_from_root(): what rank 0
+  /// alone holds, sent to each rank in turn (its part of the model, parallel/model_part.hpp).
+  virtual void send_from_root(int to, const std::vector<char>& bytes) const = 0;
+  [[nodiscard]] virtual std::vector<char> receive_from_root() const = 0;
   /// Ends every rank's process with this exit status (a collective abort: a rank that fails
   /// alone stops the others).
   [[noreturn]] virtual void abort(int status) const = 0;

@@ -4,6 +4,8 @@
 #include <petscmat.h>
 #include <petscsys.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 
 #include "signorini/core/error.hpp"
@@ -126,6 +128,42 @@ bool PetscEngine::any(bool flag) const {
   int local = flag ? 1 : 0, global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LOR, PETSC_COMM_WORLD);
   return global != 0;
+}
+
+namespace {
+
+// MPI counts are ints: a message longer than 2 GiB goes in pieces of at most 1 GiB.
+constexpr std::size_t kPiece = std::size_t{1} << 30;
+
+int piece_size(std::size_t total, std::size_t at) {
+  return static_cast<int>(std::min(kPiece, total - at));
+}
+
+}  // namespace
+
+void PetscEngine::broadcast(std::vector<char>& bytes) const {
+  auto size = static_cast<std::uint64_t>(bytes.size());
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, PETSC_COMM_WORLD);
+  bytes.resize(static_cast<std::size_t>(size));
+  for (std::size_t at = 0; at < bytes.size(); at += kPiece)
+    MPI_Bcast(bytes.data() + at, piece_size(bytes.size(), at), MPI_CHAR, 0, PETSC_COMM_WORLD);
+}
+
+void PetscEngine::send_from_root(int to, const std::vector<char>& bytes) const {
+  auto size = static_cast<std::uint64_t>(bytes.size());
+  MPI_Send(&size, 1, MPI_UINT64_T, to, 0, PETSC_COMM_WORLD);
+  for (std::size_t at = 0; at < bytes.size(); at += kPiece)
+    MPI_Send(bytes.data() + at, piece_size(bytes.size(), at), MPI_CHAR, to, 0, PETSC_COMM_WORLD);
+}
+
+std::vector<char> PetscEngine::receive_from_root() const {
+  std::uint64_t size = 0;
+  MPI_Recv(&size, 1, MPI_UINT64_T, 0, 0, PETSC_COMM_WORLD, MPI_STATUS_IGNORE);
+  std::vector<char> bytes(static_cast<std::size_t>(size));
+  for (std::size_t at = 0; at < bytes.size(); at += kPiece)
+    MPI_Recv(bytes.data() + at, piece_size(bytes.size(), at), MPI_CHAR, 0, 0, PETSC_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+  return bytes;
 }
 
 void PetscEngine::abort(int status) const {

@@ -36,6 +36,9 @@ class PetscEngine final : public DistributedEngine {
                                            const ContactSolverOptions& options) override;
   void sum(double* values, Index count) const override;
   [[nodiscard]] bool any(bool flag) const override;
+  void broadcast(std::vector<char>& bytes) const override;
+  void send_from_root(int to, const std::vector<char>& bytes) const override;
+  [[nodiscard]] std::vector<char> receive_from_root() const override;
   [[noreturn]] void abort(int status) const override;
 
  private:

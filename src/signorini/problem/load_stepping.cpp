@@ -31,7 +31,7 @@ ContactResult solve_load_steps(const Model& model, const ContactSolverOptions& o
     // b is linear in the loads and u_D together (b = f - K u_D on the free dofs); the gaps move
     // with u_D's normal component (Model::contact_gaps).
     solver.set_loads(model.free_loads(t, step));
-    if (model.dofs.has_prescribed_values()) solver.set_gaps(model.contact_gaps(t, step));
+    if (model.contact_gap_shift.size() != 0) solver.set_gaps(model.contact_gaps(t, step));
     if (k > 0) {
       solver.warm_start(previous);
       solver.set_slip_origin(previous.u);  // each step's slip is its increment

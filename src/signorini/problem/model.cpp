@@ -19,6 +19,7 @@
 #include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/parallel/node_partition.hpp"
 #include "signorini/parallel/row_partition.hpp"
+#include "signorini/problem/distributed_model.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
 #include "signorini/problem/solver_plan.hpp"
 
@@ -248,6 +249,32 @@ std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const 
 
 }  // namespace
 
+ElasticityOptions region_elasticity(const ProblemSpec& spec,
+                                    const std::vector<std::string>& names) {
+  // Materials per region, by the regions' names.
+  ElasticityOptions elasticity = spec.elasticity;
+  for (const RegionMaterialSpec& m : spec.region_materials) {
+    const auto it = std::find(names.begin(), names.end(), m.region);
+    if (m.region.empty() || it == names.end()) {
+      std::string known;
+      for (const std::string& n : names)
+        if (!n.empty()) known += (known.empty() ? "" : ", ") + n;
+      throw InputError("region.name = '" + m.region + "': the mesh has no such region (it has: " +
+                       (known.empty() ? std::string("none") : known) + ")");
+    }
+    const auto r = static_cast<std::size_t>(it - names.begin());
+    if (elasticity.region_materials.size() <= r) elasticity.region_materials.resize(r + 1);
+    elasticity.region_materials[r] = m.material;
+  }
+  return elasticity;
+}
+
+namespace {
+
+Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts);
+
+}  // namespace
+
 Model build_model(const ProblemSpec& spec) {
   validate(spec.elasticity.material);
   validate(spec.solver);
@@ -257,6 +284,57 @@ Model build_model(const ProblemSpec& spec) {
         "[[displacement]] section)");
   if (spec.contacts.empty()) throw InputError("no contact boundary (add a [contact] section)");
   require_loads_off_contact(spec);
+  // The distributed path (docs/distributed.md) is the options' choice alone: the size-based plan
+  // never changes it. On more than one rank, rank 0 alone reads the mesh and sends each other
+  // rank its part (problem/distributed_model.hpp).
+  if (distributed_path(spec.solver)) {
+    DistributedEngine& engine = required_distributed_engine();
+    if (engine.size() > 1) {
+      if (engine.rank() != 0) return receive_model_part(spec, engine);
+      RootAnnouncements parts(engine);
+      try {
+        return build_whole_model(spec, &parts);
+      } catch (const std::exception& e) {
+        parts.failed(e.what());
+        throw;
+      }
+    }
+  }
+  return build_whole_model(spec, nullptr);
+}
+
+namespace {
+
+// Model::contact_gap_shift and its groups, from the whole mesh's numbering.
+std::pair<Eigen::MatrixXd, std::vector<int>> contact_gap_shift(
+    const ContactSet& c, const DofMap& dofs, const std::vector<LoadGroup>& groups) {
+  if (!dofs.has_prescribed_values()) return {};
+  const int dim = dofs.dim();
+  std::vector<int> group_of_dof;  // the last entry that holds a dof wins (prescribed_scales)
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (const Index d : groups[g].prescribed_dofs) {
+      if (group_of_dof.empty()) group_of_dof.assign(static_cast<std::size_t>(dofs.num_dofs()), -1);
+      group_of_dof[static_cast<std::size_t>(d)] = static_cast<int>(g);
+    }
+  Eigen::MatrixXd shift(dim, c.size());
+  std::vector<int> group(static_cast<std::size_t>(dim * c.size()), -1);
+  for (Index j = 0; j < c.size(); ++j) {
+    const Index node = c.nodes[static_cast<std::size_t>(j)];
+    for (int k = 0; k < dim; ++k) {
+      Eigen::VectorXd axis = Eigen::VectorXd::Unit(dim, k);
+      if (dofs.has_frame(node)) axis = dofs.frame(node).col(k);
+      shift(k, j) = c.normals.col(j).dot(axis) * dofs.value(node, k);
+      if (!group_of_dof.empty())
+        group[static_cast<std::size_t>(j * dim + k)] =
+            group_of_dof[static_cast<std::size_t>(node * dim + k)];
+    }
+  }
+  return {std::move(shift), std::move(group)};
+}
+
+// The model of a serial run, or rank 0's of a distributed one (`parts`: then whole but for the
+// stiffness, and the others' parts sent).
+Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
   TimingTable timings;
   ScopedTimer mesh_timer(timings, "mesh");
   if (spec.mesh_type == MeshType::Given && !spec.given_mesh)
@@ -273,22 +351,7 @@ Model build_model(const ProblemSpec& spec) {
         "{} gives {} ({}D problems only), but the mesh{} is {}D: expected {}", d.key, d.given,
         d.dimension, spec.mesh_type == MeshType::Gmsh ? " '" + spec.mesh_file + "'" : "",
         mesh.dim(), d.instead));
-  // Materials per region, by the regions' names.
-  ElasticityOptions elasticity = spec.elasticity;
-  for (const RegionMaterialSpec& m : spec.region_materials) {
-    const auto& names = mesh.region_names();
-    const auto it = std::find(names.begin(), names.end(), m.region);
-    if (m.region.empty() || it == names.end()) {
-      std::string known;
-      for (const std::string& n : names)
-        if (!n.empty()) known += (known.empty() ? "" : ", ") + n;
-      throw InputError("region.name = '" + m.region + "': the mesh has no such region (it has: " +
-                       (known.empty() ? std::string("none") : known) + ")");
-    }
-    const auto r = static_cast<std::size_t>(it - names.begin());
-    if (elasticity.region_materials.size() <= r) elasticity.region_materials.resize(r + 1);
-    elasticity.region_materials[r] = m.material;
-  }
+  const ElasticityOptions elasticity = region_elasticity(spec, mesh.region_names());
   std::vector<int> owner;
   // A mesh from a file (or a program) comes in its generator's order; its unknowns are numbered
   // along the Z-order curve instead, so that each product with the stiffness finds a row's
@@ -299,21 +362,26 @@ Model build_model(const ProblemSpec& spec) {
   mesh_timer.stop();
   if (dofs.num_free() == 0) throw InputError("every dof is clamped: nothing to solve");
   require_no_free_rigid_motion(mesh, dofs);
+  if (parts != nullptr) parts->ok();
 
-  // The distributed path (docs/distributed.md) is the options' choice alone: the size-based plan
-  // below never changes it.
   const bool distributed = distributed_path(spec.solver);
   ContactProblem problem;
   if (distributed) {
     DistributedEngine& engine = required_distributed_engine();
     // The nodes partitioned by the engine's graph partitioner (parallel/node_partition.hpp),
     // and the unknowns numbered again rank by rank; the even split of the numbering where the
-    // partitioner leaves a rank without unknowns (or on one rank).
+    // partitioner leaves a rank without unknowns (or on one rank). Rank 0 makes the whole graph
+    // and sends the others their rows.
     if (engine.size() > 1) {
       ScopedTimer t(timings, "partition");
-      const NodeGraph graph = node_graph(mesh, dofs, engine.rank(), engine.size());
-      const NodePartition p =
-          partition_order(graph, dofs, engine.partition(graph, spec.solver), engine.size());
+      NodePartition p;
+      {
+        const NodeGraph graph = node_graph(mesh, dofs, 0, 1);
+        const std::vector<int> rank_of =
+            engine.partition(send_node_graph_rows(graph, engine), spec.solver);
+        p = partition_order(graph, dofs, rank_of, engine.size());
+      }
+      parts->owe();
       if (!p.row_starts.empty()) {
         dofs = number_dofs(mesh, spec.clamps, spec.displacements, owner, p.node_order);
         problem.row_starts = p.row_starts;
@@ -343,6 +411,8 @@ Model build_model(const ProblemSpec& spec) {
     }
   }
   Vector loads = Vector::Zero(dofs.num_dofs());
+  Vector whole_b;                     // rank 0 of several: b, and each group's,
+  std::vector<Vector> whole_group_b;  // for the others' rows
   std::vector<PlacedPointLoad> placed;
   std::vector<LoadGroup> groups;
   {
@@ -410,12 +480,16 @@ Model build_model(const ProblemSpec& spec) {
       Vector scales = Vector::Zero(dofs.num_dofs());
       for (const Index d : g.prescribed_dofs) scales(d) = 1.0;
       const Vector u_d = dofs.prescribed_values(scales);
-      g.b = problem.held_rows(
-          free_part(g.loads.size() != 0 ? g.loads : Vector(Vector::Zero(dofs.num_dofs())), u_d));
+      Vector b =
+          free_part(g.loads.size() != 0 ? g.loads : Vector(Vector::Zero(dofs.num_dofs())), u_d);
+      g.b = problem.held_rows(b);
+      if (parts != nullptr) whole_group_b.push_back(std::move(b));
       if (g.loads.size() != 0) loads += g.loads;
     }
     // (A distributed run keeps its own rows of b: ContactProblem.)
-    problem.b = problem.held_rows(free_part(loads, dofs.prescribed_values()));
+    Vector b = free_part(loads, dofs.prescribed_values());
+    problem.b = problem.held_rows(b);
+    if (parts != nullptr) whole_b = std::move(b);
   }
   std::vector<std::string> contact_boundaries;
   std::vector<Index> contact_starts{0};
@@ -435,10 +509,13 @@ Model build_model(const ProblemSpec& spec) {
       make_friction(spec, mesh, dofs, contact_starts, problem.contact);
   // The solver path from the problem's size (solver_plan.hpp), before the hierarchy that it may
   // call for.
-  SolverPlan plan =
-      plan_solver(spec.solver,
-                  ProblemSize{mesh.dim(), mesh.num_nodes(), dofs.num_free(), problem.contact.size(),
-                              physical_memory_bytes(), friction != nullptr});
+  const ProblemSize size{mesh.dim(),
+                         mesh.num_nodes(),
+                         dofs.num_free(),
+                         problem.contact.size(),
+                         physical_memory_bytes(),
+                         friction != nullptr};
+  SolverPlan plan = plan_solver(spec.solver, size);
   if (friction) plan.options.law = friction.get();
   // On the distributed path the plan's choice names how the Newton systems are solved there
   // (docs/distributed.md: a direct choice becomes MUMPS, the multigrid GAMG), not the path.
@@ -463,12 +540,33 @@ Model build_model(const ProblemSpec& spec) {
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, owner);
-  return Model{std::move(mesh),           std::move(dofs),     std::move(problem),
-               std::move(multigrid),      plan.options,        plan.reason,
-               std::move(timings),        elasticity,          std::move(loads),
-               std::move(clamps),         std::move(placed),   std::move(contact_boundaries),
-               std::move(contact_starts), std::move(friction), std::move(groups)};
+  auto [gap_shift, gap_shift_group] = contact_gap_shift(problem.contact, dofs, groups);
+  Model model{std::move(mesh),
+              std::move(dofs),
+              std::move(problem),
+              std::move(multigrid),
+              plan.options,
+              plan.reason,
+              std::move(timings),
+              elasticity,
+              std::move(loads),
+              std::move(clamps),
+              std::move(placed),
+              std::move(contact_boundaries),
+              std::move(contact_starts),
+              std::move(friction),
+              std::move(groups),
+              std::move(gap_shift),
+              std::move(gap_shift_group),
+              {}};
+  if (parts != nullptr) {
+    parts->ok();
+    send_model_parts(model, whole_b, whole_group_b, size, required_distributed_engine());
+  }
+  return model;
 }
+
+}  // namespace
 
 namespace {
 
@@ -509,18 +607,26 @@ Vector Model::free_loads(double factor, int step) const {
 
 Vector Model::contact_gaps(double factor, int step) const {
   const ContactSet& c = problem.contact;
-  if (!dofs.has_prescribed_values()) return c.gaps;
-  // The gaps are g - nu . u_D (fem/contact_boundary.cpp): at scaled u_D they grow by
-  // nu . (u_D - u_D scaled).
-  const Vector rest =
-      dofs.prescribed_values(Vector::Ones(dofs.num_dofs()) - prescribed_scales(factor, step));
+  if (contact_gap_shift.size() == 0) return c.gaps;
+  // The gaps are g - nu . u_D at the node (fem/contact_boundary.cpp): at scaled u_D they grow by
+  // nu . (u_D - u_D scaled), a sum over the node's components (contact_gap_shift).
   Vector gaps = c.gaps;
-  const int dim = dofs.dim();
-  for (Index j = 0; j < c.size(); ++j) {
-    const Index node = c.nodes[static_cast<std::size_t>(j)];
-    gaps(j) += c.normals.col(j).dot(rest.segment(node * dim, dim));
-  }
+  const auto dim = contact_gap_shift.rows();
+  for (Index j = 0; j < c.size(); ++j)
+    for (Index k = 0; k < dim; ++k) {
+      const int g = contact_gap_shift_group[static_cast<std::size_t>(j * dim + k)];
+      const double s =
+          g < 0 ? factor : group_factor(load_groups[static_cast<std::size_t>(g)], factor, step);
+      gaps(j) += contact_gap_shift(k, j) * (1.0 - s);
+    }
   return gaps;
+}
+
+Index Model::local_node(Index node) const {
+  if (global_nodes.empty()) return node;
+  const auto it = std::lower_bound(global_nodes.begin(), global_nodes.end(), node);
+  return it != global_nodes.end() && *it == node ? static_cast<Index>(it - global_nodes.begin())
+                                                 : -1;
 }
 
 Vector Model::full_displacement(const Vector& u, double factor, int step) const {

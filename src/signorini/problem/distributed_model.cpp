@@ -1,0 +1,275 @@
+#include "signorini/problem/distributed_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "signorini/core/error.hpp"
+#include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/parallel/byte_message.hpp"
+#include "signorini/parallel/model_part.hpp"
+
+namespace signorini {
+
+namespace {
+
+// The announcement's bytes: empty when rank 0 went on, else its message.
+void expect_root_went_on(const DistributedEngine& engine) {
+  std::vector<char> bytes;
+  engine.broadcast(bytes);
+  if (!bytes.empty()) throw InputError(std::string(bytes.begin(), bytes.end()));
+}
+
+// The rows [first, last) of a graph that holds them all.
+NodeGraph rows_of(const NodeGraph& whole, Index first, Index last) {
+  NodeGraph g;
+  g.vertices = whole.vertices;
+  g.first = first;
+  g.last = last;
+  g.weights.assign(whole.weights.begin() + first, whole.weights.begin() + last);
+  const auto begin = whole.offsets[static_cast<std::size_t>(first)];
+  const auto end = whole.offsets[static_cast<std::size_t>(last)];
+  g.neighbours.assign(whole.neighbours.begin() + begin, whole.neighbours.begin() + end);
+  for (Index v = first; v <= last; ++v)
+    g.offsets.push_back(whole.offsets[static_cast<std::size_t>(v)] - begin);
+  return g;
+}
+
+bool using_the_modes(const ContactSolverOptions& options) {
+  return options.linear.type == LinearSolverType::ConjugateGradient &&
+         options.linear.preconditioner == PreconditionerType::Multigrid;
+}
+
+}  // namespace
+
+void RootAnnouncements::ok() {
+  std::vector<char> none;
+  engine_.broadcast(none);
+  owed_ = false;
+}
+
+void RootAnnouncements::failed(const std::string& message) {
+  if (!owed_) return;
+  owed_ = false;
+  const std::string text = message.empty() ? std::string("rank 0 failed") : message;
+  std::vector<char> bytes(text.begin(), text.end());
+  engine_.broadcast(bytes);
+}
+
+NodeGraph send_node_graph_rows(const NodeGraph& whole, const DistributedEngine& engine) {
+  const int ranks = engine.size();
+  for (int r = 1; r < ranks; ++r) {
+    ByteWriter out;
+    pack(out, rows_of(whole, vertex_share_start(whole.vertices, r, ranks),
+                      vertex_share_start(whole.vertices, r + 1, ranks)));
+    engine.send_from_root(r, out.bytes());
+  }
+  return rows_of(whole, 0, vertex_share_start(whole.vertices, 1, ranks));
+}
+
+void send_model_parts(const Model& model, const Vector& whole_b,
+                      const std::vector<Vector>& whole_group_b, const ProblemSize& size,
+                      const DistributedEngine& engine) {
+  const Mesh& mesh = model.mesh;
+  const DofMap& dofs = model.dofs;
+  const ContactProblem& p = model.problem;
+  const int dim = mesh.dim();
+  // The load group of each dof that one prescribes (-1: none).
+  std::vector<int> group_of_dof;
+  for (std::size_t g = 0; g < model.load_groups.size(); ++g)
+    for (const Index d : model.load_groups[g].prescribed_dofs) {
+      if (group_of_dof.empty()) group_of_dof.assign(static_cast<std::size_t>(dofs.num_dofs()), -1);
+      group_of_dof[static_cast<std::size_t>(d)] = static_cast<int>(g);
+    }
+  {
+    PartCells part_cells(mesh);
+    for (int r = 1; r < engine.size(); ++r) {
+      const Index first = p.row_starts[static_cast<std::size_t>(r)];
+      const Index last = p.row_starts[static_cast<std::size_t>(r) + 1];
+      std::vector<Index> own;
+      for (Index i = first; i < last; ++i) {
+        const Index node = p.node_of_unknown[static_cast<std::size_t>(i)];
+        if (own.empty() || own.back() != node) own.push_back(node);
+      }
+      const MeshPart part = mesh_part(mesh, part_cells.cells(own));
+      ByteWriter out;
+      pack(out, part.mesh);
+      out.put(part.global_nodes);
+      pack(out, dofs.part(part.global_nodes));
+      out.put(Vector(whole_b.segment(first, last - first)));
+      for (std::size_t g = 0; g < model.load_groups.size(); ++g) {
+        out.put(Vector(whole_group_b[g].segment(first, last - first)));
+        std::vector<Index> prescribed;  // in the part's numbering
+        if (!group_of_dof.empty())
+          for (std::size_t i = 0; i < part.global_nodes.size(); ++i)
+            for (int k = 0; k < dim; ++k)
+              if (group_of_dof[static_cast<std::size_t>(part.global_nodes[i] * dim + k)] ==
+                  static_cast<int>(g))
+                prescribed.push_back(static_cast<Index>(i) * dim + k);
+        out.put(prescribed);
+      }
+      engine.send_from_root(r, out.bytes());
+    }
+  }
+  // What every rank holds whole.
+  ByteWriter out;
+  out.put(p.row_starts);
+  out.put(p.node_of_unknown);
+  pack(out, p.contact);
+  out.put(model.contact_starts);
+  out.put(model.contact_boundaries);
+  out.put(static_cast<std::uint8_t>(model.friction != nullptr));
+  if (model.friction) {
+    out.put(model.friction->slip_bound());
+    out.put(model.friction->mu());
+  }
+  out.put_matrix(model.contact_gap_shift);
+  out.put(model.contact_gap_shift_group);
+  out.put(static_cast<std::int32_t>(size.dimension));
+  out.put(static_cast<std::int64_t>(size.nodes));
+  out.put(static_cast<std::int64_t>(size.free_unknowns));
+  out.put(static_cast<std::int64_t>(size.contact_nodes));
+  out.put(size.memory_bytes);
+  out.put(static_cast<std::uint8_t>(size.friction));
+  out.put(Vector(mesh.coordinates().rowwise().mean()));
+  out.put(static_cast<std::uint64_t>(model.load_groups.size()));
+  for (const LoadGroup& g : model.load_groups) {
+    out.put(g.entry);
+    out.put(g.factors);
+  }
+  engine.broadcast(out.bytes());
+}
+
+namespace {
+
+Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
+                             TimingTable& timings);
+
+}  // namespace
+
+Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
+  TimingTable timings;
+  ScopedTimer mesh_timer(timings, "mesh");
+  expect_root_went_on(engine);  // rank 0 read the mesh and numbered it
+  mesh_timer.stop();
+  {
+    ScopedTimer t(timings, "partition");
+    const std::vector<char> bytes = engine.receive_from_root();
+    ByteReader in(bytes);
+    const NodeGraph graph = unpack_node_graph(in);
+    (void)engine.partition(graph, spec.solver);
+  }
+  expect_root_went_on(engine);  // rank 0 built the whole model but the others' stiffness
+  // From here a failure is this rank's alone (rank 0 found the input good): not InputError,
+  // which the tool takes as every rank's (app/tool.cpp), but one that ends every rank.
+  try {
+    return receive_announced_part(spec, engine, timings);
+  } catch (const InputError& e) {
+    throw std::runtime_error(fmt::format("building this rank's part of the model: {}", e.what()));
+  }
+}
+
+namespace {
+
+Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
+                             TimingTable& timings) {
+  ScopedTimer receive_timer(timings, "mesh");
+  ContactProblem problem;
+  std::vector<char> bytes = engine.receive_from_root();
+  ByteReader in(bytes);
+  Mesh mesh = unpack_mesh(in);
+  std::vector<Index> global_nodes = in.get_vector<Index>();
+  DofMap dofs = unpack_dof_map(in);
+  problem.b = in.get_vector_xd();
+  std::vector<Vector> group_b;
+  std::vector<std::vector<Index>> group_prescribed;
+  while (!in.done()) {
+    group_b.push_back(in.get_vector_xd());
+    group_prescribed.push_back(in.get_vector<Index>());
+  }
+  bytes = {};
+  engine.broadcast(bytes);
+  ByteReader all(bytes);
+  problem.row_starts = all.get_vector<Index>();
+  problem.node_of_unknown = all.get_vector<Index>();
+  problem.contact = unpack_contact_set(all);
+  problem.rank = engine.rank();
+  std::vector<Index> contact_starts = all.get_vector<Index>();
+  std::vector<std::string> contact_boundaries = all.get_strings();
+  std::shared_ptr<const FrictionLaw> friction;
+  if (all.get<std::uint8_t>() != 0) {
+    Vector s = all.get_vector_xd();
+    Vector mu = all.get_vector_xd();
+    friction = std::make_shared<const FrictionLaw>(mesh.dim(), std::move(s), std::move(mu));
+  }
+  Eigen::MatrixXd gap_shift = all.get_matrix();
+  std::vector<int> gap_shift_group = all.get_vector<int>();
+  ProblemSize size;
+  size.dimension = all.get<std::int32_t>();
+  size.nodes = all.get<std::int64_t>();
+  size.free_unknowns = all.get<std::int64_t>();
+  size.contact_nodes = all.get<std::int64_t>();
+  size.memory_bytes = all.get<double>();
+  size.friction = all.get<std::uint8_t>() != 0;
+  const Vector centre = all.get_vector_xd();
+  std::vector<LoadGroup> groups(static_cast<std::size_t>(all.get<std::uint64_t>()));
+  if (groups.size() != group_b.size())
+    throw NumericalError("the load groups of a rank's part do not match rank 0's");
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    groups[g].entry = all.get_string();
+    groups[g].factors = all.get_vector<double>();
+    groups[g].b = std::move(group_b[g]);
+    groups[g].prescribed_dofs = std::move(group_prescribed[g]);
+  }
+  if (!all.done()) throw NumericalError("the model's message from rank 0 has a mismatched layout");
+  bytes = {};
+  receive_timer.stop();
+
+  const ElasticityOptions elasticity = region_elasticity(spec, mesh.region_names());
+  {
+    ScopedTimer t(timings, "assembly");
+    // The columns of the rank's unknowns (by symmetry its rows), from the cells around its
+    // nodes: the part's first layer (parallel/model_part.hpp).
+    std::vector<bool> owned(static_cast<std::size_t>(mesh.num_nodes()), false);
+    for (Index v = 0; v < mesh.num_nodes(); ++v)
+      for (int k = 0; k < mesh.dim(); ++k) {
+        const Index f = dofs.free_index(v, k);
+        if (f >= problem.first_row() && f < problem.end_row())
+          owned[static_cast<std::size_t>(v)] = true;
+      }
+    problem.A = assemble_stiffness(mesh, dofs, elasticity, &owned);
+  }
+  SolverPlan plan = plan_solver(spec.solver, size);
+  if (friction) plan.options.law = friction.get();
+  plan.reason =
+      fmt::format("distributed on {} MPI ranks; the Newton systems as the serial plan chose: {}",
+                  engine.size(), plan.reason);
+  if (using_the_modes(plan.options))
+    problem.near_null_space =
+        rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &centre);
+  Model model{std::move(mesh),
+              std::move(dofs),
+              std::move(problem),
+              MultigridHierarchy{},
+              plan.options,
+              plan.reason,
+              std::move(timings),
+              elasticity,
+              Vector(),
+              {},
+              {},
+              std::move(contact_boundaries),
+              std::move(contact_starts),
+              std::move(friction),
+              std::move(groups),
+              std::move(gap_shift),
+              std::move(gap_shift_group),
+              std::move(global_nodes)};
+  return model;
+}
+
+}  // namespace
+
+}  // namespace signorini

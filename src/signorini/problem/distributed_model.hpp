@@ -1,0 +1,56 @@
+#pragma once
+// The model of a distributed run on more than one rank (docs/distributed.md, "The mesh in
+// parts"). Rank 0 alone reads the mesh and builds the whole model as a serial run does, except
+// the stiffness (its own columns only); it sends each other rank the node graph's rows to
+// partition, then its part of the model (parallel/model_part.hpp), then what every rank holds
+// whole (the contact set, the partition). The other ranks build their stiffness columns and
+// rigid-body modes from their part. A failure on rank 0 reaches the others as the one message
+// that rank 0 reports.
+
+#include <string>
+#include <vector>
+
+#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/parallel/node_partition.hpp"
+#include "signorini/problem/model.hpp"
+#include "signorini/problem/solver_plan.hpp"
+
+namespace signorini {
+
+/// Rank 0's side of the agreement: the others wait, at two points of the build, to learn
+/// whether rank 0 went on or failed (and with what message).
+class RootAnnouncements {
+ public:
+  explicit RootAnnouncements(const DistributedEngine& engine) : engine_(engine) {}
+  /// Tells the others that rank 0 got this far.
+  void ok();
+  /// From here the others wait for the next ok() (or failed()).
+  void owe() { owed_ = true; }
+  /// Tells the others, if they wait, that rank 0 failed with this message.
+  void failed(const std::string& message);
+
+ private:
+  const DistributedEngine& engine_;
+  bool owed_ = true;
+};
+
+/// Rank 0: sends each other rank its rows of the whole node graph `whole` (node_graph on one
+/// rank), and returns its own.
+[[nodiscard]] NodeGraph send_node_graph_rows(const NodeGraph& whole,
+                                             const DistributedEngine& engine);
+
+/// Rank 0: sends each other rank its part of `model` (whole, partitioned), with its rows of the
+/// whole b and of each load group's b, then broadcasts what every rank holds whole.
+void send_model_parts(const Model& model, const Vector& whole_b,
+                      const std::vector<Vector>& whole_group_b, const ProblemSize& size,
+                      const DistributedEngine& engine);
+
+/// Every other rank: its model, from what rank 0 sends (the same calls in the same order).
+[[nodiscard]] Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine);
+
+/// The material of each of the mesh's regions (`names`), from the spec's [[region]] entries;
+/// InputError for a name that the mesh lacks.
+[[nodiscard]] ElasticityOptions region_elasticity(const ProblemSpec& spec,
+                                                  const std::vector<std::string>& names);
+
+}  // namespace signorini
