@@ -37,11 +37,6 @@ NodeGraph rows_of(const NodeGraph& whole, Index first, Index last) {
   return g;
 }
 
-bool using_the_modes(const ContactSolverOptions& options) {
-  return options.linear.type == LinearSolverType::ConjugateGradient &&
-         options.linear.preconditioner == PreconditionerType::Multigrid;
-}
-
 }  // namespace
 
 void RootAnnouncements::ok() {
@@ -76,13 +71,7 @@ void send_model_parts(const Model& model, const Vector& whole_b,
   const DofMap& dofs = model.dofs;
   const ContactProblem& p = model.problem;
   const int dim = mesh.dim();
-  // The load group of each dof that one prescribes (-1: none).
-  std::vector<int> group_of_dof;
-  for (std::size_t g = 0; g < model.load_groups.size(); ++g)
-    for (const Index d : model.load_groups[g].prescribed_dofs) {
-      if (group_of_dof.empty()) group_of_dof.assign(static_cast<std::size_t>(dofs.num_dofs()), -1);
-      group_of_dof[static_cast<std::size_t>(d)] = static_cast<int>(g);
-    }
+  const std::vector<int> group_of_dof = load_group_of_dofs(model.load_groups, dofs.num_dofs());
   {
     PartCells part_cells(mesh);
     for (int r = 1; r < engine.size(); ++r) {
@@ -99,16 +88,18 @@ void send_model_parts(const Model& model, const Vector& whole_b,
       out.put(part.global_nodes);
       pack(out, dofs.part(part.global_nodes));
       out.put(Vector(whole_b.segment(first, last - first)));
+      // Each group's prescribed dofs in the part's numbering.
+      std::vector<std::vector<Index>> prescribed(model.load_groups.size());
+      if (!group_of_dof.empty())
+        for (std::size_t i = 0; i < part.global_nodes.size(); ++i)
+          for (int k = 0; k < dim; ++k)
+            if (const int g =
+                    group_of_dof[static_cast<std::size_t>(part.global_nodes[i] * dim + k)];
+                g >= 0)
+              prescribed[static_cast<std::size_t>(g)].push_back(static_cast<Index>(i) * dim + k);
       for (std::size_t g = 0; g < model.load_groups.size(); ++g) {
         out.put(Vector(whole_group_b[g].segment(first, last - first)));
-        std::vector<Index> prescribed;  // in the part's numbering
-        if (!group_of_dof.empty())
-          for (std::size_t i = 0; i < part.global_nodes.size(); ++i)
-            for (int k = 0; k < dim; ++k)
-              if (group_of_dof[static_cast<std::size_t>(part.global_nodes[i] * dim + k)] ==
-                  static_cast<int>(g))
-                prescribed.push_back(static_cast<Index>(i) * dim + k);
-        out.put(prescribed);
+        out.put(prescribed[g]);
       }
       engine.send_from_root(r, out.bytes());
     }
@@ -241,12 +232,8 @@ Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
       }
     problem.A = assemble_stiffness(mesh, dofs, elasticity, &owned);
   }
-  SolverPlan plan = plan_solver(spec.solver, size);
-  if (friction) plan.options.law = friction.get();
-  plan.reason =
-      fmt::format("distributed on {} MPI ranks; the Newton systems as the serial plan chose: {}",
-                  engine.size(), plan.reason);
-  if (using_the_modes(plan.options))
+  const SolverPlan plan = plan_model_solver(spec, size, friction.get(), /*distributed=*/true);
+  if (uses_multigrid(plan.options))
     problem.near_null_space =
         rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &centre);
   Model model{std::move(mesh),

@@ -48,6 +48,18 @@ void send_model_parts(const Model& model, const Vector& whole_b,
 /// Every other rank: its model, from what rank 0 sends (the same calls in the same order).
 [[nodiscard]] Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine);
 
+/// The solver plan of a model of this size (solver_plan.hpp), with the friction law and, on the
+/// distributed path, the reason that says so: rank 0's and every other rank's alike.
+[[nodiscard]] SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size,
+                                           const FrictionLaw* friction, bool distributed);
+/// Whether the plan's Newton systems are solved by CG with multigrid (the rigid-body modes then
+/// go with the problem on the distributed path).
+[[nodiscard]] bool uses_multigrid(const ContactSolverOptions& options);
+/// The load group (index into `groups`) of each of `num_dofs` dofs whose prescribed value has
+/// factors of its own, -1 elsewhere; empty when no group prescribes any.
+[[nodiscard]] std::vector<int> load_group_of_dofs(const std::vector<LoadGroup>& groups,
+                                                  Index num_dofs);
+
 /// The material of each of the mesh's regions (`names`), from the spec's [[region]] entries;
 /// InputError for a name that the mesh lacks.
 [[nodiscard]] ElasticityOptions region_elasticity(const ProblemSpec& spec,

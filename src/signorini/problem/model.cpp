@@ -249,6 +249,34 @@ std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const 
 
 }  // namespace
 
+std::vector<int> load_group_of_dofs(const std::vector<LoadGroup>& groups, Index num_dofs) {
+  std::vector<int> group_of_dof;  // the last entry that holds a dof wins (prescribed_scales)
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (const Index d : groups[g].prescribed_dofs) {
+      if (group_of_dof.empty()) group_of_dof.assign(static_cast<std::size_t>(num_dofs), -1);
+      group_of_dof[static_cast<std::size_t>(d)] = static_cast<int>(g);
+    }
+  return group_of_dof;
+}
+
+bool uses_multigrid(const ContactSolverOptions& options) {
+  return options.linear.type == LinearSolverType::ConjugateGradient &&
+         options.linear.preconditioner == PreconditionerType::Multigrid;
+}
+
+SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size,
+                             const FrictionLaw* friction, bool distributed) {
+  SolverPlan plan = plan_solver(spec.solver, size);
+  if (friction != nullptr) plan.options.law = friction;
+  // On the distributed path the plan's choice names how the Newton systems are solved there
+  // (docs/distributed.md: a direct choice becomes MUMPS, the multigrid GAMG), not the path.
+  if (distributed)
+    plan.reason =
+        fmt::format("distributed on {} MPI ranks; the Newton systems as the serial plan chose: {}",
+                    required_distributed_engine().size(), plan.reason);
+  return plan;
+}
+
 ElasticityOptions region_elasticity(const ProblemSpec& spec,
                                     const std::vector<std::string>& names) {
   // Materials per region, by the regions' names.
@@ -310,12 +338,7 @@ std::pair<Eigen::MatrixXd, std::vector<int>> contact_gap_shift(
     const ContactSet& c, const DofMap& dofs, const std::vector<LoadGroup>& groups) {
   if (!dofs.has_prescribed_values()) return {};
   const int dim = dofs.dim();
-  std::vector<int> group_of_dof;  // the last entry that holds a dof wins (prescribed_scales)
-  for (std::size_t g = 0; g < groups.size(); ++g)
-    for (const Index d : groups[g].prescribed_dofs) {
-      if (group_of_dof.empty()) group_of_dof.assign(static_cast<std::size_t>(dofs.num_dofs()), -1);
-      group_of_dof[static_cast<std::size_t>(d)] = static_cast<int>(g);
-    }
+  const std::vector<int> group_of_dof = load_group_of_dofs(groups, dofs.num_dofs());
   Eigen::MatrixXd shift(dim, c.size());
   std::vector<int> group(static_cast<std::size_t>(dim * c.size()), -1);
   for (Index j = 0; j < c.size(); ++j) {
@@ -515,18 +538,9 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                          problem.contact.size(),
                          physical_memory_bytes(),
                          friction != nullptr};
-  SolverPlan plan = plan_solver(spec.solver, size);
-  if (friction) plan.options.law = friction.get();
-  // On the distributed path the plan's choice names how the Newton systems are solved there
-  // (docs/distributed.md: a direct choice becomes MUMPS, the multigrid GAMG), not the path.
-  if (distributed)
-    plan.reason =
-        fmt::format("distributed on {} MPI ranks; the Newton systems as the serial plan chose: {}",
-                    required_distributed_engine().size(), plan.reason);
+  const SolverPlan plan = plan_model_solver(spec, size, friction.get(), distributed);
   MultigridHierarchy multigrid;
-  const LinearSolverOptions& linear = plan.options.linear;
-  const bool multigrid_cg = linear.type == LinearSolverType::ConjugateGradient &&
-                            linear.preconditioner == PreconditionerType::Multigrid;
+  const bool multigrid_cg = uses_multigrid(plan.options);
   if (distributed) {
     // PETSc's algebraic multigrid builds its own levels, from the rigid-body modes.
     // (Each rank its own rows: 6 numbers per unknown in 3D.)
