@@ -20,7 +20,12 @@ int run_check(const CheckArguments& args) {
     const auto backend = make_backend(DeviceKind::Cuda);  // throws InputError, with the reason
     fmt::print("device: {}\n", backend->description());
   }
-  fmt::print("mesh: {}\n", mesh_description(model.mesh));
+  // (Under mpirun each rank holds its part of the mesh: rank 0 says how large the whole is.)
+  if (model.is_part())
+    fmt::print("mesh: {} nodes, in parts (rank 0's: {})\n", model.whole.nodes,
+               mesh_description(model.mesh));
+  else
+    fmt::print("mesh: {}\n", mesh_description(model.mesh));
   fmt::print("solver path: {}\n", model.solver_reason);
   // Under mpirun the solve is distributed (docs/distributed.md): the plan above then says which
   // Newton-system solver the ranks share.
@@ -35,8 +40,7 @@ int run_check(const CheckArguments& args) {
         : model.solver.linear.preconditioner == PreconditionerType::Jacobi ? "CG with Jacobi"
         : model.solver.petsc_multigrid == PetscMultigrid::Hypre ? "CG with hypre's BoomerAMG"
                                                                 : "CG with GAMG");
-  fmt::print("ok: {} dofs, {} contact nodes\n", model.dofs.num_dofs(),
-             model.problem.contact.size());
+  fmt::print("ok: {} dofs, {} contact nodes\n", model.num_dofs(), model.problem.contact.size());
   return kSuccess;
 }
 

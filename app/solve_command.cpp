@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "commands.hpp"
@@ -90,10 +91,10 @@ int solve(const SolveArguments& args, LogFormat format) {
 
   progress.phase("building the model");
   const Model model = build_model_for(loaded);
-  progress.report(fmt::format("model: {} dofs ({} free), {} contact nodes\n", model.dofs.num_dofs(),
+  progress.report(fmt::format("model: {} dofs ({} free), {} contact nodes\n", model.num_dofs(),
                               model.dofs.num_free(), model.problem.contact.size()),
                   {{"event", "model"},
-                   {"n_dofs", model.dofs.num_dofs()},
+                   {"n_dofs", model.num_dofs()},
                    {"n_free_dofs", model.dofs.num_free()},
                    {"n_contact_nodes", model.problem.contact.size()}});
   // Before the solve, so that an unusable -o fails in a second and not after a long run. The
@@ -129,13 +130,15 @@ int solve(const SolveArguments& args, LogFormat format) {
              {"factor", s.factor},
              {"converged", s.converged},
              {"outer_iterations", s.outer_iterations}});
-        if (root) write_load_step(args.output_dir, step, r, model);
+        // (On the ranks' parts of the mesh every rank writes its piece of the step.)
+        if (root || model.is_part()) write_load_step(args.output_dir, step, r, model);
       });
   progress.finish_iterations();
   const SolveSummary& summary = result.summary;
-  // Once, for the report, the log and summary.json: on rank 0, which holds the whole model (the
-  // others hold their parts of the mesh: docs/distributed.md).
-  const Resultants resultants = root ? compute_resultants(model, result) : Resultants{};
+  // Once, for the report, the log and summary.json; on the ranks' parts of the mesh by all of
+  // them together (docs/distributed.md), else on rank 0.
+  const Resultants resultants =
+      root || model.is_part() ? compute_resultants(model, result) : Resultants{};
   if (root) {
     nlohmann::json event = summary_to_json(result, model, spec, resultants);
     event.erase("problem");  // the settings event has it
@@ -151,6 +154,8 @@ int solve(const SolveArguments& args, LogFormat format) {
   write_results(args.output_dir, result, model, spec, resultants);
   if (!root) return summary.converged() ? kSuccess : kNotConverged;
   std::vector<std::string> files = kResultFiles;
+  if (model.is_part())  // no whole solution.vtu: its pieces (below)
+    files.erase(std::find(files.begin(), files.end(), "solution.vtu"));
   if (!spec.load_factors.empty()) {  // and the steps' files in steps/
     files.emplace_back("solution.pvd");
     files.emplace_back("steps");

@@ -317,7 +317,7 @@ def check_results(outdir):
     if not os.path.exists(path):
         raise UsageError(f"'{path}' not found: is '{outdir}' the output folder of signorini solve?")
     path = os.path.join(outdir, "solution.vtu")
-    if not os.path.exists(path):
+    if not os.path.exists(path) and not os.path.exists(os.path.join(outdir, "solution.pvtu")):
         raise UsageError(f"'{path}' not found (results of an older signorini? run solve again)")
 
 
@@ -383,6 +383,41 @@ def read_vtu(path):
         raise UsageError(f"cannot read '{path}': not a VTU file as signorini writes them ({e})")
     return {"points": points, "connectivity": connectivity, "offsets": offsets, "types": types,
             "point_data": point_data}
+
+
+def read_solution(outdir):
+    """solution.vtu, or where a run on several MPI ranks wrote it in pieces (docs/output.md), the
+    pieces that solution.pvtu names put together: their points once each (a point that two
+    pieces share has the same coordinates and values in both), their cells renumbered."""
+    import re
+    import xml.etree.ElementTree as ET
+
+    import numpy as np
+
+    whole = os.path.join(outdir, "solution.vtu")
+    pvtu = os.path.join(outdir, "solution.pvtu")
+    if os.path.exists(whole) or not os.path.exists(pvtu):
+        return read_vtu(whole)
+    try:
+        sources = [e.get("Source") for e in ET.parse(pvtu).getroot().iter("Piece")]
+    except (OSError, ET.ParseError) as e:
+        raise UsageError(f"cannot read '{pvtu}': {e}")
+    if not sources or any(s is None or not re.fullmatch(r"[\w.-]+", s) for s in sources):
+        raise UsageError(f"cannot read '{pvtu}': expected the pieces as file names beside it")
+    pieces = [read_vtu(os.path.join(outdir, s)) for s in sources]
+    points = np.concatenate([p["points"] for p in pieces])
+    unique, first, inverse = np.unique(points, axis=0, return_index=True, return_inverse=True)
+    inverse = inverse.reshape(-1)
+    start, connectivity, offsets = 0, [], []
+    for p in pieces:
+        connectivity.append(inverse[start + p["connectivity"]])
+        offsets.append(p["offsets"] + sum(c.size for c in connectivity[:-1]))
+        start += len(p["points"])
+    names = pieces[0]["point_data"].keys()
+    data = {name: np.concatenate([p["point_data"][name] for p in pieces])[first] for name in names}
+    return {"points": unique, "connectivity": np.concatenate(connectivity),
+            "offsets": np.concatenate(offsets), "types": np.concatenate([p["types"] for p in pieces]),
+            "point_data": data}
 
 
 # Helpers -----------------------------------------------------------------------------------
@@ -1650,7 +1685,7 @@ def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(Non
             "contact_displacement": lambda: figure_displacement(summary, contact, units, measure),
             "contact_pressure": lambda: figure_pressure(summary, contact, units, measure),
             "deformed_von_mises": lambda: figure_deformed(
-                summary, read_vtu(os.path.join(outdir, "solution.vtu")), contact, scale, units,
+                summary, read_solution(outdir), contact, scale, units,
                 measure),
         }
         if "state" in contact:

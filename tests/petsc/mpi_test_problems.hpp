@@ -88,15 +88,12 @@ inline ContactResult distributed_solve(const Model& model, ContactSolverOptions 
   o.distributed = DistributedMode::Petsc;
   ContactResult r = solve_contact(model.problem, o);
   const Vector held = model.dofs.expand(r.u);
-  // The whole mesh's nodes: rank 0 holds it (a collective call).
-  double nodes = model.is_part() ? 0.0 : static_cast<double>(model.mesh.num_nodes());
-  distributed_engine()->sum(&nodes, 1);
   if (!model.is_part()) {
     r.u = held;
     return r;
   }
   const int dim = model.dofs.dim();
-  r.u = Vector::Constant(static_cast<Index>(nodes) * dim, std::numeric_limits<double>::quiet_NaN());
+  r.u = Vector::Constant(model.whole.nodes * dim, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = 0; i < model.global_nodes.size(); ++i)
     r.u.segment(model.global_nodes[i] * dim, dim) = held.segment(static_cast<Index>(i) * dim, dim);
   return r;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/problem/contact_node_values.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {
@@ -18,6 +19,10 @@ namespace signorini {
 /// (Model::friction) the columns `tangential` (3D: tangential_x, _y, _z), the tangential part of
 /// -sigma n as the pressure is its normal part (along the slip where the node slides), and
 /// `state` (separated, sticking, sliding) follow.
+/// On a rank's part of the mesh (Model::is_part) a collective call: contact_node_values.
 std::string contact_csv(const ContactResult& result, const Model& model);
+/// The same from the contact nodes' values made once (contact_node_values).
+std::string contact_csv(const ContactResult& result, const Model& model,
+                        const ContactNodeValues& values);
 
 }  // namespace signorini

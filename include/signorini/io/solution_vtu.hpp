@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/problem/contact_node_values.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/problem_spec.hpp"
 
@@ -27,17 +28,19 @@ std::string solution_vtu(const ContactResult& result, const Model& model);
 
 /// One piece of solution.vtu for a distributed run (docs/distributed.md): the given cells and the
 /// nodes they use, with the same arrays; `pvtu`, when not null, receives the solution.pvtu that
-/// names `pieces` (file names beside it), and `whole`, when not null, the whole solution.vtu,
-/// from the same nodal stresses.
+/// names `pieces` (file names beside it).
 std::string solution_vtu_piece(const ContactResult& result, const Model& model,
                                const std::vector<Index>& cells,
-                               const std::vector<std::string>& pieces, std::string* pvtu,
-                               std::string* whole = nullptr);
+                               const std::vector<std::string>& pieces, std::string* pvtu);
 
 /// contact.vtu: the contact nodes in the order of contact.csv, its facets as line cells, and the
 /// point data displacement, normal (nu_j, 3 components), normal_displacement (u . nu),
 /// tangential_displacement (u . tau, tau = (-nu_y, nu_x)), contact_pressure, gap, deformed_gap
 /// (g - u . nu: 0 where the body touches, > 0 where it has lifted off) and contact_active.
+/// On a rank's part of the mesh (Model::is_part) a collective call: contact_node_values.
 std::string contact_vtu(const ContactResult& result, const Model& model);
+/// The same from the contact nodes' values made once (contact_node_values).
+std::string contact_vtu(const ContactResult& result, const Model& model,
+                        const ContactNodeValues& values);
 
 }  // namespace signorini

@@ -45,6 +45,17 @@ struct LoadGroup {
   Vector b;                            ///< free: its part of problem.b at factor 1
 };
 
+/// What a rank's part of the mesh lacks and its results need (docs/distributed.md, "The mesh in
+/// parts"): rank 0 measures it on the whole mesh and sends it to every rank.
+struct WholeMesh {
+  Index nodes = 0;           ///< the whole mesh's nodes
+  Eigen::VectorXd centroid;  ///< the mean of its nodes (the resultants' reference point)
+  double radius = 0.0;       ///< the largest distance of a node from the centroid
+  /// Per contact-set row (dim x contact size): the coordinates of its node, and the prescribed
+  /// displacement there (DofMap::prescribed_at, at factor 1).
+  Eigen::MatrixXd contact_points, contact_prescribed;
+};
+
 struct Model {
   Mesh mesh;
   DofMap dofs;
@@ -79,18 +90,32 @@ struct Model {
   /// like the matrix; -1: the history's factor).
   Eigen::MatrixXd contact_gap_shift;
   std::vector<int> contact_gap_shift_group;
-  /// On a rank of a distributed run other than rank 0 (docs/distributed.md, "The mesh in
-  /// parts"), `mesh` and `dofs` are the rank's part: node i of `mesh` is node global_nodes[i]
-  /// of the whole mesh (increasing). `loads`, `clamped_parts` and `point_loads` are then empty,
-  /// the load groups hold their factors, b's rows and the part's prescribed dofs, and
-  /// problem.contact (whole on every rank) names the whole mesh's nodes. Empty: the mesh is
-  /// whole.
+  /// On every rank of a distributed run on more than one rank (docs/distributed.md, "The mesh
+  /// in parts"), `mesh` and `dofs` are the rank's part: node i of `mesh` is node
+  /// global_nodes[i] of the whole mesh (increasing), and the dofs keep the whole problem's free
+  /// numbers. `loads`, `clamped_parts` and the load groups' loads and prescribed dofs are then
+  /// the part's (its nodes' full dofs), b and the groups' b the rank's rows; problem.contact
+  /// (whole on every rank) names the whole mesh's nodes; `point_loads` are rank 0's alone.
+  /// Empty: the mesh is whole.
   std::vector<Index> global_nodes;
+  /// On a part: the whole mesh's facts that the results need. Empty where the mesh is whole.
+  WholeMesh whole = {};
 
   /// Whether `mesh` is a part of the whole (a rank's, global_nodes).
   [[nodiscard]] bool is_part() const { return !global_nodes.empty(); }
   /// The node of `mesh` that is node `node` of the whole mesh; -1 where the part lacks it.
   [[nodiscard]] Index local_node(Index node) const;
+  /// The dofs of the whole mesh (a part's mesh has fewer).
+  [[nodiscard]] Index num_dofs() const {
+    return is_part() ? whole.nodes * mesh.dim() : dofs.num_dofs();
+  }
+  /// The rank that accounts for node `node` of `mesh` in sums over the whole mesh (the
+  /// resultants, the contact nodes' displacements): the owner of its first free dof, rank 0
+  /// for a node without one; 0 unless the problem is partitioned.
+  [[nodiscard]] int node_rank(Index node) const;
+  /// The rank that accounts for cell `cell` (its piece of solution.pvtu, its internal forces):
+  /// that of its first node with a free dof, rank 0 for a cell without one.
+  [[nodiscard]] int cell_rank(Index cell) const;
 
   /// The name of the contact boundary of contact-set row j.
   [[nodiscard]] const std::string& contact_boundary_of(Index j) const;

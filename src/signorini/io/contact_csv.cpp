@@ -53,22 +53,21 @@ struct FrictionColumns {
 
 // 3D: a surface has no single tangential direction, so the tangential displacement is given as
 // the Cartesian vector u - u_n nu; no arc length.
-std::string contact_csv_3d(const ContactResult& result, const Model& model) {
+std::string contact_csv_3d(const ContactResult& result, const Model& model,
+                           const ContactNodeValues& values) {
   const ContactSet& c = model.problem.contact;
-  const Vector u = model.full_displacement(result);
   const FrictionColumns friction(model, result);
   std::string out =
       "x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary" + friction.header() + "\n";
   for (std::size_t part = 0; part < model.contact_boundaries.size(); ++part) {
     const std::string name = csv_name(model.contact_boundaries[part]);
     for (Index j = model.contact_starts[part]; j < model.contact_starts[part + 1]; ++j) {
-      const Index node = c.nodes[static_cast<std::size_t>(j)];
-      const Eigen::Vector3d uj = u.segment<3>(3 * node);
+      const Eigen::Vector3d uj = values.displacement.col(j);
       const Eigen::Vector3d n = c.normals.col(j);
       const double un = uj.dot(n);
       const Eigen::Vector3d ut = uj - un * n;
-      const double gap = c.gaps(j) + n.dot(model.dofs.prescribed_at(node));
-      const auto x = model.mesh.node(node);
+      const double gap = c.gaps(j) + n.dot(values.prescribed.col(j));
+      const Eigen::Vector3d x = values.points.col(j);
       out += fmt::format(
           "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
           "{:.17g},{}{}\n",
@@ -82,10 +81,13 @@ std::string contact_csv_3d(const ContactResult& result, const Model& model) {
 }  // namespace
 
 std::string contact_csv(const ContactResult& result, const Model& model) {
-  if (model.mesh.dim() == 3) return contact_csv_3d(result, model);
+  return contact_csv(result, model, contact_node_values(model, result));
+}
+
+std::string contact_csv(const ContactResult& result, const Model& model,
+                        const ContactNodeValues& values) {
+  if (model.mesh.dim() == 3) return contact_csv_3d(result, model, values);
   const ContactSet& c = model.problem.contact;
-  // result.u holds the free dofs only; expand() adds the prescribed values (0 for clamps).
-  const Vector u = model.full_displacement(result);
   const FrictionColumns friction(model, result);
   std::string out = "x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary" + friction.header() + "\n";
   // s: the arc length along the contact nodes of each contact boundary in their order (chords
@@ -96,18 +98,15 @@ std::string contact_csv(const ContactResult& result, const Model& model) {
     const Index first = model.contact_starts[part];
     double s = 0.0;
     for (Index j = first; j < model.contact_starts[part + 1]; ++j) {
-      const Index node = c.nodes[static_cast<std::size_t>(j)];
-      if (j > first)
-        s += (model.mesh.node(node) - model.mesh.node(c.nodes[static_cast<std::size_t>(j - 1)]))
-                 .norm();
-      const double ux = u(2 * node);
-      const double uy = u(2 * node + 1);
+      if (j > first) s += (values.points.col(j) - values.points.col(j - 1)).norm();
+      const double ux = values.displacement(0, j);
+      const double uy = values.displacement(1, j);
       const double nx = c.normals(0, j);
       const double ny = c.normals(1, j);
       // The initial gap: the contact set's g_j has the prescribed components of the node taken
       // off (fem/contact_boundary.cpp); u_n here is the whole normal displacement.
-      const double gap = c.gaps(j) + c.normals.col(j).dot(model.dofs.prescribed_at(node));
-      const auto x = model.mesh.node(node);
+      const double gap = c.gaps(j) + c.normals.col(j).dot(values.prescribed.col(j));
+      const Eigen::Vector2d x = values.points.col(j);
       out += fmt::format(
           "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}{}\n", x(0),
           x(1), ux * nx + uy * ny, -ux * ny + uy * nx, result.l(j), gap, nx + 0.0, ny + 0.0, s,

@@ -29,32 +29,23 @@ std::string load_step_file(const std::string& stem, int step, const std::string&
   return fmt::format("steps/{}_{:04d}.{}", stem, step, extension);
 }
 
-void write_load_step(const std::filesystem::path& outdir, int step, const ContactResult& result,
-                     const Model& model) {
-  create_output_folder(outdir / "steps");
-  write_files_atomically(
-      {{outdir / load_step_file("solution", step, "vtu"), solution_vtu(result, model)},
-       {outdir / load_step_file("contact", step, "csv"), contact_csv(result, model)}});
+namespace {
+
+// The .pvd collection of the steps 1 to `step`, whose files are steps/solution_<k>.<extension>.
+std::string step_collection(int step, const std::string& extension) {
   std::string pvd =
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (int k = 1; k <= step; ++k)
     pvd += fmt::format("  <DataSet timestep=\"{}\" part=\"0\" file=\"{}\"/>\n", k,
-                       load_step_file("solution", k, "vtu"));
+                       load_step_file("solution", k, extension));
   pvd += "</Collection>\n</VTKFile>\n";
-  write_file_atomically(outdir / "solution.pvd", pvd);
+  return pvd;
 }
-
-void write_results(const std::filesystem::path& outdir, const ContactResult& result,
-                   const Model& model, const ProblemSpec& spec) {
-  write_results(outdir, result, model, spec, compute_resultants(model, result));
-}
-
-namespace {
 
 // The cells whose piece of solution.pvtu rank `rank` of `ranks` writes: those whose first node
-// with a free dof lies in the rank's range of the distributed solve (parallel/row_partition.hpp);
-// a cell with no free dof goes to rank 0. On a rank's part of the mesh (Model::is_part) the
-// cells of the part that the rank writes.
+// with a free dof lies in the rank's range of the distributed solve (Model::cell_rank,
+// parallel/row_partition.hpp); a cell with no free dof goes to rank 0. On a rank's part of the
+// mesh (Model::is_part) the cells of the part that the rank writes.
 std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
   const std::vector<Index> starts = partition_of(model.problem, ranks);
   const DofMap& dofs = model.dofs;
@@ -69,42 +60,29 @@ std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
   std::vector<Index> cells;
   for (Index c = 0; c < model.mesh.num_cells(); ++c) {
     int cell_owner = 0;
-    for (const Index k : model.mesh.cell(c))
-      if (const int r = rank_of(k); r >= 0) {
-        cell_owner = r;
-        break;
-      }
+    if (model.problem.partitioned()) {
+      cell_owner = model.cell_rank(c);
+    } else {
+      for (const Index k : model.mesh.cell(c))
+        if (const int r = rank_of(k); r >= 0) {
+          cell_owner = r;
+          break;
+        }
+    }
     if (cell_owner == rank) cells.push_back(c);
   }
   return cells;
 }
 
-// A distributed run (docs/distributed.md): rank 0 writes summary.json, contact.csv, contact.vtu,
-// solution.vtu (whole, from the whole mesh that rank 0 holds) and solution.pvtu; every rank
-// writes its piece solution_<rank>.vtu (the others from their parts of the mesh). Every rank stages
-// its files first and the renames follow only when all have, so that a failure on any rank leaves
-// the earlier results whole.
-void write_distributed(const std::filesystem::path& outdir, const ContactResult& result,
-                       const Model& model, const ProblemSpec& spec, const Resultants& resultants,
-                       const DistributedEngine& engine) {
-  const int rank = engine.rank(), ranks = engine.size();
-  std::vector<std::string> pieces;
-  for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("solution_{}.vtu", r));
+// Every rank stages its files, and the renames follow only when all have, so that a failure on
+// any rank leaves the earlier results whole. `stage` adds this rank's files.
+template <class Stage>
+void write_on_every_rank(const std::filesystem::path& outdir, const DistributedEngine& engine,
+                         const Stage& stage) {
   StagedFiles staged;
   std::string error;
   try {
-    std::string pvtu, whole;
-    staged.add(outdir / pieces[static_cast<std::size_t>(rank)],
-               solution_vtu_piece(result, model, cells_of_rank(model, rank, ranks), pieces,
-                                  rank == 0 ? &pvtu : nullptr, rank == 0 ? &whole : nullptr));
-    if (rank == 0) {
-      staged.add(outdir / "solution.pvtu", pvtu);
-      staged.add(outdir / "summary.json",
-                 summary_to_json(result, model, spec, resultants).dump(2) + "\n");
-      staged.add(outdir / "contact.csv", contact_csv(result, model));
-      staged.add(outdir / "solution.vtu", whole);
-      staged.add(outdir / "contact.vtu", contact_vtu(result, model));
-    }
+    stage(staged);
   } catch (const InputError& e) {
     error = e.what();
   }
@@ -116,6 +94,74 @@ void write_distributed(const std::filesystem::path& outdir, const ContactResult&
         outdir.string()));
   }
   staged.commit();
+}
+
+}  // namespace
+
+void write_load_step(const std::filesystem::path& outdir, int step, const ContactResult& result,
+                     const Model& model) {
+  if (model.is_part()) {
+    // A distributed run on the ranks' parts of the mesh (docs/distributed.md): each rank writes
+    // its piece of the step's solution, rank 0 the .pvtu that names them, the step's
+    // contact.csv and solution.pvd.
+    const DistributedEngine& engine = required_distributed_engine();
+    const int rank = engine.rank(), ranks = engine.size();
+    const ContactNodeValues values = contact_node_values(model, result);
+    const std::string stem = fmt::format("solution_{:04d}", step);
+    std::vector<std::string> pieces;
+    for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("{}_{}.vtu", stem, r));
+    write_on_every_rank(outdir, engine, [&](StagedFiles& staged) {
+      create_output_folder(outdir / "steps");
+      std::string pvtu;
+      staged.add(outdir / "steps" / pieces[static_cast<std::size_t>(rank)],
+                 solution_vtu_piece(result, model, cells_of_rank(model, rank, ranks), pieces,
+                                    rank == 0 ? &pvtu : nullptr));
+      if (rank != 0) return;
+      staged.add(outdir / load_step_file("solution", step, "pvtu"), pvtu);
+      staged.add(outdir / load_step_file("contact", step, "csv"),
+                 contact_csv(result, model, values));
+      staged.add(outdir / "solution.pvd", step_collection(step, "pvtu"));
+    });
+    return;
+  }
+  create_output_folder(outdir / "steps");
+  write_files_atomically(
+      {{outdir / load_step_file("solution", step, "vtu"), solution_vtu(result, model)},
+       {outdir / load_step_file("contact", step, "csv"), contact_csv(result, model)}});
+  write_file_atomically(outdir / "solution.pvd", step_collection(step, "vtu"));
+}
+
+void write_results(const std::filesystem::path& outdir, const ContactResult& result,
+                   const Model& model, const ProblemSpec& spec) {
+  write_results(outdir, result, model, spec, compute_resultants(model, result));
+}
+
+namespace {
+
+// A distributed run (docs/distributed.md): every rank writes its piece solution_<rank>.vtu; rank
+// 0 writes solution.pvtu, summary.json, contact.csv and contact.vtu (from the contact nodes'
+// values that the ranks give together), and, where it holds the whole mesh (one rank), the
+// whole solution.vtu too.
+void write_distributed(const std::filesystem::path& outdir, const ContactResult& result,
+                       const Model& model, const ProblemSpec& spec, const Resultants& resultants,
+                       const DistributedEngine& engine) {
+  const int rank = engine.rank(), ranks = engine.size();
+  std::vector<std::string> pieces;
+  for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("solution_{}.vtu", r));
+  const ContactNodeValues values = contact_node_values(model, result);
+  write_on_every_rank(outdir, engine, [&](StagedFiles& staged) {
+    std::string pvtu;
+    staged.add(outdir / pieces[static_cast<std::size_t>(rank)],
+               solution_vtu_piece(result, model, cells_of_rank(model, rank, ranks), pieces,
+                                  rank == 0 ? &pvtu : nullptr));
+    if (rank != 0) return;
+    staged.add(outdir / "solution.pvtu", pvtu);
+    staged.add(outdir / "summary.json",
+               summary_to_json(result, model, spec, resultants).dump(2) + "\n");
+    staged.add(outdir / "contact.csv", contact_csv(result, model, values));
+    if (!model.is_part()) staged.add(outdir / "solution.vtu", solution_vtu(result, model));
+    staged.add(outdir / "contact.vtu", contact_vtu(result, model, values));
+  });
 }
 
 }  // namespace

@@ -133,25 +133,22 @@ std::string solution_vtu(const ContactResult& result, const Model& model) {
 
 std::string solution_vtu_piece(const ContactResult& result, const Model& model,
                                const std::vector<Index>& cells,
-                               const std::vector<std::string>& pieces, std::string* pvtu,
-                               std::string* whole) {
-  const NodalFields fields = nodal_fields(result, model);
-  VtuFile vtu = solution_file(fields, model, &cells);
+                               const std::vector<std::string>& pieces, std::string* pvtu) {
+  VtuFile vtu = solution_file(nodal_fields(result, model), model, &cells);
   if (pvtu != nullptr) *pvtu = vtu.parallel_text(pieces);
-  if (whole != nullptr) *whole = solution_file(fields, model, nullptr).take_text();
   return vtu.take_text();
 }
 
 std::string contact_vtu(const ContactResult& result, const Model& model) {
-  const Mesh& mesh = model.mesh;
-  const int dim = mesh.dim();
+  return contact_vtu(result, model, contact_node_values(model, result));
+}
+
+std::string contact_vtu(const ContactResult& result, const Model& model,
+                        const ContactNodeValues& values) {
+  const int dim = model.mesh.dim();
   const ContactSet& c = model.problem.contact;
   const Index m = c.size();
-  const Vector u = model.full_displacement(result);
-
-  Eigen::MatrixXd points(dim, m);
-  for (Index j = 0; j < m; ++j) points.col(j) = mesh.node(c.nodes[static_cast<std::size_t>(j)]);
-  VtuFile vtu(points);
+  VtuFile vtu(values.points);
   // The facets of the contact set itself, so that contact.vtu shows the boundary the solver used
   // (also for a contact set not made from spec.contact): lines in 2D, faces in 3D (the Tri6 and
   // Quad9 node orders are VTK's).
@@ -184,9 +181,8 @@ std::string contact_vtu(const ContactResult& result, const Model& model) {
   std::vector<std::uint8_t> active(static_cast<std::size_t>(m));
   for (Index j = 0; j < m; ++j) {
     const auto k = static_cast<std::size_t>(j);
-    const Index node = c.nodes[k];
     Eigen::Vector3d uj = Eigen::Vector3d::Zero(), nj = Eigen::Vector3d::Zero();
-    uj.head(dim) = u.segment(dim * node, dim);
+    uj.head(dim) = values.displacement.col(j);
     nj.head(dim) = c.normals.col(j);
     for (std::size_t i = 0; i < 3; ++i) {
       displacement[3 * k + i] = uj(static_cast<Index>(i));

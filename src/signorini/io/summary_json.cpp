@@ -157,7 +157,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
           std::string(enum_to_string(kHierarchyKindNames, summary.multigrid_hierarchy));
   }
 
-  j["n_dofs"] = model.dofs.num_dofs();
+  j["n_dofs"] = model.num_dofs();
   j["n_free_dofs"] = model.dofs.num_free();
   j["n_contact_nodes"] = model.problem.contact.size();
   j["n_active"] = summary.num_active;

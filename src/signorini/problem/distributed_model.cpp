@@ -64,17 +64,53 @@ NodeGraph send_node_graph_rows(const NodeGraph& whole, const DistributedEngine& 
   return rows_of(whole, 0, vertex_share_start(whole.vertices, 1, ranks));
 }
 
-void send_model_parts(const Model& model, const Vector& whole_b,
-                      const std::vector<Vector>& whole_group_b, const ProblemSize& size,
-                      const DistributedEngine& engine) {
+namespace {
+
+// The full dofs of `nodes` (increasing whole-mesh numbers) in a vector of the whole mesh's full
+// dofs; empty stays empty.
+Vector nodes_rows(const Vector& full, const std::vector<Index>& nodes, int dim) {
+  if (full.size() == 0) return {};
+  Vector out(static_cast<Index>(nodes.size()) * dim);
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    out.segment(static_cast<Index>(i) * dim, dim) = full.segment(nodes[i] * dim, dim);
+  return out;
+}
+
+// Whole-mesh full dofs in the part's numbering (those of its nodes).
+std::vector<Index> part_dofs(const std::vector<Index>& dofs, const std::vector<Index>& nodes,
+                             int dim) {
+  std::vector<Index> out;
+  for (const Index d : dofs) {
+    const auto it = std::lower_bound(nodes.begin(), nodes.end(), d / dim);
+    if (it != nodes.end() && *it == d / dim)
+      out.push_back(static_cast<Index>(it - nodes.begin()) * dim + d % dim);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
+                                   const std::vector<Vector>& whole_group_b,
+                                   const ProblemSize& size, const DistributedEngine& engine,
+                                   std::vector<char>& everyone) {
   const Mesh& mesh = model.mesh;
   const DofMap& dofs = model.dofs;
   const ContactProblem& p = model.problem;
   const int dim = mesh.dim();
   const std::vector<int> group_of_dof = load_group_of_dofs(model.load_groups, dofs.num_dofs());
+  std::vector<char> own_part;
   {
     PartCells part_cells(mesh);
-    for (int r = 1; r < engine.size(); ++r) {
+    // Rank 0 accounts for the nodes without a free dof (Model::node_rank) and writes the cells
+    // without one: its part has the cells around them too.
+    std::vector<Index> held;
+    for (Index v = 0; v < mesh.num_nodes(); ++v) {
+      bool any = false;
+      for (int k = 0; k < dim; ++k) any = any || dofs.free_index(v, k) >= 0;
+      if (!any) held.push_back(v);
+    }
+    for (int r = 0; r < engine.size(); ++r) {
       const Index first = p.row_starts[static_cast<std::size_t>(r)];
       const Index last = p.row_starts[static_cast<std::size_t>(r) + 1];
       std::vector<Index> own;
@@ -82,26 +118,32 @@ void send_model_parts(const Model& model, const Vector& whole_b,
         const Index node = p.node_of_unknown[static_cast<std::size_t>(i)];
         if (own.empty() || own.back() != node) own.push_back(node);
       }
+      if (r == 0) own.insert(own.end(), held.begin(), held.end());
       const MeshPart part = mesh_part(mesh, part_cells.cells(own));
+      const std::vector<Index>& nodes = part.global_nodes;
       ByteWriter out;
       pack(out, part.mesh);
-      out.put(part.global_nodes);
-      pack(out, dofs.part(part.global_nodes));
+      out.put(nodes);
+      pack(out, dofs.part(nodes));
       out.put(Vector(whole_b.segment(first, last - first)));
+      out.put(nodes_rows(model.loads, nodes, dim));
+      for (const ClampedPart& c : model.clamped_parts) out.put(part_dofs(c.dofs, nodes, dim));
       // Each group's prescribed dofs in the part's numbering.
       std::vector<std::vector<Index>> prescribed(model.load_groups.size());
       if (!group_of_dof.empty())
-        for (std::size_t i = 0; i < part.global_nodes.size(); ++i)
+        for (std::size_t i = 0; i < nodes.size(); ++i)
           for (int k = 0; k < dim; ++k)
-            if (const int g =
-                    group_of_dof[static_cast<std::size_t>(part.global_nodes[i] * dim + k)];
-                g >= 0)
+            if (const int g = group_of_dof[static_cast<std::size_t>(nodes[i] * dim + k)]; g >= 0)
               prescribed[static_cast<std::size_t>(g)].push_back(static_cast<Index>(i) * dim + k);
       for (std::size_t g = 0; g < model.load_groups.size(); ++g) {
         out.put(Vector(whole_group_b[g].segment(first, last - first)));
         out.put(prescribed[g]);
+        out.put(nodes_rows(model.load_groups[g].loads, nodes, dim));
       }
-      engine.send_from_root(r, out.bytes());
+      if (r == 0)
+        own_part = std::move(out.bytes());
+      else
+        engine.send_from_root(r, out.bytes());
     }
   }
   // What every rank holds whole.
@@ -124,21 +166,33 @@ void send_model_parts(const Model& model, const Vector& whole_b,
   out.put(static_cast<std::int64_t>(size.contact_nodes));
   out.put(size.memory_bytes);
   out.put(static_cast<std::uint8_t>(size.friction));
-  out.put(Vector(mesh.coordinates().rowwise().mean()));
+  // The whole mesh's facts (WholeMesh).
+  const Vector centroid = mesh.coordinates().rowwise().mean();
+  double radius = 0.0;
+  for (Index v = 0; v < mesh.num_nodes(); ++v)
+    radius = std::max(radius, (mesh.node(v) - centroid).norm());
+  Eigen::MatrixXd contact_points(dim, p.contact.size()), contact_prescribed(dim, p.contact.size());
+  for (Index j = 0; j < p.contact.size(); ++j) {
+    const Index node = p.contact.nodes[static_cast<std::size_t>(j)];
+    contact_points.col(j) = mesh.node(node);
+    contact_prescribed.col(j) = dofs.prescribed_at(node);
+  }
+  out.put(centroid);
+  out.put(radius);
+  out.put_matrix(contact_points);
+  out.put_matrix(contact_prescribed);
+  std::vector<std::string> clamp_names;
+  for (const ClampedPart& c : model.clamped_parts) clamp_names.push_back(c.boundary);
+  out.put(clamp_names);
   out.put(static_cast<std::uint64_t>(model.load_groups.size()));
   for (const LoadGroup& g : model.load_groups) {
     out.put(g.entry);
     out.put(g.factors);
   }
-  engine.broadcast(out.bytes());
+  everyone = std::move(out.bytes());
+  engine.broadcast(everyone);
+  return own_part;
 }
-
-namespace {
-
-Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
-                             TimingTable& timings);
-
-}  // namespace
 
 Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
   TimingTable timings;
@@ -152,41 +206,40 @@ Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
     const NodeGraph graph = unpack_node_graph(in);
     (void)engine.partition(graph, spec.solver);
   }
-  expect_root_went_on(engine);  // rank 0 built the whole model but the others' stiffness
+  expect_root_went_on(engine);  // rank 0 built the whole model but the stiffness
   // From here a failure is this rank's alone (rank 0 found the input good): not InputError,
   // which the tool takes as every rank's (app/tool.cpp), but one that ends every rank.
   try {
-    return receive_announced_part(spec, engine, timings);
+    ScopedTimer receive_timer(timings, "mesh");
+    std::vector<char> part = engine.receive_from_root();
+    std::vector<char> everyone;
+    engine.broadcast(everyone);
+    receive_timer.stop();
+    return model_from_part(spec, std::move(part), std::move(everyone), engine.rank(),
+                           std::move(timings));
   } catch (const InputError& e) {
     throw std::runtime_error(fmt::format("building this rank's part of the model: {}", e.what()));
   }
 }
 
-namespace {
-
-Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
-                             TimingTable& timings) {
+Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vector<char> everyone,
+                      int rank, TimingTable timings) {
   ScopedTimer receive_timer(timings, "mesh");
   ContactProblem problem;
-  std::vector<char> bytes = engine.receive_from_root();
-  ByteReader in(bytes);
+  ByteReader in(part);
   Mesh mesh = unpack_mesh(in);
   std::vector<Index> global_nodes = in.get_vector<Index>();
   DofMap dofs = unpack_dof_map(in);
   problem.b = in.get_vector_xd();
-  std::vector<Vector> group_b;
+  Vector loads = in.get_vector_xd();
+  std::vector<std::vector<Index>> clamped_dofs;
+  std::vector<Vector> group_b, group_loads;
   std::vector<std::vector<Index>> group_prescribed;
-  while (!in.done()) {
-    group_b.push_back(in.get_vector_xd());
-    group_prescribed.push_back(in.get_vector<Index>());
-  }
-  bytes = {};
-  engine.broadcast(bytes);
-  ByteReader all(bytes);
+  ByteReader all(everyone);
   problem.row_starts = all.get_vector<Index>();
   problem.node_of_unknown = all.get_vector<Index>();
   problem.contact = unpack_contact_set(all);
-  problem.rank = engine.rank();
+  problem.rank = rank;
   std::vector<Index> contact_starts = all.get_vector<Index>();
   std::vector<std::string> contact_boundaries = all.get_strings();
   std::shared_ptr<const FrictionLaw> friction;
@@ -204,18 +257,27 @@ Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
   size.contact_nodes = all.get<std::int64_t>();
   size.memory_bytes = all.get<double>();
   size.friction = all.get<std::uint8_t>() != 0;
-  const Vector centre = all.get_vector_xd();
+  WholeMesh whole;
+  whole.nodes = size.nodes;
+  whole.centroid = all.get_vector_xd();
+  whole.radius = all.get<double>();
+  whole.contact_points = all.get_matrix();
+  whole.contact_prescribed = all.get_matrix();
+  std::vector<ClampedPart> clamps;
+  for (std::string& name : all.get_strings())
+    clamps.push_back({std::move(name), in.get_vector<Index>()});
   std::vector<LoadGroup> groups(static_cast<std::size_t>(all.get<std::uint64_t>()));
-  if (groups.size() != group_b.size())
-    throw NumericalError("the load groups of a rank's part do not match rank 0's");
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    groups[g].entry = all.get_string();
-    groups[g].factors = all.get_vector<double>();
-    groups[g].b = std::move(group_b[g]);
-    groups[g].prescribed_dofs = std::move(group_prescribed[g]);
+  for (LoadGroup& g : groups) {
+    g.entry = all.get_string();
+    g.factors = all.get_vector<double>();
+    g.b = in.get_vector_xd();
+    g.prescribed_dofs = in.get_vector<Index>();
+    g.loads = in.get_vector_xd();
   }
-  if (!all.done()) throw NumericalError("the model's message from rank 0 has a mismatched layout");
-  bytes = {};
+  if (!in.done() || !all.done())
+    throw NumericalError("the model's messages from rank 0 have a mismatched layout");
+  part = {};
+  everyone = {};
   receive_timer.stop();
 
   const ElasticityOptions elasticity = region_elasticity(spec, mesh.region_names());
@@ -235,7 +297,7 @@ Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
   const SolverPlan plan = plan_model_solver(spec, size, friction.get(), /*distributed=*/true);
   if (uses_multigrid(plan.options))
     problem.near_null_space =
-        rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &centre);
+        rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &whole.centroid);
   Model model{std::move(mesh),
               std::move(dofs),
               std::move(problem),
@@ -244,8 +306,8 @@ Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
               plan.reason,
               std::move(timings),
               elasticity,
-              Vector(),
-              {},
+              std::move(loads),
+              std::move(clamps),
               {},
               std::move(contact_boundaries),
               std::move(contact_starts),
@@ -253,10 +315,9 @@ Model receive_announced_part(const ProblemSpec& spec, DistributedEngine& engine,
               std::move(groups),
               std::move(gap_shift),
               std::move(gap_shift_group),
-              std::move(global_nodes)};
+              std::move(global_nodes),
+              std::move(whole)};
   return model;
 }
-
-}  // namespace
 
 }  // namespace signorini

@@ -1,11 +1,11 @@
 #pragma once
 // The model of a distributed run on more than one rank (docs/distributed.md, "The mesh in
 // parts"). Rank 0 alone reads the mesh and builds the whole model as a serial run does, except
-// the stiffness (its own columns only); it sends each other rank the node graph's rows to
-// partition, then its part of the model (parallel/model_part.hpp), then what every rank holds
-// whole (the contact set, the partition). The other ranks build their stiffness columns and
-// rigid-body modes from their part. A failure on rank 0 reaches the others as the one message
-// that rank 0 reports.
+// the stiffness; it sends each other rank the node graph's rows to partition, then its part of
+// the model (parallel/model_part.hpp), then what every rank holds whole (the contact set, the
+// partition, the whole mesh's facts). Every rank, rank 0 too, then builds its model from its
+// part: the stiffness columns and rigid-body modes of its unknowns; rank 0 lets the whole go.
+// A failure on rank 0 reaches the others as the one message that rank 0 reports.
 
 #include <string>
 #include <vector>
@@ -40,13 +40,23 @@ class RootAnnouncements {
                                              const DistributedEngine& engine);
 
 /// Rank 0: sends each other rank its part of `model` (whole, partitioned), with its rows of the
-/// whole b and of each load group's b, then broadcasts what every rank holds whole.
-void send_model_parts(const Model& model, const Vector& whole_b,
-                      const std::vector<Vector>& whole_group_b, const ProblemSize& size,
-                      const DistributedEngine& engine);
+/// whole b and of each load group's b, then broadcasts what every rank holds whole (kept in
+/// `everyone`). Returns rank 0's own part, for model_from_part: it accounts for the nodes
+/// without a free dof (Model::node_rank), so it has the cells around them too.
+[[nodiscard]] std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
+                                                 const std::vector<Vector>& whole_group_b,
+                                                 const ProblemSize& size,
+                                                 const DistributedEngine& engine,
+                                                 std::vector<char>& everyone);
 
 /// Every other rank: its model, from what rank 0 sends (the same calls in the same order).
 [[nodiscard]] Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine);
+
+/// A rank's model from its part's bytes and those that every rank gets (send_model_parts): the
+/// part of the mesh, its stiffness columns (assembled here) and rigid-body modes, the rank's
+/// rows of b. `timings` so far go on.
+[[nodiscard]] Model model_from_part(const ProblemSpec& spec, std::vector<char> part,
+                                    std::vector<char> everyone, int rank, TimingTable timings);
 
 /// The solver plan of a model of this size (solver_plan.hpp), with the friction law and, on the
 /// distributed path, the reason that says so: rank 0's and every other rank's alike.

@@ -416,7 +416,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                                          SparseMatrix(0, dofs.num_free()));
     problem.rank = engine.rank();
   }
-  {
+  if (parts == nullptr) {
     ScopedTimer t(timings, "assembly");
     if (distributed) {
       const DistributedEngine& engine = required_distributed_engine();
@@ -543,8 +543,8 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
   const bool multigrid_cg = uses_multigrid(plan.options);
   if (distributed) {
     // PETSc's algebraic multigrid builds its own levels, from the rigid-body modes.
-    // (Each rank its own rows: 6 numbers per unknown in 3D.)
-    if (multigrid_cg)
+    // (Each rank its own rows: 6 numbers per unknown in 3D; on several ranks from its part.)
+    if (multigrid_cg && parts == nullptr)
       problem.near_null_space =
           rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row());
   } else if (multigrid_cg) {
@@ -554,30 +554,54 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
   }
   std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, owner);
-  auto [gap_shift, gap_shift_group] = contact_gap_shift(problem.contact, dofs, groups);
-  Model model{std::move(mesh),
-              std::move(dofs),
-              std::move(problem),
-              std::move(multigrid),
-              plan.options,
-              plan.reason,
-              std::move(timings),
-              elasticity,
-              std::move(loads),
-              std::move(clamps),
-              std::move(placed),
-              std::move(contact_boundaries),
-              std::move(contact_starts),
-              std::move(friction),
-              std::move(groups),
-              std::move(gap_shift),
-              std::move(gap_shift_group),
-              {}};
-  if (parts != nullptr) {
+  auto gap_shifts = contact_gap_shift(problem.contact, dofs, groups);
+  const auto whole_model = [&] {
+    return Model{std::move(mesh),
+                 std::move(dofs),
+                 std::move(problem),
+                 std::move(multigrid),
+                 plan.options,
+                 plan.reason,
+                 std::move(timings),
+                 elasticity,
+                 std::move(loads),
+                 std::move(clamps),
+                 std::move(placed),
+                 std::move(contact_boundaries),
+                 std::move(contact_starts),
+                 std::move(friction),
+                 std::move(groups),
+                 std::move(gap_shifts.first),
+                 std::move(gap_shifts.second),
+                 {},
+                 {}};
+  };
+  if (parts == nullptr) return whole_model();
+  // Rank 0 of several: the others' parts sent, its own model is its part too, as theirs are;
+  // the whole model goes before rank 0 builds its part.
+  const DistributedEngine& engine = required_distributed_engine();
+  std::vector<char> everyone, own;
+  TimingTable so_far;
+  std::vector<PlacedPointLoad> point_loads;
+  {
+    const Model whole = whole_model();
     parts->ok();
-    send_model_parts(model, whole_b, whole_group_b, size, required_distributed_engine());
+    own = send_model_parts(whole, whole_b, whole_group_b, size, engine, everyone);
+    so_far = whole.timings;
+    point_loads = whole.point_loads;
   }
-  return model;
+  whole_b = {};
+  whole_group_b = {};
+  owner = {};
+  // (A failure from here is rank 0's alone, as on the other ranks: receive_model_part.)
+  try {
+    Model part = model_from_part(spec, std::move(own), std::move(everyone), engine.rank(),
+                                 std::move(so_far));
+    part.point_loads = std::move(point_loads);
+    return part;
+  } catch (const InputError& e) {
+    throw std::runtime_error(fmt::format("building this rank's part of the model: {}", e.what()));
+  }
 }
 
 }  // namespace
@@ -641,6 +665,24 @@ Index Model::local_node(Index node) const {
   const auto it = std::lower_bound(global_nodes.begin(), global_nodes.end(), node);
   return it != global_nodes.end() && *it == node ? static_cast<Index>(it - global_nodes.begin())
                                                  : -1;
+}
+
+int Model::node_rank(Index node) const {
+  if (!problem.partitioned()) return 0;
+  const std::vector<Index>& starts = problem.row_starts;
+  for (int k = 0; k < dofs.dim(); ++k)
+    if (const Index f = dofs.free_index(node, k); f >= 0)
+      return static_cast<int>(std::upper_bound(starts.begin(), starts.end(), f) - starts.begin()) -
+             1;
+  return 0;
+}
+
+int Model::cell_rank(Index cell) const {
+  if (!problem.partitioned()) return 0;
+  for (const Index node : mesh.cell(cell))
+    for (int k = 0; k < dofs.dim(); ++k)
+      if (dofs.free_index(node, k) >= 0) return node_rank(node);
+  return 0;
 }
 
 Vector Model::full_displacement(const Vector& u, double factor, int step) const {

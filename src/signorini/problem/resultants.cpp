@@ -7,6 +7,7 @@
 
 #include "signorini/contact/tangent_basis.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -41,9 +42,18 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
                               const Matrix& tangential, double load_factor, int load_step) {
   const Mesh& mesh = model.mesh;
   const int dim = mesh.dim();
+  // On a rank's part of the mesh (docs/distributed.md) each rank sums what it accounts for: the
+  // loads and contact forces of the nodes, and the internal forces of the cells, that
+  // Model::node_rank and cell_rank give it; the sums then add up over the ranks.
+  const bool part = model.is_part();
+  const int rank = model.problem.rank;
   Resultants r;
-  const Vector centroid = mesh.coordinates().rowwise().mean();
+  const Vector centroid = part ? model.whole.centroid : Vector(mesh.coordinates().rowwise().mean());
   for (int k = 0; k < dim; ++k) r.reference(k) = centroid(k);
+  std::vector<bool> counted(static_cast<std::size_t>(mesh.num_nodes()), true);
+  if (part)
+    for (Index v = 0; v < mesh.num_nodes(); ++v)
+      counted[static_cast<std::size_t>(v)] = model.node_rank(v) == rank;
 
   // The foundation's force on the body, -h_j l_j nu_j at contact node j, on the full dofs; with
   // friction also -h_j l_t,j along the node's tangents (B^T W l of the equilibrium).
@@ -52,41 +62,74 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   const bool friction = tangential.cols() == c.size() && tangential.size() > 0;
   const Matrix along = friction ? cartesian_tangential(c.normals, tangential) : Matrix();
   for (Index j = 0; j < c.size(); ++j) {
+    const Index node = model.local_node(c.nodes[static_cast<std::size_t>(j)]);
+    if (node < 0 || !counted[static_cast<std::size_t>(node)]) continue;
     Eigen::VectorXd force = -c.weights(j) * l(j) * c.normals.col(j);
     if (friction) force -= c.weights(j) * along.col(j);
-    for (int k = 0; k < dim; ++k)
-      contact(c.nodes[static_cast<std::size_t>(j)] * dim + k) += force(k);
+    for (int k = 0; k < dim; ++k) contact(node * dim + k) += force(k);
   }
 
   Sum applied, foundation;
-  const Vector loads = model.applied_loads(load_factor, load_step);
+  Vector loads = model.applied_loads(load_factor, load_step);
+  if (loads.size() == 0) loads = Vector::Zero(model.dofs.num_dofs());
   for (Index i = 0; i < model.dofs.num_dofs(); ++i) {
+    if (!counted[static_cast<std::size_t>(i / dim)]) continue;
     if (loads(i) != 0.0) applied.add(mesh, r.reference, i, loads(i));
     if (contact(i) != 0.0) foundation.add(mesh, r.reference, i, contact(i));
   }
-  r.applied = applied.force;
-  r.applied_moment = applied.moment;
-  r.contact = foundation.force;
-  r.contact_moment = foundation.moment;
 
-  // K u only where it is needed: in the cells that touch a clamped dof.
+  // K u only where it is needed: in the cells that touch a clamped dof (on a part those that
+  // the rank accounts for).
   const Vector full_u = model.full_displacement(u, load_factor, load_step);
   const auto touches_clamp = [&](Index cell) {
+    if (part && model.cell_rank(cell) != rank) return false;
     for (const Index node : mesh.cell(cell))
       for (int k = 0; k < dim; ++k)
         if (model.dofs.is_clamped(node, k)) return true;
     return false;
   };
   const Vector Ku = internal_forces(mesh, model.elasticity, full_u, touches_clamp);
+  std::vector<Sum> reactions;
+  for (const ClampedPart& clamped : model.clamped_parts) {
+    Sum reaction;
+    for (const Index dof : clamped.dofs) {
+      const bool node_counted = counted[static_cast<std::size_t>(dof / dim)];
+      const double value = Ku(dof) - (node_counted ? loads(dof) + contact(dof) : 0.0);
+      if (value != 0.0) reaction.add(mesh, r.reference, dof, value);
+    }
+    reactions.push_back(reaction);
+  }
+  if (part) {  // the sums over the ranks, in one message
+    std::vector<double> sums;
+    const auto put = [&](const Sum& s) {
+      sums.insert(sums.end(), s.force.data(), s.force.data() + 3);
+      sums.insert(sums.end(), s.moment.data(), s.moment.data() + 3);
+    };
+    put(applied);
+    put(foundation);
+    for (const Sum& s : reactions) put(s);
+    sum_over_ranks(model.problem, sums.data(), static_cast<Index>(sums.size()));
+    std::size_t at = 0;
+    const auto take = [&](Sum& s) {
+      s.force = Eigen::Vector3d(sums[at], sums[at + 1], sums[at + 2]);
+      s.moment = Eigen::Vector3d(sums[at + 3], sums[at + 4], sums[at + 5]);
+      at += 6;
+    };
+    take(applied);
+    take(foundation);
+    for (Sum& s : reactions) take(s);
+  }
+  r.applied = applied.force;
+  r.applied_moment = applied.moment;
+  r.contact = foundation.force;
+  r.contact_moment = foundation.moment;
   double scale = r.applied.norm() + r.contact.norm();
   double moment_scale = r.applied_moment.norm() + r.contact_moment.norm();
   Eigen::Vector3d total = r.applied + r.contact;
   Eigen::Vector3d total_moment = r.applied_moment + r.contact_moment;
-  for (const ClampedPart& part : model.clamped_parts) {
-    Sum reaction;
-    for (const Index dof : part.dofs)
-      reaction.add(mesh, r.reference, dof, Ku(dof) - loads(dof) - contact(dof));
-    r.reactions.push_back({part.boundary, reaction.force, reaction.moment});
+  for (std::size_t i = 0; i < reactions.size(); ++i) {
+    const Sum& reaction = reactions[i];
+    r.reactions.push_back({model.clamped_parts[i].boundary, reaction.force, reaction.moment});
     total += reaction.force;
     total_moment += reaction.moment;
     scale += reaction.force.norm();
@@ -97,9 +140,10 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   r.relative_balance = scale > 0.0 ? total.norm() / scale : 0.0;
   // Moments that cancel by symmetry (a block pressed straight down) are no scale: the forces
   // times the body's size are.
-  double size = 0.0;
-  for (Index v = 0; v < mesh.num_nodes(); ++v)
-    size = std::max(size, (mesh.point(v) - r.reference).norm());
+  double size = model.whole.radius;
+  if (!part)
+    for (Index v = 0; v < mesh.num_nodes(); ++v)
+      size = std::max(size, (mesh.point(v) - r.reference).norm());
   moment_scale = std::max(moment_scale, scale * size);
   r.relative_moment_balance = moment_scale > 0.0 ? total_moment.norm() / moment_scale : 0.0;
   return r;
