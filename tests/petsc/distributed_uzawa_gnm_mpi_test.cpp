@@ -55,24 +55,36 @@ void expect_own_columns(const ProblemSpec& spec) {
   const Index lo = part.problem.row_starts[static_cast<std::size_t>(engine.rank())];
   const Index hi = part.problem.row_starts[static_cast<std::size_t>(engine.rank()) + 1];
   // The two models number the unknowns differently (the distributed one rank by rank, after
-  // the partition): whole_of[i] is the serial number of the distributed model's unknown i. A
-  // rank of several holds its part of the mesh only (Model::is_part): the whole mesh's node
-  // of each unknown (ContactProblem::node_of_unknown), and its free components in order, give
-  // the rest.
+  // the partition): whole_of[i] is the serial number of the distributed model's unknown i. On
+  // more than one rank each rank holds its part of the mesh only (Model::is_part) and the mesh
+  // node of its own unknowns (ContactProblem::node_of_unknown): those nodes and their free
+  // components in order give its own unknowns' numbers, and the part's numbering the rest.
   const SparseMatrix& A = part.problem.A;
   EXPECT_EQ(part.is_part(), engine.size() > 1);
+  const std::vector<Index>& node_of = part.problem.node_of_unknown;
+  ASSERT_EQ(static_cast<Index>(node_of.size()), part.is_part() ? hi - lo : A.rows());
+  const Index offset_of_first = part.is_part() ? lo : 0;
   std::vector<Index> whole_of(static_cast<std::size_t>(A.rows()), -1);
-  for (Index i = 0, offset = 0; i < A.rows(); ++i) {
-    const Index node = part.problem.node_of_unknown[static_cast<std::size_t>(i)];
-    offset = i > 0 && part.problem.node_of_unknown[static_cast<std::size_t>(i) - 1] == node
-                 ? offset + 1
-                 : 0;
+  for (Index i = lo, offset = 0; i < hi; ++i) {
+    const auto at = static_cast<std::size_t>(i - offset_of_first);
+    const Index node = node_of[at];
+    offset = i > lo && node_of[at - 1] == node ? offset + 1 : 0;
     for (int k = 0, seen = 0; k < whole.dofs.dim(); ++k)
       if (whole.dofs.free_index(node, k) >= 0 && seen++ == offset)
         whole_of[static_cast<std::size_t>(i)] = whole.dofs.free_index(node, k);
     ASSERT_GE(whole_of[static_cast<std::size_t>(i)], 0) << "unknown " << i;
   }
-  // (And the part's own numbering agrees with it at the part's nodes.)
+  {  // every rank's, put together (each unknown is one rank's own)
+    std::vector<double> sum(static_cast<std::size_t>(A.rows()), 0.0);
+    for (Index i = lo; i < hi; ++i)
+      sum[static_cast<std::size_t>(i)] =
+          static_cast<double>(whole_of[static_cast<std::size_t>(i)] + 1);
+    engine.sum(sum.data(), A.rows());
+    for (Index i = 0; i < A.rows(); ++i)
+      whole_of[static_cast<std::size_t>(i)] =
+          static_cast<Index>(sum[static_cast<std::size_t>(i)]) - 1;
+  }
+  // (And the part's own numbering agrees with it at every node of the part.)
   for (Index v = 0; v < part.dofs.num_nodes(); ++v) {
     const Index node = part.is_part() ? part.global_nodes[static_cast<std::size_t>(v)] : v;
     for (int k = 0; k < part.dofs.dim(); ++k)
@@ -170,7 +182,11 @@ TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
   ASSERT_EQ(model.problem.near_null_space.cols(), 6);
   ASSERT_EQ(model.problem.near_null_space.rows(),
             model.problem.end_row() - model.problem.first_row());  // this rank's rows
-  ASSERT_EQ(model.problem.node_of_unknown.size(), static_cast<std::size_t>(model.problem.A.rows()));
+  // The node of each of this rank's unknowns, for PETSc's node blocks (on more than one rank
+  // the rank's own unknowns' only).
+  ASSERT_EQ(static_cast<Index>(model.problem.node_of_unknown.size()),
+            model.is_part() ? model.problem.end_row() - model.problem.first_row()
+                            : model.problem.A.rows());
   const ContactResult distributed = testing::distributed_solve(model, model.solver);
   const Model serial_model = testing::serial_model(spec);
   const ContactResult serial = testing::serial_solve(serial_model, serial_model.solver);

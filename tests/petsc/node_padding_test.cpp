@@ -3,6 +3,9 @@
 #include "signorini/petsc/node_padding.hpp"
 
 #include <gtest/gtest.h>
+#include <petscsys.h>
+
+#include <algorithm>
 
 namespace signorini::petsc {
 namespace {
@@ -85,6 +88,51 @@ TEST(NodePadding, LeavesWholeBlocksAlone) {
   const NodePadding unknown({}, 6);  // no node numbers: no blocks
   EXPECT_FALSE(unknown.active());
   EXPECT_EQ(unknown.block(), 1);
+}
+
+}  // namespace
+}  // namespace signorini::petsc
+
+namespace signorini::petsc {
+namespace {
+
+// Each rank knowing only its own unknowns (the ranks' parts of the mesh): the same slots as the
+// padding made from all of them, for its own unknowns and for the others' that it asks for, and
+// its own unknowns back from its slots. On 1, 2 and 4 ranks, each rank a run of whole nodes.
+TEST(NodePadding, EachRankKnowingItsOwnGetsTheWholeSlots) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  // Five nodes per rank: with 3, 1, 2, 3 and 2 free unknowns.
+  std::vector<Index> nodes, starts{0};
+  for (int r = 0; r < size; ++r) {
+    for (Index k = 0; k < 5; ++k)
+      for (Index c = 0; c < std::vector<Index>{3, 1, 2, 3, 2}[static_cast<std::size_t>(k)]; ++c)
+        nodes.push_back(100 * r + k);
+    starts.push_back(static_cast<Index>(nodes.size()));
+  }
+  const Index n = starts.back();
+  const Index first = starts[static_cast<std::size_t>(rank)];
+  const Index last = starts[static_cast<std::size_t>(rank) + 1];
+  const NodePadding whole(nodes, n);
+  std::vector<Index> ghosts;  // every other rank's first and last unknown
+  for (int r = 0; r < size; ++r)
+    if (r != rank) {
+      ghosts.push_back(starts[static_cast<std::size_t>(r)]);
+      ghosts.push_back(starts[static_cast<std::size_t>(r) + 1] - 1);
+    }
+  std::sort(ghosts.begin(), ghosts.end());
+  const NodePadding own(std::vector<Index>(nodes.begin() + first, nodes.begin() + last), first,
+                        last, n, ghosts, PETSC_COMM_WORLD);
+  ASSERT_TRUE(own.active());
+  EXPECT_EQ(own.block(), whole.block());
+  EXPECT_EQ(own.size(), whole.size());
+  EXPECT_EQ(own.start(first), whole.start(first));
+  EXPECT_EQ(own.start(last), whole.start(last));
+  for (Index i = first; i < last; ++i) EXPECT_EQ(own.slot(i), whole.slot(i)) << i;
+  for (const Index g : ghosts) EXPECT_EQ(own.slot(g), whole.slot(g)) << g;
+  const Vector values = Vector::LinSpaced(last - first, 1.0, 2.0);
+  EXPECT_EQ(own.own_unknowns(own.rows(values, first, last), first, last), values);
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ struct ContactProblem {
   /// Optional aids for a distributed solve (docs/distributed.md), empty unless build_model plans
   /// one: the near-null space of A for algebraic multigrid (the rigid-body modes on the free
   /// dofs, n x 3 in 2D, n x 6 in 3D; a partitioned problem: this rank's rows only), and the mesh
-  /// node of each free dof (all n), so that the dofs of a node stay on one rank.
+  /// node of each free dof (all n, or on the ranks' parts of the mesh this rank's rows only), so
+  /// that the dofs of a node stay on one rank and go to PETSc as one block.
   Matrix near_null_space = {};
   std::vector<Index> node_of_unknown = {};
   /// Non-empty for a partitioned problem (docs/distributed.md): rank `rank` of a distributed run

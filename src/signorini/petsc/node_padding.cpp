@@ -1,6 +1,12 @@
 #include "signorini/petsc/node_padding.hpp"
 
+#include <petscvec.h>
+
 #include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "signorini/petsc/petsc_check.hpp"
 
 namespace signorini::petsc {
 
@@ -40,9 +46,98 @@ NodePadding::NodePadding(const std::vector<Index>& node_of_unknown, Index n) : n
   });
 }
 
+NodePadding::NodePadding(const std::vector<Index>& own_nodes, Index first, Index last, Index n,
+                         const std::vector<Index>& ghosts, MPI_Comm comm)
+    : n_(n), size_(n), first_(first), last_(last), begin_(first), end_(last) {
+  const Index m = last - first;
+  if (static_cast<Index>(own_nodes.size()) != m)
+    throw std::logic_error("NodePadding: the nodes of a rank's unknowns, one per unknown");
+  long long extremes[2] = {-static_cast<long long>(std::numeric_limits<Index>::max()), 0};
+  long long nodes = 0;
+  for_each_node(own_nodes, m, [&](Index begin, Index end) {
+    extremes[0] = std::max<long long>(extremes[0], -(end - begin));  // minus the shortest
+    extremes[1] = std::max<long long>(extremes[1], end - begin);
+    ++nodes;
+  });
+  MPI_Allreduce(MPI_IN_PLACE, extremes, 2, MPI_LONG_LONG, MPI_MAX, comm);
+  if (extremes[1] == 0) return;  // no unknowns anywhere
+  block_ = static_cast<Index>(extremes[1]);
+  if (-extremes[0] == extremes[1]) return;  // whole blocks already
+  // The slots of this rank's nodes follow those of the ranks before it.
+  long long before = 0, total = 0;
+  MPI_Exscan(&nodes, &before, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0) before = 0;  // (MPI_Exscan leaves it undefined there)
+  MPI_Allreduce(&nodes, &total, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  distributed_ = true;
+  size_ = static_cast<Index>(total) * block_;
+  begin_ = static_cast<Index>(before) * block_;
+  end_ = begin_ + static_cast<Index>(nodes) * block_;
+  slot_.resize(static_cast<std::size_t>(m));
+  Index node = static_cast<Index>(before);
+  for_each_node(own_nodes, m, [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i)
+      slot_[static_cast<std::size_t>(i)] = node * block_ + (i - begin);
+    ++node;
+  });
+  // The ghosts' slots from their owners: a distributed vector of every unknown's slot, read at
+  // the ghosts (PETSc's scatter).
+  ghosts_ = ghosts;
+  Vec slots = nullptr, got = nullptr;
+  check(VecCreateMPI(comm, static_cast<PetscInt>(m), static_cast<PetscInt>(n), &slots),
+        "the padding's slots");
+  PetscScalar* a = nullptr;
+  check(VecGetArray(slots, &a), "the padding's slots");
+  for (Index i = 0; i < m; ++i) a[i] = static_cast<PetscScalar>(slot_[static_cast<std::size_t>(i)]);
+  check(VecRestoreArray(slots, &a), "the padding's slots");
+  const std::vector<PetscInt> at(ghosts.begin(), ghosts.end());
+  check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(at.size()), &got),
+        "the padding's slots");
+  IS from = nullptr;
+  check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(at.size()), at.data(),
+                        PETSC_COPY_VALUES, &from),
+        "the padding's slots");
+  VecScatter scatter = nullptr;
+  check(VecScatterCreate(slots, from, got, nullptr, &scatter), "the padding's slots");
+  check(VecScatterBegin(scatter, slots, got, INSERT_VALUES, SCATTER_FORWARD),
+        "the padding's slots");
+  check(VecScatterEnd(scatter, slots, got, INSERT_VALUES, SCATTER_FORWARD), "the padding's slots");
+  const PetscScalar* g = nullptr;
+  check(VecGetArrayRead(got, &g), "the padding's slots");
+  ghost_slots_.resize(at.size());
+  for (std::size_t k = 0; k < at.size(); ++k) ghost_slots_[k] = static_cast<Index>(g[k]);
+  check(VecRestoreArrayRead(got, &g), "the padding's slots");
+  VecScatterDestroy(&scatter);
+  ISDestroy(&from);
+  VecDestroy(&got);
+  VecDestroy(&slots);
+}
+
+Index NodePadding::slot(Index i) const {
+  if (!active()) return i;
+  if (!distributed_) return slot_[static_cast<std::size_t>(i)];
+  if (i >= first_ && i < last_) return slot_[static_cast<std::size_t>(i - first_)];
+  const auto it = std::lower_bound(ghosts_.begin(), ghosts_.end(), i);
+  if (it == ghosts_.end() || *it != i)
+    throw std::logic_error("NodePadding::slot: an unknown neither of this rank nor a ghost");
+  return ghost_slots_[static_cast<std::size_t>(it - ghosts_.begin())];
+}
+
 Index NodePadding::start(Index i) const {
   if (!active()) return i;
-  return i >= n_ ? size_ : slot_[static_cast<std::size_t>(i)];
+  if (i >= n_) return size_;
+  if (distributed_ && i == last_) return end_;
+  if (distributed_ && i == first_) return begin_;
+  return slot(i);
+}
+
+Vector NodePadding::own_unknowns(const Vector& slots, Index first, Index last) const {
+  if (!active()) return slots;
+  const Index lo = start(first);
+  Vector out(last - first);
+  for (Index i = first; i < last; ++i) out(i - first) = slots(slot(i) - lo);
+  return out;
 }
 
 SparseMatrix NodePadding::matrix(const SparseMatrix& A, Index lo, Index hi) const {
@@ -105,6 +200,7 @@ Matrix NodePadding::rows(const Matrix& rows, Index first, Index last) const {
 
 Vector NodePadding::unknowns(const Vector& slots) const {
   if (!active()) return slots;
+  if (distributed_) throw std::logic_error("NodePadding::unknowns: each rank knows its own only");
   Vector out(n_);
   for (Index i = 0; i < n_; ++i) out(i) = slots(slot(i));
   return out;

@@ -10,6 +10,8 @@
 // zero near-null space. Such a slot is decoupled: CG leaves it at zero, and it changes no other
 // unknown's value.
 
+#include <mpi.h>
+
 #include <vector>
 
 #include "signorini/core/types.hpp"
@@ -22,6 +24,13 @@ class NodePadding {
   /// Blocks of the most unknowns any node has; none (every slot an unknown) where all nodes have
   /// as many, or where the nodes are not known.
   NodePadding(const std::vector<Index>& node_of_unknown, Index n);
+  /// The same where each rank knows only its own unknowns [first, last) of n (`own_nodes`: the
+  /// node of each), as on the ranks' parts of the mesh (docs/distributed.md): the ranks agree
+  /// on the block through `comm` (a collective call), number their nodes' slots one rank after
+  /// the other, and learn the slots of the others' unknowns that this rank's columns of A
+  /// reach (`ghosts`, increasing) from their owners.
+  NodePadding(const std::vector<Index>& own_nodes, Index first, Index last, Index n,
+              const std::vector<Index>& ghosts, MPI_Comm comm);
 
   /// Whether some node has padding slots.
   [[nodiscard]] bool active() const { return size_ != n_; }
@@ -29,10 +38,8 @@ class NodePadding {
   [[nodiscard]] Index block() const { return block_; }
   /// Unknowns and padding slots together.
   [[nodiscard]] Index size() const { return size_; }
-  /// The slot of unknown i.
-  [[nodiscard]] Index slot(Index i) const {
-    return active() ? slot_[static_cast<std::size_t>(i)] : i;
-  }
+  /// The slot of unknown i (where each rank knows its own: one of its own or of its ghosts).
+  [[nodiscard]] Index slot(Index i) const;
   /// The first slot of the node of unknown i, where i starts its node's unknowns (a rank's range
   /// [lo, hi) of unknowns becomes [start(lo), start(hi)) of slots; start(n) = size()).
   [[nodiscard]] Index start(Index i) const;
@@ -46,10 +53,17 @@ class NodePadding {
   [[nodiscard]] Matrix rows(const Matrix& rows, Index first, Index last) const;
   /// The unknowns' entries of a vector on the slots.
   [[nodiscard]] Vector unknowns(const Vector& slots) const;
+  /// The entries of the unknowns [first, last) from the rank's slots [start(first), start(last)).
+  [[nodiscard]] Vector own_unknowns(const Vector& slots, Index first, Index last) const;
 
  private:
   Index n_ = 0, size_ = 0, block_ = 1;
-  std::vector<Index> slot_;  // per unknown; empty where not active
+  std::vector<Index> slot_;  // per unknown (distributed: per own unknown); empty where not active
+  // Distributed only: the own unknowns [first_, last_) on the slots [begin_, end_), and the
+  // slots of the ghosts.
+  bool distributed_ = false;
+  Index first_ = 0, last_ = 0, begin_ = 0, end_ = 0;
+  std::vector<Index> ghosts_, ghost_slots_;
 };
 
 }  // namespace signorini::petsc

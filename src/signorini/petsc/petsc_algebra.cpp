@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 #if defined(__GLIBC__)
@@ -159,19 +160,34 @@ void set_owned(Vec v, const Vector& rows) {
 }
 
 Vector gather(Vec v) {
-  VecScatter scatter = nullptr;
-  Vec all = nullptr;
-  check(VecScatterCreateToAll(v, &scatter, &all), "gathering a vector");
-  check(VecScatterBegin(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD), "gathering a vector");
-  check(VecScatterEnd(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD), "gathering a vector");
-  PetscInt n = 0;
-  check(VecGetSize(all, &n), "gathering a vector");
+  PetscInt m = 0;
+  check(VecGetLocalSize(v, &m), "gathering a vector");
   const PetscScalar* a = nullptr;
-  check(VecGetArrayRead(all, &a), "gathering a vector");
-  Vector whole = Eigen::Map<const Vector>(a, n);
-  check(VecRestoreArrayRead(all, &a), "gathering a vector");
-  VecScatterDestroy(&scatter);
-  VecDestroy(&all);
+  check(VecGetArrayRead(v, &a), "gathering a vector");
+  const Vector own = Eigen::Map<const Vector>(a, m);
+  check(VecRestoreArrayRead(v, &a), "gathering a vector");
+  return allgather(own, PetscObjectComm(reinterpret_cast<PetscObject>(v)));
+}
+
+Vector allgather(const Vector& own, MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  // (MPI's counts are ints: a vector of more than 2^31 - 1 entries would need MPI 4's.)
+  if (own.size() > std::numeric_limits<int>::max())
+    throw NumericalError("gathering a vector: more entries on one rank than MPI counts");
+  const int mine = static_cast<int>(own.size());
+  std::vector<int> counts(static_cast<std::size_t>(size)), starts(static_cast<std::size_t>(size));
+  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  long long total = 0;
+  for (int r = 0; r < size; ++r) {
+    if (total > std::numeric_limits<int>::max())
+      throw NumericalError("gathering a vector: more entries than MPI counts");
+    starts[static_cast<std::size_t>(r)] = static_cast<int>(total);
+    total += counts[static_cast<std::size_t>(r)];
+  }
+  Vector whole(static_cast<Index>(total));
+  MPI_Allgatherv(own.data(), mine, MPI_DOUBLE, whole.data(), counts.data(), starts.data(),
+                 MPI_DOUBLE, comm);
   return whole;
 }
 

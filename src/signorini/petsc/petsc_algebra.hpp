@@ -59,6 +59,9 @@ void set_owned(Vec v, const Vector& rows);
 
 /// The whole vector on every rank.
 [[nodiscard]] Vector gather(Vec v);
+/// The ranks' entries `own` (each rank's, in the order of the ranks) put together on every rank:
+/// one MPI_Allgatherv into the result, with no whole copy beside it.
+[[nodiscard]] Vector allgather(const Vector& own, MPI_Comm comm);
 
 /// What configure_ksp chose.
 struct KspChoice {

@@ -5,12 +5,39 @@
 #include <algorithm>
 #include <functional>
 
+#include "signorini/core/error.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
 namespace signorini {
 
 using petsc::check;
+
+namespace {
+
+// The padding of the problem's unknowns (node_padding.hpp): from the node of each of all n
+// unknowns where the problem has them, else (the ranks' parts of the mesh) from the rank's own
+// and the ghosts that its columns of A reach.
+petsc::NodePadding node_padding(const ContactProblem& problem, MPI_Comm comm) {
+  const Index n = problem.A.rows();
+  const auto [first, last] = petsc::owned_rows(problem, comm);
+  const auto& nodes = problem.node_of_unknown;
+  // (Every rank takes the same branch: the second is collective.)
+  int whole = nodes.empty() || static_cast<Index>(nodes.size()) == n ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &whole, 1, MPI_INT, MPI_MIN, comm);
+  if (whole != 0) return {nodes, n};
+  if (static_cast<Index>(nodes.size()) != last - first)
+    throw NumericalError("the nodes of the unknowns: neither all of them nor this rank's");
+  std::vector<Index> ghosts;
+  for (Index col = first; col < last; ++col)
+    for (SparseMatrix::InnerIterator it(problem.A, col); it; ++it)
+      if (it.row() < first || it.row() >= last) ghosts.push_back(it.row());
+  std::sort(ghosts.begin(), ghosts.end());
+  ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
+  return {nodes, first, last, n, ghosts, comm};
+}
+
+}  // namespace
 
 PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
                                    const ContactSolverOptions& options, const Vector& x0,
@@ -19,7 +46,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
       o_(options),
       timings_(timings),
       comm_(comm),
-      padding_(problem.node_of_unknown, problem.A.rows()) {
+      padding_(node_padding(problem, comm)) {
   ScopedTimer timer(timings_, "distributed set-up");
   n_ = problem.A.rows();
   nc_ = problem.contact.N.rows();
@@ -28,6 +55,8 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   // The unknowns in whole node blocks (node_padding.hpp): this rank's range [first, last) of
   // unknowns becomes [lo_, hi_) of slots.
   const auto [first, last] = petsc::owned_rows(problem, comm_);
+  first_ = first;
+  last_ = last;
   lo_ = padding_.start(first);
   hi_ = padding_.start(last);
   if (padding_.active() || !problem.partitioned())
@@ -69,13 +98,14 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   // The contact rows of this rank: all the dofs of a row lie in one range (row_partition).
   const SparseMatrix Nt = problem.contact.N.transpose();
   for (Index j = 0; j < nc_; ++j) {
+    SparseMatrix::InnerIterator it(Nt, j);
+    if (!it || it.row() < first || it.row() >= last) continue;
     petsc::ContactRow row{j, {}, {}};
-    for (SparseMatrix::InnerIterator it(Nt, j); it; ++it) {
+    for (; it; ++it) {
       row.dofs.push_back(static_cast<PetscInt>(padding_.slot(it.row())));
       row.normal.push_back(it.value());
     }
-    if (!row.dofs.empty() && row.dofs.front() >= lo_ && row.dofs.front() < hi_)
-      rows_.push_back(std::move(row));
+    rows_.push_back(std::move(row));
   }
   set_up_solver(A_aij, keeps_levels);
   check(MatDestroy(&A_aij), "A");
@@ -268,7 +298,14 @@ NewtonStepNorms PetscNewtonSpace::norms(const Vector& contact_forces) {
 }
 
 Vector PetscNewtonSpace::gathered_solution() {
-  return padding_.unknowns(petsc::gather(x_));
+  // Each rank's unknowns from its slots, then put together (no whole padded copy).
+  PetscInt m = 0;
+  check(VecGetLocalSize(x_, &m), "the solution");
+  const PetscScalar* a = nullptr;
+  check(VecGetArrayRead(x_, &a), "the solution");
+  const Vector own = padding_.own_unknowns(Eigen::Map<const Vector>(a, m), first_, last_);
+  check(VecRestoreArrayRead(x_, &a), "the solution");
+  return petsc::allgather(own, comm_);
 }
 
 // (N v)_j for every contact node on every rank: each rank its own rows, summed over the ranks

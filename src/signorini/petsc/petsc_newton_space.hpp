@@ -74,6 +74,7 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   petsc::NodePadding padding_;
   Matrix modes_;                            // this rank's rows of the modes on its slots (modes())
   Index n_ = 0, nc_ = 0, lo_ = 0, hi_ = 0;  // nc_: the rows of N (d per node with friction)
+  Index first_ = 0, last_ = 0;              // this rank's unknowns (lo_, hi_: its slots)
   Index components_ = 1;                    // rows of N per contact node
   std::vector<petsc::ContactRow> rows_;     // the contact rows whose dofs this rank owns
   Mat A_ = nullptr, H_ = nullptr;

@@ -126,6 +126,8 @@ std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
       out.put(nodes);
       pack(out, dofs.part(nodes));
       out.put(Vector(whole_b.segment(first, last - first)));
+      out.put(
+          std::vector<Index>(p.node_of_unknown.begin() + first, p.node_of_unknown.begin() + last));
       out.put(nodes_rows(model.loads, nodes, dim));
       for (const ClampedPart& c : model.clamped_parts) out.put(part_dofs(c.dofs, nodes, dim));
       // Each group's prescribed dofs in the part's numbering.
@@ -149,7 +151,6 @@ std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
   // What every rank holds whole.
   ByteWriter out;
   out.put(p.row_starts);
-  out.put(p.node_of_unknown);
   pack(out, p.contact);
   out.put(model.contact_starts);
   out.put(model.contact_boundaries);
@@ -231,13 +232,13 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
   std::vector<Index> global_nodes = in.get_vector<Index>();
   DofMap dofs = unpack_dof_map(in);
   problem.b = in.get_vector_xd();
+  problem.node_of_unknown = in.get_vector<Index>();  // the rank's own unknowns' only
   Vector loads = in.get_vector_xd();
   std::vector<std::vector<Index>> clamped_dofs;
   std::vector<Vector> group_b, group_loads;
   std::vector<std::vector<Index>> group_prescribed;
   ByteReader all(everyone);
   problem.row_starts = all.get_vector<Index>();
-  problem.node_of_unknown = all.get_vector<Index>();
   problem.contact = unpack_contact_set(all);
   problem.rank = rank;
   std::vector<Index> contact_starts = all.get_vector<Index>();
