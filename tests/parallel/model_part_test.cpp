@@ -165,5 +165,50 @@ TEST(ModelPart, TheBytesCarryEachPieceWhole) {
   EXPECT_THROW((void)unpack_mesh(short_one), NumericalError);
 }
 
+// The node graph's rows made rank by rank (NodeGraphRows, what rank 0 sends): each rank's rows
+// are those of the whole graph, and each vertex's neighbours are the free nodes that share a
+// cell with it, counted from the cells directly.
+TEST(NodeGraphRows, EachRanksRowsAreTheWholeGraphs) {
+  const Whole w = whole();
+  const NodeGraphRows rows(w.mesh, w.dofs);
+  const NodeGraph all = rows.rows(0, 1);
+  ASSERT_GT(all.vertices, 0);
+  for (Index v = 0; v < all.vertices; ++v) {
+    std::vector<Index> expected;
+    const Index node = all.node[static_cast<std::size_t>(v)];
+    for (Index c = 0; c < w.mesh.num_cells(); ++c) {
+      const auto cell = w.mesh.cell(c);
+      if (std::find(cell.begin(), cell.end(), node) == cell.end()) continue;
+      for (const Index b : cell) {
+        const auto at = std::find(all.node.begin(), all.node.end(), b);
+        if (b != node && at != all.node.end()) expected.push_back(at - all.node.begin());
+      }
+    }
+    std::sort(expected.begin(), expected.end());
+    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+    const auto i = static_cast<std::size_t>(v);
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(),
+                           all.neighbours.begin() + all.offsets[i],
+                           all.neighbours.begin() + all.offsets[i + 1]))
+        << "vertex " << v;
+  }
+  Index at = 0;
+  for (int r = 0; r < 3; ++r) {
+    const NodeGraph g = rows.rows(r, 3, /*with_nodes=*/r == 0);
+    EXPECT_EQ(g.first, at);
+    EXPECT_EQ(g.node.empty(), r != 0);
+    for (Index v = g.first; v < g.last; ++v) {
+      const auto i = static_cast<std::size_t>(v - g.first), j = static_cast<std::size_t>(v);
+      EXPECT_EQ(g.weights[i], all.weights[j]);
+      EXPECT_TRUE(std::equal(
+          g.neighbours.begin() + g.offsets[i], g.neighbours.begin() + g.offsets[i + 1],
+          all.neighbours.begin() + all.offsets[j], all.neighbours.begin() + all.offsets[j + 1]))
+          << "rank " << r << ", vertex " << v;
+    }
+    at = g.last;
+  }
+  EXPECT_EQ(at, all.vertices);
+}
+
 }  // namespace
 }  // namespace signorini

@@ -6,49 +6,59 @@
 
 namespace signorini {
 
-NodeGraph node_graph(const Mesh& mesh, const DofMap& dofs, int rank, int ranks) {
-  NodeGraph g;
+NodeGraphRows::NodeGraphRows(const Mesh& mesh, const DofMap& dofs)
+    : mesh_(mesh), vertex_of_(static_cast<std::size_t>(mesh.num_nodes()), -1) {
   // The vertices: the nodes of the free unknowns, in the numbering's order.
   const std::vector<Index> node_of = free_dof_nodes(dofs);
-  std::vector<Index> vertex_of(static_cast<std::size_t>(mesh.num_nodes()), -1);
-  std::vector<Index> unknowns;
   for (std::size_t i = 0; i < node_of.size(); ++i) {
     const auto node = static_cast<std::size_t>(node_of[i]);
     if (i == 0 || node_of[i - 1] != node_of[i]) {
-      vertex_of[node] = static_cast<Index>(g.node.size());
-      g.node.push_back(node_of[i]);
-      unknowns.push_back(0);
+      vertex_of_[node] = static_cast<Index>(node_.size());
+      node_.push_back(node_of[i]);
+      unknowns_.push_back(0);
     }
-    ++unknowns.back();
+    ++unknowns_.back();
   }
-  g.vertices = static_cast<Index>(g.node.size());
+  // The cells of each node: cells_[first_[v] .. first_[v + 1]).
+  first_.assign(static_cast<std::size_t>(mesh.num_nodes()) + 1, 0);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    for (const Index v : mesh.cell(c)) ++first_[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 0; v + 1 < first_.size(); ++v) first_[v + 1] += first_[v];
+  cells_.resize(static_cast<std::size_t>(first_.back()));
+  std::vector<Index> next(first_.begin(), first_.end() - 1);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    for (const Index v : mesh.cell(c))
+      cells_[static_cast<std::size_t>(next[static_cast<std::size_t>(v)]++)] = c;
+}
+
+NodeGraph NodeGraphRows::rows(int rank, int ranks, bool with_nodes) const {
+  NodeGraph g;
+  g.vertices = static_cast<Index>(node_.size());
   g.first = vertex_share_start(g.vertices, rank, ranks);
   g.last = vertex_share_start(g.vertices, rank + 1, ranks);
-  g.weights.assign(unknowns.begin() + g.first, unknowns.begin() + g.last);
-
-  // This rank's rows: for each cell, each of its own vertices meets the cell's other vertices.
-  std::vector<std::vector<Index>> rows(static_cast<std::size_t>(g.last - g.first));
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const std::span<const Index> nodes = mesh.cell(c);
-    for (const Index a : nodes) {
-      const Index va = vertex_of[static_cast<std::size_t>(a)];
-      if (va < g.first || va >= g.last) continue;
-      std::vector<Index>& row = rows[static_cast<std::size_t>(va - g.first)];
-      for (const Index b : nodes) {
-        const Index vb = vertex_of[static_cast<std::size_t>(b)];
-        if (vb >= 0 && vb != va) row.push_back(vb);
-      }
-    }
-  }
+  g.weights.assign(unknowns_.begin() + g.first, unknowns_.begin() + g.last);
+  if (with_nodes) g.node = node_;
+  // Each vertex meets the other vertices of the cells around its node.
   g.offsets.assign(1, 0);
-  for (std::vector<Index>& row : rows) {
+  std::vector<Index> row;
+  for (Index v = g.first; v < g.last; ++v) {
+    row.clear();
+    const auto node = static_cast<std::size_t>(node_[static_cast<std::size_t>(v)]);
+    for (Index k = first_[node]; k < first_[node + 1]; ++k)
+      for (const Index b : mesh_.cell(cells_[static_cast<std::size_t>(k)])) {
+        const Index vb = vertex_of_[static_cast<std::size_t>(b)];
+        if (vb >= 0 && vb != v) row.push_back(vb);
+      }
     std::sort(row.begin(), row.end());
     row.erase(std::unique(row.begin(), row.end()), row.end());
     g.neighbours.insert(g.neighbours.end(), row.begin(), row.end());
     g.offsets.push_back(static_cast<Index>(g.neighbours.size()));
-    std::vector<Index>().swap(row);
   }
   return g;
+}
+
+NodeGraph node_graph(const Mesh& mesh, const DofMap& dofs, int rank, int ranks) {
+  return NodeGraphRows(mesh, dofs).rows(rank, ranks);
 }
 
 NodePartition partition_order(const NodeGraph& graph, const DofMap& dofs,

@@ -23,7 +23,7 @@ struct NodeGraph {
   std::vector<Index> offsets;     ///< this rank's rows: neighbours of vertex first + i at
   std::vector<Index> neighbours;  ///< [offsets[i], offsets[i + 1]), sorted, itself excluded
   std::vector<Index> weights;     ///< free unknowns of each of this rank's vertices
-  std::vector<Index> node;        ///< the mesh node of every vertex
+  std::vector<Index> node;        ///< the mesh node of every vertex (may be left empty)
 };
 
 /// The first vertex of rank `rank`'s even share of `vertices` (rank = ranks: the end): the rows
@@ -35,6 +35,22 @@ struct NodeGraph {
 /// The graph of `dofs`'s free nodes, with the rows of the vertices of `rank` of `ranks` (an even
 /// split of the vertices in the numbering's order).
 [[nodiscard]] NodeGraph node_graph(const Mesh& mesh, const DofMap& dofs, int rank, int ranks);
+
+/// The same graph's rows, rank by rank from the cells of each node: rank 0 of a distributed run
+/// makes each rank's rows in time proportional to them and sends them, never holding the whole
+/// graph (about 27 neighbours per node on hexahedra).
+class NodeGraphRows {
+ public:
+  NodeGraphRows(const Mesh& mesh, const DofMap& dofs);
+  /// The rows of the vertices of `rank` of `ranks`; with the node of every vertex or not.
+  [[nodiscard]] NodeGraph rows(int rank, int ranks, bool with_nodes = true) const;
+
+ private:
+  const Mesh& mesh_;
+  std::vector<Index> vertex_of_;        // per mesh node, -1 without free unknowns
+  std::vector<Index> node_, unknowns_;  // per vertex
+  std::vector<Index> first_, cells_;    // the cells of each node
+};
 
 /// Where a partition puts the unknowns: the node order that numbers them rank by rank (each
 /// rank's nodes in their former order, the nodes without free unknowns last), and the first

@@ -22,21 +22,6 @@ void expect_root_went_on(const DistributedEngine& engine) {
   if (!bytes.empty()) throw InputError(std::string(bytes.begin(), bytes.end()));
 }
 
-// The rows [first, last) of a graph that holds them all.
-NodeGraph rows_of(const NodeGraph& whole, Index first, Index last) {
-  NodeGraph g;
-  g.vertices = whole.vertices;
-  g.first = first;
-  g.last = last;
-  g.weights.assign(whole.weights.begin() + first, whole.weights.begin() + last);
-  const auto begin = whole.offsets[static_cast<std::size_t>(first)];
-  const auto end = whole.offsets[static_cast<std::size_t>(last)];
-  g.neighbours.assign(whole.neighbours.begin() + begin, whole.neighbours.begin() + end);
-  for (Index v = first; v <= last; ++v)
-    g.offsets.push_back(whole.offsets[static_cast<std::size_t>(v)] - begin);
-  return g;
-}
-
 }  // namespace
 
 void RootAnnouncements::ok() {
@@ -53,15 +38,14 @@ void RootAnnouncements::failed(const std::string& message) {
   engine_.broadcast(bytes);
 }
 
-NodeGraph send_node_graph_rows(const NodeGraph& whole, const DistributedEngine& engine) {
+NodeGraph send_node_graph_rows(const NodeGraphRows& rows, const DistributedEngine& engine) {
   const int ranks = engine.size();
   for (int r = 1; r < ranks; ++r) {
     ByteWriter out;
-    pack(out, rows_of(whole, vertex_share_start(whole.vertices, r, ranks),
-                      vertex_share_start(whole.vertices, r + 1, ranks)));
+    pack(out, rows.rows(r, ranks, /*with_nodes=*/false));  // (the partitioner needs no nodes)
     engine.send_from_root(r, out.bytes());
   }
-  return rows_of(whole, 0, vertex_share_start(whole.vertices, 1, ranks));
+  return rows.rows(0, ranks);
 }
 
 namespace {

@@ -34,9 +34,9 @@ class RootAnnouncements {
   bool owed_ = true;
 };
 
-/// Rank 0: sends each other rank its rows of the whole node graph `whole` (node_graph on one
-/// rank), and returns its own.
-[[nodiscard]] NodeGraph send_node_graph_rows(const NodeGraph& whole,
+/// Rank 0: sends each other rank its rows of the node graph, made one rank at a time, and
+/// returns its own (with the node of every vertex, for partition_order).
+[[nodiscard]] NodeGraph send_node_graph_rows(const NodeGraphRows& rows,
                                              const DistributedEngine& engine);
 
 /// Rank 0: sends each other rank its part of `model` (whole, partitioned), with its rows of the

@@ -393,16 +393,15 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
     DistributedEngine& engine = required_distributed_engine();
     // The nodes partitioned by the engine's graph partitioner (parallel/node_partition.hpp),
     // and the unknowns numbered again rank by rank; the even split of the numbering where the
-    // partitioner leaves a rank without unknowns (or on one rank). Rank 0 makes the whole graph
-    // and sends the others their rows.
+    // partitioner leaves a rank without unknowns (or on one rank). Rank 0 makes each rank's
+    // rows of the graph in turn and sends them (never the whole graph at once).
     if (engine.size() > 1) {
       ScopedTimer t(timings, "partition");
       NodePartition p;
       {
-        const NodeGraph graph = node_graph(mesh, dofs, 0, 1);
-        const std::vector<int> rank_of =
-            engine.partition(send_node_graph_rows(graph, engine), spec.solver);
-        p = partition_order(graph, dofs, rank_of, engine.size());
+        const NodeGraph own = send_node_graph_rows(NodeGraphRows(mesh, dofs), engine);
+        const std::vector<int> rank_of = engine.partition(own, spec.solver);
+        p = partition_order(own, dofs, rank_of, engine.size());
       }
       parts->owe();
       if (!p.row_starts.empty()) {

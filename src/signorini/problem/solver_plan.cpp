@@ -87,10 +87,10 @@ SolverPlan plan_solver(const ContactSolverOptions& given, const ProblemSize& siz
         thousands(size.contact_nodes), gigabytes(dense), gigabytes(size.memory_bytes));
     return plan;
   }
-  plan.reason = fmt::format("condensed direct: {} contact nodes{}, a dense matrix of about {}",
-                            thousands(size.contact_nodes),
-                            size.friction ? " with friction (every free dof of each)" : "",
-                            gigabytes(dense));
+  plan.reason =
+      fmt::format("condensed direct: {} contact nodes{}, a dense matrix of about {}",
+                  thousands(size.contact_nodes),
+                  size.friction ? " with friction (every free dof of each)" : "", gigabytes(dense));
   return plan;
 }
 
