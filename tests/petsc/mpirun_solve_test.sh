@@ -183,6 +183,41 @@ status=0
 echo "ok: a killed rank stops the run (status $status), earlier results kept"
 
 # An output folder that rank 0 cannot make: every rank stops before the solve, one message.
+# A cell whose mid-edge node makes it inverted, which the reader's corner check passes and the
+# assembly finds (det J at the cell's nodes): rank 0, which assembles no cell itself, finds it
+# for all, and every rank stops with the serial run's one message, status 2.
+/usr/bin/python3 - "$examples/gmsh/hertz_p2.msh" "$tmp/inverted.msh" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+i = lines.index("$Nodes"); p = i + 2
+at = {}
+for _ in range(int(lines[i + 1].split()[0])):
+    n = int(lines[p].split()[3]); p += 1
+    for k in range(n): at[int(lines[p + k])] = p + n + k
+    p += 2 * n
+e = lines.index("$Elements"); p = e + 2
+for _ in range(int(lines[e + 1].split()[0])):
+    kind, n = map(int, lines[p].split()[2:4]); p += 1
+    if kind == 9: tri6 = [list(map(int, lines[p + k].split())) for k in range(n)]
+    p += n
+cell = tri6[len(tri6) // 2]  # an inner tri6: its mid-edge node 1-2 moved 0.7 of the way to node 3
+x = lambda t: [float(v) for v in lines[at[t]].split()]
+m, c = x(cell[4]), x(cell[3])
+lines[at[cell[4]]] = " ".join(repr(a + 0.7 * (b - a)) for a, b in zip(m, c))
+open(sys.argv[2], "w").write("\n".join(lines))
+PY
+status=0
+"$tool" solve "$examples/hertz_p2.toml" -q -o "$tmp/inverted_serial" \
+  --set "mesh.file=\"$tmp/inverted.msh\"" 2> "$tmp/serial_stderr" || status=$?
+[ "$status" -eq 2 ] && grep -q "inverted or degenerate tri6" "$tmp/serial_stderr" ||
+  { echo "the inverted cell serially: status $status"; cat "$tmp/serial_stderr"; exit 1; }
+expect_stop "inverted cell" 2 "inverted or degenerate tri6" solve "$examples/hertz_p2.toml" -q \
+  -o "$tmp/inverted_mpi" --set "mesh.file=\"$tmp/inverted.msh\""
+[ "$(grep -c "signorini: error:" "$tmp/stderr")" -eq 1 ] &&
+  grep -qF "$(cat "$tmp/serial_stderr")" "$tmp/stderr" ||
+  { echo "the inverted cell under mpirun: not the serial message"; cat "$tmp/stderr"; exit 1; }
+echo "ok: an inverted cell stops every rank with the serial message"
+
 expect_stop "unusable -o" 2 "no-such-folder" solve "$examples/paper.toml" -q -o /proc/no-such-folder
 lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
 [ "$lines" -eq 1 ] || { echo "unusable -o: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }

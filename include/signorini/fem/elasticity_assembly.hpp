@@ -41,6 +41,13 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
                                 const ElasticityOptions& options,
                                 const std::vector<bool>* columns_of = nullptr);
 
+/// Throws InputError, naming the cell as assemble_stiffness does, on the first cell that is
+/// inverted or degenerate: det J <= 0 at one of its nodes or at a point of the stiffness's
+/// quadrature rule. The same checks as the assembly's, without the element matrices: for rank 0
+/// of a distributed run, which assembles none of the cells but must find a bad one for all
+/// (docs/distributed.md).
+void require_valid_cells(const Mesh& mesh, const ElasticityOptions& options);
+
 /// K u for the full node-major vector u (num_nodes * dim), cell by cell, at the nodes of the
 /// cells for which `needed(cell)` holds (all cells if it is empty); zero elsewhere. With u the
 /// solution, (K u)_i - f_i at a clamped dof i is the reaction of the clamp there.

@@ -161,6 +161,37 @@ Vector internal_forces_of(const Mesh& mesh, const ElasticityOptions& options, co
 
 }  // namespace
 
+namespace {
+
+template <int Dim>
+void check_cells(const Mesh& mesh, const ElasticityOptions& options) {
+  CellRules rules(options.gauss_points);
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const CellType type = mesh.cell_type(c);
+    const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
+    try {
+      check_cell_geometry<Dim>(type, X);
+      for (const QuadraturePoint& q : rules(type))
+        if (const double det_j = cell_jacobian<Dim>(type, X, q.xi).determinant(); !(det_j > 0.0))
+          throw InputError("inverted or degenerate " +
+                           std::string(enum_to_string(kCellTypeNames, type)) +
+                           " (det J = " + std::to_string(det_j) + " at a quadrature point)");
+    } catch (const InputError& e) {
+      throw InputError(cell_name(mesh, c) + ": " + e.what());
+    }
+  }
+}
+
+}  // namespace
+
+void require_valid_cells(const Mesh& mesh, const ElasticityOptions& options) {
+  require_supported_cells(mesh);
+  if (mesh.dim() == 2)
+    check_cells<2>(mesh, options);
+  else
+    check_cells<3>(mesh, options);
+}
+
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
                                 const ElasticityOptions& options,
                                 const std::vector<bool>* columns_of) {

@@ -415,7 +415,12 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                                          SparseMatrix(0, dofs.num_free()));
     problem.rank = engine.rank();
   }
-  if (parts == nullptr) {
+  if (parts != nullptr) {
+    // Rank 0 of several assembles no cell here (each rank its own, from its part), but finds an
+    // inverted cell for all of them: then every rank stops with its one message.
+    ScopedTimer t(timings, "assembly");
+    require_valid_cells(mesh, elasticity);
+  } else {
     ScopedTimer t(timings, "assembly");
     if (distributed) {
       const DistributedEngine& engine = required_distributed_engine();
