@@ -6,26 +6,15 @@ namespace signorini {
 
 PartCells::PartCells(const Mesh& mesh)
     : mesh_(mesh),
-      first_(static_cast<std::size_t>(mesh.num_nodes()) + 1, 0),
+      node_cells_(mesh),
       cell_mark_(static_cast<std::size_t>(mesh.num_cells()), -1),
       near_mark_(static_cast<std::size_t>(mesh.num_cells()), -1),
-      node_mark_(static_cast<std::size_t>(mesh.num_nodes()), -1) {
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (const Index v : mesh.cell(c)) ++first_[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v + 1 < first_.size(); ++v) first_[v + 1] += first_[v];
-  cells_.resize(static_cast<std::size_t>(first_.back()));
-  std::vector<Index> next(first_.begin(), first_.end() - 1);
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (const Index v : mesh.cell(c))
-      cells_[static_cast<std::size_t>(next[static_cast<std::size_t>(v)]++)] = c;
-}
+      node_mark_(static_cast<std::size_t>(mesh.num_nodes()), -1) {}
 
 std::vector<Index> PartCells::cells(const std::vector<Index>& own) {
   const int call = call_++;
   const auto around = [&](Index v, const auto& visit) {
-    for (Index k = first_[static_cast<std::size_t>(v)]; k < first_[static_cast<std::size_t>(v) + 1];
-         ++k)
-      visit(cells_[static_cast<std::size_t>(k)]);
+    for (const Index c : node_cells_.of(v)) visit(c);
   };
   // The first layer, and the nodes of its cells.
   std::vector<Index> near;

@@ -9,6 +9,7 @@
 #include "signorini/contact/contact_set.hpp"
 #include "signorini/fem/dof_map.hpp"
 #include "signorini/mesh/mesh.hpp"
+#include "signorini/mesh/node_cells.hpp"
 #include "signorini/parallel/byte_message.hpp"
 #include "signorini/parallel/node_partition.hpp"
 
@@ -28,7 +29,7 @@ class PartCells {
 
  private:
   const Mesh& mesh_;
-  std::vector<Index> first_, cells_;  // the cells of node v: cells_[first_[v] .. first_[v + 1])
+  NodeCells node_cells_;
   std::vector<int> cell_mark_, near_mark_, node_mark_;  // the call that last met each
   int call_ = 0;
 };

@@ -7,7 +7,7 @@
 namespace signorini {
 
 NodeGraphRows::NodeGraphRows(const Mesh& mesh, const DofMap& dofs)
-    : mesh_(mesh), vertex_of_(static_cast<std::size_t>(mesh.num_nodes()), -1) {
+    : mesh_(mesh), node_cells_(mesh), vertex_of_(static_cast<std::size_t>(mesh.num_nodes()), -1) {
   // The vertices: the nodes of the free unknowns, in the numbering's order.
   const std::vector<Index> node_of = free_dof_nodes(dofs);
   for (std::size_t i = 0; i < node_of.size(); ++i) {
@@ -19,16 +19,6 @@ NodeGraphRows::NodeGraphRows(const Mesh& mesh, const DofMap& dofs)
     }
     ++unknowns_.back();
   }
-  // The cells of each node: cells_[first_[v] .. first_[v + 1]).
-  first_.assign(static_cast<std::size_t>(mesh.num_nodes()) + 1, 0);
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (const Index v : mesh.cell(c)) ++first_[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v + 1 < first_.size(); ++v) first_[v + 1] += first_[v];
-  cells_.resize(static_cast<std::size_t>(first_.back()));
-  std::vector<Index> next(first_.begin(), first_.end() - 1);
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (const Index v : mesh.cell(c))
-      cells_[static_cast<std::size_t>(next[static_cast<std::size_t>(v)]++)] = c;
 }
 
 NodeGraph NodeGraphRows::rows(int rank, int ranks, bool with_nodes) const {
@@ -43,9 +33,8 @@ NodeGraph NodeGraphRows::rows(int rank, int ranks, bool with_nodes) const {
   std::vector<Index> row;
   for (Index v = g.first; v < g.last; ++v) {
     row.clear();
-    const auto node = static_cast<std::size_t>(node_[static_cast<std::size_t>(v)]);
-    for (Index k = first_[node]; k < first_[node + 1]; ++k)
-      for (const Index b : mesh_.cell(cells_[static_cast<std::size_t>(k)])) {
+    for (const Index c : node_cells_.of(node_[static_cast<std::size_t>(v)]))
+      for (const Index b : mesh_.cell(c)) {
         const Index vb = vertex_of_[static_cast<std::size_t>(b)];
         if (vb >= 0 && vb != v) row.push_back(vb);
       }

@@ -14,6 +14,7 @@
 #include "signorini/core/types.hpp"
 #include "signorini/fem/dof_map.hpp"
 #include "signorini/mesh/mesh.hpp"
+#include "signorini/mesh/node_cells.hpp"
 
 namespace signorini {
 
@@ -47,9 +48,9 @@ class NodeGraphRows {
 
  private:
   const Mesh& mesh_;
+  NodeCells node_cells_;
   std::vector<Index> vertex_of_;        // per mesh node, -1 without free unknowns
   std::vector<Index> node_, unknowns_;  // per vertex
-  std::vector<Index> first_, cells_;    // the cells of each node
 };
 
 /// Where a partition puts the unknowns: the node order that numbers them rank by rank (each
