@@ -408,11 +408,12 @@ def read_solution(outdir):
     points = np.concatenate([p["points"] for p in pieces])
     unique, first, inverse = np.unique(points, axis=0, return_index=True, return_inverse=True)
     inverse = inverse.reshape(-1)
-    start, connectivity, offsets = 0, [], []
+    start, entries, connectivity, offsets = 0, 0, [], []
     for p in pieces:
         connectivity.append(inverse[start + p["connectivity"]])
-        offsets.append(p["offsets"] + sum(c.size for c in connectivity[:-1]))
+        offsets.append(p["offsets"] + entries)
         start += len(p["points"])
+        entries += p["connectivity"].size
     names = pieces[0]["point_data"].keys()
     data = {name: np.concatenate([p["point_data"][name] for p in pieces])[first] for name in names}
     return {"points": unique, "connectivity": np.concatenate(connectivity),

@@ -68,7 +68,7 @@ TEST(NodePadding, VectorsGoToTheSlotsAndBack) {
   EXPECT_EQ(padded(4), 0.0);
   EXPECT_EQ(padded(5), 0.0);
   EXPECT_EQ(padded(8), 0.0);
-  EXPECT_EQ(p.unknowns(padded), v);
+  EXPECT_EQ(p.own_unknowns(padded, 0, 6), v);
   const Matrix modes = Matrix::Ones(6, 2);
   EXPECT_EQ(p.rows(modes, 0, 6).colwise().sum(), Matrix::Constant(1, 2, 6.0));
   // One rank's rows [3, 6) (unknowns 3, 4, 5): slots [3, 9), their padding slots 4, 5 and 8.

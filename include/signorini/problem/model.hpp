@@ -116,6 +116,10 @@ struct Model {
   /// The rank that accounts for cell `cell` (its piece of solution.pvtu, its internal forces):
   /// that of its first node with a free dof, rank 0 for a cell without one.
   [[nodiscard]] int cell_rank(Index cell) const;
+  /// The same for the ranks' ranges of the free dofs `starts` (a whole problem that each rank
+  /// takes its rows of: parallel/row_partition.hpp partition_of).
+  [[nodiscard]] int node_rank(Index node, const std::vector<Index>& starts) const;
+  [[nodiscard]] int cell_rank(Index cell, const std::vector<Index>& starts) const;
 
   /// The name of the contact boundary of contact-set row j.
   [[nodiscard]] const std::string& contact_boundary_of(Index j) const;

@@ -42,36 +42,22 @@ std::string step_collection(int step, const std::string& extension) {
   return pvd;
 }
 
-// The cells whose piece of solution.pvtu rank `rank` of `ranks` writes: those whose first node
-// with a free dof lies in the rank's range of the distributed solve (Model::cell_rank,
-// parallel/row_partition.hpp); a cell with no free dof goes to rank 0. On a rank's part of the
-// mesh (Model::is_part) the cells of the part that the rank writes.
-std::vector<Index> cells_of_rank(const Model& model, int rank, int ranks) {
+// This rank's piece `<stem>_<rank>.vtu` of a solution in `folder`: the cells that the rank
+// accounts for (Model::cell_rank, by its range of the free dofs: parallel/row_partition.hpp),
+// and on rank 0 the `<stem>.pvtu` that names the pieces. On a rank's part of the mesh
+// (Model::is_part) the cells of the part that the rank writes.
+void stage_pieces(StagedFiles& staged, const std::filesystem::path& folder, const std::string& stem,
+                  const ContactResult& result, const Model& model, int rank, int ranks) {
   const std::vector<Index> starts = partition_of(model.problem, ranks);
-  const DofMap& dofs = model.dofs;
-  const auto rank_of = [&](Index node) {
-    for (int k = 0; k < dofs.dim(); ++k)
-      if (const Index f = dofs.free_index(node, k); f >= 0)
-        return static_cast<int>(std::upper_bound(starts.begin(), starts.end(), f) -
-                                starts.begin()) -
-               1;
-    return -1;
-  };
   std::vector<Index> cells;
-  for (Index c = 0; c < model.mesh.num_cells(); ++c) {
-    int cell_owner = 0;
-    if (model.problem.partitioned()) {
-      cell_owner = model.cell_rank(c);
-    } else {
-      for (const Index k : model.mesh.cell(c))
-        if (const int r = rank_of(k); r >= 0) {
-          cell_owner = r;
-          break;
-        }
-    }
-    if (cell_owner == rank) cells.push_back(c);
-  }
-  return cells;
+  for (Index c = 0; c < model.mesh.num_cells(); ++c)
+    if (model.cell_rank(c, starts) == rank) cells.push_back(c);
+  std::vector<std::string> pieces;
+  for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("{}_{}.vtu", stem, r));
+  std::string pvtu;
+  staged.add(folder / pieces[static_cast<std::size_t>(rank)],
+             solution_vtu_piece(result, model, cells, pieces, rank == 0 ? &pvtu : nullptr));
+  if (rank == 0) staged.add(folder / (stem + ".pvtu"), pvtu);
 }
 
 // Every rank stages its files, and the renames follow only when all have, so that a failure on
@@ -105,19 +91,12 @@ void write_load_step(const std::filesystem::path& outdir, int step, const Contac
     // its piece of the step's solution, rank 0 the .pvtu that names them, the step's
     // contact.csv and solution.pvd.
     const DistributedEngine& engine = required_distributed_engine();
-    const int rank = engine.rank(), ranks = engine.size();
     const ContactNodeValues values = contact_node_values(model, result);
-    const std::string stem = fmt::format("solution_{:04d}", step);
-    std::vector<std::string> pieces;
-    for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("{}_{}.vtu", stem, r));
     write_on_every_rank(outdir, engine, [&](StagedFiles& staged) {
       create_output_folder(outdir / "steps");
-      std::string pvtu;
-      staged.add(outdir / "steps" / pieces[static_cast<std::size_t>(rank)],
-                 solution_vtu_piece(result, model, cells_of_rank(model, rank, ranks), pieces,
-                                    rank == 0 ? &pvtu : nullptr));
-      if (rank != 0) return;
-      staged.add(outdir / load_step_file("solution", step, "pvtu"), pvtu);
+      stage_pieces(staged, outdir / "steps", fmt::format("solution_{:04d}", step), result, model,
+                   engine.rank(), engine.size());
+      if (engine.rank() != 0) return;
       staged.add(outdir / load_step_file("contact", step, "csv"),
                  contact_csv(result, model, values));
       staged.add(outdir / "solution.pvd", step_collection(step, "pvtu"));
@@ -145,17 +124,10 @@ namespace {
 void write_distributed(const std::filesystem::path& outdir, const ContactResult& result,
                        const Model& model, const ProblemSpec& spec, const Resultants& resultants,
                        const DistributedEngine& engine) {
-  const int rank = engine.rank(), ranks = engine.size();
-  std::vector<std::string> pieces;
-  for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("solution_{}.vtu", r));
   const ContactNodeValues values = contact_node_values(model, result);
   write_on_every_rank(outdir, engine, [&](StagedFiles& staged) {
-    std::string pvtu;
-    staged.add(outdir / pieces[static_cast<std::size_t>(rank)],
-               solution_vtu_piece(result, model, cells_of_rank(model, rank, ranks), pieces,
-                                  rank == 0 ? &pvtu : nullptr));
-    if (rank != 0) return;
-    staged.add(outdir / "solution.pvtu", pvtu);
+    stage_pieces(staged, outdir, "solution", result, model, engine.rank(), engine.size());
+    if (engine.rank() != 0) return;
     staged.add(outdir / "summary.json",
                summary_to_json(result, model, spec, resultants).dump(2) + "\n");
     staged.add(outdir / "contact.csv", contact_csv(result, model, values));

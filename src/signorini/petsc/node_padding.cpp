@@ -198,12 +198,4 @@ Matrix NodePadding::rows(const Matrix& rows, Index first, Index last) const {
   return out;
 }
 
-Vector NodePadding::unknowns(const Vector& slots) const {
-  if (!active()) return slots;
-  if (distributed_) throw std::logic_error("NodePadding::unknowns: each rank knows its own only");
-  Vector out(n_);
-  for (Index i = 0; i < n_; ++i) out(i) = slots(slot(i));
-  return out;
-}
-
 }  // namespace signorini::petsc

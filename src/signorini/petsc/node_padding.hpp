@@ -51,9 +51,8 @@ class NodePadding {
   /// their slots [start(first), start(last)), zero on the padding slots.
   [[nodiscard]] Vector rows(const Vector& rows, Index first, Index last) const;
   [[nodiscard]] Matrix rows(const Matrix& rows, Index first, Index last) const;
-  /// The unknowns' entries of a vector on the slots.
-  [[nodiscard]] Vector unknowns(const Vector& slots) const;
-  /// The entries of the unknowns [first, last) from the rank's slots [start(first), start(last)).
+  /// The entries of the unknowns [first, last) from the rank's slots [start(first), start(last))
+  /// (all of them: [0, n) from the size() slots).
   [[nodiscard]] Vector own_unknowns(const Vector& slots, Index first, Index last) const;
 
  private:

@@ -218,9 +218,6 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
   problem.b = in.get_vector_xd();
   problem.node_of_unknown = in.get_vector<Index>();  // the rank's own unknowns' only
   Vector loads = in.get_vector_xd();
-  std::vector<std::vector<Index>> clamped_dofs;
-  std::vector<Vector> group_b, group_loads;
-  std::vector<std::vector<Index>> group_prescribed;
   ByteReader all(everyone);
   problem.row_starts = all.get_vector<Index>();
   problem.contact = unpack_contact_set(all);

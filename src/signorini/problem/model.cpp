@@ -671,9 +671,7 @@ Index Model::local_node(Index node) const {
                                                  : -1;
 }
 
-int Model::node_rank(Index node) const {
-  if (!problem.partitioned()) return 0;
-  const std::vector<Index>& starts = problem.row_starts;
+int Model::node_rank(Index node, const std::vector<Index>& starts) const {
   for (int k = 0; k < dofs.dim(); ++k)
     if (const Index f = dofs.free_index(node, k); f >= 0)
       return static_cast<int>(std::upper_bound(starts.begin(), starts.end(), f) - starts.begin()) -
@@ -681,12 +679,19 @@ int Model::node_rank(Index node) const {
   return 0;
 }
 
-int Model::cell_rank(Index cell) const {
-  if (!problem.partitioned()) return 0;
+int Model::cell_rank(Index cell, const std::vector<Index>& starts) const {
   for (const Index node : mesh.cell(cell))
     for (int k = 0; k < dofs.dim(); ++k)
-      if (dofs.free_index(node, k) >= 0) return node_rank(node);
+      if (dofs.free_index(node, k) >= 0) return node_rank(node, starts);
   return 0;
+}
+
+int Model::node_rank(Index node) const {
+  return problem.partitioned() ? node_rank(node, problem.row_starts) : 0;
+}
+
+int Model::cell_rank(Index cell) const {
+  return problem.partitioned() ? cell_rank(cell, problem.row_starts) : 0;
 }
 
 Vector Model::full_displacement(const Vector& u, double factor, int step) const {

@@ -70,8 +70,7 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
   }
 
   Sum applied, foundation;
-  Vector loads = model.applied_loads(load_factor, load_step);
-  if (loads.size() == 0) loads = Vector::Zero(model.dofs.num_dofs());
+  const Vector loads = model.applied_loads(load_factor, load_step);
   for (Index i = 0; i < model.dofs.num_dofs(); ++i) {
     if (!counted[static_cast<std::size_t>(i / dim)]) continue;
     if (loads(i) != 0.0) applied.add(mesh, r.reference, i, loads(i));
