@@ -185,5 +185,46 @@ TEST(BoxMesh, BadOptionsAreErrors) {
   EXPECT_EQ(enum_to_string(kBoxCellNames, CellType::Tet10), "tet10");
 }
 
+// A part of the box is the whole box's cubes in a range, node for node and to the bit: its nodes
+// at their whole numbers' coordinates, its cells those cells with the same nodes, its sides the
+// whole sides' facets in the part, in the same order.
+TEST(BoxMesh, PartsAreTheWholeBoxsCubes) {
+  for (const Case& c : all_cases()) {
+    SCOPED_TRACE(name_of(c.type));
+    const BoxMeshOptions o{-1.0, 0.5, 2.0, 2.0, 1.5, 0.8, nx, ny, nz, c.type};
+    const Mesh whole = make_box_mesh(o);
+    for (const auto& [first, end] :
+         std::vector<std::pair<std::array<Index, 3>, std::array<Index, 3>>>{
+             {{0, 0, 0}, {nx, ny, nz}}, {{1, 0, 2}, {2, 2, 4}}, {{0, 1, 0}, {1, 3, 1}}}) {
+      const BoxMeshPart part = make_box_mesh_part(o, first, end);
+      const Mesh& m = part.mesh;
+      ASSERT_EQ(static_cast<Index>(part.global_nodes.size()), m.num_nodes());
+      ASSERT_EQ(static_cast<Index>(part.global_cells.size()), m.num_cells());
+      EXPECT_TRUE(std::is_sorted(part.global_nodes.begin(), part.global_nodes.end()));
+      for (Index v = 0; v < m.num_nodes(); ++v)
+        EXPECT_EQ(m.node(v), whole.node(part.global_nodes[static_cast<std::size_t>(v)]));
+      for (Index k = 0; k < m.num_cells(); ++k) {
+        const Index g = part.global_cells[static_cast<std::size_t>(k)];
+        const auto a = m.cell(k);
+        const auto b = whole.cell(g);
+        ASSERT_EQ(a.size(), b.size());
+        for (std::size_t i = 0; i < a.size(); ++i)
+          EXPECT_EQ(part.global_nodes[static_cast<std::size_t>(a[i])], b[i]);
+      }
+      const Index cubes = (end[0] - first[0]) * (end[1] - first[1]) * (end[2] - first[2]);
+      EXPECT_EQ(m.num_cells(), cubes * c.cells / (nx * ny * nz));
+      for (const char* side : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
+        std::vector<std::pair<Index, int>> expected, got;
+        std::set<Index> in_part(part.global_cells.begin(), part.global_cells.end());
+        for (const Facet& f : whole.boundary_part(side).facets)
+          if (in_part.count(f.cell) != 0) expected.emplace_back(f.cell, f.local);
+        for (const Facet& f : m.boundary_part(side).facets)
+          got.emplace_back(part.global_cells[static_cast<std::size_t>(f.cell)], f.local);
+        EXPECT_EQ(got, expected) << side;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace signorini

@@ -121,8 +121,8 @@ compare "$tmp/box_serial" "$tmp/box_mpi"
 
 # The same run twice gives the same numbers to the last bit: the same partition each time
 # (PT-Scotch on one thread, petsc_engine.cpp), on a mesh large enough that its threads made
-# another one from run to run.
-box40=(--set mesh.nx=40 --set mesh.ny=40 --set mesh.nz=20)
+# another one from run to run. (The box through the graph partitioner, not made in parts.)
+box40=(--set mesh.nx=40 --set mesh.ny=40 --set mesh.nz=20 --set 'solver.partition="graph"')
 run_mpi solve "$examples/box_on_sphere.toml" -q -o "$tmp/box40_a" "${box40[@]}"
 run_mpi solve "$examples/box_on_sphere.toml" -q -o "$tmp/box40_b" "${box40[@]}"
 cmp -s "$tmp/box40_a/contact.csv" "$tmp/box40_b/contact.csv" ||
@@ -178,6 +178,16 @@ lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
 [ "$lines" -eq 1 ] || { echo "bad input: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }
 [ "$before" = "$(md5sum "$tmp/paper_mpi/summary.json")" ] || { echo "earlier results changed"; exit 1; }
 echo "ok: bad input under mpirun"
+
+# A box made in parts: bad input that only some ranks' parts hold (a prescribed displacement
+# that is NaN beyond x = 0.6) stops every rank with one message, status 2.
+sed 's/^z = -0.001.*/z = "x > 0.6 ? 0\/0 : -0.001"/' "$examples/box_on_plane.toml" > "$tmp/bad_box.toml"
+expect_stop "bad input in a box made in parts" 2 "displacement\[0\].z = .* is NaN at x = " \
+  solve "$tmp/bad_box.toml" -q -o "$tmp/bad_box"
+lines=$(grep -c "signorini: error:" "$tmp/stderr" || true)
+[ "$lines" -eq 1 ] || { echo "bad box: $lines error lines, expected 1"; cat "$tmp/stderr"; exit 1; }
+[ ! -e "$tmp/bad_box/summary.json" ] || { echo "bad box: results written"; exit 1; }
+echo "ok: bad input in a box made in parts"
 
 # A rank that dies during the solve (killed by a signal): mpirun ends the others, the status is
 # not 0, and the earlier results stay as they were.

@@ -47,6 +47,13 @@ inline constexpr EnumNames<DistributedMode, 3> kDistributedModeNames{{
 }};
 
 /// The algebraic multigrid of the distributed path (ContactSolverOptions::petsc_multigrid).
+/// How a distributed run shares the mesh among the ranks (docs/distributed.md).
+enum class PartitionMode { Auto, Graph };
+inline constexpr EnumNames<PartitionMode, 2> kPartitionModeNames{{
+    {PartitionMode::Auto, "auto"},
+    {PartitionMode::Graph, "graph"},
+}};
+
 enum class PetscMultigrid { Gamg, Hypre };
 
 inline constexpr EnumNames<PetscMultigrid, 2> kPetscMultigridNames{{
@@ -142,6 +149,10 @@ struct ContactSolverOptions {
   /// even on one rank (an InputError where no PETSc engine is registered). Off: never (an
   /// InputError on more than one rank).
   DistributedMode distributed = DistributedMode::Auto;
+  /// Auto: on more than one rank a generated box is made in blocks, each rank its own
+  /// (problem/box_model_in_parts.hpp), where it supports the problem; any other mesh is read by
+  /// rank 0 and its nodes partitioned by PETSc's graph partitioner. Graph: the latter always.
+  PartitionMode partition = PartitionMode::Auto;
   /// Options for PETSc's database on the PETSc path ("-ksp_monitor -pc_gamg_threshold 0.02"):
   /// they apply to the Newton systems' KSP after signorini's own choices, for experts.
   std::string petsc_options;

@@ -39,6 +39,14 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
                             const RigidObstacle& obstacle,
                             const VectorField& surface_normal = nullptr);
 
+/// make_contact_set's rows without its check that some node can move, and with the gap of a
+/// node whose normal never meets the obstacle given (`far`: make_contact_set takes 10 times the
+/// mesh's extent): the rows of a part of the mesh (docs/distributed.md), which is measured and
+/// checked whole.
+ContactSet make_contact_rows(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
+                             const RigidObstacle& obstacle, const VectorField& surface_normal,
+                             double far);
+
 /// Appends the rows of `more` (a contact set over the same free dofs) to `into`: several
 /// contact boundaries as one contact set, their nodes in order (a node in two parts gets a row in
 /// each).

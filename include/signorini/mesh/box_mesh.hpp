@@ -3,6 +3,9 @@
 // second order, with the six sides named `xmin`, `xmax`, `ymin`, `ymax`, `zmin`, `zmax`: the 3D
 // counterpart of rectangle_mesh.hpp.
 
+#include <array>
+#include <vector>
+
 #include "signorini/mesh/cell_type.hpp"
 #include "signorini/mesh/mesh.hpp"
 
@@ -41,5 +44,20 @@ struct BoxMeshOptions {
 /// local facet. Throws InputError on non-positive sizes or counts or a cell type that is not a 3D
 /// one.
 Mesh make_box_mesh(const BoxMeshOptions& options);
+
+/// The cubes first[a] <= i_a < end[a] of the box (along x, y, z) as a mesh of their own: a
+/// rank's part of a box made in parts (docs/distributed.md). Its nodes are the lattice points of
+/// those cubes in increasing order of their numbers in the whole box (global_nodes), with the
+/// whole box's coordinates to the bit; its cells are the cubes' cells in the whole box's order
+/// (global_cells: their numbers there), and its six sides the facets of the whole box's sides
+/// that lie in the part (empty where it does not reach a side), in the whole box's order.
+/// make_box_mesh is the part of all the cubes. Throws InputError as make_box_mesh does.
+struct BoxMeshPart {
+  Mesh mesh;
+  std::vector<Index> global_nodes;
+  std::vector<Index> global_cells;
+};
+BoxMeshPart make_box_mesh_part(const BoxMeshOptions& options, const std::array<Index, 3>& first,
+                               const std::array<Index, 3>& end);
 
 }  // namespace signorini

@@ -100,6 +100,9 @@ struct Model {
   std::vector<Index> global_nodes;
   /// On a part: the whole mesh's facts that the results need. Empty where the mesh is whole.
   WholeMesh whole = {};
+  /// On a part made by its rank (a box made in parts, docs/distributed.md): per node of `mesh`,
+  /// the rank that accounts for it. Empty: by its free dofs (node_rank).
+  std::vector<int> node_ranks = {};
 
   /// Whether `mesh` is a part of the whole (a rank's, global_nodes).
   [[nodiscard]] bool is_part() const { return !global_nodes.empty(); }
@@ -110,11 +113,13 @@ struct Model {
     return is_part() ? whole.nodes * mesh.dim() : dofs.num_dofs();
   }
   /// The rank that accounts for node `node` of `mesh` in sums over the whole mesh (the
-  /// resultants, the contact nodes' displacements): the owner of its first free dof, rank 0
-  /// for a node without one; 0 unless the problem is partitioned.
+  /// resultants, the contact nodes' displacements): node_ranks's where given, else the owner of
+  /// its first free dof, rank 0 for a node without one; 0 unless the problem is partitioned.
   [[nodiscard]] int node_rank(Index node) const;
   /// The rank that accounts for cell `cell` (its piece of solution.pvtu, its internal forces):
-  /// that of its first node with a free dof, rank 0 for a cell without one.
+  /// that of its first node where node_ranks are given (that rank's part has the cell, which
+  /// touches its node), else that of its first node with a free dof, rank 0 for a cell without
+  /// one.
   [[nodiscard]] int cell_rank(Index cell) const;
   /// The same for the ranks' ranges of the free dofs `starts` (a whole problem that each rank
   /// takes its rows of: parallel/row_partition.hpp partition_of).

@@ -93,6 +93,13 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
              "one (`mpirun -n N signorini solve ...`), serially otherwise; `\"petsc\"`: the "
              "PETSc path even on one rank; `\"off\"`: never (an error under mpirun with more "
              "than one rank). Needs a build with PETSc ([distributed.md](distributed.md))");
+    t.choice("partition", &O::partition, kPartitionModeNames,
+             "how a run on several MPI ranks shares the mesh: `\"auto\"`, a generated box in "
+             "blocks of cubes that each rank makes itself (no rank holds the whole mesh; not "
+             "with point loads, pinned clamps, load factors of an entry's own or friction), "
+             "any other mesh read by rank 0 and its nodes partitioned by PETSc's graph "
+             "partitioner (PT-Scotch); `\"graph\"`: the latter for a box too "
+             "([distributed.md](distributed.md))");
     t.text("petsc_options", &O::petsc_options,
            "options for PETSc's database on the PETSc path, applied to the Newton systems' "
            "solver after signorini's own (`\"-ksp_monitor -pc_gamg_threshold 0.02\"`); empty: "

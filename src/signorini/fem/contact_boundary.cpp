@@ -217,6 +217,22 @@ void set_surface_normals(const Mesh& mesh, const VectorField& field, BoundaryNod
 
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                             const RigidObstacle& obstacle, const VectorField& surface_normal) {
+  // The gap of a node whose normal never meets the obstacle: far beyond anything the body can
+  // reach.
+  const double far =
+      10.0 * (mesh.coordinates().rowwise().maxCoeff() - mesh.coordinates().rowwise().minCoeff())
+                 .maxCoeff();
+  ContactSet cs = make_contact_rows(mesh, part, dofs, obstacle, surface_normal, far);
+  if (cs.num_movable() == 0)
+    throw InputError("contact.boundary = '" + part.name +
+                     "': every contact node is clamped in its normal direction, so no contact can "
+                     "occur (does it coincide with the clamped boundary?)");
+  return cs;
+}
+
+ContactSet make_contact_rows(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
+                             const RigidObstacle& obstacle, const VectorField& surface_normal,
+                             double far) {
   validate(obstacle);
   BoundaryNodes b = boundary_nodes(mesh, part, "contact.boundary");
   if (surface_normal) set_surface_normals(mesh, surface_normal, b);
@@ -226,11 +242,6 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
   cs.weights = std::move(b.weights);
   cs.facets = std::move(b.facets);
   const Index n = cs.size();
-  // The gap of a node whose normal never meets the obstacle: far beyond anything the body can
-  // reach.
-  const double far =
-      10.0 * (mesh.coordinates().rowwise().maxCoeff() - mesh.coordinates().rowwise().minCoeff())
-                 .maxCoeff();
   cs.gaps.resize(n);
   cs.movable.assign(static_cast<std::size_t>(n), false);
   std::vector<Eigen::Triplet<double, int>> triplets;
@@ -262,10 +273,6 @@ ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const Do
   cs.N.resize(n, dofs.num_free());
   cs.N.setFromTriplets(triplets.begin(), triplets.end());
   cs.N.makeCompressed();
-  if (cs.num_movable() == 0)
-    throw InputError("contact.boundary = '" + part.name +
-                     "': every contact node is clamped in its normal direction, so no contact can "
-                     "occur (does it coincide with the clamped boundary?)");
   return cs;
 }
 

@@ -59,6 +59,9 @@ class DistributedEngine {
   /// collective call: each rank gives its rows of `graph`; `options` may name the partitioner).
   [[nodiscard]] virtual std::vector<int> partition(const NodeGraph& graph,
                                                    const ContactSolverOptions& options) = 0;
+  /// Says how the mesh's nodes were shared among the ranks where partition() did not do it
+  /// ("blocks of the box's cubes, 2 x 2 x 1"), for description().
+  virtual void note_partition(const std::string& how) = 0;
   /// Sums `values` over the ranks, in place on every rank (a collective call).
   virtual void sum(double* values, Index count) const = 0;
   /// True on every rank when `flag` is true on any (a collective call).
@@ -69,6 +72,13 @@ class DistributedEngine {
   /// alone holds, sent to each rank in turn (its part of the model, parallel/model_part.hpp).
   virtual void send_from_root(int to, const std::vector<char>& bytes) const = 0;
   [[nodiscard]] virtual std::vector<char> receive_from_root() const = 0;
+  /// Every rank's `bytes`, in the order of the ranks, on every rank (a collective call).
+  [[nodiscard]] virtual std::vector<std::vector<char>> allgather(
+      const std::vector<char>& bytes) const = 0;
+  /// Sends to_each[r] to rank r and returns what each rank sent to this one (a collective call;
+  /// to_each has one entry per rank, empty where nothing goes).
+  [[nodiscard]] virtual std::vector<std::vector<char>> exchange(
+      const std::vector<std::vector<char>>& to_each) const = 0;
   /// Ends every rank's process with this exit status (a collective abort: a rank that fails
   /// alone stops the others).
   [[noreturn]] virtual void abort(int status) const = 0;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/petsc_active_set_solver.hpp"
@@ -169,6 +170,61 @@ std::vector<char> PetscEngine::receive_from_root() const {
     MPI_Recv(bytes.data() + at, piece_size(bytes.size(), at), MPI_CHAR, 0, 0, PETSC_COMM_WORLD,
              MPI_STATUS_IGNORE);
   return bytes;
+}
+
+std::vector<std::vector<char>> PetscEngine::allgather(const std::vector<char>& bytes) const {
+  // (MPI_Allgatherv's counts and offsets are ints: up to 2 GiB in all, checked.)
+  const auto mine = static_cast<std::uint64_t>(bytes.size());
+  std::vector<std::uint64_t> sizes(static_cast<std::size_t>(size_));
+  MPI_Allgather(&mine, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, PETSC_COMM_WORLD);
+  std::vector<int> counts, offsets;
+  std::uint64_t total = 0;
+  for (const std::uint64_t s : sizes) {
+    offsets.push_back(static_cast<int>(total));
+    counts.push_back(static_cast<int>(s));
+    total += s;
+  }
+  if (total >= (std::uint64_t{1} << 31))
+    throw std::runtime_error("allgather: more than 2 GiB from the ranks together");
+  std::vector<char> all(static_cast<std::size_t>(total));
+  MPI_Allgatherv(bytes.data(), static_cast<int>(mine), MPI_CHAR, all.data(), counts.data(),
+                 offsets.data(), MPI_CHAR, PETSC_COMM_WORLD);
+  std::vector<std::vector<char>> out;
+  for (int r = 0; r < size_; ++r) {
+    const auto at = all.begin() + offsets[static_cast<std::size_t>(r)];
+    out.emplace_back(at, at + counts[static_cast<std::size_t>(r)]);
+  }
+  return out;
+}
+
+std::vector<std::vector<char>> PetscEngine::exchange(
+    const std::vector<std::vector<char>>& to_each) const {
+  if (static_cast<int>(to_each.size()) != size_)
+    throw std::logic_error("exchange: expected one message per rank");
+  std::vector<std::uint64_t> out_sizes, in_sizes(static_cast<std::size_t>(size_));
+  for (const std::vector<char>& m : to_each) out_sizes.push_back(m.size());
+  MPI_Alltoall(out_sizes.data(), 1, MPI_UINT64_T, in_sizes.data(), 1, MPI_UINT64_T,
+               PETSC_COMM_WORLD);
+  std::vector<std::vector<char>> from(static_cast<std::size_t>(size_));
+  std::vector<MPI_Request> requests;
+  // Each message in pieces of at most 1 GiB, tagged by their number.
+  for (int r = 0; r < size_; ++r) {
+    std::vector<char>& in = from[static_cast<std::size_t>(r)];
+    in.resize(static_cast<std::size_t>(in_sizes[static_cast<std::size_t>(r)]));
+    int tag = 0;
+    for (std::size_t at = 0; at < in.size(); at += kPiece, ++tag)
+      MPI_Irecv(in.data() + at, piece_size(in.size(), at), MPI_CHAR, r, tag, PETSC_COMM_WORLD,
+                &requests.emplace_back());
+  }
+  for (int r = 0; r < size_; ++r) {
+    const std::vector<char>& out = to_each[static_cast<std::size_t>(r)];
+    int tag = 0;
+    for (std::size_t at = 0; at < out.size(); at += kPiece, ++tag)
+      MPI_Isend(out.data() + at, piece_size(out.size(), at), MPI_CHAR, r, tag, PETSC_COMM_WORLD,
+                &requests.emplace_back());
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  return from;
 }
 
 void PetscEngine::abort(int status) const {

@@ -34,11 +34,16 @@ class PetscEngine final : public DistributedEngine {
   /// the even split of the numbering).
   [[nodiscard]] std::vector<int> partition(const NodeGraph& graph,
                                            const ContactSolverOptions& options) override;
+  void note_partition(const std::string& how) override { partitioner_ = how; }
   void sum(double* values, Index count) const override;
   [[nodiscard]] bool any(bool flag) const override;
   void broadcast(std::vector<char>& bytes) const override;
   void send_from_root(int to, const std::vector<char>& bytes) const override;
   [[nodiscard]] std::vector<char> receive_from_root() const override;
+  [[nodiscard]] std::vector<std::vector<char>> allgather(
+      const std::vector<char>& bytes) const override;
+  [[nodiscard]] std::vector<std::vector<char>> exchange(
+      const std::vector<std::vector<char>>& to_each) const override;
   [[noreturn]] void abort(int status) const override;
 
  private:

@@ -298,7 +298,8 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
               std::move(gap_shift),
               std::move(gap_shift_group),
               std::move(global_nodes),
-              std::move(whole)};
+              std::move(whole),
+              {}};
   return model;
 }
 

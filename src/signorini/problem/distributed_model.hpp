@@ -7,6 +7,7 @@
 // part: the stiffness columns and rigid-body modes of its unknowns; rank 0 lets the whole go.
 // A failure on rank 0 reaches the others as the one message that rank 0 reports.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -74,5 +75,23 @@ class RootAnnouncements {
 /// InputError for a name that the mesh lacks.
 [[nodiscard]] ElasticityOptions region_elasticity(const ProblemSpec& spec,
                                                   const std::vector<std::string>& names);
+
+/// InputError where the spec's points and vectors imply another dimension than the mesh's.
+void require_implied_dimension(const ProblemSpec& spec, int dim);
+/// The dof numbering of a mesh (make_dof_map), and for each full dof the entry that holds it
+/// (-1: free): clamp c as c, displacement entry i as clamps.size() + i.
+[[nodiscard]] DofMap number_dofs(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
+                                 const std::vector<DisplacementSpec>& displacements,
+                                 std::vector<int>& owner,
+                                 const std::vector<Index>& node_order = {});
+/// The dofs of each [[clamp]], then of each [[displacement]] entry, from number_dofs's owners.
+[[nodiscard]] std::vector<ClampedPart> clamped_parts(
+    const std::vector<ClampSpec>& clamps, const std::vector<DisplacementSpec>& displacements,
+    const std::vector<int>& owner);
+/// Adds the tractions, pressures and body force of `spec` on `mesh` to the full vector that
+/// into(factors, entry) returns for each entry (its load factors and name, "traction[1]").
+void add_surface_and_body_loads(
+    const ProblemSpec& spec, const Mesh& mesh,
+    const std::function<Vector&(const std::vector<double>&, std::string)>& into);
 
 }  // namespace signorini

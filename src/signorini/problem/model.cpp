@@ -19,6 +19,7 @@
 #include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/parallel/node_partition.hpp"
 #include "signorini/parallel/row_partition.hpp"
+#include "signorini/problem/box_model_in_parts.hpp"
 #include "signorini/problem/distributed_model.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
 #include "signorini/problem/solver_plan.hpp"
@@ -65,9 +66,11 @@ void for_each_prescribed(const Mesh& mesh, const DisplacementSpec& d, std::size_
 // displacement entry i as clamps.size() + i. Clamps come first and win; among the displacements
 // the first entry wins. A node held along its normal in local axes belongs to that entry with
 // both of its Cartesian dofs (its reaction is along the normal, in x and y).
+}  // namespace
+
 DofMap number_dofs(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
                    const std::vector<DisplacementSpec>& displacements, std::vector<int>& owner,
-                   const std::vector<Index>& node_order = {}) {
+                   const std::vector<Index>& node_order) {
   DofMap dofs(mesh.num_nodes(), mesh.dim());
   owner.assign(static_cast<std::size_t>(dofs.num_dofs()), -1);
   const auto owner_of = [&](Index node, int k) -> int& {
@@ -150,8 +153,6 @@ std::vector<ClampedPart> clamped_parts(const std::vector<ClampSpec>& clamps,
       parts[static_cast<std::size_t>(owner[dof])].dofs.push_back(static_cast<Index>(dof));
   return parts;
 }
-
-}  // namespace
 
 DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
                     const std::vector<DisplacementSpec>& displacements,
@@ -249,6 +250,33 @@ std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const 
 
 }  // namespace
 
+void add_surface_and_body_loads(
+    const ProblemSpec& spec, const Mesh& mesh,
+    const std::function<Vector&(const std::vector<double>&, std::string)>& into) {
+  for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
+    const TractionSpec& tr = spec.tractions[i];
+    add_traction_forces(mesh, mesh.boundary_part(tr.boundary), tr.p, spec.boundary_gauss_points,
+                        into(tr.factors, fmt::format("traction[{}]", i)),
+                        "traction on '" + tr.boundary + "'", tr.region);
+  }
+  for (std::size_t i = 0; i < spec.pressures.size(); ++i)
+    add_pressure_forces(mesh, mesh.boundary_part(spec.pressures[i].boundary), spec.pressures[i].p,
+                        spec.boundary_gauss_points,
+                        into(spec.pressures[i].factors, fmt::format("pressure[{}]", i)),
+                        fmt::format("pressure[{}].p", i));
+  if (spec.body_force)
+    add_body_forces(mesh, spec.body_force, spec.elasticity.gauss_points,
+                    into(spec.body_force_factors, "body_force"));
+}
+
+void require_implied_dimension(const ProblemSpec& spec, int dim) {
+  if (const ImpliedDimension& d = spec.implied_dimension; d.dimension != 0 && d.dimension != dim)
+    throw InputError(fmt::format(
+        "{} gives {} ({}D problems only), but the mesh{} is {}D: expected {}", d.key, d.given,
+        d.dimension, spec.mesh_type == MeshType::Gmsh ? " '" + spec.mesh_file + "'" : "", dim,
+        d.instead));
+}
+
 std::vector<int> load_group_of_dofs(const std::vector<LoadGroup>& groups, Index num_dofs) {
   std::vector<int> group_of_dof;  // the last entry that holds a dof wins (prescribed_scales)
   for (std::size_t g = 0; g < groups.size(); ++g)
@@ -318,6 +346,8 @@ Model build_model(const ProblemSpec& spec) {
   if (distributed_path(spec.solver)) {
     DistributedEngine& engine = required_distributed_engine();
     if (engine.size() > 1) {
+      // A box is made in parts, each rank its own (problem/box_model_in_parts.hpp).
+      if (box_in_parts(spec, engine.size())) return build_box_model_in_parts(spec, engine);
       if (engine.rank() != 0) return receive_model_part(spec, engine);
       RootAnnouncements parts(engine);
       try {
@@ -368,12 +398,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                                                   : make_rectangle_mesh(spec.mesh);
   // A problem file on a Gmsh mesh gives points and vectors with as many components as it
   // chooses; now that the mesh is read, they must match it.
-  if (const ImpliedDimension& d = spec.implied_dimension;
-      d.dimension != 0 && d.dimension != mesh.dim())
-    throw InputError(fmt::format(
-        "{} gives {} ({}D problems only), but the mesh{} is {}D: expected {}", d.key, d.given,
-        d.dimension, spec.mesh_type == MeshType::Gmsh ? " '" + spec.mesh_file + "'" : "",
-        mesh.dim(), d.instead));
+  require_implied_dimension(spec, mesh.dim());
   const ElasticityOptions elasticity = region_elasticity(spec, mesh.region_names());
   std::vector<int> owner;
   // A mesh from a file (or a program) comes in its generator's order; its unknowns are numbered
@@ -451,20 +476,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
       groups.push_back({std::move(entry), factors, Vector::Zero(dofs.num_dofs()), {}, {}});
       return groups.back().loads;
     };
-    for (std::size_t i = 0; i < spec.tractions.size(); ++i) {
-      const TractionSpec& tr = spec.tractions[i];
-      add_traction_forces(mesh, mesh.boundary_part(tr.boundary), tr.p, spec.boundary_gauss_points,
-                          into(tr.factors, fmt::format("traction[{}]", i)),
-                          "traction on '" + tr.boundary + "'", tr.region);
-    }
-    for (std::size_t i = 0; i < spec.pressures.size(); ++i)
-      add_pressure_forces(mesh, mesh.boundary_part(spec.pressures[i].boundary), spec.pressures[i].p,
-                          spec.boundary_gauss_points,
-                          into(spec.pressures[i].factors, fmt::format("pressure[{}]", i)),
-                          fmt::format("pressure[{}].p", i));
-    if (spec.body_force)
-      add_body_forces(mesh, spec.body_force, spec.elasticity.gauss_points,
-                      into(spec.body_force_factors, "body_force"));
+    add_surface_and_body_loads(spec, mesh, into);
     for (std::size_t i = 0; i < spec.point_loads.size(); ++i) {
       const PointLoadSpec& pl = spec.point_loads[i];
       if (!pl.at.allFinite() || !pl.force.allFinite())
@@ -578,6 +590,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                  std::move(gap_shifts.first),
                  std::move(gap_shifts.second),
                  {},
+                 {},
                  {}};
   };
   if (parts == nullptr) return whole_model();
@@ -687,10 +700,12 @@ int Model::cell_rank(Index cell, const std::vector<Index>& starts) const {
 }
 
 int Model::node_rank(Index node) const {
+  if (!node_ranks.empty()) return node_ranks[static_cast<std::size_t>(node)];
   return problem.partitioned() ? node_rank(node, problem.row_starts) : 0;
 }
 
 int Model::cell_rank(Index cell) const {
+  if (!node_ranks.empty()) return node_ranks[static_cast<std::size_t>(mesh.cell(cell)[0])];
   return problem.partitioned() ? cell_rank(cell, problem.row_starts) : 0;
 }
 

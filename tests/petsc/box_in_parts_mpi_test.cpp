@@ -1,0 +1,231 @@
+// A box made in parts (problem/box_model_in_parts.hpp, docs/distributed.md), on 1, 2 and 4
+// ranks: no rank holds the whole mesh, each rank's part of the model is the whole model's, to
+// the bit where the sums run in the same order (b, the contact set, the prescribed values), and
+// the solve and its resultants are the serial run's; bad input found by one rank stops every
+// rank with one message.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "../problem/ball_on_block.hpp"
+#include "mpi_test_problems.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/io/problem_file.hpp"
+#include "signorini/problem/contact_node_values.hpp"
+#include "signorini/problem/resultants.hpp"
+
+namespace signorini {
+namespace {
+
+// The box of examples/box_on_plane.toml, read from its text with the cell type given: rollers
+// on two sides, a prescribed displacement on the top, an inclined plane below, and a traction
+// on one side and a body force besides.
+ProblemSpec rolled_box(const std::string& cell) {
+  return parse_problem_string(R"(
+[mesh]
+type = "box"
+length = 1.0
+width = 1.0
+height = 0.5
+nx = 4
+ny = 5
+nz = 3
+cell = ")" + cell + R"("
+[material]
+E = 1000.0
+nu = 0.3
+[[clamp]]
+boundary = "xmin"
+components = ["x"]
+[[clamp]]
+boundary = "ymin"
+components = ["y"]
+[[displacement]]
+boundary = "zmax"
+z = "-0.001 - 0.0005 * x"
+[[traction]]
+boundary = "xmax"
+p = ["-0.1 * z", "0", "0"]
+[body_force]
+f = ["0", "0", "-0.2"]
+[contact]
+boundary = "zmin"
+obstacle = "plane"
+point = [0.0, 0.0, 0.0]
+normal = [0.002, 0.0, 1.0]
+[solver]
+uzawa_tolerance = 1e-10
+)",
+                              "rolled_box.toml")
+      .spec;
+}
+
+void expect_whole_model_in_parts(const ProblemSpec& spec, bool smaller = false) {
+  const DistributedEngine& engine = *distributed_engine();
+  const Model part = testing::distributed_model(spec);
+  const Model whole = testing::serial_model(spec);
+  if (engine.size() == 1) {
+    EXPECT_FALSE(part.is_part());
+    return;
+  }
+  // Made in parts: each rank its own, none of them whole.
+  ASSERT_TRUE(part.is_part());
+  ASSERT_EQ(static_cast<Index>(part.node_ranks.size()), part.mesh.num_nodes());
+  // (A part is its block and two layers of cubes around it: on a small box that may be all.)
+  if (smaller) {
+    EXPECT_LT(part.mesh.num_cells(), whole.mesh.num_cells());
+  }
+  EXPECT_LE(part.mesh.num_cells(), whole.mesh.num_cells());
+  EXPECT_EQ(part.whole.nodes, whole.mesh.num_nodes());
+  EXPECT_EQ(part.dofs.num_free(), whole.dofs.num_free());
+
+  // Node for node, the numbering and the prescribed values of the whole; b on the rank's rows.
+  const Index first = part.problem.first_row();
+  Index own = 0;
+  for (Index v = 0; v < part.mesh.num_nodes(); ++v) {
+    const Index g = part.global_nodes[static_cast<std::size_t>(v)];
+    EXPECT_EQ(part.mesh.node(v), whole.mesh.node(g));
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(part.dofs.is_clamped(v, k), whole.dofs.is_clamped(g, k)) << g << " " << k;
+      EXPECT_EQ(part.dofs.value(v, k), whole.dofs.value(g, k));
+      const Index i = part.dofs.free_index(v, k);
+      if (i < first || i >= part.problem.end_row()) continue;
+      ++own;
+      EXPECT_EQ(part.node_ranks[static_cast<std::size_t>(v)], engine.rank());
+      EXPECT_EQ(part.problem.b(i - first), whole.problem.b(whole.dofs.free_index(g, k)))
+          << "node " << g << " component " << k;
+    }
+  }
+  EXPECT_EQ(own, part.problem.end_row() - first);
+
+  // The contact set whole on every rank, in the serial order, to the bit.
+  const ContactSet& a = part.problem.contact;
+  const ContactSet& b = whole.problem.contact;
+  ASSERT_EQ(a.nodes, b.nodes);
+  EXPECT_EQ(a.normals, b.normals);
+  EXPECT_EQ(a.weights, b.weights);
+  EXPECT_EQ(a.gaps, b.gaps);
+  EXPECT_EQ(a.movable, b.movable);
+  EXPECT_EQ(a.facets, b.facets);
+  EXPECT_EQ(part.contact_starts, whole.contact_starts);
+  EXPECT_EQ(part.contact_gap_shift, whole.contact_gap_shift);
+  EXPECT_EQ(part.contact_gap_shift_group, whole.contact_gap_shift_group);
+  // N's rows: the same entries at the same nodes' unknowns (numbered otherwise).
+  for (Index j = 0; j < a.size(); ++j) {
+    const Index g = b.nodes[static_cast<std::size_t>(j)];
+    const Index v = part.local_node(g);
+    for (int k = 0; k < 3; ++k) {
+      const Index i = whole.dofs.free_index(g, k);
+      const double expected = i < 0 ? 0.0 : b.N.coeff(j, i);
+      if (v >= 0 && part.dofs.free_index(v, k) >= 0) {
+        EXPECT_EQ(a.N.coeff(j, part.dofs.free_index(v, k)), expected);
+      }
+    }
+  }
+  EXPECT_EQ(a.N.nonZeros(), b.N.nonZeros());
+  EXPECT_NEAR(
+      part.whole.radius,
+      [&] {
+        double r = 0.0;
+        const Eigen::VectorXd c = whole.mesh.coordinates().rowwise().mean();
+        for (Index v = 0; v < whole.mesh.num_nodes(); ++v)
+          r = std::max(r, (whole.mesh.node(v) - c).norm());
+        return r;
+      }(),
+      1e-14)
+      << "the largest distance from the centroid";
+
+  // The solve and its resultants, summed over the parts, as the serial run's.
+  ContactSolverOptions o = part.solver;
+  o.distributed = DistributedMode::Petsc;
+  const ContactResult distributed = solve_contact(part.problem, o);
+  const ContactResult serial = testing::serial_solve(whole, whole.solver);
+  ASSERT_TRUE(distributed.summary.converged()) << distributed.summary.message;
+  ASSERT_TRUE(serial.summary.converged()) << serial.summary.message;
+  EXPECT_EQ(distributed.summary.outer_iterations, serial.summary.outer_iterations);
+  EXPECT_NEAR(distributed.summary.energy, serial.summary.energy,
+              1e-10 * std::abs(serial.summary.energy));
+  EXPECT_LE((distributed.l - serial.l).norm(), 1e-8 * serial.l.norm());
+  ContactResult serial_raw = serial;
+  serial_raw.u = whole.dofs.restrict_to_free(serial.u);
+  const Resultants ra = compute_resultants(part, distributed);
+  const Resultants rb = compute_resultants(whole, serial_raw);
+  const double scale = rb.applied.norm() + rb.contact.norm();
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LE((ra.applied - rb.applied).norm(), 1e-8 * scale);
+  EXPECT_LE((ra.contact - rb.contact).norm(), 1e-8 * scale);
+  ASSERT_EQ(ra.reactions.size(), rb.reactions.size());
+  for (std::size_t i = 0; i < ra.reactions.size(); ++i) {
+    EXPECT_EQ(ra.reactions[i].boundary, rb.reactions[i].boundary);
+    EXPECT_LE((ra.reactions[i].force - rb.reactions[i].force).norm(), 1e-8 * scale)
+        << rb.reactions[i].boundary << ": " << ra.reactions[i].force.transpose() << " against "
+        << rb.reactions[i].force.transpose();
+  }
+  EXPECT_LT(ra.relative_balance, 1e-8);
+  const ContactNodeValues p = contact_node_values(part, distributed);
+  const ContactNodeValues q = contact_node_values(whole, serial_raw);
+  EXPECT_EQ(p.points, q.points);
+  EXPECT_EQ(p.prescribed, q.prescribed);
+  EXPECT_LE((p.displacement - q.displacement).norm(), 1e-8 * q.displacement.norm());
+
+  // Every node and every cell accounted for by one rank.
+  double counts[2] = {0.0, 0.0};
+  for (Index v = 0; v < part.mesh.num_nodes(); ++v)
+    if (part.node_rank(v) == engine.rank()) counts[0] += 1.0;
+  for (Index c = 0; c < part.mesh.num_cells(); ++c)
+    if (part.cell_rank(c) == engine.rank()) counts[1] += 1.0;
+  engine.sum(counts, 2);
+  EXPECT_EQ(counts[0], static_cast<double>(whole.mesh.num_nodes()));
+  EXPECT_EQ(counts[1], static_cast<double>(whole.mesh.num_cells()));
+}
+
+TEST(BoxInParts, RolledHex27BoxIsTheWholeModelInParts) {
+  expect_whole_model_in_parts(rolled_box("hex27"));
+}
+
+TEST(BoxInParts, RolledTet10BoxIsTheWholeModelInParts) {
+  expect_whole_model_in_parts(rolled_box("tet10"));
+}
+
+TEST(BoxInParts, ClampedBlockOnABallIsTheWholeModelInParts) {
+  ProblemSpec spec = testing::ball_on_block(8, 6e-3, CellType::Tet4);
+  spec.solver.uzawa_tolerance = 1e-10;
+  expect_whole_model_in_parts(spec, /*smaller=*/true);
+}
+
+// solver.partition = "graph": rank 0 builds the model and PETSc's partitioner shares it.
+TEST(BoxInParts, GraphPartitionIsKeptOnRequest) {
+  ProblemSpec spec = rolled_box("hex8");
+  spec.solver.partition = PartitionMode::Graph;
+  const Model part = testing::distributed_model(spec);
+  EXPECT_TRUE(part.node_ranks.empty());
+  EXPECT_EQ(part.is_part(), distributed_engine()->size() > 1);
+}
+
+// A traction that is not finite on part of one side: the ranks whose parts have it find it,
+// and every rank throws the same message.
+TEST(BoxInParts, BadInputOnOneRankStopsEveryRankWithOneMessage) {
+  ProblemSpec spec = rolled_box("hex8");
+  spec.tractions[0].p = [](const Point& x) {
+    Eigen::Vector3d t(0.0, 0.0, 0.0);
+    if (x(1) > 0.7) t(0) = std::numeric_limits<double>::quiet_NaN();
+    return t;
+  };
+  std::string message;
+  try {
+    (void)testing::distributed_model(spec);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("traction on 'xmax'"), std::string::npos) << message;
+  const DistributedEngine& engine = *distributed_engine();
+  const std::vector<std::vector<char>> all =
+      engine.allgather(std::vector<char>(message.begin(), message.end()));
+  for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
+}
+
+}  // namespace
+}  // namespace signorini
