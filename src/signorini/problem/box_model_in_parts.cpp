@@ -203,6 +203,7 @@ Model build_box_model_in_parts(const ProblemSpec& spec, DistributedEngine& engin
   std::vector<Index> free(dofs_of_part, -1);
   Vector values = Vector::Zero(static_cast<Index>(dofs_of_part));
   std::vector<Index> node_of_unknown;
+  bool own_values = false;  // a nonzero prescribed value at one of the rank's nodes
   {
     Index next = row_starts[static_cast<std::size_t>(rank)];
     for (Index v = 0; v < nodes; ++v) {
@@ -210,6 +211,7 @@ Model build_box_model_in_parts(const ProblemSpec& spec, DistributedEngine& engin
       for (int k = 0; k < kDim; ++k) {
         const auto d = static_cast<std::size_t>(v * kDim + k);
         values(v * kDim + k) = local->value(v, k);
+        own_values = own_values || values(v * kDim + k) != 0.0;
         if (local->free_index(v, k) < 0) continue;
         free[d] = next++;
         node_of_unknown.push_back(global_nodes[static_cast<std::size_t>(v)]);
@@ -269,10 +271,6 @@ Model build_box_model_in_parts(const ProblemSpec& spec, DistributedEngine& engin
   }
   // Whether any node of the box has a nonzero prescribed value (DofMap::has_prescribed_values
   // of the whole, which the gaps' shifts and b follow).
-  bool own_values = false;
-  for (Index v = 0; v < nodes; ++v)
-    if (node_ranks[static_cast<std::size_t>(v)] == rank)
-      for (int k = 0; k < kDim; ++k) own_values = own_values || values(v * kDim + k) != 0.0;
   const bool prescribed = engine.any(own_values);
   DofMap dofs(kDim, std::move(free), row_starts.back(), prescribed ? std::move(values) : Vector());
   mesh_timer.stop();
