@@ -94,11 +94,14 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
              "PETSc path even on one rank; `\"off\"`: never (an error under mpirun with more "
              "than one rank). Needs a build with PETSc ([distributed.md](distributed.md))");
     t.choice("partition", &O::partition, kPartitionModeNames,
-             "how a run on several MPI ranks shares the mesh: `\"auto\"`, a generated box in "
-             "blocks of cubes that each rank makes itself (no rank holds the whole mesh; not "
-             "with point loads, pinned clamps, load factors of an entry's own or friction), "
-             "any other mesh read by rank 0 and its nodes partitioned by PETSc's graph "
-             "partitioner (PT-Scotch); `\"graph\"`: the latter for a box too "
+             "how a run on several MPI ranks shares the mesh and builds the model: "
+             "`\"auto\"`, a generated box in blocks of cubes that each rank makes itself (no "
+             "rank holds the whole mesh), any other mesh read by rank 0, its nodes partitioned "
+             "by PETSc's graph partitioner (PT-Scotch) and sent in parts, from which each rank "
+             "builds its part of the model (not with point loads, pinned clamps, normal "
+             "displacements, load factors of an entry's own or friction: rank 0 then builds "
+             "the whole model); `\"graph\"`: rank 0 makes or reads the mesh, partitions it "
+             "with PT-Scotch and builds the whole model, for a box too "
              "([distributed.md](distributed.md))");
     t.text("petsc_options", &O::petsc_options,
            "options for PETSc's database on the PETSc path, applied to the Newton systems' "

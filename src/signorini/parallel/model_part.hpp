@@ -26,6 +26,8 @@ class PartCells {
   explicit PartCells(const Mesh& mesh);
   /// The cells of the part around `own` (nodes of the mesh), increasing.
   [[nodiscard]] std::vector<Index> cells(const std::vector<Index>& own);
+  /// The cells around each node of the mesh.
+  [[nodiscard]] const NodeCells& node_cells() const { return node_cells_; }
 
  private:
   const Mesh& mesh_;

@@ -3,13 +3,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 #include "signorini/core/error.hpp"
+#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/parallel/byte_message.hpp"
 #include "signorini/parallel/model_part.hpp"
+#include "signorini/problem/model_in_parts.hpp"
 
 namespace signorini {
 
@@ -179,6 +182,170 @@ std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
   return own_part;
 }
 
+std::map<std::string, std::vector<Index>> contact_orders(const ProblemSpec& spec,
+                                                         const Mesh& mesh) {
+  std::map<std::string, std::vector<Index>> out;
+  if (mesh.dim() != 2) return out;
+  for (const ContactSpec& c : spec.contacts)
+    out[c.boundary] =
+        boundary_nodes(mesh, mesh.boundary_part(c.boundary), "contact.boundary").nodes;
+  return out;
+}
+
+std::vector<char> send_mesh_parts(const Mesh& mesh, const DofMap& dofs,
+                                  const std::vector<int>& owner, const ContactProblem& problem,
+                                  const std::map<std::string, std::vector<Index>>& contact_orders,
+                                  const DistributedEngine& engine) {
+  const int dim = mesh.dim(), ranks = engine.size();
+  const Index nodes = mesh.num_nodes();
+  PartCells part_cells(mesh);
+  // The rank of each node: that of its unknowns; a node without one goes with a free node of one
+  // of its cells, so that its cells are near that rank's (rank 0 where none has one).
+  std::vector<int> node_rank(static_cast<std::size_t>(nodes), -1);
+  for (int r = 0; r < ranks; ++r)
+    for (Index i = problem.row_starts[static_cast<std::size_t>(r)];
+         i < problem.row_starts[static_cast<std::size_t>(r) + 1]; ++i)
+      node_rank[static_cast<std::size_t>(problem.node_of_unknown[static_cast<std::size_t>(i)])] = r;
+  {
+    std::vector<int> held_rank(static_cast<std::size_t>(nodes), -1);
+    for (Index v = 0; v < nodes; ++v) {
+      if (node_rank[static_cast<std::size_t>(v)] >= 0) continue;
+      int& r = held_rank[static_cast<std::size_t>(v)];
+      for (const Index c : part_cells.node_cells().of(v)) {
+        for (const Index w : mesh.cell(c))
+          if (node_rank[static_cast<std::size_t>(w)] >= 0) {
+            r = node_rank[static_cast<std::size_t>(w)];
+            break;
+          }
+        if (r >= 0) break;
+      }
+      if (r < 0) r = 0;
+    }
+    for (Index v = 0; v < nodes; ++v)
+      if (node_rank[static_cast<std::size_t>(v)] < 0)
+        node_rank[static_cast<std::size_t>(v)] = held_rank[static_cast<std::size_t>(v)];
+  }
+  std::vector<std::vector<Index>> own(static_cast<std::size_t>(ranks));
+  for (Index v = 0; v < nodes; ++v)
+    own[static_cast<std::size_t>(node_rank[static_cast<std::size_t>(v)])].push_back(v);
+  // Each contact side's nodes (2D) with their places, by node, to look up.
+  std::map<std::string, std::vector<std::pair<Index, Index>>> places;
+  for (const auto& [name, order] : contact_orders) {
+    std::vector<std::pair<Index, Index>>& p = places[name];
+    for (std::size_t i = 0; i < order.size(); ++i) p.emplace_back(order[i], static_cast<Index>(i));
+    std::sort(p.begin(), p.end());
+  }
+  const std::vector<std::string> names = mesh.boundary_part_names();
+  const bool prescribed = dofs.has_prescribed_values();
+  std::vector<char> own_bytes;
+  for (int r = 0; r < ranks; ++r) {
+    const std::vector<Index> cells = part_cells.cells(own[static_cast<std::size_t>(r)]);
+    own[static_cast<std::size_t>(r)] = {};
+    const MeshPart part = mesh_part(mesh, cells);
+    const std::vector<Index>& global = part.global_nodes;
+    ByteWriter out;
+    pack(out, part.mesh);
+    out.put(global);
+    std::vector<int> ranks_of_part;
+    ranks_of_part.reserve(global.size());
+    for (const Index g : global) ranks_of_part.push_back(node_rank[static_cast<std::size_t>(g)]);
+    out.put(ranks_of_part);
+    // Each boundary part's facets in the part (their cells in the part's numbering), with
+    // their places in the whole part.
+    out.put(names);
+    for (const std::string& name : names) {
+      std::vector<Index> facet_cells, keys;
+      std::vector<int> locals;
+      const std::vector<Facet>& facets = mesh.boundary_part(name).facets;
+      for (std::size_t f = 0; f < facets.size(); ++f) {
+        const auto it = std::lower_bound(cells.begin(), cells.end(), facets[f].cell);
+        if (it == cells.end() || *it != facets[f].cell) continue;
+        facet_cells.push_back(static_cast<Index>(it - cells.begin()));
+        locals.push_back(facets[f].local);
+        keys.push_back(static_cast<Index>(f));
+      }
+      out.put(facet_cells);
+      out.put(locals);
+      out.put(keys);
+    }
+    out.put(static_cast<std::uint64_t>(places.size()));
+    for (const auto& [name, p] : places) {
+      std::vector<Index> part_nodes, keys;
+      for (std::size_t i = 0; i < global.size(); ++i) {
+        const auto it =
+            std::lower_bound(p.begin(), p.end(), std::pair<Index, Index>{global[i], -1});
+        if (it == p.end() || it->first != global[i]) continue;
+        part_nodes.push_back(static_cast<Index>(i));
+        keys.push_back(it->second);
+      }
+      out.put(name);
+      out.put(part_nodes);
+      out.put(keys);
+    }
+    pack(out, dofs.part(global));
+    std::vector<int> entries;
+    entries.reserve(global.size() * static_cast<std::size_t>(dim));
+    for (const Index g : global)
+      for (int k = 0; k < dim; ++k) entries.push_back(owner[static_cast<std::size_t>(g * dim + k)]);
+    out.put(entries);
+    out.put(problem.row_starts);
+    const Index first = problem.row_starts[static_cast<std::size_t>(r)];
+    const Index last = problem.row_starts[static_cast<std::size_t>(r) + 1];
+    out.put(std::vector<Index>(problem.node_of_unknown.begin() + first,
+                               problem.node_of_unknown.begin() + last));
+    out.put(static_cast<std::uint8_t>(prescribed));
+    if (r == 0)
+      own_bytes = std::move(out.bytes());
+    else
+      engine.send_from_root(r, out.bytes());
+  }
+  return own_bytes;
+}
+
+Model model_from_mesh_part(const ProblemSpec& spec, std::vector<char> bytes,
+                           DistributedEngine& engine, TimingTable timings) {
+  ScopedTimer mesh_timer(timings, "mesh");
+  ByteReader in(bytes);
+  Mesh mesh = unpack_mesh(in);
+  std::vector<Index> global_nodes = in.get_vector<Index>();
+  std::vector<int> node_ranks = in.get_vector<int>();
+  std::map<std::string, std::vector<Index>> facet_keys;
+  for (const std::string& name : in.get_strings()) {
+    const std::vector<Index> cells = in.get_vector<Index>();
+    const std::vector<int> locals = in.get_vector<int>();
+    std::vector<Facet> facets;
+    for (std::size_t f = 0; f < cells.size(); ++f) facets.push_back({cells[f], locals.at(f)});
+    mesh.set_boundary_part(name, std::move(facets));
+    facet_keys[name] = in.get_vector<Index>();
+  }
+  std::map<std::string, std::vector<std::pair<Index, Index>>> node_keys;
+  for (auto sides = in.get<std::uint64_t>(); sides > 0; --sides) {
+    std::vector<std::pair<Index, Index>>& keys = node_keys[in.get_string()];
+    const std::vector<Index> part_nodes = in.get_vector<Index>();
+    const std::vector<Index> places = in.get_vector<Index>();
+    for (std::size_t i = 0; i < part_nodes.size(); ++i)
+      keys.emplace_back(part_nodes[i], places.at(i));
+  }
+  DofMap dofs = unpack_dof_map(in);
+  std::vector<int> entry = in.get_vector<int>();
+  std::vector<Index> row_starts = in.get_vector<Index>();
+  std::vector<Index> node_of_unknown = in.get_vector<Index>();
+  const bool prescribed = in.get<std::uint8_t>() != 0;
+  if (!in.done()) throw std::logic_error("a part of the mesh from rank 0 has a mismatched layout");
+  bytes = {};
+  mesh_timer.stop();
+  Vector loads;
+  on_every_rank(engine, [&] {
+    ScopedTimer t(timings, "loads");
+    loads = part_loads(spec, mesh);
+  });
+  OwnPart own{
+      std::move(mesh), std::move(global_nodes), std::move(node_ranks), std::move(facet_keys),
+      std::move(dofs), std::move(entry),        std::move(row_starts), std::move(node_of_unknown),
+      prescribed,      std::move(node_keys)};
+  return model_from_own_part(spec, std::move(own), std::move(loads), engine, std::move(timings));
+}
+
 Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
   TimingTable timings;
   ScopedTimer mesh_timer(timings, "mesh");
@@ -191,7 +358,16 @@ Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
     const NodeGraph graph = unpack_node_graph(in);
     (void)engine.partition(graph, spec.solver);
   }
-  expect_root_went_on(engine);  // rank 0 built the whole model but the stiffness
+  expect_root_went_on(engine);  // rank 0 built the whole model but the stiffness (or, in
+                                // parts, checked the cells)
+  // A model made in parts (model_in_parts.hpp): rank 0 sends the part of the mesh only, and
+  // every rank builds its model from it, agreeing on bad input.
+  if (model_parts_support(spec)) {
+    ScopedTimer receive_timer(timings, "mesh");
+    std::vector<char> part = engine.receive_from_root();
+    receive_timer.stop();
+    return model_from_mesh_part(spec, std::move(part), engine, std::move(timings));
+  }
   // From here a failure is this rank's alone (rank 0 found the input good): not InputError,
   // which the tool takes as every rank's (app/tool.cpp), but one that ends every rank.
   try {

@@ -8,6 +8,7 @@
 // A failure on rank 0 reaches the others as the one message that rank 0 reports.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,29 @@ class RootAnnouncements {
                                                  const ProblemSize& size,
                                                  const DistributedEngine& engine,
                                                  std::vector<char>& everyone);
+
+/// Rank 0, where the conditions can be made in parts (model_in_parts.hpp): sends each other
+/// rank its part of the mesh (two layers of cells around its nodes, with the boundary parts cut
+/// to them and their facets' places) and that part's numbering, from the whole mesh and its
+/// numbering after the partition (`owner`: number_dofs's entries; `problem`: the row starts and
+/// the node of each unknown). A node without a free dof goes to the rank of a free node of one
+/// of its cells (rank 0 where none has one). `contact_orders`: in 2D, each contact side's nodes
+/// in the whole side's order (contact_orders). Returns rank 0's own part's bytes.
+[[nodiscard]] std::vector<char> send_mesh_parts(
+    const Mesh& mesh, const DofMap& dofs, const std::vector<int>& owner,
+    const ContactProblem& problem, const std::map<std::string, std::vector<Index>>& contact_orders,
+    const DistributedEngine& engine);
+
+/// In 2D, the nodes of each contact side in the order of its contact rows (the walk along its
+/// edges, fem/contact_boundary.hpp), by side; empty in 3D, where each part orders them itself.
+/// InputError for a side that is not one.
+[[nodiscard]] std::map<std::string, std::vector<Index>> contact_orders(const ProblemSpec& spec,
+                                                                       const Mesh& mesh);
+
+/// A rank's model from its part of the mesh (send_mesh_parts's bytes; a collective call, every
+/// rank alike: model_in_parts.hpp).
+[[nodiscard]] Model model_from_mesh_part(const ProblemSpec& spec, std::vector<char> bytes,
+                                         DistributedEngine& engine, TimingTable timings);
 
 /// Every other rank: its model, from what rank 0 sends (the same calls in the same order).
 [[nodiscard]] Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine);
@@ -93,5 +117,13 @@ void require_implied_dimension(const ProblemSpec& spec, int dim);
 void add_surface_and_body_loads(
     const ProblemSpec& spec, const Mesh& mesh,
     const std::function<Vector&(const std::vector<double>&, std::string)>& into);
+
+/// f - K u_D, the loads of the free dofs as a full vector (docs/method.md: a nonzero prescribed
+/// displacement u_D loads the free dofs; the full solution is u_D plus the free part), with u_D
+/// = `u_d`, or the DofMap's prescribed values where `u_d` is empty; f itself where the DofMap
+/// has none. On a part of the mesh it is exact at the nodes whose cells are all in the part.
+[[nodiscard]] Vector free_loads(const Mesh& mesh, const DofMap& dofs,
+                                const ElasticityOptions& elasticity, const Vector& f,
+                                const Vector& u_d = {});
 
 }  // namespace signorini

@@ -22,6 +22,7 @@
 #include "signorini/problem/box_model_in_parts.hpp"
 #include "signorini/problem/distributed_model.hpp"
 #include "signorini/problem/model_hierarchy.hpp"
+#include "signorini/problem/model_in_parts.hpp"
 #include "signorini/problem/solver_plan.hpp"
 
 namespace signorini {
@@ -269,6 +270,21 @@ void add_surface_and_body_loads(
                     into(spec.body_force_factors, "body_force"));
 }
 
+Vector free_loads(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& elasticity,
+                  const Vector& f, const Vector& u_d) {
+  if (!dofs.has_prescribed_values()) return f;
+  const Vector own = u_d.size() != 0 ? Vector() : dofs.prescribed_values();
+  const Vector& values = u_d.size() != 0 ? u_d : own;
+  // K u_D formed only in the cells that touch a nonzero prescribed value.
+  const auto touches = [&](Index cell) {
+    for (const Index node : mesh.cell(cell))
+      for (int k = 0; k < mesh.dim(); ++k)
+        if (values(node * mesh.dim() + k) != 0.0) return true;
+    return false;
+  };
+  return f - internal_forces(mesh, elasticity, values, touches);
+}
+
 void require_implied_dimension(const ProblemSpec& spec, int dim) {
   if (const ImpliedDimension& d = spec.implied_dimension; d.dimension != 0 && d.dimension != dim)
     throw InputError(fmt::format(
@@ -440,6 +456,31 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                                          SparseMatrix(0, dofs.num_free()));
     problem.rank = engine.rank();
   }
+  if (parts != nullptr && model_parts_support(spec)) {
+    // Rank 0 of several, where the model can be made in parts (problem/model_in_parts.hpp):
+    // it checks the cells for all (an inverted one stops every rank with its one message),
+    // sends each rank its part of the mesh and that part's numbering, lets the whole go, and
+    // builds its own model from its part, as the others do.
+    DistributedEngine& engine = required_distributed_engine();
+    {
+      ScopedTimer t(timings, "assembly");
+      require_valid_cells(mesh, elasticity);
+    }
+    const std::map<std::string, std::vector<Index>> orders = contact_orders(spec, mesh);
+    parts->ok();
+    std::vector<char> own;
+    {
+      ScopedTimer t(timings, "mesh");
+      own = send_mesh_parts(mesh, dofs, owner, problem, orders, engine);
+    }
+    {
+      const Mesh whole_mesh = std::move(mesh);
+      const DofMap whole_dofs = std::move(dofs);
+      const ContactProblem whole_problem = std::move(problem);
+      owner = {};
+    }
+    return model_from_mesh_part(spec, std::move(own), engine, std::move(timings));
+  }
   if (parts != nullptr) {
     // Rank 0 of several assembles no cell here (each rank its own, from its part), but finds an
     // inverted cell for all of them: then every rank stops with its one message.
@@ -506,14 +547,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
     // plus the free part (DofMap::expand). b is linear in f and u_D: each group's part is kept
     // for the steps of a loading history.
     const auto free_part = [&](const Vector& f, const Vector& u_d) -> Vector {
-      if (!dofs.has_prescribed_values()) return dofs.restrict_to_free(f);
-      const auto touches = [&](Index cell) {
-        for (const Index node : mesh.cell(cell))
-          for (int k = 0; k < mesh.dim(); ++k)
-            if (u_d(node * mesh.dim() + k) != 0.0) return true;
-        return false;
-      };
-      return dofs.restrict_to_free(f - internal_forces(mesh, elasticity, u_d, touches));
+      return dofs.restrict_to_free(free_loads(mesh, dofs, elasticity, f, u_d));
     };
     for (LoadGroup& g : groups) {
       Vector scales = Vector::Zero(dofs.num_dofs());

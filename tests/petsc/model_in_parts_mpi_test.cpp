@@ -1,8 +1,10 @@
-// A box made in parts (problem/box_model_in_parts.hpp, docs/distributed.md), on 1, 2 and 4
-// ranks: no rank holds the whole mesh, each rank's part of the model is the whole model's, to
-// the bit where the sums run in the same order (b, the contact set, the prescribed values), and
-// the solve and its resultants are the serial run's; bad input found by one rank stops every
-// rank with one message.
+// A model made in parts (problem/model_in_parts.hpp, docs/distributed.md), on 1, 2 and 4 ranks:
+// a generated box that each rank makes its block of (problem/box_model_in_parts.hpp), and a mesh
+// from a file that rank 0 sends in parts of the mesh. No rank holds the whole model (nor, for
+// the box, the whole mesh); each rank's part of the model is the whole model's, to the bit where
+// the sums run in the same order (b, the contact set, the prescribed values), and the solve and
+// its resultants are the serial run's; bad input found by one rank stops every rank with one
+// message.
 
 #include <gtest/gtest.h>
 
@@ -10,6 +12,7 @@
 #include <limits>
 
 #include "../problem/ball_on_block.hpp"
+#include "../problem/hertz_ball.hpp"
 #include "mpi_test_problems.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/problem_file.hpp"
@@ -73,7 +76,7 @@ void expect_whole_model_in_parts(const ProblemSpec& spec, bool smaller = false) 
   // Made in parts: each rank its own, none of them whole.
   ASSERT_TRUE(part.is_part());
   ASSERT_EQ(static_cast<Index>(part.node_ranks.size()), part.mesh.num_nodes());
-  // (A part is its block and two layers of cubes around it: on a small box that may be all.)
+  // (A part is two layers of cells around the rank's nodes: on a small mesh that may be all.)
   if (smaller) {
     EXPECT_LT(part.mesh.num_cells(), whole.mesh.num_cells());
   }
@@ -81,13 +84,14 @@ void expect_whole_model_in_parts(const ProblemSpec& spec, bool smaller = false) 
   EXPECT_EQ(part.whole.nodes, whole.mesh.num_nodes());
   EXPECT_EQ(part.dofs.num_free(), whole.dofs.num_free());
 
+  const int dim = whole.mesh.dim();
   // Node for node, the numbering and the prescribed values of the whole; b on the rank's rows.
   const Index first = part.problem.first_row();
   Index own = 0;
   for (Index v = 0; v < part.mesh.num_nodes(); ++v) {
     const Index g = part.global_nodes[static_cast<std::size_t>(v)];
     EXPECT_EQ(part.mesh.node(v), whole.mesh.node(g));
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < dim; ++k) {
       EXPECT_EQ(part.dofs.is_clamped(v, k), whole.dofs.is_clamped(g, k)) << g << " " << k;
       EXPECT_EQ(part.dofs.value(v, k), whole.dofs.value(g, k));
       const Index i = part.dofs.free_index(v, k);
@@ -116,7 +120,7 @@ void expect_whole_model_in_parts(const ProblemSpec& spec, bool smaller = false) 
   for (Index j = 0; j < a.size(); ++j) {
     const Index g = b.nodes[static_cast<std::size_t>(j)];
     const Index v = part.local_node(g);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < dim; ++k) {
       const Index i = whole.dofs.free_index(g, k);
       const double expected = i < 0 ? 0.0 : b.N.coeff(j, i);
       if (v >= 0 && part.dofs.free_index(v, k) >= 0) {
@@ -225,6 +229,59 @@ TEST(BoxInParts, BadInputOnOneRankStopsEveryRankWithOneMessage) {
   const std::vector<std::vector<char>> all =
       engine.allgather(std::vector<char>(message.begin(), message.end()));
   for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
+}
+
+// A mesh from a file: rank 0 reads it and partitions its nodes, and sends each rank its part
+// of the mesh; each rank builds its model from it. Hertz's ball: tetrahedra, rollers on the
+// symmetry planes (the nodes of the axis have no free dof but z), a prescribed displacement
+// (the gaps' shifts), and a curved contact side with the exact normal.
+TEST(MeshInParts, HertzBallFromAFileIsTheWholeModelInParts) {
+  ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
+  spec.solver.uzawa_tolerance = 1e-10;
+  expect_whole_model_in_parts(spec, /*smaller=*/true);
+}
+
+// In 2D, on quadratic triangles from a file, clamped on a side (nodes without a free dof).
+TEST(MeshInParts, QuadraticCylinderFromAFileIsTheWholeModelInParts) {
+  ProblemSpec spec = read_problem_file(SIGNORINI_EXAMPLES_DIR "/hertz_p2.toml").spec;
+  spec.solver.uzawa_tolerance = 1e-10;
+  expect_whole_model_in_parts(spec);
+}
+
+// A body force that is not finite in part of the ball: the ranks whose parts hold it find it,
+// and every rank throws the same message.
+TEST(MeshInParts, BadInputOnOneRankStopsEveryRankWithOneMessage) {
+  ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
+  spec.body_force = [](const Point& x) {
+    Eigen::Vector3d f(0.0, 0.0, 0.0);
+    if (x(0) > 0.6) f(2) = std::numeric_limits<double>::quiet_NaN();
+    return f;
+  };
+  std::string message;
+  try {
+    (void)testing::distributed_model(spec);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("is not finite"), std::string::npos) << message;
+  const DistributedEngine& engine = *distributed_engine();
+  const std::vector<std::vector<char>> all =
+      engine.allgather(std::vector<char>(message.begin(), message.end()));
+  for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
+}
+
+// What the parts do not support yet (a point load here) goes the whole way: rank 0 builds the
+// whole model and sends parts of it.
+TEST(MeshInParts, PointLoadKeepsTheWholeBuild) {
+  ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
+  PointLoadSpec load;
+  load.at = Eigen::Vector3d(0.3, 0.3, 0.5);
+  load.force = Eigen::Vector3d(0.0, 0.0, -1e-6);
+  spec.point_loads = {load};
+  const Model part = testing::distributed_model(spec);
+  EXPECT_TRUE(part.node_ranks.empty());
+  EXPECT_EQ(part.is_part(), distributed_engine()->size() > 1);
 }
 
 }  // namespace

@@ -1,0 +1,388 @@
+#include "signorini/problem/model_in_parts.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "signorini/core/peak_memory.hpp"
+#include "signorini/fem/contact_boundary.hpp"
+#include "signorini/fem/elasticity_assembly.hpp"
+#include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/problem/distributed_model.hpp"
+
+namespace signorini {
+
+bool model_parts_support(const ProblemSpec& spec) {
+  if (spec.solver.partition != PartitionMode::Auto || !spec.point_loads.empty() ||
+      !spec.body_force_factors.empty())
+    return false;
+  for (const ClampSpec& c : spec.clamps)
+    if (c.at) return false;
+  for (const DisplacementSpec& d : spec.displacements)
+    if (!d.factors.empty() || d.normal) return false;
+  for (const TractionSpec& t : spec.tractions)
+    if (!t.factors.empty()) return false;
+  for (const PressureSpec& p : spec.pressures)
+    if (!p.factors.empty()) return false;
+  for (const ContactSpec& c : spec.contacts)
+    if (c.friction != FrictionModel::None) return false;
+  return true;
+}
+
+void agree_on_input(const DistributedEngine& engine, const std::string& message) {
+  for (const std::vector<char>& m :
+       engine.allgather(std::vector<char>(message.begin(), message.end())))
+    if (!m.empty()) throw InputError(std::string(m.begin(), m.end()));
+}
+
+template <typename T>
+std::vector<T> values_of_ranks(const DistributedEngine& engine, T value) {
+  ByteWriter out;
+  out.put(value);
+  std::vector<T> all;
+  for (const std::vector<char>& bytes : engine.allgather(out.bytes())) {
+    ByteReader in(bytes);
+    all.push_back(in.get<T>());
+  }
+  return all;
+}
+template std::vector<Index> values_of_ranks(const DistributedEngine&, Index);
+template std::vector<double> values_of_ranks(const DistributedEngine&, double);
+
+Vector part_loads(const ProblemSpec& spec, const Mesh& mesh) {
+  Vector loads = Vector::Zero(mesh.num_nodes() * mesh.dim());
+  add_surface_and_body_loads(
+      spec, mesh,
+      [&loads](const std::vector<double>&, const std::string&) -> Vector& { return loads; });
+  return loads;
+}
+
+namespace {
+
+// One contact row as a rank sends it: what the whole contact set and the results need.
+struct ContactRow {
+  Index node = 0;  // the whole mesh's
+  Index key = 0;   // where the side's facets first name the node (the serial order)
+  Vector normal, point, prescribed;
+  double weight = 0.0, gap = 0.0;
+  bool movable = false;
+  std::vector<std::pair<Index, double>> n;  // N's entries: free dof, value
+};
+
+struct ContactFacet {
+  Index key = 0;
+  std::vector<Index> nodes;  // the whole mesh's
+};
+
+void pack_row(ByteWriter& out, const ContactRow& r) {
+  out.put(r.node);
+  out.put(r.key);
+  for (const Vector* v : {&r.normal, &r.point, &r.prescribed}) out.put(*v);
+  out.put(r.weight);
+  out.put(r.gap);
+  out.put(static_cast<std::uint8_t>(r.movable));
+  out.put(static_cast<std::uint64_t>(r.n.size()));
+  for (const auto& [d, value] : r.n) {
+    out.put(d);
+    out.put(value);
+  }
+}
+
+ContactRow unpack_row(ByteReader& in) {
+  ContactRow r;
+  r.node = in.get<Index>();
+  r.key = in.get<Index>();
+  for (Vector* v : {&r.normal, &r.point, &r.prescribed}) *v = in.get_vector_xd();
+  r.weight = in.get<double>();
+  r.gap = in.get<double>();
+  r.movable = in.get<std::uint8_t>() != 0;
+  r.n.resize(static_cast<std::size_t>(in.get<std::uint64_t>()));
+  for (auto& [d, value] : r.n) {
+    d = in.get<Index>();
+    value = in.get<double>();
+  }
+  return r;
+}
+
+// The smallest and largest coordinates of the whole mesh along each axis, from the ranks' own
+// nodes (every node is some rank's): min and max are exact, whatever the order.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> whole_extent(const Mesh& mesh,
+                                                         const std::vector<int>& node_ranks,
+                                                         int rank,
+                                                         const DistributedEngine& engine) {
+  const int dim = mesh.dim();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd lo = Eigen::VectorXd::Constant(dim, inf), hi = -lo;
+  for (Index v = 0; v < mesh.num_nodes(); ++v)
+    if (node_ranks[static_cast<std::size_t>(v)] == rank) {
+      lo = lo.cwiseMin(mesh.node(v));
+      hi = hi.cwiseMax(mesh.node(v));
+    }
+  ByteWriter out;
+  out.put(Vector(lo));
+  out.put(Vector(hi));
+  for (const std::vector<char>& bytes : engine.allgather(out.bytes())) {
+    ByteReader in(bytes);
+    const Vector a = in.get_vector_xd(), b = in.get_vector_xd();
+    lo = lo.cwiseMin(a);
+    hi = hi.cwiseMax(b);
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+Model model_from_own_part(const ProblemSpec& spec, OwnPart part, Vector loads,
+                          DistributedEngine& engine, TimingTable timings) {
+  const int rank = engine.rank();
+  const Mesh& mesh = part.mesh;
+  const int dim = mesh.dim();
+  const Index nodes = mesh.num_nodes();
+  const std::vector<int>& node_ranks = part.node_ranks;
+  const DofMap& dofs = part.dofs;
+  ElasticityOptions elasticity;
+  on_every_rank(engine, [&] { elasticity = region_elasticity(spec, mesh.region_names()); });
+
+  ContactProblem problem;
+  problem.row_starts = std::move(part.row_starts);
+  problem.rank = rank;
+  problem.node_of_unknown = std::move(part.node_of_unknown);
+  const Index first_row = problem.first_row(), end_row = problem.end_row();
+  // b = f - K u_D on the rank's rows (model.cpp's free part): every cell around its nodes is in
+  // its part, in the whole mesh's order, so the sums run as the whole mesh's do.
+  {
+    ScopedTimer t(timings, "loads");
+    const Vector f = free_loads(mesh, dofs, elasticity, loads);
+    problem.b = Vector::Zero(end_row - first_row);
+    for (Index v = 0; v < nodes; ++v)
+      for (int k = 0; k < dim; ++k)
+        if (const Index i = dofs.free_index(v, k); i >= first_row && i < end_row)
+          problem.b(i - first_row) = f(v * dim + k);
+  }
+
+  // The contact rows of the rank's nodes, in the order in which the side's facets first name
+  // them (fem/contact_boundary.cpp): each rank has every facet around its nodes.
+  ScopedTimer contact_timer(timings, "contact set");
+  // The gap where a node's normal never meets the obstacle: 10 times the whole mesh's extent,
+  // as make_contact_set measures it.
+  const auto [lo, hi] = whole_extent(mesh, node_ranks, rank, engine);
+  const double far = 10.0 * (hi - lo).maxCoeff();
+  ByteWriter rows_out;
+  on_every_rank(engine, [&] {
+    for (const ContactSpec& c : spec.contacts) {
+      const BoundaryPart& side = mesh.boundary_part(c.boundary);  // InputError on other names
+      std::vector<ContactRow> rows;
+      std::vector<ContactFacet> facets;
+      if (!side.facets.empty()) {
+        const std::vector<Index>& facet_key = part.facet_keys.at(c.boundary);
+        if (facet_key.size() != side.facets.size())
+          throw std::logic_error("model in parts: a side's facets and their places differ");
+        RigidObstacle o = c.obstacle;
+        if (o.shape == ObstacleShape::Gap) o.gap = c.gap;
+        const ContactSet cs = make_contact_rows(mesh, side, dofs, o, c.surface_normal, far);
+        // The key of each node: its first facet's place in the whole side, and its place there
+        // (or, where given, its place in the whole side's order).
+        std::vector<Index> key(static_cast<std::size_t>(nodes), -1);
+        if (const auto given = part.node_keys.find(c.boundary); given != part.node_keys.end()) {
+          for (const auto& [v, place] : given->second) key[static_cast<std::size_t>(v)] = place;
+        } else {
+          for (std::size_t f = 0; f < side.facets.size(); ++f) {
+            const std::vector<Index> fn = mesh.facet_nodes(side.facets[f]);
+            for (std::size_t a = 0; a < fn.size(); ++a)
+              if (Index& k = key[static_cast<std::size_t>(fn[a])]; k < 0)
+                k = facet_key[f] * 32 + static_cast<Index>(a);
+          }
+        }
+        // N's entries of the kept rows (N is column-major: its columns walked once).
+        std::vector<Index> row_of(static_cast<std::size_t>(cs.size()), -1);
+        for (Index j = 0; j < cs.size(); ++j) {
+          const Index v = cs.nodes[static_cast<std::size_t>(j)];
+          if (node_ranks[static_cast<std::size_t>(v)] != rank) continue;
+          row_of[static_cast<std::size_t>(j)] = static_cast<Index>(rows.size());
+          ContactRow& r = rows.emplace_back();
+          r.node = part.global_nodes[static_cast<std::size_t>(v)];
+          r.key = key[static_cast<std::size_t>(v)];
+          r.normal = cs.normals.col(j);
+          r.point = mesh.node(v);
+          r.prescribed = dofs.prescribed_at(v);
+          r.weight = cs.weights(j);
+          r.gap = cs.gaps(j);
+          r.movable = cs.movable[static_cast<std::size_t>(j)];
+        }
+        for (int col = 0; col < cs.N.outerSize(); ++col)
+          for (SparseMatrix::InnerIterator it(cs.N, col); it; ++it)
+            if (const Index i = row_of[static_cast<std::size_t>(it.row())]; i >= 0)
+              rows[static_cast<std::size_t>(i)].n.emplace_back(col, it.value());
+        // Each facet from the owner of its first node, whose part has it.
+        for (std::size_t f = 0; f < cs.facets.size(); ++f) {
+          const std::vector<Index>& positions = cs.facets[f];
+          const Index first = cs.nodes[static_cast<std::size_t>(positions.front())];
+          if (node_ranks[static_cast<std::size_t>(first)] != rank) continue;
+          ContactFacet out{facet_key[f], {}};
+          for (const Index j : positions)
+            out.nodes.push_back(
+                part.global_nodes[static_cast<std::size_t>(cs.nodes[static_cast<std::size_t>(j)])]);
+          facets.push_back(std::move(out));
+        }
+      }
+      rows_out.put(static_cast<std::uint64_t>(rows.size()));
+      for (const ContactRow& r : rows) pack_row(rows_out, r);
+      rows_out.put(static_cast<std::uint64_t>(facets.size()));
+      for (const ContactFacet& f : facets) {
+        rows_out.put(f.key);
+        rows_out.put(f.nodes);
+      }
+    }
+  });
+  // The whole contact set on every rank, each side's rows in the serial order.
+  const std::vector<std::vector<char>> gathered = engine.allgather(rows_out.bytes());
+  rows_out = ByteWriter();
+  std::vector<ByteReader> readers;
+  for (const std::vector<char>& bytes : gathered) readers.emplace_back(bytes);
+  std::vector<std::string> contact_boundaries;
+  std::vector<Index> contact_starts{0};
+  std::vector<ContactRow> all_rows;
+  for (const ContactSpec& c : spec.contacts) {
+    std::vector<ContactRow> rows;
+    std::vector<ContactFacet> facets;
+    for (ByteReader& in : readers) {
+      const auto count = static_cast<std::size_t>(in.get<std::uint64_t>());
+      for (std::size_t i = 0; i < count; ++i) rows.push_back(unpack_row(in));
+      const auto facet_count = static_cast<std::size_t>(in.get<std::uint64_t>());
+      for (std::size_t i = 0; i < facet_count; ++i) {
+        ContactFacet f;
+        f.key = in.get<Index>();
+        f.nodes = in.get_vector<Index>();
+        facets.push_back(std::move(f));
+      }
+    }
+    std::sort(rows.begin(), rows.end(),
+              [](const ContactRow& a, const ContactRow& b) { return a.key < b.key; });
+    std::sort(facets.begin(), facets.end(),
+              [](const ContactFacet& a, const ContactFacet& b) { return a.key < b.key; });
+    ContactSet cs;
+    const auto n = static_cast<Index>(rows.size());
+    cs.normals.resize(dim, n);
+    cs.weights.resize(n);
+    cs.gaps.resize(n);
+    std::vector<Eigen::Triplet<double, int>> triplets;
+    std::vector<std::pair<Index, Index>> position;  // (node, row), for the facets
+    for (Index j = 0; j < n; ++j) {
+      const ContactRow& r = rows[static_cast<std::size_t>(j)];
+      cs.nodes.push_back(r.node);
+      cs.normals.col(j) = r.normal;
+      cs.weights(j) = r.weight;
+      cs.gaps(j) = r.gap;
+      cs.movable.push_back(r.movable);
+      for (const auto& [d, value] : r.n)
+        triplets.emplace_back(static_cast<int>(j), static_cast<int>(d), value);
+      position.emplace_back(r.node, j);
+    }
+    cs.N.resize(n, dofs.num_free());
+    cs.N.setFromTriplets(triplets.begin(), triplets.end());
+    cs.N.makeCompressed();
+    std::sort(position.begin(), position.end());
+    for (const ContactFacet& f : facets) {
+      std::vector<Index>& out = cs.facets.emplace_back();
+      for (const Index node : f.nodes)
+        out.push_back(
+            std::lower_bound(position.begin(), position.end(), std::pair<Index, Index>{node, -1})
+                ->second);
+    }
+    if (rows.empty())  // (every rank alike: no part has a facet of the side)
+      throw InputError("contact.boundary = '" + c.boundary + "': the boundary part has no facets");
+    if (cs.num_movable() == 0)  // (every rank alike: the set is whole)
+      throw InputError("contact.boundary = '" + c.boundary +
+                       "': every contact node is clamped in its normal direction, so no contact "
+                       "can occur (does it coincide with the clamped boundary?)");
+    append_contact_set(problem.contact, cs);
+    contact_boundaries.push_back(c.boundary);
+    contact_starts.push_back(problem.contact.size());
+    all_rows.insert(all_rows.end(), std::make_move_iterator(rows.begin()),
+                    std::make_move_iterator(rows.end()));
+  }
+  for (const ByteReader& in : readers)
+    if (!in.done()) throw std::logic_error("model in parts: the contact rows' bytes do not add up");
+  const Index contact_size = problem.contact.size();
+  WholeMesh whole;
+  whole.contact_points.resize(dim, contact_size);
+  whole.contact_prescribed.resize(dim, contact_size);
+  Eigen::MatrixXd gap_shift;
+  std::vector<int> gap_shift_group;
+  if (part.prescribed) {  // (model.cpp, contact_gap_shift: a part has no frames)
+    gap_shift.resize(dim, contact_size);
+    gap_shift_group.assign(static_cast<std::size_t>(dim * contact_size), -1);
+  }
+  for (Index j = 0; j < contact_size; ++j) {
+    const ContactRow& r = all_rows[static_cast<std::size_t>(j)];
+    whole.contact_points.col(j) = r.point;
+    whole.contact_prescribed.col(j) = r.prescribed;
+    if (part.prescribed) gap_shift.col(j) = r.normal.cwiseProduct(r.prescribed);
+  }
+  all_rows = {};
+  contact_timer.stop();
+
+  // The whole mesh's facts: its nodes, their centroid and the largest distance from it.
+  {
+    std::vector<double> sums(static_cast<std::size_t>(dim) + 1, 0.0);
+    for (Index v = 0; v < nodes; ++v)
+      if (node_ranks[static_cast<std::size_t>(v)] == rank) {
+        for (int k = 0; k < dim; ++k) sums[static_cast<std::size_t>(k)] += mesh.node(v)(k);
+        sums.back() += 1.0;
+      }
+    engine.sum(sums.data(), dim + 1);
+    whole.nodes = static_cast<Index>(sums.back());
+    whole.centroid =
+        Eigen::Map<const Eigen::VectorXd>(sums.data(), dim) / static_cast<double>(whole.nodes);
+    double radius = 0.0;
+    for (Index v = 0; v < nodes; ++v)
+      if (node_ranks[static_cast<std::size_t>(v)] == rank)
+        radius = std::max(radius, (mesh.node(v) - whole.centroid).norm());
+    for (const double r : values_of_ranks(engine, radius)) whole.radius = std::max(whole.radius, r);
+  }
+  // The plan from rank 0's machine, so that every rank takes the same path.
+  const ProblemSize size{dim,
+                         whole.nodes,
+                         dofs.num_free(),
+                         contact_size,
+                         values_of_ranks(engine, physical_memory_bytes()).front(),
+                         false};
+  const SolverPlan plan = plan_model_solver(spec, size, nullptr, /*distributed=*/true);
+  {
+    ScopedTimer t(timings, "assembly");
+    // The columns of the rank's unknowns (by symmetry its rows), from the cells around its
+    // nodes (docs/distributed.md, "The partitioned model").
+    std::vector<bool> owned(static_cast<std::size_t>(nodes));
+    for (Index v = 0; v < nodes; ++v)
+      owned[static_cast<std::size_t>(v)] = node_ranks[static_cast<std::size_t>(v)] == rank;
+    problem.A = assemble_stiffness(mesh, dofs, elasticity, &owned);
+  }
+  if (uses_multigrid(plan.options))
+    problem.near_null_space = rigid_body_modes(mesh, dofs, first_row, end_row, &whole.centroid);
+  std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, part.entry);
+  part.entry = {};
+  return Model{std::move(part.mesh),
+               std::move(part.dofs),
+               std::move(problem),
+               MultigridHierarchy{},
+               plan.options,
+               plan.reason,
+               std::move(timings),
+               elasticity,
+               std::move(loads),
+               std::move(clamps),
+               {},
+               std::move(contact_boundaries),
+               std::move(contact_starts),
+               nullptr,
+               {},
+               std::move(gap_shift),
+               std::move(gap_shift_group),
+               std::move(part.global_nodes),
+               std::move(whole),
+               std::move(part.node_ranks)};
+}
+
+}  // namespace signorini
