@@ -104,6 +104,49 @@ void expect_whole_model_in_parts(const ProblemSpec& spec, bool smaller = false) 
   }
   EXPECT_EQ(own, part.problem.end_row() - first);
 
+  // At the rank's nodes: the applied loads, and each load group's loads, prescribed dofs and
+  // rows of b, to the bit; the point loads where the whole mesh places them.
+  ASSERT_EQ(part.load_groups.size(), whole.load_groups.size());
+  const auto held = [](const LoadGroup& g, Index size) {
+    std::vector<bool> out(static_cast<std::size_t>(size), false);
+    for (const Index d : g.prescribed_dofs) out[static_cast<std::size_t>(d)] = true;
+    return out;
+  };
+  for (std::size_t gi = 0; gi < whole.load_groups.size(); ++gi) {
+    const LoadGroup& pg = part.load_groups[gi];
+    const LoadGroup& wg = whole.load_groups[gi];
+    EXPECT_EQ(pg.entry, wg.entry);
+    EXPECT_EQ(pg.factors, wg.factors);
+    ASSERT_EQ(pg.loads.size() != 0, wg.loads.size() != 0) << wg.entry;
+    const std::vector<bool> ph = held(pg, part.dofs.num_dofs());
+    const std::vector<bool> wh = held(wg, whole.dofs.num_dofs());
+    for (Index v = 0; v < part.mesh.num_nodes(); ++v) {
+      if (part.node_ranks[static_cast<std::size_t>(v)] != engine.rank()) continue;
+      const Index g = part.global_nodes[static_cast<std::size_t>(v)];
+      for (int k = 0; k < dim; ++k) {
+        EXPECT_EQ(ph[static_cast<std::size_t>(v * dim + k)],
+                  wh[static_cast<std::size_t>(g * dim + k)]);
+        if (wg.loads.size() != 0) {
+          EXPECT_EQ(pg.loads(v * dim + k), wg.loads(g * dim + k));
+        }
+        if (const Index i = part.dofs.free_index(v, k); i >= 0) {
+          EXPECT_EQ(pg.b(i - first), wg.b(whole.dofs.free_index(g, k))) << wg.entry;
+        }
+      }
+    }
+  }
+  for (Index v = 0; v < part.mesh.num_nodes(); ++v) {
+    if (part.node_ranks[static_cast<std::size_t>(v)] != engine.rank()) continue;
+    const Index g = part.global_nodes[static_cast<std::size_t>(v)];
+    for (int k = 0; k < dim; ++k) EXPECT_EQ(part.loads(v * dim + k), whole.loads(g * dim + k));
+  }
+  ASSERT_EQ(part.point_loads.size(), whole.point_loads.size());
+  for (std::size_t i = 0; i < whole.point_loads.size(); ++i) {
+    EXPECT_EQ(part.point_loads[i].node, whole.point_loads[i].node);
+    EXPECT_EQ(part.point_loads[i].at, whole.point_loads[i].at);
+    EXPECT_EQ(part.point_loads[i].distance, whole.point_loads[i].distance);
+  }
+
   // The contact set whole on every rank, in the serial order, to the bit.
   const ContactSet& a = part.problem.contact;
   const ContactSet& b = whole.problem.contact;
@@ -199,6 +242,26 @@ TEST(BoxInParts, ClampedBlockOnABallIsTheWholeModelInParts) {
   expect_whole_model_in_parts(spec, /*smaller=*/true);
 }
 
+// Point loads (one on a side, one anywhere) and entries with load factors of their own (a
+// traction, the prescribed displacement, a point load): each placed at the whole box's nearest
+// node, each group's loads and b the whole model's.
+TEST(BoxInParts, PointLoadsAndLoadGroupsAreTheWholeModelsInParts) {
+  ProblemSpec spec = rolled_box("hex8");
+  spec.load_factors = {0.5, 1.0};
+  spec.tractions[0].factors = {0.0, 1.0};
+  spec.displacements[0].factors = {1.0, 1.0};
+  PointLoadSpec side;
+  side.at = Point(1.0, 0.52, 0.26);
+  side.force = Eigen::Vector3d(-0.01, 0.002, 0.0);
+  side.boundary = "xmax";
+  side.factors = {1.0, 0.5};
+  PointLoadSpec anywhere;
+  anywhere.at = Point(0.3, 0.7, 0.2);
+  anywhere.force = Eigen::Vector3d(0.0, 0.0, -0.02);
+  spec.point_loads = {side, anywhere};
+  expect_whole_model_in_parts(spec);
+}
+
 // solver.partition = "graph": rank 0 builds the model and PETSc's partitioner shares it.
 TEST(BoxInParts, GraphPartitionIsKeptOnRequest) {
   ProblemSpec spec = rolled_box("hex8");
@@ -271,14 +334,32 @@ TEST(MeshInParts, BadInputOnOneRankStopsEveryRankWithOneMessage) {
   for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
 }
 
-// What the parts do not support yet (a point load here) goes the whole way: rank 0 builds the
-// whole model and sends parts of it.
-TEST(MeshInParts, PointLoadKeepsTheWholeBuild) {
+// A pinned clamp (its node the whole mesh's nearest, which rank 0 numbers), a point load with
+// load factors of its own, and the prescribed displacement with its own.
+TEST(MeshInParts, PinnedClampAndLoadGroupsAreTheWholeModelsInParts) {
   ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
+  spec.solver.uzawa_tolerance = 1e-10;
+  ClampSpec pin;
+  pin.boundary = "top";
+  pin.components = {true, false, false};
+  pin.at = Point(0.4, 0.3, 1.0);
+  spec.clamps.push_back(pin);
+  spec.load_factors = {0.5, 1.0};
+  spec.displacements[0].factors = {0.5, 1.0};
   PointLoadSpec load;
-  load.at = Eigen::Vector3d(0.3, 0.3, 0.5);
+  load.at = Point(0.3, 0.3, 0.5);
   load.force = Eigen::Vector3d(0.0, 0.0, -1e-6);
+  load.factors = {1.0, 1.0};
   spec.point_loads = {load};
+  expect_whole_model_in_parts(spec);
+}
+
+// What the parts do not support yet (friction here) goes the whole way: rank 0 builds the
+// whole model and sends parts of it.
+TEST(MeshInParts, FrictionKeepsTheWholeBuild) {
+  ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
+  spec.contacts[0].friction = FrictionModel::Coulomb;
+  spec.contacts[0].mu = 0.2;
   const Model part = testing::distributed_model(spec);
   EXPECT_TRUE(part.node_ranks.empty());
   EXPECT_EQ(part.is_part(), distributed_engine()->size() > 1);

@@ -95,7 +95,8 @@ struct Model {
   /// global_nodes[i] of the whole mesh (increasing), and the dofs keep the whole problem's free
   /// numbers. `loads`, `clamped_parts` and the load groups' loads and prescribed dofs are then
   /// the part's (its nodes' full dofs), b and the groups' b the rank's rows; problem.contact
-  /// (whole on every rank) names the whole mesh's nodes; `point_loads` are rank 0's alone.
+  /// (whole on every rank) names the whole mesh's nodes; `point_loads` are rank 0's alone where
+  /// rank 0 built the whole model, every rank's where the model is made in parts.
   /// Empty: the mesh is whole.
   std::vector<Index> global_nodes;
   /// On a part: the whole mesh's facts that the results need. Empty where the mesh is whole.

@@ -17,7 +17,8 @@
 namespace signorini {
 
 bool box_in_parts(const ProblemSpec& spec, int ranks) {
-  return spec.mesh_type == MeshType::Box && ranks >= 2 && model_parts_support(spec) &&
+  return spec.mesh_type == MeshType::Box && ranks >= 2 &&
+         model_parts_support(spec, /*numbered_whole=*/false) &&
          BoxPartition(spec.box, ranks).possible();
 }
 
@@ -62,7 +63,6 @@ Model build_box_model_in_parts(const ProblemSpec& spec, DistributedEngine& engin
   std::optional<BoxMeshPart> part;
   std::optional<DofMap> local;
   std::vector<int> entry;  // per full dof of the part, the entry that holds it (number_dofs)
-  Vector loads;
   on_every_rank(engine, [&] {
     ScopedTimer mesh_timer(timings, "mesh");
     require_implied_dimension(spec, kDim);
@@ -75,9 +75,6 @@ Model build_box_model_in_parts(const ProblemSpec& spec, DistributedEngine& engin
     }
     part = make_box_mesh_part(box, blocks.first_part_cube(rank), blocks.end_part_cube(rank));
     local = number_dofs(part->mesh, spec.clamps, spec.displacements, entry);
-    mesh_timer.stop();
-    ScopedTimer t(timings, "loads");
-    loads = part_loads(spec, part->mesh);
   });
   ScopedTimer mesh_timer(timings, "mesh");
   const Mesh& mesh = part->mesh;
@@ -192,7 +189,7 @@ Model build_box_model_in_parts(const ProblemSpec& spec, DistributedEngine& engin
               std::move(node_of_unknown),
               prescribed};
   part.reset();
-  return model_from_own_part(spec, std::move(own), std::move(loads), engine, std::move(timings));
+  return model_from_own_part(spec, std::move(own), engine, std::move(timings));
 }
 
 }  // namespace signorini

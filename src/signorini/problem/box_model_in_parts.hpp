@@ -14,10 +14,9 @@
 namespace signorini {
 
 /// Whether the problem can be made in parts on `ranks` ranks: a box (and solver.partition =
-/// "auto"), with what the parts
-/// support so far (no point load, no pinned clamp (`at`), no load factors of an entry's own, no
-/// friction), and at least one cube per rank along each axis of some grid of the ranks. The
-/// others are made by rank 0 and sent in parts.
+/// "auto"), with what the parts support (model_in_parts.hpp; no pinned clamp (`at`) here, whose
+/// node is the whole box's nearest), and at least one cube per rank along each axis of some
+/// grid of the ranks. The others are made by rank 0 and sent in parts.
 [[nodiscard]] bool box_in_parts(const ProblemSpec& spec, int ranks);
 
 /// This rank's model of a box made in parts (a collective call). Bad input found by any rank

@@ -334,16 +334,11 @@ Model model_from_mesh_part(const ProblemSpec& spec, std::vector<char> bytes,
   if (!in.done()) throw std::logic_error("a part of the mesh from rank 0 has a mismatched layout");
   bytes = {};
   mesh_timer.stop();
-  Vector loads;
-  on_every_rank(engine, [&] {
-    ScopedTimer t(timings, "loads");
-    loads = part_loads(spec, mesh);
-  });
   OwnPart own{
       std::move(mesh), std::move(global_nodes), std::move(node_ranks), std::move(facet_keys),
       std::move(dofs), std::move(entry),        std::move(row_starts), std::move(node_of_unknown),
       prescribed,      std::move(node_keys)};
-  return model_from_own_part(spec, std::move(own), std::move(loads), engine, std::move(timings));
+  return model_from_own_part(spec, std::move(own), engine, std::move(timings));
 }
 
 Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
@@ -362,7 +357,7 @@ Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
                                 // parts, checked the cells)
   // A model made in parts (model_in_parts.hpp): rank 0 sends the part of the mesh only, and
   // every rank builds its model from it, agreeing on bad input.
-  if (model_parts_support(spec)) {
+  if (model_parts_support(spec, /*numbered_whole=*/true)) {
     ScopedTimer receive_timer(timings, "mesh");
     std::vector<char> part = engine.receive_from_root();
     receive_timer.stop();

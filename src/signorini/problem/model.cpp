@@ -456,7 +456,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                                          SparseMatrix(0, dofs.num_free()));
     problem.rank = engine.rank();
   }
-  if (parts != nullptr && model_parts_support(spec)) {
+  if (parts != nullptr && model_parts_support(spec, /*numbered_whole=*/true)) {
     // Rank 0 of several, where the model can be made in parts (problem/model_in_parts.hpp):
     // it checks the cells for all (an inverted one stops every rank with its one message),
     // sends each rank its part of the mesh and that part's numbering, lets the whole go, and

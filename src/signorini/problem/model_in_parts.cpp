@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <stdexcept>
 
@@ -14,18 +15,13 @@
 
 namespace signorini {
 
-bool model_parts_support(const ProblemSpec& spec) {
-  if (spec.solver.partition != PartitionMode::Auto || !spec.point_loads.empty() ||
-      !spec.body_force_factors.empty())
-    return false;
-  for (const ClampSpec& c : spec.clamps)
-    if (c.at) return false;
+bool model_parts_support(const ProblemSpec& spec, bool numbered_whole) {
+  if (spec.solver.partition != PartitionMode::Auto) return false;
+  if (!numbered_whole)
+    for (const ClampSpec& c : spec.clamps)
+      if (c.at) return false;
   for (const DisplacementSpec& d : spec.displacements)
-    if (!d.factors.empty() || d.normal) return false;
-  for (const TractionSpec& t : spec.tractions)
-    if (!t.factors.empty()) return false;
-  for (const PressureSpec& p : spec.pressures)
-    if (!p.factors.empty()) return false;
+    if (d.normal) return false;
   for (const ContactSpec& c : spec.contacts)
     if (c.friction != FrictionModel::None) return false;
   return true;
@@ -51,14 +47,6 @@ std::vector<T> values_of_ranks(const DistributedEngine& engine, T value) {
 template std::vector<Index> values_of_ranks(const DistributedEngine&, Index);
 template std::vector<double> values_of_ranks(const DistributedEngine&, double);
 
-Vector part_loads(const ProblemSpec& spec, const Mesh& mesh) {
-  Vector loads = Vector::Zero(mesh.num_nodes() * mesh.dim());
-  add_surface_and_body_loads(
-      spec, mesh,
-      [&loads](const std::vector<double>&, const std::string&) -> Vector& { return loads; });
-  return loads;
-}
-
 namespace {
 
 // One contact row as a rank sends it: what the whole contact set and the results need.
@@ -69,6 +57,7 @@ struct ContactRow {
   double weight = 0.0, gap = 0.0;
   bool movable = false;
   std::vector<std::pair<Index, double>> n;  // N's entries: free dof, value
+  std::vector<int> groups;  // the load group of each component's prescribed value, or -1
 };
 
 struct ContactFacet {
@@ -88,6 +77,7 @@ void pack_row(ByteWriter& out, const ContactRow& r) {
     out.put(d);
     out.put(value);
   }
+  out.put(r.groups);
 }
 
 ContactRow unpack_row(ByteReader& in) {
@@ -103,6 +93,7 @@ ContactRow unpack_row(ByteReader& in) {
     d = in.get<Index>();
     value = in.get<double>();
   }
+  r.groups = in.get_vector<int>();
   return r;
 }
 
@@ -132,35 +123,179 @@ std::pair<Eigen::VectorXd, Eigen::VectorXd> whole_extent(const Mesh& mesh,
   return {lo, hi};
 }
 
+// The tractions, pressures and body force on a part of the mesh: a full vector of its nodes, and
+// one in `groups` for each entry with load factors of its own (model.cpp's order).
+Vector surface_and_body_loads(const ProblemSpec& spec, const Mesh& mesh,
+                              std::vector<LoadGroup>& groups) {
+  const Index n = mesh.num_nodes() * mesh.dim();
+  Vector loads = Vector::Zero(n);
+  add_surface_and_body_loads(
+      spec, mesh, [&](const std::vector<double>& factors, std::string entry) -> Vector& {
+        if (factors.empty()) return loads;
+        groups.push_back({std::move(entry), factors, Vector::Zero(n), {}, {}});
+        return groups.back().loads;
+      });
+  return loads;
+}
+
+// Each point load at the whole mesh's node nearest to it (on its boundary where it names one),
+// as nearest_node finds it on the whole mesh: each rank's nearest of its own nodes, and the
+// nearest of those, the lower node number on a tie (the whole mesh's scan keeps the first).
+std::vector<PlacedPointLoad> place_point_loads(const ProblemSpec& spec, const OwnPart& part,
+                                               int rank, const DistributedEngine& engine) {
+  const Mesh& mesh = part.mesh;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  ByteWriter out;
+  on_every_rank(engine, [&] {
+    for (std::size_t i = 0; i < spec.point_loads.size(); ++i) {
+      const PointLoadSpec& pl = spec.point_loads[i];
+      if (!pl.at.allFinite() || !pl.force.allFinite())
+        throw InputError(fmt::format("point_load[{}]: expected finite 'at' and 'force'", i));
+      std::vector<bool> on_boundary;
+      if (!pl.boundary.empty()) {
+        on_boundary.assign(static_cast<std::size_t>(mesh.num_nodes()), false);
+        for (const Index v : mesh.boundary_part_nodes(pl.boundary))
+          on_boundary[static_cast<std::size_t>(v)] = true;
+      }
+      // The nearest own node on the boundary, and the nearest of all (nearest_node takes every
+      // node where the boundary has none).
+      std::array<double, 2> best{inf, inf};
+      std::array<Index, 2> node{-1, -1};
+      for (Index v = 0; v < mesh.num_nodes(); ++v) {
+        if (part.node_ranks[static_cast<std::size_t>(v)] != rank) continue;
+        const double d = (mesh.point(v) - pl.at).squaredNorm();
+        for (std::size_t which = 0; which < 2; ++which) {
+          if (which == 0 && !on_boundary.empty() && !on_boundary[static_cast<std::size_t>(v)])
+            continue;
+          if (d < best[which]) {
+            best[which] = d;
+            node[which] = part.global_nodes[static_cast<std::size_t>(v)];
+          }
+        }
+      }
+      for (std::size_t which = 0; which < 2; ++which) {
+        out.put(best[which]);
+        out.put(node[which]);
+      }
+    }
+  });
+  const std::vector<std::vector<char>> all = engine.allgather(out.bytes());
+  std::vector<ByteReader> readers;
+  for (const std::vector<char>& bytes : all) readers.emplace_back(bytes);
+  std::vector<PlacedPointLoad> placed;
+  for (const PointLoadSpec& pl : spec.point_loads) {
+    std::array<double, 2> best{inf, inf};
+    std::array<Index, 2> node{-1, -1};
+    for (ByteReader& in : readers)
+      for (std::size_t which = 0; which < 2; ++which) {
+        const double d = in.get<double>();
+        const Index v = in.get<Index>();
+        if (v >= 0 && (d < best[which] || (d == best[which] && v < node[which]))) {
+          best[which] = d;
+          node[which] = v;
+        }
+      }
+    const Index chosen = node[0] >= 0 ? node[0] : node[1];
+    PlacedPointLoad p;
+    p.requested = pl.at;
+    p.node = chosen;
+    p.force = pl.force;
+    placed.push_back(p);
+  }
+  for (const ByteReader& in : readers)
+    if (!in.done()) throw std::logic_error("model in parts: the point loads' bytes do not add up");
+  // Where each was placed, from the rank that owns the node.
+  ByteWriter at;
+  for (const PlacedPointLoad& p : placed)
+    if (const auto it =
+            std::lower_bound(part.global_nodes.begin(), part.global_nodes.end(), p.node);
+        it != part.global_nodes.end() && *it == p.node &&
+        part.node_ranks[static_cast<std::size_t>(it - part.global_nodes.begin())] == rank)
+      at.put(Vector(mesh.point(static_cast<Index>(it - part.global_nodes.begin()))));
+    else
+      at.put(Vector());
+  std::vector<ByteReader> points;
+  const std::vector<std::vector<char>> located = engine.allgather(at.bytes());
+  for (const std::vector<char>& bytes : located) points.emplace_back(bytes);
+  for (PlacedPointLoad& p : placed)
+    for (ByteReader& in : points)
+      if (const Vector x = in.get_vector_xd(); x.size() != 0) p.at = x;
+  for (PlacedPointLoad& p : placed) p.distance = (p.at - p.requested).norm();
+  return placed;
+}
+
 }  // namespace
 
-Model model_from_own_part(const ProblemSpec& spec, OwnPart part, Vector loads,
-                          DistributedEngine& engine, TimingTable timings) {
+Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngine& engine,
+                          TimingTable timings) {
   const int rank = engine.rank();
   const Mesh& mesh = part.mesh;
   const int dim = mesh.dim();
   const Index nodes = mesh.num_nodes();
   const std::vector<int>& node_ranks = part.node_ranks;
   const DofMap& dofs = part.dofs;
+  ScopedTimer loads_timer(timings, "loads");
   ElasticityOptions elasticity;
-  on_every_rank(engine, [&] { elasticity = region_elasticity(spec, mesh.region_names()); });
+  Vector loads;
+  std::vector<LoadGroup> groups;  // in model.cpp's order: surface and body, points, displacements
+  on_every_rank(engine, [&] {
+    elasticity = region_elasticity(spec, mesh.region_names());
+    loads = surface_and_body_loads(spec, mesh, groups);
+  });
+  std::vector<PlacedPointLoad> placed = place_point_loads(spec, part, rank, engine);
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const PointLoadSpec& pl = spec.point_loads[i];
+    Vector* target = &loads;
+    if (!pl.factors.empty()) {
+      groups.push_back(
+          {fmt::format("point_load[{}]", i), pl.factors, Vector::Zero(nodes * dim), {}, {}});
+      target = &groups.back().loads;
+    }
+    const auto it =
+        std::lower_bound(part.global_nodes.begin(), part.global_nodes.end(), placed[i].node);
+    if (it == part.global_nodes.end() || *it != placed[i].node) continue;
+    const auto v = static_cast<Index>(it - part.global_nodes.begin());
+    if (node_ranks[static_cast<std::size_t>(v)] != rank) continue;  // (its owner's load)
+    for (int k = 0; k < dim; ++k) (*target)(v * dim + k) += pl.force(k);
+  }
+  for (std::size_t i = 0; i < spec.displacements.size(); ++i) {
+    if (spec.displacements[i].factors.empty()) continue;
+    LoadGroup g{fmt::format("displacement[{}]", i), spec.displacements[i].factors, {}, {}, {}};
+    for (std::size_t d = 0; d < part.entry.size(); ++d)
+      if (part.entry[d] == static_cast<int>(spec.clamps.size() + i))
+        g.prescribed_dofs.push_back(static_cast<Index>(d));
+    groups.push_back(std::move(g));
+  }
 
   ContactProblem problem;
   problem.row_starts = std::move(part.row_starts);
   problem.rank = rank;
   problem.node_of_unknown = std::move(part.node_of_unknown);
   const Index first_row = problem.first_row(), end_row = problem.end_row();
-  // b = f - K u_D on the rank's rows (model.cpp's free part): every cell around its nodes is in
-  // its part, in the whole mesh's order, so the sums run as the whole mesh's do.
-  {
-    ScopedTimer t(timings, "loads");
-    const Vector f = free_loads(mesh, dofs, elasticity, loads);
-    problem.b = Vector::Zero(end_row - first_row);
+  // The rank's rows of a full vector of the part.
+  const auto own_rows = [&](const Vector& full) {
+    Vector rows = Vector::Zero(end_row - first_row);
     for (Index v = 0; v < nodes; ++v)
       for (int k = 0; k < dim; ++k)
         if (const Index i = dofs.free_index(v, k); i >= first_row && i < end_row)
-          problem.b(i - first_row) = f(v * dim + k);
+          rows(i - first_row) = full(v * dim + k);
+    return rows;
+  };
+  // b = f - K u_D on the rank's rows (model.cpp's free part), and each load group's part of it:
+  // every cell around the rank's nodes is in its part, in the whole mesh's order, so the sums
+  // run as the whole mesh's do.
+  for (LoadGroup& g : groups) {
+    Vector scales = Vector::Zero(nodes * dim);
+    for (const Index d : g.prescribed_dofs) scales(d) = 1.0;
+    const Vector u_d = dofs.prescribed_values(scales);
+    g.b = own_rows(free_loads(mesh, dofs, elasticity,
+                              g.loads.size() != 0 ? g.loads : Vector(Vector::Zero(nodes * dim)),
+                              u_d));
+    if (g.loads.size() != 0) loads += g.loads;
   }
+  problem.b = own_rows(free_loads(mesh, dofs, elasticity, loads));
+  loads_timer.stop();
+  const std::vector<int> group_of_dof = load_group_of_dofs(groups, nodes * dim);
 
   // The contact rows of the rank's nodes, in the order in which the side's facets first name
   // them (fem/contact_boundary.cpp): each rank has every facet around its nodes.
@@ -210,6 +345,11 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, Vector loads,
           r.weight = cs.weights(j);
           r.gap = cs.gaps(j);
           r.movable = cs.movable[static_cast<std::size_t>(j)];
+          r.groups.assign(static_cast<std::size_t>(dim), -1);
+          if (!group_of_dof.empty())
+            for (int k = 0; k < dim; ++k)
+              r.groups[static_cast<std::size_t>(k)] =
+                  group_of_dof[static_cast<std::size_t>(v * dim + k)];
         }
         for (int col = 0; col < cs.N.outerSize(); ++col)
           for (SparseMatrix::InnerIterator it(cs.N, col); it; ++it)
@@ -319,7 +459,12 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, Vector loads,
     const ContactRow& r = all_rows[static_cast<std::size_t>(j)];
     whole.contact_points.col(j) = r.point;
     whole.contact_prescribed.col(j) = r.prescribed;
-    if (part.prescribed) gap_shift.col(j) = r.normal.cwiseProduct(r.prescribed);
+    if (part.prescribed) {
+      gap_shift.col(j) = r.normal.cwiseProduct(r.prescribed);
+      for (int k = 0; k < dim; ++k)
+        gap_shift_group[static_cast<std::size_t>(j * dim + k)] =
+            r.groups.at(static_cast<std::size_t>(k));
+    }
   }
   all_rows = {};
   contact_timer.stop();
@@ -373,11 +518,11 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, Vector loads,
                elasticity,
                std::move(loads),
                std::move(clamps),
-               {},
+               std::move(placed),
                std::move(contact_boundaries),
                std::move(contact_starts),
                nullptr,
-               {},
+               std::move(groups),
                std::move(gap_shift),
                std::move(gap_shift_group),
                std::move(part.global_nodes),

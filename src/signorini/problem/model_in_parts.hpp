@@ -48,10 +48,11 @@ struct OwnPart {
 };
 
 /// Whether the problem's conditions can be made in parts (solver.partition = "auto", and what
-/// the parts support so far: no point load, no pinned clamp (`at`), no normal displacement (its
-/// local axes), no load factors of an entry's own, no friction). The others are built whole by
-/// rank 0 and sent in parts of the model (problem/distributed_model.hpp).
-[[nodiscard]] bool model_parts_support(const ProblemSpec& spec);
+/// the parts support so far: no normal displacement (its local axes) and no friction). With
+/// `numbered_whole` false (a box whose ranks number their own parts) no pinned clamp (`at`)
+/// either: its node is the whole mesh's nearest. The others are built whole by rank 0 and sent
+/// in parts of the model (problem/distributed_model.hpp).
+[[nodiscard]] bool model_parts_support(const ProblemSpec& spec, bool numbered_whole);
 
 /// Bad input found by some rank: every rank throws the lowest such rank's message, so that all
 /// stop alike (a collective call). An empty message: this rank found none.
@@ -75,15 +76,13 @@ void on_every_rank(const DistributedEngine& engine, const F& f) {
 template <typename T>
 [[nodiscard]] std::vector<T> values_of_ranks(const DistributedEngine& engine, T value);
 
-/// The tractions, pressures and body force of `spec` on a part of the mesh (a full vector of
-/// its nodes); exact at the rank's nodes, whose cells and facets are all in the part.
-[[nodiscard]] Vector part_loads(const ProblemSpec& spec, const Mesh& mesh);
-
-/// This rank's model from its part (a collective call): its loads (`loads`, part_loads), rows
-/// of b and columns of A, rigid-body modes, the whole contact set, the whole mesh's facts and
-/// the plan. Bad input found by any rank is thrown as InputError on every rank. `timings` so
-/// far go on.
-[[nodiscard]] Model model_from_own_part(const ProblemSpec& spec, OwnPart part, Vector loads,
+/// This rank's model from its part (a collective call): its loads (the tractions, pressures and
+/// body force on its part, exact at its nodes, whose cells and facets are all in the part; each
+/// point load at the whole mesh's nearest node; the load groups of the entries with load factors
+/// of their own), rows of b and columns of A, rigid-body modes, the whole contact set, the whole
+/// mesh's facts and the plan. Bad input found by any rank is thrown as InputError on every
+/// rank. `timings` so far go on.
+[[nodiscard]] Model model_from_own_part(const ProblemSpec& spec, OwnPart part,
                                         DistributedEngine& engine, TimingTable timings);
 
 }  // namespace signorini
