@@ -354,12 +354,49 @@ TEST(MeshInParts, PinnedClampAndLoadGroupsAreTheWholeModelsInParts) {
   expect_whole_model_in_parts(spec);
 }
 
-// What the parts do not support yet (friction here) goes the whole way: rank 0 builds the
-// whole model and sends parts of it.
-TEST(MeshInParts, FrictionKeepsTheWholeBuild) {
+// Coulomb friction: the law per node and the tangential rows of N from the gathered rows, as
+// the whole model has them (the solve with friction on the parts: distributed_friction_mpi_test).
+TEST(MeshInParts, FrictionIsTheWholeModelsInParts) {
   ProblemSpec spec = testing::hertz_ball("hertz_sphere_coarse.msh");
   spec.contacts[0].friction = FrictionModel::Coulomb;
   spec.contacts[0].mu = 0.2;
+  const Model part = testing::distributed_model(spec);
+  const Model whole = testing::serial_model(spec);
+  ASSERT_TRUE(part.friction != nullptr);
+  ASSERT_TRUE(whole.friction != nullptr);
+  EXPECT_EQ(part.friction->mu(), whole.friction->mu());
+  EXPECT_EQ(part.friction->slip_bound(), whole.friction->slip_bound());
+  const ContactSet& a = part.problem.contact;
+  const ContactSet& b = whole.problem.contact;
+  EXPECT_EQ(a.components, b.components);
+  ASSERT_EQ(a.N.rows(), b.N.rows());
+  EXPECT_EQ(a.N.nonZeros(), b.N.nonZeros());
+  if (!part.is_part()) return;
+  // Row by row, the same entries at the same nodes' unknowns (numbered otherwise).
+  const int dim = 3;
+  for (Index j = 0; j < a.size(); ++j) {
+    const Index g = b.nodes[static_cast<std::size_t>(j)];
+    const Index v = part.local_node(g);
+    if (v < 0) continue;
+    for (Index row = dim * j; row < dim * (j + 1); ++row)
+      for (int k = 0; k < dim; ++k) {
+        const Index i = whole.dofs.free_index(g, k);
+        if (i < 0) continue;
+        EXPECT_EQ(a.N.coeff(row, part.dofs.free_index(v, k)), b.N.coeff(row, i))
+            << "row " << row << " component " << k;
+      }
+  }
+}
+
+// What the parts do not support yet (a normal displacement here) goes the whole way: rank 0
+// builds the whole model and sends parts of it.
+TEST(MeshInParts, NormalDisplacementKeepsTheWholeBuild) {
+  ProblemSpec spec = read_problem_file(SIGNORINI_EXAMPLES_DIR "/hertz_p2.toml").spec;
+  DisplacementSpec normal;  // (2D only: the clamp of the top holds its dofs anyway)
+  normal.boundary = "top";
+  normal.normal = [](const Point&) { return 0.0; };
+  normal.normal_text = "0";
+  spec.displacements.push_back(normal);
   const Model part = testing::distributed_model(spec);
   EXPECT_TRUE(part.node_ranks.empty());
   EXPECT_EQ(part.is_part(), distributed_engine()->size() > 1);

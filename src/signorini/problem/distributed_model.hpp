@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -117,6 +118,14 @@ void require_implied_dimension(const ProblemSpec& spec, int dim);
 void add_surface_and_body_loads(
     const ProblemSpec& spec, const Mesh& mesh,
     const std::function<Vector&(const std::vector<double>&, std::string)>& into);
+
+/// The friction law of the contact set, node by node from the sections' laws (Tresca's slip
+/// bound at row j's point, `point(j)`), over the rows that `starts` divides among the sections
+/// (Model::contact_starts); null when no boundary has friction. InputError for a slip bound that
+/// is negative or not finite, and for semismooth Newton with friction on the distributed path.
+[[nodiscard]] std::shared_ptr<const FrictionLaw> contact_friction_law(
+    const ProblemSpec& spec, int dim, const std::vector<Index>& starts,
+    const std::function<Point(Index j)>& point);
 
 /// f - K u_D, the loads of the free dofs as a full vector (docs/method.md: a nonzero prescribed
 /// displacement u_D loads the free dofs; the full solution is u_D plus the free part), with u_D

@@ -214,39 +214,17 @@ void require_loads_off_contact(const ProblemSpec& spec) {
 
 namespace {
 
-// The friction law of the contact set, node by node from the sections' laws, and the tangential
-// rows added to N; null when no boundary has friction.
-// `starts`: the parts' first rows in the contact set (Model::contact_starts).
+// The friction law of the contact set (contact_friction_law), and the tangential rows added to
+// N; null when no boundary has friction.
 std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const Mesh& mesh,
                                                  const DofMap& dofs,
                                                  const std::vector<Index>& starts,
                                                  ContactSet& contact) {
-  bool any = false;
-  for (const ContactSpec& c : spec.contacts) any = any || c.friction != FrictionModel::None;
-  if (!any) return nullptr;
-  if (spec.solver.method == ContactMethod::SemismoothNewton && distributed_path(spec.solver))
-    throw InputError(
-        "solver.method = \"semismooth_newton\" with contact.friction runs in one process (it "
-        "factorises the whole KKT system): use \"uzawa_gnm\" on the distributed path, or run "
-        "without mpirun");
-  Vector s = Vector::Zero(contact.size()), mu = Vector::Zero(contact.size());
-  for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
-    const ContactSpec& c = spec.contacts[part];
-    const std::string where =
-        spec.contacts.size() == 1 ? "contact" : fmt::format("contact[{}]", part);
-    for (Index j = starts[part]; j < starts[part + 1]; ++j) {
-      const Point x = mesh.point(contact.nodes[static_cast<std::size_t>(j)]);
-      if (c.friction == FrictionModel::Coulomb) mu(j) = c.mu;
-      if (c.friction != FrictionModel::Tresca) continue;
-      s(j) = c.slip_bound(x);
-      if (!(s(j) >= 0.0) || !std::isfinite(s(j)))
-        throw InputError(fmt::format(
-            "{}.slip_bound = \"{}\" is {} at ({:g}, {:g}, {:g}): expected a finite value >= 0",
-            where, c.slip_bound_text, s(j), x(0), x(1), x(2)));
-    }
-  }
-  add_tangential_rows(contact, tangential_operator(contact, dofs));
-  return std::make_shared<const FrictionLaw>(mesh.dim(), std::move(s), std::move(mu));
+  std::shared_ptr<const FrictionLaw> law = contact_friction_law(
+      spec, mesh.dim(), starts,
+      [&](Index j) { return mesh.point(contact.nodes[static_cast<std::size_t>(j)]); });
+  if (law) add_tangential_rows(contact, tangential_operator(contact, dofs));
+  return law;
 }
 
 }  // namespace
@@ -268,6 +246,37 @@ void add_surface_and_body_loads(
   if (spec.body_force)
     add_body_forces(mesh, spec.body_force, spec.elasticity.gauss_points,
                     into(spec.body_force_factors, "body_force"));
+}
+
+std::shared_ptr<const FrictionLaw> contact_friction_law(
+    const ProblemSpec& spec, int dim, const std::vector<Index>& starts,
+    const std::function<Point(Index j)>& point) {
+  bool any = false;
+  for (const ContactSpec& c : spec.contacts) any = any || c.friction != FrictionModel::None;
+  if (!any) return nullptr;
+  if (spec.solver.method == ContactMethod::SemismoothNewton && distributed_path(spec.solver))
+    throw InputError(
+        "solver.method = \"semismooth_newton\" with contact.friction runs in one process (it "
+        "factorises the whole KKT system): use \"uzawa_gnm\" on the distributed path, or run "
+        "without mpirun");
+  const Index size = starts.back();
+  Vector s = Vector::Zero(size), mu = Vector::Zero(size);
+  for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
+    const ContactSpec& c = spec.contacts[part];
+    const std::string where =
+        spec.contacts.size() == 1 ? "contact" : fmt::format("contact[{}]", part);
+    for (Index j = starts[part]; j < starts[part + 1]; ++j) {
+      if (c.friction == FrictionModel::Coulomb) mu(j) = c.mu;
+      if (c.friction != FrictionModel::Tresca) continue;
+      const Point x = point(j);
+      s(j) = c.slip_bound(x);
+      if (!(s(j) >= 0.0) || !std::isfinite(s(j)))
+        throw InputError(fmt::format(
+            "{}.slip_bound = \"{}\" is {} at ({:g}, {:g}, {:g}): expected a finite value >= 0",
+            where, c.slip_bound_text, s(j), x(0), x(1), x(2)));
+    }
+  }
+  return std::make_shared<const FrictionLaw>(dim, std::move(s), std::move(mu));
 }
 
 Vector free_loads(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& elasticity,

@@ -7,8 +7,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "signorini/contact/friction_law.hpp"
 #include "signorini/core/peak_memory.hpp"
 #include "signorini/fem/contact_boundary.hpp"
+#include "signorini/fem/contact_tangents.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/problem/distributed_model.hpp"
@@ -22,8 +24,6 @@ bool model_parts_support(const ProblemSpec& spec, bool numbered_whole) {
       if (c.at) return false;
   for (const DisplacementSpec& d : spec.displacements)
     if (d.normal) return false;
-  for (const ContactSpec& c : spec.contacts)
-    if (c.friction != FrictionModel::None) return false;
   return true;
 }
 
@@ -58,6 +58,7 @@ struct ContactRow {
   bool movable = false;
   std::vector<std::pair<Index, double>> n;  // N's entries: free dof, value
   std::vector<int> groups;  // the load group of each component's prescribed value, or -1
+  std::vector<Index> free;  // the free dof of each component, or -1 (friction's tangents)
 };
 
 struct ContactFacet {
@@ -78,6 +79,7 @@ void pack_row(ByteWriter& out, const ContactRow& r) {
     out.put(value);
   }
   out.put(r.groups);
+  out.put(r.free);
 }
 
 ContactRow unpack_row(ByteReader& in) {
@@ -94,6 +96,7 @@ ContactRow unpack_row(ByteReader& in) {
     value = in.get<double>();
   }
   r.groups = in.get_vector<int>();
+  r.free = in.get_vector<Index>();
   return r;
 }
 
@@ -346,6 +349,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
           r.gap = cs.gaps(j);
           r.movable = cs.movable[static_cast<std::size_t>(j)];
           r.groups.assign(static_cast<std::size_t>(dim), -1);
+          for (int k = 0; k < dim; ++k) r.free.push_back(dofs.free_index(v, k));
           if (!group_of_dof.empty())
             for (int k = 0; k < dim; ++k)
               r.groups[static_cast<std::size_t>(k)] =
@@ -445,6 +449,20 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   }
   for (const ByteReader& in : readers)
     if (!in.done()) throw std::logic_error("model in parts: the contact rows' bytes do not add up");
+  // Friction: the law per node and the tangential rows in N (model.cpp, make_friction), from the
+  // gathered rows' points and dofs, on every rank alike.
+  const std::shared_ptr<const FrictionLaw> friction =
+      contact_friction_law(spec, dim, contact_starts, [&](Index j) {
+        Point x = Point::Zero();
+        x.head(dim) = all_rows[static_cast<std::size_t>(j)].point;
+        return x;
+      });
+  if (friction)
+    add_tangential_rows(
+        problem.contact,
+        tangential_operator(problem.contact, dim, dofs.num_free(), [&](Index j, int c) {
+          return all_rows[static_cast<std::size_t>(j)].free[static_cast<std::size_t>(c)];
+        }));
   const Index contact_size = problem.contact.size();
   WholeMesh whole;
   whole.contact_points.resize(dim, contact_size);
@@ -493,8 +511,8 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
                          dofs.num_free(),
                          contact_size,
                          values_of_ranks(engine, physical_memory_bytes()).front(),
-                         false};
-  const SolverPlan plan = plan_model_solver(spec, size, nullptr, /*distributed=*/true);
+                         friction != nullptr};
+  const SolverPlan plan = plan_model_solver(spec, size, friction.get(), /*distributed=*/true);
   {
     ScopedTimer t(timings, "assembly");
     // The columns of the rank's unknowns (by symmetry its rows), from the cells around its
@@ -521,7 +539,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
                std::move(placed),
                std::move(contact_boundaries),
                std::move(contact_starts),
-               nullptr,
+               friction,
                std::move(groups),
                std::move(gap_shift),
                std::move(gap_shift_group),

@@ -48,7 +48,7 @@ struct OwnPart {
 };
 
 /// Whether the problem's conditions can be made in parts (solver.partition = "auto", and what
-/// the parts support so far: no normal displacement (its local axes) and no friction). With
+/// the parts support so far: no normal displacement, whose local axes they lack). With
 /// `numbered_whole` false (a box whose ranks number their own parts) no pinned clamp (`at`)
 /// either: its node is the whole mesh's nearest. The others are built whole by rank 0 and sent
 /// in parts of the model (problem/distributed_model.hpp).
