@@ -10,12 +10,15 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <numbers>
 
 #include "../problem/ball_on_block.hpp"
 #include "../problem/hertz_ball.hpp"
 #include "mpi_test_problems.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/io/problem_file.hpp"
+#include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/contact_node_values.hpp"
 #include "signorini/problem/resultants.hpp"
 
@@ -388,18 +391,63 @@ TEST(MeshInParts, FrictionIsTheWholeModelsInParts) {
   }
 }
 
-// What the parts do not support yet (a normal displacement here) goes the whole way: rank 0
-// builds the whole model and sends parts of it.
-TEST(MeshInParts, NormalDisplacementKeepsTheWholeBuild) {
-  ProblemSpec spec = read_problem_file(SIGNORINI_EXAMPLES_DIR "/hertz_p2.toml").spec;
-  DisplacementSpec normal;  // (2D only: the clamp of the top holds its dofs anyway)
-  normal.boundary = "top";
-  normal.normal = [](const Point&) { return 0.0; };
-  normal.normal_text = "0";
-  spec.displacements.push_back(normal);
-  const Model part = testing::distributed_model(spec);
-  EXPECT_TRUE(part.node_ranks.empty());
-  EXPECT_EQ(part.is_part(), distributed_engine()->size() > 1);
+// A block of quadratic triangles turned by 30 degrees (a mesh the program gives), held by
+// normal displacements on its inclined sides: the nodes there have local axes (DofMap frames),
+// which rank 0's numbering sends with each part; the top is in contact with a plane, its end
+// nodes in local axes too (their N rows, the gaps' shifts), with friction (the tangents in them).
+TEST(MeshInParts, NormalDisplacementsOnInclinedSidesAreTheWholeModelsInParts) {
+  RectangleMeshOptions r;
+  r.length = 2.0;
+  r.height = 1.0;
+  r.nx = 12;
+  r.ny = 6;
+  r.cell = CellType::Tri6;
+  const Mesh flat = make_rectangle_mesh(r);
+  const double angle = std::numbers::pi / 6.0, c = std::cos(angle), s = std::sin(angle);
+  Eigen::MatrixXd x = flat.coordinates();
+  for (Index v = 0; v < x.cols(); ++v) {
+    const Eigen::Vector2d p = x.col(v);
+    x.col(v) = Eigen::Vector2d(c * p(0) - s * p(1), s * p(0) + c * p(1));
+  }
+  std::vector<CellType> types;
+  std::vector<Index> connectivity;
+  for (Index cell = 0; cell < flat.num_cells(); ++cell) {
+    types.push_back(flat.cell_type(cell));
+    for (const Index v : flat.cell(cell)) connectivity.push_back(v);
+  }
+  auto turned = std::make_shared<Mesh>(std::move(types), std::move(x), std::move(connectivity));
+  for (const std::string& name : flat.boundary_part_names())
+    turned->set_boundary_part(name, flat.boundary_part(name).facets);
+  ProblemSpec spec;
+  spec.mesh_type = MeshType::Given;
+  spec.given_mesh = turned;
+  spec.elasticity.material = {1000.0, 0.3};
+  for (const auto& [side, value] :
+       {std::pair{"left", 0.0}, std::pair{"bottom", -0.001}, std::pair{"right", 0.001}}) {
+    DisplacementSpec d;
+    d.boundary = side;
+    d.normal = [value = value](const Point&) { return value; };
+    d.normal_text = std::to_string(value);
+    spec.displacements.push_back(d);
+  }
+  ContactSpec top;
+  top.boundary = "top";
+  top.obstacle.shape = ObstacleShape::Plane;
+  top.obstacle.point = Point(0.0, 1.0 / c + 0.0005, 0.0);  // (above the top's left end)
+  top.obstacle.normal = Point(s, -c, 0.0);                 // (towards the block)
+  top.friction = FrictionModel::Coulomb;
+  top.mu = 0.3;
+  spec.contacts = {top};
+  spec.solver.uzawa_tolerance = 1e-10;
+  const Model whole = testing::serial_model(spec);
+  bool framed_contact_node = false;  // (the top's ends)
+  for (const Index node : whole.problem.contact.nodes)
+    framed_contact_node = framed_contact_node || whole.dofs.has_frame(node);
+  EXPECT_TRUE(framed_contact_node);
+  const ContactResult serial = testing::serial_solve(whole, whole.solver);
+  ASSERT_TRUE(serial.summary.converged()) << serial.summary.message;
+  EXPECT_GT(serial.l.maxCoeff(), 0.0) << "no contact";
+  expect_whole_model_in_parts(spec);
 }
 
 }  // namespace

@@ -152,7 +152,7 @@ struct ContactSolverOptions {
   /// Auto: on more than one rank a generated box is made in blocks, each rank its own
   /// (problem/box_model_in_parts.hpp); any other mesh is read by rank 0, its nodes partitioned
   /// by PETSc's graph partitioner and sent in parts; each rank builds its part of the model
-  /// (problem/model_in_parts.hpp), where the parts support the problem. Graph: rank 0 builds
+  /// (problem/model_in_parts.hpp). Graph: rank 0 builds
   /// the whole model from a partition by the graph partitioner, for a box too.
   PartitionMode partition = PartitionMode::Auto;
   /// Options for PETSc's database on the PETSc path ("-ksp_monitor -pc_gamg_threshold 0.02"):

@@ -98,8 +98,7 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
              "`\"auto\"`, a generated box in blocks of cubes that each rank makes itself (no "
              "rank holds the whole mesh), any other mesh read by rank 0, its nodes partitioned "
              "by PETSc's graph partitioner (PT-Scotch) and sent in parts, from which each rank "
-             "builds its part of the model (not with a normal displacement: rank 0 then builds "
-             "the whole model); `\"graph\"`: rank 0 makes or reads the mesh, "
+             "builds its part of the model; `\"graph\"`: rank 0 makes or reads the mesh, "
              "partitions it "
              "with PT-Scotch and builds the whole model, for a box too "
              "([distributed.md](distributed.md))");

@@ -8,8 +8,6 @@
 // Used by friction (problem/model.cpp adds T to N: contact/friction_law.hpp); tested in
 // tests/fem/contact_tangents_test.cpp.
 
-#include <functional>
-
 #include "signorini/contact/contact_set.hpp"
 #include "signorini/contact/tangent_basis.hpp"
 #include "signorini/fem/dof_map.hpp"
@@ -19,12 +17,5 @@ namespace signorini {
 /// T: (dim - 1) size() rows (row (dim - 1) j + k for t_k of node j) over the free dofs, in the
 /// local axes of a node that has them (DofMap::set_frame), as N's rows are.
 [[nodiscard]] SparseMatrix tangential_operator(const ContactSet& contact, const DofMap& dofs);
-
-/// The same from each contact row's free dofs, `free_index(j, c)` the dof of component c at row
-/// j's node (-1: held), over `num_free` unknowns, where no node has local axes (a model made in
-/// parts, whose ranks hold the rows' dofs but not their nodes).
-[[nodiscard]] SparseMatrix tangential_operator(
-    const ContactSet& contact, int dim, Index num_free,
-    const std::function<Index(Index j, int c)>& free_index);
 
 }  // namespace signorini

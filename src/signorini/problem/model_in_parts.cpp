@@ -19,9 +19,11 @@ namespace signorini {
 
 bool model_parts_support(const ProblemSpec& spec, bool numbered_whole) {
   if (spec.solver.partition != PartitionMode::Auto) return false;
-  if (!numbered_whole)
-    for (const ClampSpec& c : spec.clamps)
-      if (c.at) return false;
+  if (numbered_whole) return true;
+  // A box whose ranks number their own parts: a pinned clamp's node is the whole box's nearest,
+  // and a normal displacement (2D) needs the whole side's normals.
+  for (const ClampSpec& c : spec.clamps)
+    if (c.at) return false;
   for (const DisplacementSpec& d : spec.displacements)
     if (d.normal) return false;
   return true;
@@ -58,7 +60,10 @@ struct ContactRow {
   bool movable = false;
   std::vector<std::pair<Index, double>> n;  // N's entries: free dof, value
   std::vector<int> groups;  // the load group of each component's prescribed value, or -1
-  std::vector<Index> free;  // the free dof of each component, or -1 (friction's tangents)
+  Vector shift;             // what prescribed values take off the gap, per component
+  // Friction's tangential rows (fem/contact_tangents.hpp): entries (dof * dim + k, value) of
+  // the node's row for tangent k.
+  std::vector<std::pair<Index, double>> t;
 };
 
 struct ContactFacet {
@@ -79,7 +84,12 @@ void pack_row(ByteWriter& out, const ContactRow& r) {
     out.put(value);
   }
   out.put(r.groups);
-  out.put(r.free);
+  out.put(r.shift);
+  out.put(static_cast<std::uint64_t>(r.t.size()));
+  for (const auto& [d, value] : r.t) {
+    out.put(d);
+    out.put(value);
+  }
 }
 
 ContactRow unpack_row(ByteReader& in) {
@@ -96,7 +106,12 @@ ContactRow unpack_row(ByteReader& in) {
     value = in.get<double>();
   }
   r.groups = in.get_vector<int>();
-  r.free = in.get_vector<Index>();
+  r.shift = in.get_vector_xd();
+  r.t.resize(static_cast<std::size_t>(in.get<std::uint64_t>()));
+  for (auto& [d, value] : r.t) {
+    d = in.get<Index>();
+    value = in.get<double>();
+  }
   return r;
 }
 
@@ -275,13 +290,18 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   problem.rank = rank;
   problem.node_of_unknown = std::move(part.node_of_unknown);
   const Index first_row = problem.first_row(), end_row = problem.end_row();
-  // The rank's rows of a full vector of the part.
+  // The rank's rows of a full vector of the part (DofMap::restrict_to_free: at a node with
+  // local axes, its components along them).
   const auto own_rows = [&](const Vector& full) {
     Vector rows = Vector::Zero(end_row - first_row);
-    for (Index v = 0; v < nodes; ++v)
+    for (Index v = 0; v < nodes; ++v) {
+      Eigen::VectorXd at = full.segment(v * dim, dim);
+      if (dofs.has_frame(v))  // (2D only, as DofMap::rotate_frames turns it)
+        at = Eigen::Vector2d(dofs.frame(v).transpose() * Eigen::Vector2d(at));
       for (int k = 0; k < dim; ++k)
         if (const Index i = dofs.free_index(v, k); i >= first_row && i < end_row)
-          rows(i - first_row) = full(v * dim + k);
+          rows(i - first_row) = at(k);
+    }
     return rows;
   };
   // b = f - K u_D on the rank's rows (model.cpp's free part), and each load group's part of it:
@@ -307,6 +327,9 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   // as make_contact_set measures it.
   const auto [lo, hi] = whole_extent(mesh, node_ranks, rank, engine);
   const double far = 10.0 * (hi - lo).maxCoeff();
+  bool with_friction = false;
+  for (const ContactSpec& c : spec.contacts)
+    with_friction = with_friction || c.friction != FrictionModel::None;
   ByteWriter rows_out;
   on_every_rank(engine, [&] {
     for (const ContactSpec& c : spec.contacts) {
@@ -349,7 +372,13 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
           r.gap = cs.gaps(j);
           r.movable = cs.movable[static_cast<std::size_t>(j)];
           r.groups.assign(static_cast<std::size_t>(dim), -1);
-          for (int k = 0; k < dim; ++k) r.free.push_back(dofs.free_index(v, k));
+          // (model.cpp, contact_gap_shift: each component along the node's axes)
+          r.shift.resize(dim);
+          for (int k = 0; k < dim; ++k) {
+            Eigen::VectorXd axis = Eigen::VectorXd::Unit(dim, k);
+            if (dofs.has_frame(v)) axis = dofs.frame(v).col(k);
+            r.shift(k) = cs.normals.col(j).dot(axis) * dofs.value(v, k);
+          }
           if (!group_of_dof.empty())
             for (int k = 0; k < dim; ++k)
               r.groups[static_cast<std::size_t>(k)] =
@@ -359,6 +388,14 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
           for (SparseMatrix::InnerIterator it(cs.N, col); it; ++it)
             if (const Index i = row_of[static_cast<std::size_t>(it.row())]; i >= 0)
               rows[static_cast<std::size_t>(i)].n.emplace_back(col, it.value());
+        if (with_friction) {  // (rows (dim - 1) j + k of T for the set's node j)
+          const SparseMatrix T = tangential_operator(cs, dofs);
+          for (int col = 0; col < T.outerSize(); ++col)
+            for (SparseMatrix::InnerIterator it(T, col); it; ++it)
+              if (const Index i = row_of[static_cast<std::size_t>(it.row() / (dim - 1))]; i >= 0)
+                rows[static_cast<std::size_t>(i)].t.emplace_back(
+                    static_cast<Index>(col) * dim + it.row() % (dim - 1), it.value());
+        }
         // Each facet from the owner of its first node, whose part has it.
         for (std::size_t f = 0; f < cs.facets.size(); ++f) {
           const std::vector<Index>& positions = cs.facets[f];
@@ -450,26 +487,30 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   for (const ByteReader& in : readers)
     if (!in.done()) throw std::logic_error("model in parts: the contact rows' bytes do not add up");
   // Friction: the law per node and the tangential rows in N (model.cpp, make_friction), from the
-  // gathered rows' points and dofs, on every rank alike.
+  // gathered rows' points and tangential entries, on every rank alike.
   const std::shared_ptr<const FrictionLaw> friction =
       contact_friction_law(spec, dim, contact_starts, [&](Index j) {
         Point x = Point::Zero();
         x.head(dim) = all_rows[static_cast<std::size_t>(j)].point;
         return x;
       });
-  if (friction)
-    add_tangential_rows(
-        problem.contact,
-        tangential_operator(problem.contact, dim, dofs.num_free(), [&](Index j, int c) {
-          return all_rows[static_cast<std::size_t>(j)].free[static_cast<std::size_t>(c)];
-        }));
+  if (friction) {
+    std::vector<Eigen::Triplet<double, int>> triplets;
+    for (std::size_t j = 0; j < all_rows.size(); ++j)
+      for (const auto& [code, value] : all_rows[j].t)
+        triplets.emplace_back(static_cast<int>((dim - 1) * static_cast<Index>(j) + code % dim),
+                              static_cast<int>(code / dim), value);
+    SparseMatrix T((dim - 1) * problem.contact.size(), dofs.num_free());
+    T.setFromTriplets(triplets.begin(), triplets.end());
+    add_tangential_rows(problem.contact, T);
+  }
   const Index contact_size = problem.contact.size();
   WholeMesh whole;
   whole.contact_points.resize(dim, contact_size);
   whole.contact_prescribed.resize(dim, contact_size);
   Eigen::MatrixXd gap_shift;
   std::vector<int> gap_shift_group;
-  if (part.prescribed) {  // (model.cpp, contact_gap_shift: a part has no frames)
+  if (part.prescribed) {  // (model.cpp, contact_gap_shift)
     gap_shift.resize(dim, contact_size);
     gap_shift_group.assign(static_cast<std::size_t>(dim * contact_size), -1);
   }
@@ -478,7 +519,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
     whole.contact_points.col(j) = r.point;
     whole.contact_prescribed.col(j) = r.prescribed;
     if (part.prescribed) {
-      gap_shift.col(j) = r.normal.cwiseProduct(r.prescribed);
+      gap_shift.col(j) = r.shift;
       for (int k = 0; k < dim; ++k)
         gap_shift_group[static_cast<std::size_t>(j * dim + k)] =
             r.groups.at(static_cast<std::size_t>(k));
