@@ -41,14 +41,7 @@ void expect_serial_results(const ProblemSpec& spec) {
   EXPECT_EQ(part.num_dofs(), whole.dofs.num_dofs());
 
   // Every node and every cell of the whole mesh is accounted for by one rank, which has it.
-  double counts[2] = {0.0, 0.0};
-  for (Index v = 0; v < part.mesh.num_nodes(); ++v)
-    if (part.node_rank(v) == engine.rank()) counts[0] += 1.0;
-  for (Index c = 0; c < part.mesh.num_cells(); ++c)
-    if (part.cell_rank(c) == engine.rank()) counts[1] += 1.0;
-  engine.sum(counts, 2);
-  EXPECT_EQ(counts[0], static_cast<double>(whole.mesh.num_nodes()));
-  EXPECT_EQ(counts[1], static_cast<double>(whole.mesh.num_cells()));
+  testing::expect_every_node_and_cell_once(part, whole);
 
   const ContactResult distributed = solve_distributed(part);
   const ContactResult serial = solve_serial(whole);

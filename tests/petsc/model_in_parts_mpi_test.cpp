@@ -221,14 +221,7 @@ void expect_whole_model_in_parts(const ProblemSpec& spec, bool smaller = false) 
   EXPECT_LE((p.displacement - q.displacement).norm(), 1e-8 * q.displacement.norm());
 
   // Every node and every cell accounted for by one rank.
-  double counts[2] = {0.0, 0.0};
-  for (Index v = 0; v < part.mesh.num_nodes(); ++v)
-    if (part.node_rank(v) == engine.rank()) counts[0] += 1.0;
-  for (Index c = 0; c < part.mesh.num_cells(); ++c)
-    if (part.cell_rank(c) == engine.rank()) counts[1] += 1.0;
-  engine.sum(counts, 2);
-  EXPECT_EQ(counts[0], static_cast<double>(whole.mesh.num_nodes()));
-  EXPECT_EQ(counts[1], static_cast<double>(whole.mesh.num_cells()));
+  testing::expect_every_node_and_cell_once(part, whole);
 }
 
 TEST(BoxInParts, RolledHex27BoxIsTheWholeModelInParts) {
@@ -283,18 +276,7 @@ TEST(BoxInParts, BadInputOnOneRankStopsEveryRankWithOneMessage) {
     if (x(1) > 0.7) t(0) = std::numeric_limits<double>::quiet_NaN();
     return t;
   };
-  std::string message;
-  try {
-    (void)testing::distributed_model(spec);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    message = e.what();
-  }
-  EXPECT_NE(message.find("traction on 'xmax'"), std::string::npos) << message;
-  const DistributedEngine& engine = *distributed_engine();
-  const std::vector<std::vector<char>> all =
-      engine.allgather(std::vector<char>(message.begin(), message.end()));
-  for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
+  testing::expect_one_message_on_every_rank(spec, "traction on 'xmax'");
 }
 
 // A mesh from a file: rank 0 reads it and partitions its nodes, and sends each rank its part
@@ -323,18 +305,7 @@ TEST(MeshInParts, BadInputOnOneRankStopsEveryRankWithOneMessage) {
     if (x(0) > 0.6) f(2) = std::numeric_limits<double>::quiet_NaN();
     return f;
   };
-  std::string message;
-  try {
-    (void)testing::distributed_model(spec);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    message = e.what();
-  }
-  EXPECT_NE(message.find("is not finite"), std::string::npos) << message;
-  const DistributedEngine& engine = *distributed_engine();
-  const std::vector<std::vector<char>> all =
-      engine.allgather(std::vector<char>(message.begin(), message.end()));
-  for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
+  testing::expect_one_message_on_every_rank(spec, "is not finite");
 }
 
 // A pinned clamp (its node the whole mesh's nearest, which rank 0 numbers), a point load with

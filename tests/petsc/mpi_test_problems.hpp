@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 // The models of the MPI tests (tests/petsc/): each problem built twice on every rank, as the
 // distributed path builds it (partitioned: each rank its part of A, docs/distributed.md) and as
 // a serial run does (the engine out of sight while it is built and solved), so that the
@@ -11,6 +13,7 @@
 
 #include "../test_problems.hpp"
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/core/error.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/problem/model.hpp"
 
@@ -97,6 +100,36 @@ inline ContactResult distributed_solve(const Model& model, ContactSolverOptions 
   for (std::size_t i = 0; i < model.global_nodes.size(); ++i)
     r.u.segment(model.global_nodes[i] * dim, dim) = held.segment(static_cast<Index>(i) * dim, dim);
   return r;
+}
+
+/// Every node and every cell of the whole mesh accounted for by exactly one rank (Model::
+/// node_rank, cell_rank), which has it in its part (a collective call).
+inline void expect_every_node_and_cell_once(const Model& part, const Model& whole) {
+  const DistributedEngine& engine = *distributed_engine();
+  double counts[2] = {0.0, 0.0};
+  for (Index v = 0; v < part.mesh.num_nodes(); ++v)
+    if (part.node_rank(v) == engine.rank()) counts[0] += 1.0;
+  for (Index c = 0; c < part.mesh.num_cells(); ++c)
+    if (part.cell_rank(c) == engine.rank()) counts[1] += 1.0;
+  engine.sum(counts, 2);
+  EXPECT_EQ(counts[0], static_cast<double>(whole.mesh.num_nodes()));
+  EXPECT_EQ(counts[1], static_cast<double>(whole.mesh.num_cells()));
+}
+
+/// Building the model of `spec` throws InputError on every rank, with the same message on all,
+/// which holds `expected`.
+inline void expect_one_message_on_every_rank(const ProblemSpec& spec, const std::string& expected) {
+  std::string message;
+  try {
+    (void)distributed_model(spec);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find(expected), std::string::npos) << message;
+  const std::vector<std::vector<char>> all =
+      distributed_engine()->allgather(std::vector<char>(message.begin(), message.end()));
+  for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
 }
 
 }  // namespace signorini::testing
