@@ -179,15 +179,10 @@ Model build_box_model_in_parts(const ProblemSpec& spec, DistributedEngine& engin
       keys.push_back(part->global_cells[static_cast<std::size_t>(f.cell)] * facets_per + f.local);
   }
   mesh_timer.stop();
-  OwnPart own{std::move(part->mesh),
-              std::move(part->global_nodes),
-              std::move(node_ranks),
-              std::move(facet_keys),
-              std::move(dofs),
-              std::move(entry),
-              std::move(row_starts),
-              std::move(node_of_unknown),
-              prescribed};
+  OwnPart own{std::move(part->mesh), std::move(part->global_nodes),
+              std::move(node_ranks), std::move(facet_keys),
+              std::move(dofs),       std::move(entry),
+              std::move(row_starts), std::move(node_of_unknown)};
   part.reset();
   return model_from_own_part(spec, std::move(own), engine, std::move(timings));
 }

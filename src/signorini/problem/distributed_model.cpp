@@ -235,8 +235,26 @@ std::vector<char> send_mesh_parts(const Mesh& mesh, const DofMap& dofs,
     for (std::size_t i = 0; i < order.size(); ++i) p.emplace_back(order[i], static_cast<Index>(i));
     std::sort(p.begin(), p.end());
   }
+  // The boundary parts' facets by cell (side, place in the side), once: each rank's are then
+  // found from its cells alone.
   const std::vector<std::string> names = mesh.boundary_part_names();
-  const bool prescribed = dofs.has_prescribed_values();
+  std::vector<Index> facets_start(static_cast<std::size_t>(mesh.num_cells()) + 1, 0);
+  std::vector<std::pair<int, Index>> facets_of_cell;
+  {
+    for (const std::string& name : names)
+      for (const Facet& f : mesh.boundary_part(name).facets)
+        ++facets_start[static_cast<std::size_t>(f.cell) + 1];
+    for (std::size_t c = 0; c + 1 < facets_start.size(); ++c)
+      facets_start[c + 1] += facets_start[c];
+    facets_of_cell.resize(static_cast<std::size_t>(facets_start.back()));
+    std::vector<Index> next(facets_start.begin(), facets_start.end() - 1);
+    for (std::size_t side = 0; side < names.size(); ++side) {
+      const std::vector<Facet>& facets = mesh.boundary_part(names[side]).facets;
+      for (std::size_t f = 0; f < facets.size(); ++f)
+        facets_of_cell[static_cast<std::size_t>(next[static_cast<std::size_t>(facets[f].cell)]++)] =
+            {static_cast<int>(side), static_cast<Index>(f)};
+    }
+  }
   std::vector<char> own_bytes;
   for (int r = 0; r < ranks; ++r) {
     const std::vector<Index> cells = part_cells.cells(own[static_cast<std::size_t>(r)]);
@@ -250,19 +268,27 @@ std::vector<char> send_mesh_parts(const Mesh& mesh, const DofMap& dofs,
     ranks_of_part.reserve(global.size());
     for (const Index g : global) ranks_of_part.push_back(node_rank[static_cast<std::size_t>(g)]);
     out.put(ranks_of_part);
-    // Each boundary part's facets in the part (their cells in the part's numbering), with
-    // their places in the whole part.
+    // Each boundary part's facets in the part (their cells in the part's numbering), in the
+    // whole part's order, with their places there.
+    std::vector<std::vector<std::pair<Index, Index>>> in_part(names.size());  // (place, cell)
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const auto c = static_cast<std::size_t>(cells[i]);
+      for (auto e = facets_start[c]; e < facets_start[c + 1]; ++e) {
+        const auto& [side, place] = facets_of_cell[static_cast<std::size_t>(e)];
+        in_part[static_cast<std::size_t>(side)].emplace_back(place, static_cast<Index>(i));
+      }
+    }
     out.put(names);
-    for (const std::string& name : names) {
+    for (std::size_t side = 0; side < names.size(); ++side) {
+      std::vector<std::pair<Index, Index>>& kept = in_part[side];
+      std::sort(kept.begin(), kept.end());
+      const std::vector<Facet>& facets = mesh.boundary_part(names[side]).facets;
       std::vector<Index> facet_cells, keys;
       std::vector<int> locals;
-      const std::vector<Facet>& facets = mesh.boundary_part(name).facets;
-      for (std::size_t f = 0; f < facets.size(); ++f) {
-        const auto it = std::lower_bound(cells.begin(), cells.end(), facets[f].cell);
-        if (it == cells.end() || *it != facets[f].cell) continue;
-        facet_cells.push_back(static_cast<Index>(it - cells.begin()));
-        locals.push_back(facets[f].local);
-        keys.push_back(static_cast<Index>(f));
+      for (const auto& [place, cell] : kept) {
+        facet_cells.push_back(cell);
+        locals.push_back(facets[static_cast<std::size_t>(place)].local);
+        keys.push_back(place);
       }
       out.put(facet_cells);
       out.put(locals);
@@ -293,7 +319,6 @@ std::vector<char> send_mesh_parts(const Mesh& mesh, const DofMap& dofs,
     const Index last = problem.row_starts[static_cast<std::size_t>(r) + 1];
     out.put(std::vector<Index>(problem.node_of_unknown.begin() + first,
                                problem.node_of_unknown.begin() + last));
-    out.put(static_cast<std::uint8_t>(prescribed));
     if (r == 0)
       own_bytes = std::move(out.bytes());
     else
@@ -330,14 +355,14 @@ Model model_from_mesh_part(const ProblemSpec& spec, std::vector<char> bytes,
   std::vector<int> entry = in.get_vector<int>();
   std::vector<Index> row_starts = in.get_vector<Index>();
   std::vector<Index> node_of_unknown = in.get_vector<Index>();
-  const bool prescribed = in.get<std::uint8_t>() != 0;
   if (!in.done()) throw std::logic_error("a part of the mesh from rank 0 has a mismatched layout");
   bytes = {};
   mesh_timer.stop();
-  OwnPart own{
-      std::move(mesh), std::move(global_nodes), std::move(node_ranks), std::move(facet_keys),
-      std::move(dofs), std::move(entry),        std::move(row_starts), std::move(node_of_unknown),
-      prescribed,      std::move(node_keys)};
+  OwnPart own{std::move(mesh),       std::move(global_nodes),
+              std::move(node_ranks), std::move(facet_keys),
+              std::move(dofs),       std::move(entry),
+              std::move(row_starts), std::move(node_of_unknown),
+              std::move(node_keys)};
   return model_from_own_part(spec, std::move(own), engine, std::move(timings));
 }
 

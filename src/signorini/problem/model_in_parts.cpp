@@ -176,24 +176,28 @@ std::vector<PlacedPointLoad> place_point_loads(const ProblemSpec& spec, const Ow
           on_boundary[static_cast<std::size_t>(v)] = true;
       }
       // The nearest own node on the boundary, and the nearest of all (nearest_node takes every
-      // node where the boundary has none).
+      // node where the boundary has none), each with its point.
       std::array<double, 2> best{inf, inf};
       std::array<Index, 2> node{-1, -1};
+      std::array<Point, 2> at{Point::Zero(), Point::Zero()};
       for (Index v = 0; v < mesh.num_nodes(); ++v) {
         if (part.node_ranks[static_cast<std::size_t>(v)] != rank) continue;
-        const double d = (mesh.point(v) - pl.at).squaredNorm();
+        const Point x = mesh.point(v);
+        const double d = (x - pl.at).squaredNorm();
         for (std::size_t which = 0; which < 2; ++which) {
           if (which == 0 && !on_boundary.empty() && !on_boundary[static_cast<std::size_t>(v)])
             continue;
           if (d < best[which]) {
             best[which] = d;
             node[which] = part.global_nodes[static_cast<std::size_t>(v)];
+            at[which] = x;
           }
         }
       }
       for (std::size_t which = 0; which < 2; ++which) {
         out.put(best[which]);
         out.put(node[which]);
+        out.put_array(at[which].data(), 3);
       }
     }
   });
@@ -203,42 +207,28 @@ std::vector<PlacedPointLoad> place_point_loads(const ProblemSpec& spec, const Ow
   std::vector<PlacedPointLoad> placed;
   for (const PointLoadSpec& pl : spec.point_loads) {
     std::array<double, 2> best{inf, inf};
-    std::array<Index, 2> node{-1, -1};
+    std::array<PlacedPointLoad, 2> nearest;
+    nearest[0].node = nearest[1].node = -1;
     for (ByteReader& in : readers)
       for (std::size_t which = 0; which < 2; ++which) {
         const double d = in.get<double>();
         const Index v = in.get<Index>();
-        if (v >= 0 && (d < best[which] || (d == best[which] && v < node[which]))) {
+        const std::vector<double> x = in.get_vector<double>();
+        PlacedPointLoad& p = nearest[which];
+        if (v >= 0 && (d < best[which] || (d == best[which] && v < p.node))) {
           best[which] = d;
-          node[which] = v;
+          p.node = v;
+          p.at = Point(x.at(0), x.at(1), x.at(2));
         }
       }
-    const Index chosen = node[0] >= 0 ? node[0] : node[1];
-    PlacedPointLoad p;
+    PlacedPointLoad p = nearest[0].node >= 0 ? nearest[0] : nearest[1];
     p.requested = pl.at;
-    p.node = chosen;
     p.force = pl.force;
+    p.distance = (p.at - p.requested).norm();
     placed.push_back(p);
   }
   for (const ByteReader& in : readers)
     if (!in.done()) throw std::logic_error("model in parts: the point loads' bytes do not add up");
-  // Where each was placed, from the rank that owns the node.
-  ByteWriter at;
-  for (const PlacedPointLoad& p : placed)
-    if (const auto it =
-            std::lower_bound(part.global_nodes.begin(), part.global_nodes.end(), p.node);
-        it != part.global_nodes.end() && *it == p.node &&
-        part.node_ranks[static_cast<std::size_t>(it - part.global_nodes.begin())] == rank)
-      at.put(Vector(mesh.point(static_cast<Index>(it - part.global_nodes.begin()))));
-    else
-      at.put(Vector());
-  std::vector<ByteReader> points;
-  const std::vector<std::vector<char>> located = engine.allgather(at.bytes());
-  for (const std::vector<char>& bytes : located) points.emplace_back(bytes);
-  for (PlacedPointLoad& p : placed)
-    for (ByteReader& in : points)
-      if (const Vector x = in.get_vector_xd(); x.size() != 0) p.at = x;
-  for (PlacedPointLoad& p : placed) p.distance = (p.at - p.requested).norm();
   return placed;
 }
 
@@ -295,7 +285,8 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   const auto own_rows = [&](const Vector& full) {
     Vector rows = Vector::Zero(end_row - first_row);
     for (Index v = 0; v < nodes; ++v) {
-      Eigen::VectorXd at = full.segment(v * dim, dim);
+      Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 3, 1> at =
+          full.segment(v * dim, dim);
       if (dofs.has_frame(v))  // (2D only, as DofMap::rotate_frames turns it)
         at = Eigen::Vector2d(dofs.frame(v).transpose() * Eigen::Vector2d(at));
       for (int k = 0; k < dim; ++k)
@@ -510,7 +501,8 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   whole.contact_prescribed.resize(dim, contact_size);
   Eigen::MatrixXd gap_shift;
   std::vector<int> gap_shift_group;
-  if (part.prescribed) {  // (model.cpp, contact_gap_shift)
+  const bool prescribed = dofs.has_prescribed_values();  // (the whole problem's, on a part)
+  if (prescribed) {                                      // (model.cpp, contact_gap_shift)
     gap_shift.resize(dim, contact_size);
     gap_shift_group.assign(static_cast<std::size_t>(dim * contact_size), -1);
   }
@@ -518,7 +510,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
     const ContactRow& r = all_rows[static_cast<std::size_t>(j)];
     whole.contact_points.col(j) = r.point;
     whole.contact_prescribed.col(j) = r.prescribed;
-    if (part.prescribed) {
+    if (prescribed) {
       gap_shift.col(j) = r.shift;
       for (int k = 0; k < dim; ++k)
         gap_shift_group[static_cast<std::size_t>(j * dim + k)] =

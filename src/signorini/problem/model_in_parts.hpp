@@ -33,14 +33,13 @@ struct OwnPart {
   /// that part: the contact rows' serial order follows it.
   std::map<std::string, std::vector<Index>> facet_keys;
   /// The part's nodes numbered as in the whole problem: their free numbers and prescribed
-  /// values, and for each full dof the entry that holds it (number_dofs; -1: free).
+  /// values (kept exactly where the whole problem has a nonzero one: has_prescribed_values is
+  /// the whole's), and for each full dof the entry that holds it (number_dofs; -1: free).
   DofMap dofs;
   std::vector<int> entry;
   /// Where each rank's unknowns begin, and the node (whole mesh) of each of this rank's.
   std::vector<Index> row_starts;
   std::vector<Index> node_of_unknown;
-  /// Whether any node of the whole mesh has a nonzero prescribed value.
-  bool prescribed = false;
   /// In 2D, for each contact side, its nodes in the part with their places in the whole side's
   /// order (which walks the side's edges from its start: only the whole side knows it). A side
   /// without them is ordered by where its facets first name its nodes, as in 3D.
