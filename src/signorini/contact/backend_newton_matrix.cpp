@@ -24,8 +24,10 @@ BackendNewtonMatrix::BackendNewtonMatrix(const ContactProblem& problem,
                              ? "multigrid setup"
                              : "preconditioner setup");
   preconditioner = make_preconditioner(*H, problem.A, problem.contact.N, multigrid, options.linear);
-  if (const auto* mg = dynamic_cast<const MultigridPreconditioner*>(preconditioner.get()))
+  if (const auto* mg = dynamic_cast<const MultigridPreconditioner*>(preconditioner.get())) {
     levels = mg->level_sizes();
+    timings.merge(mg->setup_timings());
+  }
   backend.synchronize();
 }
 

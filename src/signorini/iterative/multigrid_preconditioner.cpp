@@ -60,6 +60,7 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     // Galerkin coarse operators (the hierarchy of docs/gpu.md), unless given.
     const std::size_t index = levels_.size() - 1;
     auto level = std::make_unique<Level>();
+    ScopedTimer products(setup_timings_, "multigrid: coarse operators");
     if (coarse_operators.empty()) {
       level->A = galerkin_product(*current, P);
       current = &level->A;
@@ -70,6 +71,8 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
                                          index + 1, current->rows(), P.cols()));
     }
     Nl = Nl * P;
+    products.stop();
+    ScopedTimer uploads(setup_timings_, "multigrid: level uploads");
     Level& finer = *levels_.back();
     finer.Pt = backend_.upload_transpose(P, HostArrays::Share);  // P's CSC arrays: P^T's CSR
     if (!backend_.has_transposed_product()) finer.P = backend_.upload(P);
@@ -80,8 +83,11 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
       if (!host_) host_ = std::make_unique<HostBackend>();
       level->on_host = std::make_unique<PenalizedOperator>(*host_, *current, Nl, HostArrays::Share);
     }
+    backend_.synchronize();
+    uploads.stop();
     levels_.push_back(std::move(level));
   }
+  ScopedTimer first_refresh(setup_timings_, "multigrid: first refresh");
   // The coarsest level on the host, for its dense factorisation (only if it is solved so).
   if (current->rows() <= options_.max_dense_coarse) {
     coarse_A_ = *current;
@@ -106,6 +112,7 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   if (options_.fine_lambda_max > 0.0 && levels_.front()->smoother)
     fine_lambda_without_contact_ = options_.fine_lambda_max;
   refresh();
+  backend_.synchronize();
 }
 
 MultigridPreconditioner::~MultigridPreconditioner() = default;

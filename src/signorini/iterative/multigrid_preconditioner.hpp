@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "signorini/core/timing_table.hpp"
 #include "signorini/iterative/chebyshev_smoother.hpp"
 #include "signorini/iterative/multigrid_hierarchy.hpp"
 
@@ -58,6 +59,11 @@ class MultigridPreconditioner final : public Preconditioner {
 
   /// Unknowns per level, finest first.
   [[nodiscard]] std::vector<Index> level_sizes() const;
+  /// The parts of the construction, for the summary's timings (docs/output.md): "multigrid:
+  /// coarse operators" (the Galerkin products A_l and N_l, on the host), "multigrid: level
+  /// uploads" (P, P^T and each level's operator to the backend) and "multigrid: first refresh"
+  /// (work vectors, smoothers, the set-up for c = 0).
+  [[nodiscard]] const TimingTable& setup_timings() const { return setup_timings_; }
   /// The fine level's lambda_max(D^-1 H) as the smoother uses it: estimated for c = 0, bounded
   /// after a refresh for another c (refresh()).
   [[nodiscard]] double fine_lambda_max() const;
@@ -76,6 +82,7 @@ class MultigridPreconditioner final : public Preconditioner {
   std::unique_ptr<Backend> host_;  // for the host copies of small levels (before levels_: it
                                    // must outlive them)
   std::vector<std::unique_ptr<Level>> levels_;
+  TimingTable setup_timings_;
   SparseMatrix coarse_A_, coarse_N_;  // host copies of the coarsest level, for its factorisation
   // The fine level's lambda_max(D^-1 A) without contact (estimated at the first refresh with
   // c = 0; 0 until then), and per contact row j the number of nonzero entries of N's row j.
