@@ -6,6 +6,10 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_matrices.hpp"
@@ -50,6 +54,16 @@ void require_supported_cells(const Mesh& mesh) {
 
 namespace {
 
+// Threads for assembling a mesh of `cells` cells: one below some 20,000 cells, where starting
+// them costs more than they save.
+int assembly_threads(Index cells) {
+#ifdef _OPENMP
+  if (cells >= 20000) return std::max(1, omp_get_max_threads());
+#endif
+  (void)cells;
+  return 1;
+}
+
 template <int Dim>
 SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& options,
                       const std::vector<bool>* columns_of) {
@@ -57,78 +71,151 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
   SparsityPattern pattern(mesh, dofs, columns_of);
   SparseMatrix A = pattern.take_zero_matrix();
   double* values = A.valuePtr();
+  // In parallel by columns: thread t fills the columns of the nodes whose places in the
+  // numbering (DofMap::node_place) fall in its t-th share, from every cell that touches one of
+  // them, so no two threads write one entry, and each entry sums its cells' terms in the cells'
+  // order as one thread would: the same matrix to the bit whatever the number of threads. A cell
+  // across shares is integrated by each of their threads (few: the places follow the
+  // numbering's order through space).
+  const int threads = assembly_threads(mesh.num_cells());
+  const Index nodes = mesh.num_nodes();
+  std::vector<int> thread_of;
+  if (threads > 1) {
+    // The shares split the range of places of the nodes with a filled column evenly (a part of
+    // a distributed run numbers its nodes by their free numbers in the whole problem, and the
+    // nodes without a free dof come after every other: DofMap::node_place).
+    const auto has_column = [&](Index m) {
+      if (columns_of != nullptr && !(*columns_of)[static_cast<std::size_t>(m)]) return false;
+      for (int k = 0; k < Dim; ++k)
+        if (dofs.free_index(m, k) >= 0) return true;
+      return false;
+    };
+    Index low = std::numeric_limits<Index>::max(), high = -1;
+    for (Index m = 0; m < nodes; ++m)
+      if (has_column(m)) {
+        low = std::min(low, dofs.node_place(m));
+        high = std::max(high, dofs.node_place(m));
+      }
+    thread_of.assign(static_cast<std::size_t>(nodes), threads - 1);
+    if (high >= low)
+      for (Index m = 0; m < nodes; ++m)
+        if (has_column(m))
+          thread_of[static_cast<std::size_t>(m)] = static_cast<int>(std::min<Index>(
+              threads - 1, (dofs.node_place(m) - low) * threads / (high - low + 1)));
+  }
+  const auto fills = [&](Index m, int t) {
+    return (columns_of == nullptr || (*columns_of)[static_cast<std::size_t>(m)]) &&
+           (threads == 1 || thread_of[static_cast<std::size_t>(m)] == t);
+  };
   // Cells of the type of the previous one that are its translates (all of them on a structured
   // mesh) share its element matrix: compare the node coordinates relative to the first node.
-  CellType previous_type = mesh.num_cells() > 0 ? mesh.cell_type(0) : CellType::Quad4;
-  int previous_region = mesh.num_cells() > 0 ? mesh.cell_region(0) : 0;
-  CellCoordinatesOf<Dim> previous = CellCoordinatesOf<Dim>::Zero(Dim, 0);
-  CellRules rules(options.gauss_points);
-  ElementMatrixOf<Dim> K;
-  bool have_previous = false;  // K is the element matrix of `previous`
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    if (columns_of != nullptr) {  // only the cells that touch a kept node
-      bool touches = false;
+  // Decided here, in the cells' order, once for all threads: source[c] is the cell whose element
+  // matrix cell c takes (-1: a cell with no filled column), so that every thread computes each
+  // element matrix from the same cell, and gets the same bits, as one thread would.
+  // (Four bytes a cell: the cells of a matrix of at most 2^31 entries are numbered in an int.)
+  if (mesh.num_cells() > std::numeric_limits<int>::max())
+    throw InputError("mesh too large: more than 2^31 cells");
+  std::vector<int> source(static_cast<std::size_t>(mesh.num_cells()), -1);
+  {
+    int last = -1;
+    CellCoordinatesOf<Dim> previous = CellCoordinatesOf<Dim>::Zero(Dim, 0);
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      bool touches = false;  // only the cells that touch a kept node
       for (const Index a : mesh.cell(c))
-        touches = touches || (*columns_of)[static_cast<std::size_t>(a)];
+        touches = touches || columns_of == nullptr || (*columns_of)[static_cast<std::size_t>(a)];
       if (!touches) continue;
-    }
-    const CellType type = mesh.cell_type(c);
-    const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
-    const CellCoordinatesOf<Dim> relative = X.colwise() - X.col(0);
-    const int region = mesh.cell_region(c);
-    bool same = have_previous && type == previous_type && region == previous_region;
-    if (same) {
-      double size = 0.0, change = 0.0;
-      for (Index a = 0; a < relative.cols(); ++a) {
-        size = std::max(size, relative.col(a).cwiseAbs().maxCoeff());
-        change = std::max(change, (relative.col(a) - previous.col(a)).cwiseAbs().maxCoeff());
+      const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
+      const CellCoordinatesOf<Dim> relative = X.colwise() - X.col(0);
+      bool same = last >= 0 && mesh.cell_type(c) == mesh.cell_type(last) &&
+                  mesh.cell_region(c) == mesh.cell_region(last);
+      if (same) {
+        double size = 0.0, change = 0.0;
+        for (Index a = 0; a < relative.cols(); ++a) {
+          size = std::max(size, relative.col(a).cwiseAbs().maxCoeff());
+          change = std::max(change, (relative.col(a) - previous.col(a)).cwiseAbs().maxCoeff());
+        }
+        same = change <= 1e-13 * size;
       }
-      same = change <= 1e-13 * size;
-    }
-    if (!same) {
-      try {
-        K = element_stiffness<Dim>(type, X, D[static_cast<std::size_t>(region)], rules(type));
-      } catch (const InputError& e) {
-        throw InputError(cell_name(mesh, c) + ": " + e.what());
+      if (!same) {
+        last = static_cast<int>(c);
+        previous = relative;
       }
-      previous = relative;
-      previous_type = type;
-      previous_region = region;
-      have_previous = true;
+      source[static_cast<std::size_t>(c)] = last;
     }
-    const auto nodes = mesh.cell(c);
-    const auto n = static_cast<int>(nodes.size());
-    // Nodes with local axes (DofMap::set_frame, 2D): R^T K R, R the block diagonal of their
-    // axes, on a copy (K may serve the next cell too).
-    const ElementMatrixOf<Dim>* Kc = &K;
+  }
+  // The first cell whose element matrix failed, and why (each thread stops at its first; the
+  // lowest is the one a single thread would have met).
+  Index failed_cell = std::numeric_limits<Index>::max();
+  std::string failure;
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    int t = 0;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+#endif
+    CellRules rules(options.gauss_points);  // (fills itself in: one per thread)
+    ElementMatrixOf<Dim> K;
     ElementMatrixOf<Dim> rotated;
-    if constexpr (Dim == 2) {
-      if (dofs.has_frames()) {
-        for (int a = 0; a < n; ++a) {
-          const Index node = nodes[static_cast<std::size_t>(a)];
-          if (!dofs.has_frame(node)) continue;
-          if (Kc == &K) {
-            rotated = K;
-            Kc = &rotated;
+    Index computed = -1;  // K is the element matrix of this cell
+    std::array<Index, Dim * Dim> block{};
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      const Index from = source[static_cast<std::size_t>(c)];
+      if (from < 0) continue;
+      const auto nodes_of = mesh.cell(c);
+      bool touches = false;  // only the cells with a column of this thread's
+      for (const Index a : nodes_of) touches = touches || fills(a, t);
+      if (!touches) continue;
+      if (from != computed) {
+        const CellType type = mesh.cell_type(from);
+        try {
+          K = element_stiffness<Dim>(type, cell_coordinates<Dim>(mesh, from),
+                                     D[static_cast<std::size_t>(mesh.cell_region(from))],
+                                     rules(type));
+        } catch (const InputError& e) {
+#pragma omp critical(signorini_assembly_failure)
+          if (from < failed_cell) {
+            failed_cell = from;
+            failure = cell_name(mesh, from) + ": " + e.what();
           }
-          const Eigen::Matrix2d Q = dofs.frame(node);
-          rotated.middleRows(2 * a, 2) = (Q.transpose() * rotated.middleRows(2 * a, 2)).eval();
-          rotated.middleCols(2 * a, 2) = (rotated.middleCols(2 * a, 2) * Q).eval();
+          break;
+        }
+        computed = from;
+      }
+      const auto n = static_cast<int>(nodes_of.size());
+      // Nodes with local axes (DofMap::set_frame, 2D): R^T K R, R the block diagonal of their
+      // axes, on a copy (K may serve the next cell too).
+      const ElementMatrixOf<Dim>* Kc = &K;
+      if constexpr (Dim == 2) {
+        if (dofs.has_frames()) {
+          for (int a = 0; a < n; ++a) {
+            const Index node = nodes_of[static_cast<std::size_t>(a)];
+            if (!dofs.has_frame(node)) continue;
+            if (Kc == &K) {
+              rotated = K;
+              Kc = &rotated;
+            }
+            const Eigen::Matrix2d Q = dofs.frame(node);
+            rotated.middleRows(2 * a, 2) = (Q.transpose() * rotated.middleRows(2 * a, 2)).eval();
+            rotated.middleCols(2 * a, 2) = (rotated.middleCols(2 * a, 2) * Q).eval();
+          }
+        }
+      }
+      for (int b = 0; b < n; ++b) {
+        const Index node_b = nodes_of[static_cast<std::size_t>(b)];
+        if (threads > 1 && thread_of[static_cast<std::size_t>(node_b)] != t) continue;
+        for (int a = 0; a < n; ++a) {
+          pattern.block_positions(nodes_of[static_cast<std::size_t>(a)], node_b, block.data());
+          for (int ka = 0; ka < Dim; ++ka)
+            for (int kb = 0; kb < Dim; ++kb) {
+              const Index pos = block[static_cast<std::size_t>(ka * Dim + kb)];
+              if (pos >= 0)
+                values[pos] += (*Kc)(Dim * a + ka, Dim * b + kb);  // clamped: eliminated
+            }
         }
       }
     }
-    std::array<Index, Dim * Dim> block{};
-    for (int b = 0; b < n; ++b)
-      for (int a = 0; a < n; ++a) {
-        pattern.block_positions(nodes[static_cast<std::size_t>(a)],
-                                nodes[static_cast<std::size_t>(b)], block.data());
-        for (int ka = 0; ka < Dim; ++ka)
-          for (int kb = 0; kb < Dim; ++kb) {
-            const Index pos = block[static_cast<std::size_t>(ka * Dim + kb)];
-            if (pos >= 0) values[pos] += (*Kc)(Dim * a + ka, Dim * b + kb);  // clamped: eliminated
-          }
-      }
   }
+  if (!failure.empty()) throw InputError(failure);
   return A;
 }
 

@@ -4,6 +4,9 @@
 #include <limits>
 #include <stdexcept>
 #include <utility>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "signorini/core/error.hpp"
 
@@ -32,28 +35,58 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs,
       for (const Index a : mesh.cell(c))
         cells_of[static_cast<std::size_t>(next[static_cast<std::size_t>(a)]++)] = c;
   }
+  // Each node's list, in parallel over shares of the nodes (each thread its own lists, joined
+  // in the nodes' order: the same arrays whatever the number of threads).
+  int threads = 1;
+#ifdef _OPENMP
+  if (mesh.num_cells() >= 20000) threads = std::max(1, omp_get_max_threads());
+#endif
+  std::vector<std::vector<int>> share_neighbors(static_cast<std::size_t>(threads));
+  std::vector<std::vector<int>> share_offsets(static_cast<std::size_t>(threads));
+  std::vector<Index> count(static_cast<std::size_t>(n), 0);
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+  for (int t = 0; t < threads; ++t) {
+    std::vector<int>& out = share_neighbors[static_cast<std::size_t>(t)];
+    std::vector<int>& offsets = share_offsets[static_cast<std::size_t>(t)];
+    std::vector<Index> list;
+    for (Index m = n * t / threads; m < n * (t + 1) / threads; ++m) {
+      if (!kept(m)) continue;  // an empty column: no neighbours kept
+      list.clear();
+      for (Index s = cell_start[static_cast<std::size_t>(m)];
+           s < cell_start[static_cast<std::size_t>(m + 1)]; ++s)
+        for (const Index b : mesh.cell(cells_of[static_cast<std::size_t>(s)])) list.push_back(b);
+      // In the order of the free dofs (the nodes' places in the numbering, DofMap::node_place).
+      std::sort(list.begin(), list.end(),
+                [&](Index a, Index b) { return dofs.node_place(a) < dofs.node_place(b); });
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+      Index rows = 0;
+      for (const Index b : list) {
+        out.push_back(static_cast<int>(b));
+        offsets.push_back(static_cast<int>(rows));
+        for (int k = 0; k < dim; ++k) rows += dofs.free_index(b, k) >= 0 ? 1 : 0;
+      }
+      count[static_cast<std::size_t>(m)] = static_cast<Index>(list.size());
+    }
+  }
   neighbor_start_.assign(static_cast<std::size_t>(n + 1), 0);
-  std::vector<Index> list;
-  for (Index m = 0; m < n; ++m) {
-    list.clear();
-    if (!kept(m)) {  // an empty column: no neighbours kept
-      neighbor_start_[static_cast<std::size_t>(m + 1)] = static_cast<Index>(neighbors_.size());
-      continue;
+  for (Index m = 0; m < n; ++m)
+    neighbor_start_[static_cast<std::size_t>(m + 1)] =
+        neighbor_start_[static_cast<std::size_t>(m)] + count[static_cast<std::size_t>(m)];
+  std::vector<Index>().swap(count);
+  if (threads == 1) {
+    neighbors_ = std::move(share_neighbors.front());
+    row_offset_ = std::move(share_offsets.front());
+  } else {
+    neighbors_.reserve(static_cast<std::size_t>(neighbor_start_.back()));
+    row_offset_.reserve(static_cast<std::size_t>(neighbor_start_.back()));
+    for (int t = 0; t < threads; ++t) {
+      auto& part = share_neighbors[static_cast<std::size_t>(t)];
+      auto& offsets = share_offsets[static_cast<std::size_t>(t)];
+      neighbors_.insert(neighbors_.end(), part.begin(), part.end());
+      row_offset_.insert(row_offset_.end(), offsets.begin(), offsets.end());
+      std::vector<int>().swap(part);
+      std::vector<int>().swap(offsets);
     }
-    for (Index s = cell_start[static_cast<std::size_t>(m)];
-         s < cell_start[static_cast<std::size_t>(m + 1)]; ++s)
-      for (const Index b : mesh.cell(cells_of[static_cast<std::size_t>(s)])) list.push_back(b);
-    // In the order of the free dofs (the nodes' places in the numbering, DofMap::node_place).
-    std::sort(list.begin(), list.end(),
-              [&](Index a, Index b) { return dofs.node_place(a) < dofs.node_place(b); });
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    Index rows = 0;
-    for (const Index b : list) {
-      neighbors_.push_back(static_cast<int>(b));
-      row_offset_.push_back(static_cast<int>(rows));
-      for (int k = 0; k < dim; ++k) rows += dofs.free_index(b, k) >= 0 ? 1 : 0;
-    }
-    neighbor_start_[static_cast<std::size_t>(m + 1)] = static_cast<Index>(neighbors_.size());
   }
   std::vector<Index>().swap(cells_of);
   neighbors_.shrink_to_fit();

@@ -8,6 +8,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <stdexcept>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/petsc_active_set_solver.hpp"
@@ -29,7 +32,25 @@ PetscEngine::PetscEngine() {
   petsc::check(PetscPushErrorHandler(PetscIgnoreErrorHandler, nullptr), "error handler");
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
   MPI_Comm_size(PETSC_COMM_WORLD, &size_);
+  share_the_cores();
   set_distributed_engine(this);
+}
+
+void PetscEngine::share_the_cores() const {
+#ifdef _OPENMP
+  // The OpenMP loops of each rank (the assembly, the sparsity pattern) on its share of the
+  // node's cores: ranks that each started one thread per core would oversubscribe the node, and
+  // OpenMP's waiting threads spin. OMP_NUM_THREADS, where set, is kept (docs/distributed.md).
+  if (std::getenv("OMP_NUM_THREADS") != nullptr) return;
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(PETSC_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  int on_node = 1;
+  if (node != MPI_COMM_NULL) {
+    MPI_Comm_size(node, &on_node);
+    MPI_Comm_free(&node);
+  }
+  omp_set_num_threads(std::max(1, omp_get_num_procs() / std::max(1, on_node)));
+#endif
 }
 
 PetscEngine::~PetscEngine() {

@@ -47,6 +47,9 @@ class PetscEngine final : public DistributedEngine {
   [[noreturn]] void abort(int status) const override;
 
  private:
+  /// Unless OMP_NUM_THREADS says otherwise, this rank's OpenMP threads: the cores of its node
+  /// shared evenly among the node's ranks (at least one).
+  void share_the_cores() const;
   int rank_ = 0;
   int size_ = 1;
   std::string partitioner_;  // the last partition's, for the description
