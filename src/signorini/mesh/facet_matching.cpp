@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 namespace signorini {
 
@@ -61,12 +62,24 @@ std::vector<std::optional<Facet>> match_facets(const Mesh& mesh,
     keys[i] = facet_key(e.corners, [&](int a) { return e.nodes[static_cast<std::size_t>(a)]; });
     if (keys[i]) facets.emplace(*keys[i], Facet{-1, 0});
   }
+  // A cell facet can be an element only if all its corners are corners of elements: a flag per
+  // node turns away the inner facets (all but a few of a 3D mesh's) before any hashing.
+  std::vector<bool> on_element(static_cast<std::size_t>(mesh.num_nodes()), false);
+  for (const auto& [key, facet] : facets)
+    for (const Index v : key)
+      if (v >= 0 && v < mesh.num_nodes()) on_element[static_cast<std::size_t>(v)] = true;
   if (!facets.empty())
     for (Index c = 0; c < mesh.num_cells(); ++c)
       for (int f = 0; f < facets_per_cell(mesh.cell_type(c)); ++f) {
         const auto local = facet_local_nodes(mesh.cell_type(c), f);
         const auto cell = mesh.cell(c);
-        const auto k = facet_key(corners_per_cell(facet_type(mesh.cell_type(c))), [&](int a) {
+        const int corners = corners_per_cell(facet_type(mesh.cell_type(c)));
+        bool candidate = true;
+        for (int a = 0; a < corners && candidate; ++a)
+          candidate = on_element[static_cast<std::size_t>(
+              cell[static_cast<std::size_t>(local[static_cast<std::size_t>(a)])])];
+        if (!candidate) continue;
+        const auto k = facet_key(corners, [&](int a) {
           return cell[static_cast<std::size_t>(local[static_cast<std::size_t>(a)])];
         });
         const auto it = facets.find(*k);
