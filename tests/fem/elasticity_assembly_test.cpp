@@ -166,7 +166,7 @@ TEST(StiffnessAssembly, AnyNumberOfThreadsGivesTheSameMatrixToTheBit) {
 }
 
 // Two inverted cells, far apart in the mesh (and so in different threads' shares): every thread
-// count names the first, as one thread does.
+// count names the first, as one thread does, in the assembly and in the cell checks.
 TEST(StiffnessAssembly, InParallelTheFirstBadCellIsNamed) {
   const Mesh good = box(CellType::Hex8, 28, 28, 28, false);
   std::vector<Index> cells = connectivity_of(good);
@@ -179,6 +179,17 @@ TEST(StiffnessAssembly, InParallelTheFirstBadCellIsNamed) {
   EXPECT_NE(one.find("mesh cell 300 "), std::string::npos) << one;
   for (const int threads : {2, 4})
     EXPECT_EQ(message_of([&] { (void)assembled_on(threads, bad, dofs); }), one) << threads;
+  // The cell checks before the assembly, in parallel too, say the same.
+  for (const int threads : {1, 2, 4}) {
+#ifdef _OPENMP
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+#endif
+    EXPECT_EQ(message_of([&] { require_valid_cells(bad, ElasticityOptions{}); }), one) << threads;
+#ifdef _OPENMP
+    omp_set_num_threads(saved);
+#endif
+  }
 }
 
 }  // namespace

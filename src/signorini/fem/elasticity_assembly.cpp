@@ -252,21 +252,34 @@ namespace {
 
 template <int Dim>
 void check_cells(const Mesh& mesh, const ElasticityOptions& options) {
-  CellRules rules(options.gauss_points);
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const CellType type = mesh.cell_type(c);
-    const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
-    try {
-      check_cell_geometry<Dim>(type, X);
-      for (const QuadraturePoint& q : rules(type))
-        if (const double det_j = cell_jacobian<Dim>(type, X, q.xi).determinant(); !(det_j > 0.0))
-          throw InputError("inverted or degenerate " +
-                           std::string(enum_to_string(kCellTypeNames, type)) +
-                           " (det J = " + std::to_string(det_j) + " at a quadrature point)");
-    } catch (const InputError& e) {
-      throw InputError(cell_name(mesh, c) + ": " + e.what());
+  // In parallel over the cells; the message is the first bad cell's, as one thread finds it.
+  const int threads = assembly_threads(mesh.num_cells());
+  Index failed_cell = std::numeric_limits<Index>::max();
+  std::string failure;
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    CellRules rules(options.gauss_points);  // (fills itself in: one per thread)
+#pragma omp for schedule(static)
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      const CellType type = mesh.cell_type(c);
+      const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
+      try {
+        check_cell_geometry<Dim>(type, X);
+        for (const QuadraturePoint& q : rules(type))
+          if (const double det_j = cell_jacobian<Dim>(type, X, q.xi).determinant(); !(det_j > 0.0))
+            throw InputError("inverted or degenerate " +
+                             std::string(enum_to_string(kCellTypeNames, type)) +
+                             " (det J = " + std::to_string(det_j) + " at a quadrature point)");
+      } catch (const InputError& e) {
+#pragma omp critical(signorini_cell_check_failure)
+        if (c < failed_cell) {
+          failed_cell = c;
+          failure = cell_name(mesh, c) + ": " + e.what();
+        }
+      }
     }
   }
+  if (!failure.empty()) throw InputError(failure);
 }
 
 }  // namespace
