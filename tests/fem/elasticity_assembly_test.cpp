@@ -8,15 +8,10 @@
 
 #include <cstring>
 #include <numeric>
-#include <random>
 #include <tuple>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
+#include "fem/threaded_boxes.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/fem/node_ordering.hpp"
-#include "signorini/mesh/box_mesh.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {
@@ -54,69 +49,10 @@ TEST(RequireValidCells, FindsTheInvertedCellAsTheAssemblyDoes) {
   EXPECT_EQ(checked, assembled);
 }
 
-std::vector<Index> connectivity_of(const Mesh& mesh) {
-  std::vector<Index> cells;
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (const Index a : mesh.cell(c)) cells.push_back(a);
-  return cells;
-}
-
-// A box of cells, its inner nodes moved by up to a tenth of a cell (`jitter`: no two cells
-// alike, as on a mesh from a generator), clamped at x = 0.
-Mesh box(CellType cell, Index nx, Index ny, Index nz, bool jitter) {
-  BoxMeshOptions o;
-  o.nx = nx;
-  o.ny = ny;
-  o.nz = nz;
-  o.cell = cell;
-  Mesh mesh = make_box_mesh(o);
-  if (!jitter) return mesh;
-  const CellType type = mesh.cell_type(0);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> shift(-0.1, 0.1);
-  Eigen::MatrixXd x = mesh.coordinates();
-  for (Index v = 0; v < x.cols(); ++v) {
-    const bool inner = (x.col(v).array() > 1e-9).all() && (x.col(v).array() < 1.0 - 1e-9).all();
-    if (!inner) continue;
-    x(0, v) += shift(random) / static_cast<double>(nx);
-    x(1, v) += shift(random) / static_cast<double>(ny);
-    x(2, v) += shift(random) / static_cast<double>(nz);
-  }
-  return Mesh(type, x, connectivity_of(mesh));
-}
-
-// The numbering of `mesh` in Z-order (as for a mesh read from a file) with the nodes at x = 0
-// clamped.
-DofMap clamped_in_z_order(const Mesh& mesh) {
-  DofMap dofs(mesh.num_nodes(), mesh.dim());
-  for (Index v = 0; v < mesh.num_nodes(); ++v)
-    if (mesh.node(v)(0) < 1e-12)
-      for (int k = 0; k < mesh.dim(); ++k) dofs.clamp(v, k);
-  dofs.finalize(z_order(mesh));
-  return dofs;
-}
-
 SparseMatrix assembled_on(int threads, const Mesh& mesh, const DofMap& dofs,
                           const std::vector<bool>* columns_of = nullptr) {
-#ifdef _OPENMP
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(threads);
-#else
-  (void)threads;
-#endif
-  SparseMatrix A;
-  try {
-    A = assemble_stiffness(mesh, dofs, ElasticityOptions{}, columns_of);
-  } catch (...) {
-#ifdef _OPENMP
-    omp_set_num_threads(saved);
-#endif
-    throw;
-  }
-#ifdef _OPENMP
-  omp_set_num_threads(saved);
-#endif
-  return A;
+  return testing::on_threads(
+      threads, [&] { return assemble_stiffness(mesh, dofs, ElasticityOptions{}, columns_of); });
 }
 
 void expect_same_bits(const SparseMatrix& a, const SparseMatrix& b) {
@@ -138,9 +74,9 @@ TEST(StiffnessAssembly, AnyNumberOfThreadsGivesTheSameMatrixToTheBit) {
        {std::tuple{CellType::Tet4, Index{16}, true}, std::tuple{CellType::Hex8, Index{28}, false},
         std::tuple{CellType::Hex8, Index{28}, true}}) {
     SCOPED_TRACE(std::string(enum_to_string(kCellTypeNames, cell)) + (jitter ? " moved" : ""));
-    const Mesh mesh = box(cell, nx, nx, nx, jitter);
+    const Mesh mesh = testing::moved_box(cell, nx, nx, nx, jitter);
     ASSERT_GE(mesh.num_cells(), 20000);
-    const DofMap dofs = clamped_in_z_order(mesh);
+    const DofMap dofs = testing::clamped_in_z_order(mesh);
     const SparseMatrix one = assembled_on(1, mesh, dofs);
     EXPECT_GT(one.nonZeros(), 0);
     for (const int threads : {2, 3}) expect_same_bits(one, assembled_on(threads, mesh, dofs));
@@ -168,28 +104,27 @@ TEST(StiffnessAssembly, AnyNumberOfThreadsGivesTheSameMatrixToTheBit) {
 // Two inverted cells, far apart in the mesh (and so in different threads' shares): every thread
 // count names the first, as one thread does, in the assembly and in the cell checks.
 TEST(StiffnessAssembly, InParallelTheFirstBadCellIsNamed) {
-  const Mesh good = box(CellType::Hex8, 28, 28, 28, false);
-  std::vector<Index> cells = connectivity_of(good);
+  const Mesh good = testing::moved_box(CellType::Hex8, 28, 28, 28, false);
+  std::vector<Index> cells = testing::connectivity_of(good);
   for (const Index c : {Index{20000}, Index{300}})  // (swap two nodes of each: inverted)
     std::swap(cells[static_cast<std::size_t>(8 * c + 1)],
               cells[static_cast<std::size_t>(8 * c + 3)]);
   const Mesh bad(CellType::Hex8, good.coordinates(), cells);
-  const DofMap dofs = clamped_in_z_order(bad);
+  const DofMap dofs = testing::clamped_in_z_order(bad);
   const std::string one = message_of([&] { (void)assembled_on(1, bad, dofs); });
   EXPECT_NE(one.find("mesh cell 300 "), std::string::npos) << one;
   for (const int threads : {2, 4})
     EXPECT_EQ(message_of([&] { (void)assembled_on(threads, bad, dofs); }), one) << threads;
   // The cell checks before the assembly, in parallel too, say the same.
-  for (const int threads : {1, 2, 4}) {
-#ifdef _OPENMP
-    const int saved = omp_get_max_threads();
-    omp_set_num_threads(threads);
-#endif
-    EXPECT_EQ(message_of([&] { require_valid_cells(bad, ElasticityOptions{}); }), one) << threads;
-#ifdef _OPENMP
-    omp_set_num_threads(saved);
-#endif
-  }
+  for (const int threads : {1, 2, 4})
+    EXPECT_EQ(message_of([&] {
+                testing::on_threads(threads, [&] {
+                  require_valid_cells(bad, ElasticityOptions{});
+                  return 0;
+                });
+              }),
+              one)
+        << threads;
 }
 
 }  // namespace

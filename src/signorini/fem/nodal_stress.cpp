@@ -1,6 +1,10 @@
 #include "signorini/fem/nodal_stress.hpp"
 
+#include <algorithm>
 #include <cmath>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "signorini/fem/elasticity_matrices.hpp"
 #include "signorini/fem/isoparametric_element.hpp"
@@ -24,38 +28,61 @@ NodalStress nodal_stress_of(const Mesh& mesh, const ElasticityOptions& options,
   NodalStress out;
   out.sigma = Eigen::MatrixXd::Zero(6, mesh.num_nodes());
   Vector count = Vector::Zero(mesh.num_nodes());
-  ElementVectorOf<Dim> ue;
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const CellType type = mesh.cell_type(c);
-    const auto nodes = mesh.cell(c);
-    const auto n = static_cast<int>(nodes.size());
-    const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
-    const ElasticityMatrixOf<Dim>& D = region_D[static_cast<std::size_t>(mesh.cell_region(c))];
-    const double nu = material_of_region(options, mesh.cell_region(c)).nu;
-    ue.resize(Dim * n);
-    for (int a = 0; a < n; ++a)
-      for (int k = 0; k < Dim; ++k)
-        ue(Dim * a + k) = u_full(Dim * nodes[static_cast<std::size_t>(a)] + k);
-    // The strain of the cell at each of its nodes (the cell's own polynomial, not a recovery).
-    for (int a = 0; a < n; ++a) {
-      double det_j = 0.0;
-      const StrainMatrixOf<Dim> B = strain_matrix<Dim>(type, X, reference_node(type, a), det_j);
-      const Eigen::Matrix<double, ElementSizes<Dim>::kStrains, 1> s = D * (B * ue);
-      const Index v = nodes[static_cast<std::size_t>(a)];
-      if constexpr (Dim == 2) {
-        out.sigma(0, v) += s(0);
-        out.sigma(1, v) += s(1);
-        out.sigma(2, v) += plane_strain ? nu * (s(0) + s(1)) : 0.0;
-        out.sigma(3, v) += s(2);
-      } else {  // Voigt (xx, yy, zz, yz, xz, xy) to (xx, yy, zz, xy, yz, xz)
-        out.sigma(0, v) += s(0);
-        out.sigma(1, v) += s(1);
-        out.sigma(2, v) += s(2);
-        out.sigma(3, v) += s(5);
-        out.sigma(4, v) += s(3);
-        out.sigma(5, v) += s(4);
+  // In parallel over shares of the nodes: thread t sums the stresses at its own nodes from every
+  // cell that has one, in the cells' order, so no two threads write one node and any number of
+  // threads gives one thread's sums to the bit.
+  const Index nodes_total = mesh.num_nodes();
+  int threads = 1;
+#ifdef _OPENMP
+  if (mesh.num_cells() >= 20000) threads = std::max(1, omp_get_max_threads());
+#endif
+  const auto owner = [&](Index v) {
+    return static_cast<int>(
+        std::min<Index>(threads - 1, v * threads / std::max<Index>(1, nodes_total)));
+  };
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    int t = 0;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+#endif
+    ElementVectorOf<Dim> ue;
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      const auto nodes = mesh.cell(c);
+      bool mine = false;
+      for (const Index v : nodes) mine = mine || owner(v) == t;
+      if (!mine) continue;
+      const CellType type = mesh.cell_type(c);
+      const auto n = static_cast<int>(nodes.size());
+      const CellCoordinatesOf<Dim> X = cell_coordinates<Dim>(mesh, c);
+      const ElasticityMatrixOf<Dim>& D = region_D[static_cast<std::size_t>(mesh.cell_region(c))];
+      const double nu = material_of_region(options, mesh.cell_region(c)).nu;
+      ue.resize(Dim * n);
+      for (int a = 0; a < n; ++a)
+        for (int k = 0; k < Dim; ++k)
+          ue(Dim * a + k) = u_full(Dim * nodes[static_cast<std::size_t>(a)] + k);
+      // The strain of the cell at each of its nodes (the cell's own polynomial, not a recovery).
+      for (int a = 0; a < n; ++a) {
+        const Index v = nodes[static_cast<std::size_t>(a)];
+        if (owner(v) != t) continue;
+        double det_j = 0.0;
+        const StrainMatrixOf<Dim> B = strain_matrix<Dim>(type, X, reference_node(type, a), det_j);
+        const Eigen::Matrix<double, ElementSizes<Dim>::kStrains, 1> s = D * (B * ue);
+        if constexpr (Dim == 2) {
+          out.sigma(0, v) += s(0);
+          out.sigma(1, v) += s(1);
+          out.sigma(2, v) += plane_strain ? nu * (s(0) + s(1)) : 0.0;
+          out.sigma(3, v) += s(2);
+        } else {  // Voigt (xx, yy, zz, yz, xz, xy) to (xx, yy, zz, xy, yz, xz)
+          out.sigma(0, v) += s(0);
+          out.sigma(1, v) += s(1);
+          out.sigma(2, v) += s(2);
+          out.sigma(3, v) += s(5);
+          out.sigma(4, v) += s(3);
+          out.sigma(5, v) += s(4);
+        }
+        count(v) += 1.0;
       }
-      count(v) += 1.0;
     }
   }
   out.von_mises.resize(mesh.num_nodes());
