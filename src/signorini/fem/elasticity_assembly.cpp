@@ -7,11 +7,9 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "signorini/core/error.hpp"
+#include "signorini/fem/cell_threads.hpp"
 #include "signorini/fem/elasticity_matrices.hpp"
 #include "signorini/fem/isoparametric_element.hpp"
 #include "signorini/fem/sparsity_pattern.hpp"
@@ -54,15 +52,25 @@ void require_supported_cells(const Mesh& mesh) {
 
 namespace {
 
-// Threads for assembling a mesh of `cells` cells: one below some 20,000 cells, where starting
-// them costs more than they save.
-int assembly_threads(Index cells) {
-#ifdef _OPENMP
-  if (cells >= 20000) return std::max(1, omp_get_max_threads());
-#endif
-  (void)cells;
-  return 1;
-}
+// The first bad cell's message where threads each meet their own failures: the lowest cell's,
+// the one a single thread would have met first.
+class FirstBadCell {
+ public:
+  void note(const Mesh& mesh, Index c, const char* what) {
+#pragma omp critical(signorini_first_bad_cell)
+    if (c < cell_) {
+      cell_ = c;
+      message_ = cell_name(mesh, c) + ": " + what;
+    }
+  }
+  void rethrow() const {
+    if (!message_.empty()) throw InputError(message_);
+  }
+
+ private:
+  Index cell_ = std::numeric_limits<Index>::max();
+  std::string message_;
+};
 
 template <int Dim>
 SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& options,
@@ -77,35 +85,31 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
   // order as one thread would: the same matrix to the bit whatever the number of threads. A cell
   // across shares is integrated by each of their threads (few: the places follow the
   // numbering's order through space).
-  const int threads = assembly_threads(mesh.num_cells());
+  const int threads = cell_loop_threads(mesh.num_cells());
   const Index nodes = mesh.num_nodes();
+  // The shares split the range of places of the nodes with a filled column evenly (a part of a
+  // distributed run numbers its nodes by their free numbers in the whole problem, and the nodes
+  // without a free dof come after every other: DofMap::node_place); -1: no filled column.
   std::vector<int> thread_of;
   if (threads > 1) {
-    // The shares split the range of places of the nodes with a filled column evenly (a part of
-    // a distributed run numbers its nodes by their free numbers in the whole problem, and the
-    // nodes without a free dof come after every other: DofMap::node_place).
-    const auto has_column = [&](Index m) {
-      if (columns_of != nullptr && !(*columns_of)[static_cast<std::size_t>(m)]) return false;
-      for (int k = 0; k < Dim; ++k)
-        if (dofs.free_index(m, k) >= 0) return true;
-      return false;
-    };
+    thread_of.assign(static_cast<std::size_t>(nodes), -1);
     Index low = std::numeric_limits<Index>::max(), high = -1;
+    for (Index m = 0; m < nodes; ++m) {
+      const bool column = columns_of == nullptr || (*columns_of)[static_cast<std::size_t>(m)];
+      bool free = false;
+      for (int k = 0; k < Dim; ++k) free = free || dofs.free_index(m, k) >= 0;
+      if (!column || !free) continue;
+      thread_of[static_cast<std::size_t>(m)] = 0;  // (a share below)
+      low = std::min(low, dofs.node_place(m));
+      high = std::max(high, dofs.node_place(m));
+    }
     for (Index m = 0; m < nodes; ++m)
-      if (has_column(m)) {
-        low = std::min(low, dofs.node_place(m));
-        high = std::max(high, dofs.node_place(m));
-      }
-    thread_of.assign(static_cast<std::size_t>(nodes), threads - 1);
-    if (high >= low)
-      for (Index m = 0; m < nodes; ++m)
-        if (has_column(m))
-          thread_of[static_cast<std::size_t>(m)] = static_cast<int>(std::min<Index>(
-              threads - 1, (dofs.node_place(m) - low) * threads / (high - low + 1)));
+      if (int& t = thread_of[static_cast<std::size_t>(m)]; t >= 0)
+        t = share_of(dofs.node_place(m) - low, high - low + 1, threads);
   }
-  const auto fills = [&](Index m, int t) {
-    return (columns_of == nullptr || (*columns_of)[static_cast<std::size_t>(m)]) &&
-           (threads == 1 || thread_of[static_cast<std::size_t>(m)] == t);
+  // Whether thread t fills node m's columns (one thread fills them all).
+  const auto mine = [&](Index m, int t) {
+    return threads == 1 || thread_of[static_cast<std::size_t>(m)] == t;
   };
   // Cells of the type of the previous one that are its translates (all of them on a structured
   // mesh) share its element matrix: compare the node coordinates relative to the first node.
@@ -143,16 +147,10 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
       source[static_cast<std::size_t>(c)] = last;
     }
   }
-  // The first cell whose element matrix failed, and why (each thread stops at its first; the
-  // lowest is the one a single thread would have met).
-  Index failed_cell = std::numeric_limits<Index>::max();
-  std::string failure;
+  FirstBadCell failure;  // (each thread stops at its first)
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
-    int t = 0;
-#ifdef _OPENMP
-    t = omp_get_thread_num();
-#endif
+    const int t = thread_number();
     CellRules rules(options.gauss_points);  // (fills itself in: one per thread)
     ElementMatrixOf<Dim> K;
     ElementMatrixOf<Dim> rotated;
@@ -162,9 +160,11 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
       const Index from = source[static_cast<std::size_t>(c)];
       if (from < 0) continue;
       const auto nodes_of = mesh.cell(c);
-      bool touches = false;  // only the cells with a column of this thread's
-      for (const Index a : nodes_of) touches = touches || fills(a, t);
-      if (!touches) continue;
+      if (threads > 1) {  // only the cells with a column of this thread's
+        bool touches = false;
+        for (const Index a : nodes_of) touches = touches || mine(a, t);
+        if (!touches) continue;
+      }
       if (from != computed) {
         const CellType type = mesh.cell_type(from);
         try {
@@ -172,11 +172,7 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
                                      D[static_cast<std::size_t>(mesh.cell_region(from))],
                                      rules(type));
         } catch (const InputError& e) {
-#pragma omp critical(signorini_assembly_failure)
-          if (from < failed_cell) {
-            failed_cell = from;
-            failure = cell_name(mesh, from) + ": " + e.what();
-          }
+          failure.note(mesh, from, e.what());
           break;
         }
         computed = from;
@@ -202,7 +198,7 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
       }
       for (int b = 0; b < n; ++b) {
         const Index node_b = nodes_of[static_cast<std::size_t>(b)];
-        if (threads > 1 && thread_of[static_cast<std::size_t>(node_b)] != t) continue;
+        if (!mine(node_b, t)) continue;
         for (int a = 0; a < n; ++a) {
           pattern.block_positions(nodes_of[static_cast<std::size_t>(a)], node_b, block.data());
           for (int ka = 0; ka < Dim; ++ka)
@@ -215,7 +211,7 @@ SparseMatrix assemble(const Mesh& mesh, const DofMap& dofs, const ElasticityOpti
       }
     }
   }
-  if (!failure.empty()) throw InputError(failure);
+  failure.rethrow();
   return A;
 }
 
@@ -253,9 +249,8 @@ namespace {
 template <int Dim>
 void check_cells(const Mesh& mesh, const ElasticityOptions& options) {
   // In parallel over the cells; the message is the first bad cell's, as one thread finds it.
-  const int threads = assembly_threads(mesh.num_cells());
-  Index failed_cell = std::numeric_limits<Index>::max();
-  std::string failure;
+  const int threads = cell_loop_threads(mesh.num_cells());
+  FirstBadCell failure;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     CellRules rules(options.gauss_points);  // (fills itself in: one per thread)
@@ -271,15 +266,11 @@ void check_cells(const Mesh& mesh, const ElasticityOptions& options) {
                              std::string(enum_to_string(kCellTypeNames, type)) +
                              " (det J = " + std::to_string(det_j) + " at a quadrature point)");
       } catch (const InputError& e) {
-#pragma omp critical(signorini_cell_check_failure)
-        if (c < failed_cell) {
-          failed_cell = c;
-          failure = cell_name(mesh, c) + ": " + e.what();
-        }
+        failure.note(mesh, c, e.what());
       }
     }
   }
-  if (!failure.empty()) throw InputError(failure);
+  failure.rethrow();
 }
 
 }  // namespace

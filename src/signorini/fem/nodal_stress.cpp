@@ -1,11 +1,8 @@
 #include "signorini/fem/nodal_stress.hpp"
 
-#include <algorithm>
 #include <cmath>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
+#include "signorini/fem/cell_threads.hpp"
 #include "signorini/fem/elasticity_matrices.hpp"
 #include "signorini/fem/isoparametric_element.hpp"
 
@@ -31,21 +28,11 @@ NodalStress nodal_stress_of(const Mesh& mesh, const ElasticityOptions& options,
   // In parallel over shares of the nodes: thread t sums the stresses at its own nodes from every
   // cell that has one, in the cells' order, so no two threads write one node and any number of
   // threads gives one thread's sums to the bit.
-  const Index nodes_total = mesh.num_nodes();
-  int threads = 1;
-#ifdef _OPENMP
-  if (mesh.num_cells() >= 20000) threads = std::max(1, omp_get_max_threads());
-#endif
-  const auto owner = [&](Index v) {
-    return static_cast<int>(
-        std::min<Index>(threads - 1, v * threads / std::max<Index>(1, nodes_total)));
-  };
+  const int threads = cell_loop_threads(mesh.num_cells());
+  const auto owner = [&](Index v) { return share_of(v, mesh.num_nodes(), threads); };
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
-    int t = 0;
-#ifdef _OPENMP
-    t = omp_get_thread_num();
-#endif
+    const int t = thread_number();
     ElementVectorOf<Dim> ue;
     for (Index c = 0; c < mesh.num_cells(); ++c) {
       const auto nodes = mesh.cell(c);

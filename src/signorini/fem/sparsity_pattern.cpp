@@ -4,11 +4,9 @@
 #include <limits>
 #include <stdexcept>
 #include <utility>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "signorini/core/error.hpp"
+#include "signorini/fem/cell_threads.hpp"
 
 namespace signorini {
 
@@ -37,10 +35,7 @@ SparsityPattern::SparsityPattern(const Mesh& mesh, const DofMap& dofs,
   }
   // Each node's list, in parallel over shares of the nodes (each thread its own lists, joined
   // in the nodes' order: the same arrays whatever the number of threads).
-  int threads = 1;
-#ifdef _OPENMP
-  if (mesh.num_cells() >= 20000) threads = std::max(1, omp_get_max_threads());
-#endif
+  const int threads = cell_loop_threads(mesh.num_cells());
   std::vector<std::vector<int>> share_neighbors(static_cast<std::size_t>(threads));
   std::vector<std::vector<int>> share_offsets(static_cast<std::size_t>(threads));
   std::vector<Index> count(static_cast<std::size_t>(n), 0);

@@ -49,7 +49,7 @@ void PetscEngine::share_the_cores() const {
     MPI_Comm_size(node, &on_node);
     MPI_Comm_free(&node);
   }
-  omp_set_num_threads(std::max(1, omp_get_num_procs() / std::max(1, on_node)));
+  omp_set_num_threads(std::max(1, omp_get_num_procs() / on_node));
 #endif
 }
 
