@@ -59,6 +59,40 @@ double jacobi_lambda_max(Mat A) {
   return emax;
 }
 
+// A PETSc option in the options database for the life of the object, unless the options hold
+// it or its alias already (or `value` is empty): a default of ours that the user's options win
+// over.
+class ScopedDefaultOption {
+ public:
+  ScopedDefaultOption(const char* name, const char* value, const char* alias = nullptr)
+      : name_(name) {
+    PetscBool given = PETSC_FALSE, alias_given = PETSC_FALSE;
+    check(PetscOptionsHasName(nullptr, nullptr, name, &given), "PETSc options");
+    if (alias != nullptr)
+      check(PetscOptionsHasName(nullptr, nullptr, alias, &alias_given), "PETSc options");
+    set_ = given == PETSC_FALSE && alias_given == PETSC_FALSE && value[0] != '\0';
+    if (set_) check(PetscOptionsSetValue(nullptr, name, value), "PETSc options");
+  }
+  ~ScopedDefaultOption() {
+    if (set_) PetscOptionsClearValue(nullptr, name_);
+  }
+  ScopedDefaultOption(const ScopedDefaultOption&) = delete;
+  ScopedDefaultOption& operator=(const ScopedDefaultOption&) = delete;
+
+ private:
+  const char* name_;
+  bool set_ = false;
+};
+
+// Whether PETSc was built with hypre, whose matrix products MatPtAP can call.
+bool hypre_products_available() {
+#if defined(PETSC_HAVE_HYPRE)
+  return true;
+#else
+  return false;
+#endif
+}
+
 }  // namespace
 
 ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows,
@@ -72,8 +106,24 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
     PC g = nullptr;
     check(KSPGetPC(setup, &g), "GAMG");
     check(PCSetType(g, PCGAMG), "GAMG");
-    check(PCSetFromOptions(g), "GAMG options");  // (no -pc_type: keeps_gamg_levels)
-    check(PCSetUp(g), "GAMG's set-up");
+    // Two defaults of ours for GAMG's set-up, where PETSc's options (solver.petsc_options,
+    // PETSC_OPTIONS) do not choose otherwise (docs/distributed.md, "The multigrid of the Newton
+    // systems"), both measured on Hertz's ball at a million unknowns, one rank of two cores:
+    // - aggressive coarsening (the graph squared, MIS-2) on the first two levels, not only the
+    //   first: the third level is some 7 times smaller (828 against 6,066 unknowns) and the
+    //   Galerkin product that makes it, from the second level's dense 6 x 6 blocks, 1.3 s
+    //   instead of 4.5-7.3 s; the levels' refreshes for each active set are cheaper too, for
+    //   some 15 % more CG iterations;
+    // - the Galerkin products by hypre's, which run on the rank's OpenMP threads (PETSc's own
+    //   run on one): the finest level's 5.6 s instead of 8.5 s. Only for GAMG's set-up: the
+    //   contact terms' small products below stay PETSc's, cheaper there.
+    {
+      const ScopedDefaultOption aggressive("-pc_gamg_aggressive_coarsening", "2",
+                                           "-pc_gamg_square_graph");
+      const ScopedDefaultOption products("-matptap_via", hypre_products_available() ? "hypre" : "");
+      check(PCSetFromOptions(g), "GAMG options");  // (no -pc_type: keeps_gamg_levels)
+      check(PCSetUp(g), "GAMG's set-up");
+    }
     PetscInt np = 0, na = 0;
     Mat* Ps = nullptr;
     Mat* As = nullptr;
@@ -145,18 +195,47 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
   }
   check(MatDestroy(&N), "the contact matrix");
 
+  // On a rank with several threads, the transfers and the products of the coarse levels but
+  // the coarsest run on them too (threaded_product.hpp; docs/distributed.md, "Threads per
+  // rank"): on Hertz's ball at a million unknowns, one rank, the transfers between the two
+  // finest levels and the smoothing of the second took half of a V-cycle's time on one
+  // thread. Levels of a few thousand rows per rank stay PETSc's.
+  const auto threaded_pays = [](Mat M) {
+    PetscInt local_rows = 0;
+    check(MatGetLocalSize(M, &local_rows, nullptr), "multigrid");
+    return local_rows >= 5000 && ThreadedProduct::worthwhile(M);
+  };
+  transfers_.resize(P_.size());
+  for (std::size_t l = 0; l < P_.size(); ++l) {
+    if (!threaded_pays(P_[l])) continue;
+    Transfer& t = transfers_[l];
+    check(MatTranspose(P_[l], MAT_INITIAL_MATRIX, &t.R), "a restriction");
+    t.prolongation = std::make_unique<ThreadedProduct>(P_[l]);
+    t.restriction = std::make_unique<ThreadedProduct>(t.R);
+  }
+  for (std::size_t l = 1; l < levels_.size(); ++l)  // (levels_[0]: the coarsest, factorised)
+    if (threaded_pays(levels_[l].H))
+      levels_[l].threaded = std::make_unique<ThreadedProduct>(levels_[l].H);
+
   // The PCMG: GAMG's prolongators, the coarse levels' H_l, the finest from the KSP.
   const auto L = static_cast<PetscInt>(levels_.size() + 1);
   check(PCSetType(pc_, PCMG), "multigrid");
   check(PCMGSetLevels(pc_, L, nullptr), "multigrid");
   check(PCMGSetGalerkin(pc_, PC_MG_GALERKIN_NONE), "multigrid");
-  for (PetscInt l = 1; l < L; ++l)
-    check(PCMGSetInterpolation(pc_, l, P_[static_cast<std::size_t>(l) - 1]), "multigrid");
+  for (PetscInt l = 1; l < L; ++l) {
+    const Transfer& t = transfers_[static_cast<std::size_t>(l) - 1];
+    if (t.prolongation) {
+      check(PCMGSetInterpolation(pc_, l, t.prolongation->shell()), "multigrid");
+      check(PCMGSetRestriction(pc_, l, t.restriction->shell()), "multigrid");
+    } else {
+      check(PCMGSetInterpolation(pc_, l, P_[static_cast<std::size_t>(l) - 1]), "multigrid");
+    }
+  }
   for (PetscInt l = 0; l < L; ++l) {
     KSP k = nullptr;
     check(PCMGGetSmoother(pc_, l, &k), "multigrid");
     if (l + 1 < L) {
-      Mat H = levels_[static_cast<std::size_t>(l)].H;
+      const Mat H = levels_[static_cast<std::size_t>(l)].op();
       check(KSPSetOperators(k, H, H), "multigrid");
     }
     if (l > 0 || L == 1) make_smoother(k);
@@ -171,8 +250,16 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
 }
 
 ContactMultigrid::~ContactMultigrid() {
-  for (Coarse& c : levels_)
+  // (The PC, the shells' user, is gone: the KSP that holds it is destroyed first.)
+  for (Transfer& t : transfers_) {
+    t.prolongation.reset();
+    t.restriction.reset();
+    MatDestroy(&t.R);
+  }
+  for (Coarse& c : levels_) {
+    c.threaded.reset();
     for (Mat* M : {&c.A, &c.N, &c.Q, &c.H, &c.A_in_H}) MatDestroy(M);  // (A: null once used)
+  }
   for (Mat& P : P_) MatDestroy(&P);
   MatDestroy(&C_);
   VecDestroy(&c_);
@@ -190,10 +277,11 @@ void ContactMultigrid::set_weights(const Vector& c, int block_unknowns) {
           "the contact term on a coarse level");
     check(MatCopy(lev.A_in_H, lev.H, SAME_NONZERO_PATTERN), "a coarse level");
     check(MatAXPY(lev.H, 1.0, lev.Q, SUBSET_NONZERO_PATTERN), "a coarse level");
+    if (lev.threaded) lev.threaded->refresh();
     // The smoothers' diagonals and bounds and the coarsest factorisation are set up again.
     KSP k = nullptr;
     check(PCMGGetSmoother(pc_, static_cast<PetscInt>(l), &k), "multigrid");
-    check(KSPSetOperators(k, lev.H, lev.H), "multigrid");
+    check(KSPSetOperators(k, lev.op(), lev.op()), "multigrid");
   }
   // The fine level: instead of 10 products with H, the bound of multigrid_preconditioner.cpp
   // (refresh()): lambda_max(D_H^-1 H) <= max(lambda_A, the most nonzero components of an active

@@ -15,10 +15,12 @@
 
 #include <petscksp.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "signorini/core/types.hpp"
+#include "signorini/petsc/threaded_product.hpp"
 
 namespace signorini::petsc {
 
@@ -52,11 +54,19 @@ class ContactMultigrid {
 
  private:
   struct Coarse {
-    Mat A = nullptr;       // GAMG's Galerkin product, until A_in_H is made
-    Mat N = nullptr;       // the contact rows on this level: N_{l+1} P_l
-    Mat Q = nullptr;       // N^T diag(c) N
-    Mat H = nullptr;       // A + Q, on the union of their patterns
-    Mat A_in_H = nullptr;  // A on H's pattern, copied into H before Q is added
+    Mat A = nullptr;                            // GAMG's Galerkin product, until A_in_H is made
+    Mat N = nullptr;                            // the contact rows on this level: N_{l+1} P_l
+    Mat Q = nullptr;                            // N^T diag(c) N
+    Mat H = nullptr;                            // A + Q, on the union of their patterns
+    Mat A_in_H = nullptr;                       // A on H's pattern, copied into H before Q is added
+    std::unique_ptr<ThreadedProduct> threaded;  // H's products on the rank's threads, if made
+    [[nodiscard]] Mat op() const { return threaded ? threaded->shell() : H; }
+  };
+  // A level's transfers on the rank's threads (threaded_product.hpp): P_l, and its transpose
+  // formed once, so that the restriction is a product by rows too.
+  struct Transfer {
+    Mat R = nullptr;
+    std::unique_ptr<ThreadedProduct> prolongation, restriction;
   };
   PC pc_;
   MPI_Comm comm_;
@@ -65,8 +75,9 @@ class ContactMultigrid {
   double fine_lambda_a_ = 0.0;    // lambda_max(D_A^-1 A) on the fine level
   Mat C_ = nullptr;               // diag(c) on the contact rows
   Vec c_ = nullptr;
-  std::vector<Coarse> levels_;  // coarsest first, as PCMG numbers them (without the finest)
-  std::vector<Mat> P_;          // P_[l]: level l to level l + 1
+  std::vector<Coarse> levels_;       // coarsest first, as PCMG numbers them (without the finest)
+  std::vector<Mat> P_;               // P_[l]: level l to level l + 1
+  std::vector<Transfer> transfers_;  // transfers_[l] for P_[l], where threaded
   std::vector<PetscInt> sizes_;
 };
 

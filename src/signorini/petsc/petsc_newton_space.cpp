@@ -116,7 +116,11 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   if (keeps_levels) {
     A_ = from_slots(&petsc::block_rows);
     make_newton_matrix();
-    check(KSPSetOperators(ksp_, H_, H_), "KSP");
+    if (petsc::ThreadedProduct::worthwhile(H_)) {
+      threaded_A_ = std::make_unique<petsc::ThreadedProduct>(A_);
+      threaded_H_ = std::make_unique<petsc::ThreadedProduct>(H_);
+    }
+    check(KSPSetOperators(ksp_, newton_operator(), newton_operator()), "KSP");
   }
   active_.assign(static_cast<std::size_t>(nc_), false);
   Nx_ = contact_values_of(x_);
@@ -125,6 +129,8 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
 PetscNewtonSpace::~PetscNewtonSpace() {
   KSPDestroy(&ksp_);
   multigrid_.reset();
+  threaded_H_.reset();  // (their shells were the KSP's operators: after it)
+  threaded_A_.reset();
   for (Vec* v : {&b_, &x_, &x_new_, &residual_, &d_, &Ad_, &work_}) VecDestroy(v);
   MatDestroy(&H_);
   MatDestroy(&A_);
@@ -241,7 +247,9 @@ void PetscNewtonSpace::form_newton_matrix(const std::function<double(Index, Inde
   check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
   check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
   if (multigrid_) multigrid_->set_weights(diagonal, coupled_rows ? widest : 0);
-  check(KSPSetOperators(ksp_, H_, H_), "KSP");  // the preconditioner is set up again
+  if (threaded_H_) threaded_H_->refresh();  // (so that the KSP sees a new operator)
+  // The preconditioner is set up again.
+  check(KSPSetOperators(ksp_, newton_operator(), newton_operator()), "KSP");
   ++refreshes_;
 }
 
@@ -269,7 +277,7 @@ NewtonSolveStats PetscNewtonSpace::solve(const Vector& terms) {
 
 void PetscNewtonSpace::direction(ModifiedLagrangian::Direction& dir) {
   check(VecWAXPY(d_, -1.0, x_, x_new_), "the Newton direction");
-  check(MatMult(A_, d_, Ad_), "A d");
+  check(MatMult(threaded_A_ ? threaded_A_->shell() : A_, d_, Ad_), "A d");
   PetscScalar rd = 0.0, dAd = 0.0;
   check(VecDot(residual_, d_, &rd), "dot product");
   check(VecDot(Ad_, d_, &dAd), "dot product");

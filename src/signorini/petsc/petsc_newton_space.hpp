@@ -21,6 +21,7 @@
 #include "signorini/petsc/node_padding.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_contact_multigrid.hpp"
+#include "signorini/petsc/threaded_product.hpp"
 
 namespace signorini {
 
@@ -78,6 +79,10 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   Index components_ = 1;                    // rows of N per contact node
   std::vector<petsc::ContactRow> rows_;     // the contact rows whose dofs this rank owns
   Mat A_ = nullptr, H_ = nullptr;
+  // A and H's products on the rank's OpenMP threads where it has several (node blocks only):
+  // the KSP's operator and A d (threaded_product.hpp).
+  std::unique_ptr<petsc::ThreadedProduct> threaded_A_, threaded_H_;
+  [[nodiscard]] Mat newton_operator() const { return threaded_H_ ? threaded_H_->shell() : H_; }
   Vec b_ = nullptr, x_ = nullptr, x_new_ = nullptr, residual_ = nullptr, d_ = nullptr,
       Ad_ = nullptr, work_ = nullptr;
   KSP ksp_ = nullptr;
