@@ -85,13 +85,11 @@ class ScopedDefaultOption {
 };
 
 // Whether PETSc was built with hypre, whose matrix products MatPtAP can call.
-bool hypre_products_available() {
 #if defined(PETSC_HAVE_HYPRE)
-  return true;
+constexpr bool kHypreProducts = true;
 #else
-  return false;
+constexpr bool kHypreProducts = false;
 #endif
-}
 
 }  // namespace
 
@@ -120,7 +118,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
     {
       const ScopedDefaultOption aggressive("-pc_gamg_aggressive_coarsening", "2",
                                            "-pc_gamg_square_graph");
-      const ScopedDefaultOption products("-matptap_via", hypre_products_available() ? "hypre" : "");
+      const ScopedDefaultOption products("-matptap_via", kHypreProducts ? "hypre" : "");
       check(PCSetFromOptions(g), "GAMG options");  // (no -pc_type: keeps_gamg_levels)
       check(PCSetUp(g), "GAMG's set-up");
     }

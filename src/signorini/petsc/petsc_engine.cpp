@@ -38,9 +38,10 @@ PetscEngine::PetscEngine() {
 
 void PetscEngine::share_the_cores() const {
 #ifdef _OPENMP
-  // The OpenMP loops of each rank (the assembly, the sparsity pattern) on its share of the
-  // node's cores: ranks that each started one thread per core would oversubscribe the node, and
-  // OpenMP's waiting threads spin. OMP_NUM_THREADS, where set, is kept (docs/distributed.md).
+  // The OpenMP loops of each rank (the assembly, the sparsity pattern, the products of its CG
+  // and multigrid: petsc/threaded_product.hpp) on its share of the node's cores: ranks that each
+  // started one thread per core would oversubscribe the node, and OpenMP's waiting threads spin.
+  // OMP_NUM_THREADS, where set, is kept (docs/distributed.md).
   if (std::getenv("OMP_NUM_THREADS") != nullptr) return;
   MPI_Comm node = MPI_COMM_NULL;
   MPI_Comm_split_type(PETSC_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <exception>
+#include <tuple>
 
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/petsc_check.hpp"
@@ -76,24 +77,31 @@ void multiply_rows_generic(PetscInt bs, PetscInt rows, const PetscInt* ia, const
   }
 }
 
+// What a matrix is to the product: rows of scalars or node blocks, on one process or several.
+struct Layout {
+  bool known = false, blocks = false, distributed = false;
+};
+Layout layout_of(Mat M) {
+  for (const auto& [type, blocks, distributed] :
+       {std::tuple{MATSEQAIJ, false, false}, std::tuple{MATMPIAIJ, false, true},
+        std::tuple{MATSEQBAIJ, true, false}, std::tuple{MATMPIBAIJ, true, true}}) {
+    PetscBool same = PETSC_FALSE;
+    check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(M), type, &same),
+          "a threaded product");
+    if (same) return {true, blocks, distributed};
+  }
+  return {};
+}
+
 }  // namespace
 
 ThreadedProduct::ThreadedProduct(Mat M) : M_(M) {
-  PetscBool seq_blocks = PETSC_FALSE, mpi_blocks = PETSC_FALSE, seq_rows = PETSC_FALSE,
-            mpi_rows = PETSC_FALSE;
-  const auto is = [&](MatType type, PetscBool* answer) {
-    check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(M), type, answer),
-          "a threaded product");
-  };
-  is(MATSEQBAIJ, &seq_blocks);
-  is(MATMPIBAIJ, &mpi_blocks);
-  is(MATSEQAIJ, &seq_rows);
-  is(MATMPIAIJ, &mpi_rows);
-  if (!seq_blocks && !mpi_blocks && !seq_rows && !mpi_rows)
+  const Layout layout = layout_of(M);
+  if (!layout.known)
     throw NumericalError("a threaded product needs a SeqAIJ, MPIAIJ, SeqBAIJ or MPIBAIJ matrix");
-  blocks_ = seq_blocks || mpi_blocks;
+  blocks_ = layout.blocks;
   if (blocks_) check(MatGetBlockSize(M, &bs_), "a threaded product");
-  if (seq_blocks || seq_rows) {
+  if (!layout.distributed) {
     own_.M = M;
   } else {
     const PetscInt* columns = nullptr;  // the neighbours' (block) columns, global numbers
@@ -108,10 +116,10 @@ ThreadedProduct::ThreadedProduct(Mat M) : M_(M) {
     check(ISCreateBlock(PETSC_COMM_SELF, bs_, ghost_blocks, columns, PETSC_COPY_VALUES, &from),
           "a threaded product");
     check(VecCreateSeq(PETSC_COMM_SELF, ghost_blocks * bs_, &ghosts_), "a threaded product");
-    Vec layout = nullptr;  // (the columns' layout)
-    check(MatCreateVecs(M, &layout, nullptr), "a threaded product");
-    check(VecScatterCreate(layout, from, ghosts_, nullptr, &scatter_), "a threaded product");
-    check(VecDestroy(&layout), "a threaded product");
+    Vec columns_like = nullptr;  // (a vector of M's columns, for the scatter's layout)
+    check(MatCreateVecs(M, &columns_like, nullptr), "a threaded product");
+    check(VecScatterCreate(columns_like, from, ghosts_, nullptr, &scatter_), "a threaded product");
+    check(VecDestroy(&columns_like), "a threaded product");
     check(ISDestroy(&from), "a threaded product");
   }
   PetscInt m = 0, n = 0, rows = 0, columns = 0;
@@ -143,11 +151,7 @@ void ThreadedProduct::refresh() {
 }
 
 bool ThreadedProduct::worthwhile(Mat M) {
-  PetscBool known = PETSC_FALSE;
-  check(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(M), &known, MATSEQBAIJ, MATMPIBAIJ,
-                                  MATSEQAIJ, MATMPIAIJ, ""),
-        "a threaded product");
-  return known == PETSC_TRUE && omp_get_max_threads() > 1;
+  return layout_of(M).known && omp_get_max_threads() > 1;
 }
 
 void ThreadedProduct::take_arrays(Part& part) const {

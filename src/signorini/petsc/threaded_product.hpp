@@ -5,8 +5,9 @@
 // the multigrid's transfers, most of a solve's time. Wrapped as a MATSHELL whose MatMult and
 // MatMultAdd split the rank's rows among the threads: the rank's own columns first, while the
 // neighbours' values arrive (one VecScatter), then the others. The diagonal (the smoothers'
-// Jacobi) comes from the matrix itself. Node blocks (SeqBAIJ, MPIBAIJ: blocks of 2 and 3 have
-// their own loops) and scalar rows (SeqAIJ, MPIAIJ), square or not.
+// Jacobi) comes from the matrix itself. Node blocks (SeqBAIJ, MPIBAIJ) and scalar rows (SeqAIJ,
+// MPIAIJ), square or not; rows of 1, 2 and 3 (the project's node blocks) have their own loops,
+// other block sizes a generic one.
 //
 // The wrapped matrix keeps its nonzero pattern: its values may change (MatCopy with
 // SAME_NONZERO_PATTERN, MatSetValues into existing entries, MatAXPY with a subset pattern),
