@@ -39,7 +39,9 @@ int run_check(const CheckArguments& args) {
             ? "MUMPS (the plan's direct solver)"
         : model.solver.linear.preconditioner == PreconditionerType::Jacobi ? "CG with Jacobi"
         : model.solver.petsc_multigrid == PetscMultigrid::Hypre ? "CG with hypre's BoomerAMG"
-                                                                : "CG with GAMG");
+        : model.solver.petsc_multigrid == PetscMultigrid::Aggregation
+            ? "CG with smoothed aggregation on each rank's nodes"
+            : "CG with GAMG");
   fmt::print("ok: {} dofs, {} contact nodes\n", model.num_dofs(), model.problem.contact.size());
   return kSuccess;
 }

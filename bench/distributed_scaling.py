@@ -13,7 +13,8 @@ with the Uzawa and CG counts and the energies, which must agree. Two problems:
                                                  # hertz_sphere.geo at -clscale S (0.185: about
                                                  # a million unknowns; needs the gmsh program)
 
---repeats R keeps the best of R runs of each. SIGNORINI names the serial executable (default:
+--repeats R keeps the best of R runs of each; --petsc-multigrid gamg|aggregation chooses the
+PETSc path's multigrid levels (solver.petsc_multigrid). SIGNORINI names the serial executable (default:
 the release build; signorini-mpi must be beside it)."""
 
 import argparse
@@ -44,6 +45,8 @@ def main():
     ap.add_argument("problem", choices=["box", "hertz"])
     ap.add_argument("size", type=float, help="N for box, -clscale for hertz")
     ap.add_argument("--repeats", type=int, default=1)
+    ap.add_argument("--petsc-multigrid", choices=["gamg", "aggregation"],
+                    help="solver.petsc_multigrid of the PETSc path (default: the problem's)")
     args = ap.parse_args()
     exe = pathlib.Path(os.environ.get("SIGNORINI", ROOT / "build/release/app/signorini"))
     mpirun = shutil.which("mpirun")
@@ -66,6 +69,8 @@ def main():
             problem = ROOT / "examples/hertz_sphere.toml"
             sets = ["--set", f'mesh.file="{mesh}"']
         base = ["solve", str(problem), "-q"] + sets
+        if args.petsc_multigrid:  # (the serial tool reads the key and has no use for it)
+            base += ["--set", f'solver.petsc_multigrid="{args.petsc_multigrid}"']
         petsc = ["--set", 'solver.distributed="petsc"']
         runs = [
             ("serial tool", [str(exe)] + base, None, ""),
@@ -88,7 +93,8 @@ def main():
             s = json.loads((out / "summary.json").read_text())
             rows.append((name, best[0], best[1], note, s))
         unknowns = rows[0][4]["n_free_dofs"]
-        print(f"{args.problem} {args.size:g}: {unknowns:,} unknowns, best of {args.repeats}\n")
+        mg = f", petsc_multigrid {args.petsc_multigrid}" if args.petsc_multigrid else ""
+        print(f"{args.problem} {args.size:g}: {unknowns:,} unknowns, best of {args.repeats}{mg}\n")
         print("| run | whole process | peak memory | Uzawa steps | CG iterations | energy |")
         print("|---|---|---|---|---|---|")
         for name, wall, mb, note, s in rows:

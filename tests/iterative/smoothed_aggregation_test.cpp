@@ -15,6 +15,7 @@
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/iterative/galerkin_product.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/iterative/pcg.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
@@ -140,6 +141,68 @@ TEST(SmoothedAggregation, ThreeDimensionalProductsMatchEigens) {
   const Matrix C(h.coarse_operators[0]);
   EXPECT_LT((C - C.transpose()).norm(), 1e-12 * C.norm());
   EXPECT_EQ(Eigen::LLT<Matrix>(C).info(), Eigen::Success);
+}
+
+// A rank's share of the products (petsc/aggregation_levels.hpp): the unknowns split in two
+// "ranks", each holding A's columns of its own unknowns (its rows, by symmetry) with its own
+// unknowns numbered first. The two shares of the Galerkin product sum to P^T A P, each rank's
+// rows of the smoothed prolongation are those of the whole one, and the aggregation of a rank's
+// nodes ignores the rows of the other's unknowns.
+TEST(SmoothedAggregation, ARanksSharesOfTheProductsSumToTheWholeOnes) {
+  BoxMeshOptions box;
+  box.nx = 6;
+  box.ny = 5;
+  box.nz = 4;
+  const Mesh mesh = make_box_mesh(box);
+  ClampSpec bottom;
+  bottom.boundary = "zmin";
+  const DofMap dofs = make_dof_map(mesh, {bottom});
+  ElasticityOptions elasticity;
+  elasticity.material = {1000.0, 0.3};
+  const SparseMatrix A = assemble_stiffness(mesh, dofs, elasticity);
+  const Matrix B = rigid_body_modes(mesh, dofs);
+  const std::vector<Index> nodes = free_dof_nodes(dofs);
+  const Index n = A.rows();
+  const AggregationLevel whole = aggregate_level(A, B, nodes, {}, 0.0);
+  const double omega = 0.4;
+  const SparseMatrix P = smoothed_prolongation(A, whole.tentative, omega);
+  const Matrix reference = Matrix(SparseMatrix(P.transpose()) * A * P);
+
+  // Rank 0 owns the unknowns 0 .. k-1 (whole nodes), rank 1 the rest.
+  const Index k = 3 * (n / 6);
+  Matrix sum = Matrix::Zero(P.cols(), P.cols());
+  for (int rank = 0; rank < 2; ++rank) {
+    // Its numbering: its own unknowns first, then the other's.
+    Eigen::VectorXi order(n);
+    for (Index i = 0; i < n; ++i) {
+      // (rank 1: k .. n-1, then 0 .. k-1)
+      order(i) = static_cast<int>(rank == 0 ? i : (i + k) % n);
+    }
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> to_local(n);
+    for (Index i = 0; i < n; ++i) to_local.indices()(order(i)) = static_cast<int>(i);
+    const Index own = rank == 0 ? k : n - k;
+    const SparseMatrix permuted = to_local * A * to_local.transpose();
+    const SparseMatrix local = permuted.leftCols(own);
+    const SparseMatrix P_local = to_local * P;
+    sum += Matrix(galerkin_product(local, P_local)).transpose();
+    // Its rows of the smoothed prolongation, from all the rows of T.
+    const SparseMatrix T_local = to_local * whole.tentative;
+    const Matrix rows = Matrix(smoothed_prolongation_rows(local, T_local, omega));
+    EXPECT_LT((rows - Matrix(P_local).topRows(own)).norm(), 1e-13 * Matrix(P).norm()) << rank;
+  }
+  EXPECT_LT((sum - reference).norm(), 1e-12 * reference.norm());
+
+  // Rank 0's aggregation, with the other rank's rows beside its columns, is that of its own
+  // block alone.
+  const Matrix B0 = B.topRows(k);
+  const std::vector<Index> nodes0(nodes.begin(), nodes.begin() + k);
+  const AggregationLevel with_rows =
+      aggregate_level(SparseMatrix(A.leftCols(k)), B0, nodes0, {}, 0.0);
+  const AggregationLevel alone =
+      aggregate_level(SparseMatrix(A.topLeftCorner(k, k)), B0, nodes0, {}, 0.0);
+  EXPECT_EQ(with_rows.coarse_node, alone.coarse_node);
+  EXPECT_EQ(with_rows.tentative.cols(), alone.tentative.cols());
+  EXPECT_LT((Matrix(with_rows.tentative) - Matrix(alone.tentative)).norm(), 1e-14);
 }
 
 TEST(SmoothedAggregation, TheHierarchysEstimateServesTheFineSmoother) {

@@ -275,6 +275,53 @@ TEST(DistributedUzawaGnm, BallOnRollersWithPaddedBlocksMatchesTheSerialSolve) {
   EXPECT_EQ(slots % 3, 0);
 }
 
+// signorini's own smoothed aggregation on each rank's nodes (solver.petsc_multigrid =
+// "aggregation", petsc/aggregation_levels.hpp): the serial answers, on the block and on
+// Hertz's ball on rollers (padded node blocks), in no more CG iterations than GAMG's kept
+// levels take. (The serial tool's count is no measure here: on meshes this small its coarsest
+// level is the whole problem, solved densely.)
+TEST(DistributedUzawaGnm, OwnAggregationLevelsMatchTheSerialSolve) {
+  for (const bool rollers : {false, true}) {
+    ProblemSpec spec =
+        rollers ? testing::hertz_ball("hertz_sphere_coarse.msh") : ball_with_multigrid(8);
+    spec.solver.automatic_path = false;
+    spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+    spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+    spec.solver.inner_tolerance = InnerTolerance::Fixed;
+    spec.solver.uzawa_tolerance = 1e-10;
+    spec.solver.petsc_multigrid = PetscMultigrid::Aggregation;
+    const Model model = testing::distributed_model(spec);
+    const ContactResult distributed = testing::distributed_solve(model, model.solver);
+    const Model serial_model = testing::serial_model(spec);
+    const ContactResult serial = testing::serial_solve(serial_model, serial_model.solver);
+    expect_same_solve(distributed, serial);
+    EXPECT_NE(distributed.summary.device.find("smoothed aggregation on each rank's nodes"),
+              std::string::npos)
+        << distributed.summary.device;
+    ContactSolverOptions gamg = model.solver;
+    gamg.petsc_multigrid = PetscMultigrid::Gamg;
+    const ContactResult with_gamg = testing::distributed_solve(model, gamg);
+    EXPECT_LE(cg_iterations(distributed), cg_iterations(with_gamg))
+        << cg_iterations(distributed) << " against GAMG's " << cg_iterations(with_gamg);
+  }
+}
+
+// The same on the paper's problem in 2D (three rigid-body modes, node blocks of 2).
+TEST(DistributedUzawaGnm, PaperProblemWithOwnAggregationMatchesTheSerialSolve) {
+  const ProblemSpec spec = paper_benchmark(60, 20);
+  ContactSolverOptions o;
+  o.uzawa_tolerance = 1e-10;
+  o.linear.type = LinearSolverType::ConjugateGradient;
+  o.linear.preconditioner = PreconditionerType::Multigrid;
+  o.linear.cg_tolerance = 1e-13;
+  o.petsc_multigrid = PetscMultigrid::Aggregation;
+  const Model model = testing::distributed_model(spec);
+  const ContactResult distributed = testing::distributed_solve(model, o);
+  expect_same_solve(distributed, testing::serial_solve(testing::serial_model(spec), o));
+  EXPECT_NE(distributed.summary.device.find("smoothed aggregation"), std::string::npos)
+      << distributed.summary.device;
+}
+
 // CG with hypre's BoomerAMG (solver.petsc_multigrid = "hypre") on the same 3D problem.
 TEST(DistributedUzawaGnm, BallOnBlockWithHypreMatchesTheSerialSolve) {
   ProblemSpec spec = ball_with_multigrid(6);

@@ -54,10 +54,11 @@ inline constexpr EnumNames<PartitionMode, 2> kPartitionModeNames{{
     {PartitionMode::Graph, "graph"},
 }};
 
-enum class PetscMultigrid { Gamg, Hypre };
+enum class PetscMultigrid { Gamg, Aggregation, Hypre };
 
-inline constexpr EnumNames<PetscMultigrid, 2> kPetscMultigridNames{{
+inline constexpr EnumNames<PetscMultigrid, 3> kPetscMultigridNames{{
     {PetscMultigrid::Gamg, "gamg"},
+    {PetscMultigrid::Aggregation, "aggregation"},
     {PetscMultigrid::Hypre, "hypre"},
 }};
 

@@ -110,7 +110,10 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
              "on the distributed path, the multigrid of `[solver.linear] preconditioner = "
              "\"multigrid\"`: `\"gamg\"`, PETSc's smoothed aggregation on the rigid-body "
              "modes, its levels formed once and kept for every active set of Uzawa-GNM (a "
-             "`-pc_type` in `petsc_options` replaces them); `\"hypre\"`, hypre's BoomerAMG "
+             "`-pc_type` in `petsc_options` replaces them); `\"aggregation\"`, the serial "
+             "tool's smoothed aggregation made on each rank's own nodes, with its own Galerkin "
+             "products on the rank's threads, kept likewise (semismooth Newton takes GAMG); "
+             "`\"hypre\"`, hypre's BoomerAMG "
              "(classical AMG, without the modes: slower "
              "on elastic bodies) ([distributed.md](distributed.md))");
     t.choice("device", &O::device, kDeviceKindNames,

@@ -8,8 +8,11 @@
 namespace signorini {
 
 SparseMatrix galerkin_product(const SparseMatrix& A, const SparseMatrix& P) {
-  if (A.rows() != A.cols() || P.rows() != A.rows())
-    throw NumericalError("galerkin_product: A must be square with as many rows as P");
+  if (A.cols() > A.rows() || P.rows() != A.rows())
+    throw NumericalError("galerkin_product: A must have as many rows as P and no more columns");
+  // Columns of A past k (another rank's unknowns) are rows of E that this rank does not hold:
+  // (E^T P)(:, J) = sum over i < k of p_iJ A(:, i), and P^T (E^T P) = (P^T E P)^T.
+  const Index k_columns = A.cols();
   // Rows of P (its columns are P's CSC storage).
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int> Pr(P);
   const int* p_outer = P.outerIndexPtr();
@@ -33,6 +36,7 @@ SparseMatrix galerkin_product(const SparseMatrix& A, const SparseMatrix& P) {
         const int length = p_outer[J0 + 1] - p_outer[J0];
         for (int k = 0; k < length; ++k) {
           const Index i = p_inner[p_outer[J0] + k];
+          if (i >= k_columns) continue;
           if (counting) {
             for (SparseMatrix::InnerIterator a(A, i); a; ++a) fine.row(a.row());
             continue;

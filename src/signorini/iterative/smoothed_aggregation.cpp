@@ -9,6 +9,10 @@
 #include <numeric>
 #include <utility>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/iterative/chebyshev_smoother.hpp"
@@ -40,12 +44,14 @@ void strength_graph(const SparseMatrix& A, const std::vector<Index>& start,
                     const std::vector<Index>& node_of, double theta, std::vector<Index>& offsets,
                     std::vector<Index>& adjacency) {
   const auto m = static_cast<Index>(start.size()) - 1;
+  // Rows past the numbered unknowns (another rank's, aggregate_level) are not nodes of the graph.
+  const auto n = static_cast<Index>(node_of.size());
   std::vector<double> diagonal(static_cast<std::size_t>(m), 0.0);
   for (Index a = 0; a < m; ++a)
     for (Index j = start[static_cast<std::size_t>(a)]; j < start[static_cast<std::size_t>(a) + 1];
          ++j)
       for (SparseMatrix::InnerIterator it(A, j); it; ++it)
-        if (node_of[static_cast<std::size_t>(it.row())] == a)
+        if (it.row() < n && node_of[static_cast<std::size_t>(it.row())] == a)
           diagonal[static_cast<std::size_t>(a)] += it.value() * it.value();
   for (double& d : diagonal) d = std::sqrt(d);
 
@@ -59,6 +65,7 @@ void strength_graph(const SparseMatrix& A, const std::vector<Index>& start,
     for (Index j = start[static_cast<std::size_t>(a)]; j < start[static_cast<std::size_t>(a) + 1];
          ++j)
       for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+        if (it.row() >= n) continue;
         const Index b = node_of[static_cast<std::size_t>(it.row())];
         if (b == a) continue;
         if (!seen[static_cast<std::size_t>(b)]) {
@@ -89,44 +96,6 @@ double jacobi_spectral_radius(const SparseMatrix& A) {
   DiagonalPreconditioner jacobi(dinv);
   const DeviceVector start = to_device(host, eigenvalue_estimate_start(A.rows()));
   return estimate_largest_eigenvalue(op, jacobi, start, ChebyshevOptions{}.lanczos_steps);
-}
-
-// P = (I - omega D^{-1} A) T, in parallel over groups of columns (Eigen's general sparse product
-// takes ten times longer, on one thread): the columns of one aggregate have the same rows in T,
-// so they are formed together, each entry of A read once for all of them.
-SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T, double omega) {
-  const Vector scale = -omega * A.diagonal().cwiseInverse();
-  const int* t_outer = T.outerIndexPtr();
-  const int* t_inner = T.innerIndexPtr();
-  const double* t_values = T.valuePtr();
-  const auto make_group = [&] {
-    return [&](Index J0, int width, GroupAccumulator& out) {
-      const bool counting = out.counting();
-      with_group_width(width, [&](auto fixed) {
-        constexpr int W = decltype(fixed)::value;
-        const int w = W > 0 ? W : width;
-        double t[kMaxColumnGroup];
-        const int length = t_outer[J0 + 1] - t_outer[J0];
-        for (int k = 0; k < length; ++k) {
-          const Index i = t_inner[t_outer[J0] + k];
-          if (counting) {
-            out.row(i);
-            for (SparseMatrix::InnerIterator a(A, i); a; ++a) out.row(a.row());
-            continue;
-          }
-          for (int c = 0; c < w; ++c) t[c] = t_values[t_outer[J0 + c] + k];
-          double* own = out.row(i);
-          for (int c = 0; c < w; ++c) own[c] += t[c];
-          for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
-            const double s = scale[a.row()] * a.value();
-            double* v = out.row(a.row());
-            for (int c = 0; c < w; ++c) v[c] += s * t[c];
-          }
-        }
-      });
-    };
-  };
-  return form_column_groups(A.rows(), T.cols(), same_row_groups(T), make_group);
 }
 
 struct Tentative {
@@ -236,6 +205,183 @@ std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
   return agg;
 }
 
+// P = (I - omega D^{-1} A) T, in parallel over groups of columns (Eigen's general sparse product
+// takes ten times longer, on one thread): the columns of one aggregate have the same rows in T,
+// so they are formed together, each entry of A read once for all of them.
+SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T, double omega) {
+  const Vector scale = -omega * A.diagonal().cwiseInverse();
+  const int* t_outer = T.outerIndexPtr();
+  const int* t_inner = T.innerIndexPtr();
+  const double* t_values = T.valuePtr();
+  const auto make_group = [&] {
+    return [&](Index J0, int width, GroupAccumulator& out) {
+      const bool counting = out.counting();
+      with_group_width(width, [&](auto fixed) {
+        constexpr int W = decltype(fixed)::value;
+        const int w = W > 0 ? W : width;
+        double t[kMaxColumnGroup];
+        const int length = t_outer[J0 + 1] - t_outer[J0];
+        for (int k = 0; k < length; ++k) {
+          const Index i = t_inner[t_outer[J0] + k];
+          if (counting) {
+            out.row(i);
+            for (SparseMatrix::InnerIterator a(A, i); a; ++a) out.row(a.row());
+            continue;
+          }
+          for (int c = 0; c < w; ++c) t[c] = t_values[t_outer[J0 + c] + k];
+          double* own = out.row(i);
+          for (int c = 0; c < w; ++c) own[c] += t[c];
+          for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
+            const double s = scale[a.row()] * a.value();
+            double* v = out.row(a.row());
+            for (int c = 0; c < w; ++c) v[c] += s * t[c];
+          }
+        }
+      });
+    };
+  };
+  return form_column_groups(A.rows(), T.cols(), same_row_groups(T), make_group);
+}
+
+SparseMatrix smoothed_prolongation_rows(const SparseMatrix& A, const SparseMatrix& T,
+                                        double omega) {
+  const Index k = A.cols();
+  const Index m = T.cols();
+  if (k > A.rows() || T.rows() != A.rows())
+    throw NumericalError(fmt::format("smoothed prolongation: A is {}x{}, T {}x{}", A.rows(),
+                                     A.cols(), T.rows(), T.cols()));
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  const RowMatrix Tr(T);
+  int threads = 1;
+#ifdef _OPENMP
+  if (k >= 20000) threads = omp_get_max_threads();
+#endif
+  // Each thread a contiguous block of rows, into a CSR fragment of its own (Gustavson's row
+  // product with a dense accumulator); the fragments are then laid end to end.
+  struct Fragment {
+    std::vector<int> lengths, columns;
+    std::vector<double> values;
+  };
+  std::vector<Fragment> fragments(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads)
+  {
+    int t = 0;
+#ifdef _OPENMP
+    t = omp_get_thread_num();
+#endif
+    Fragment& out = fragments[static_cast<std::size_t>(t)];
+    const Index first = k * t / threads;
+    const Index last = k * (t + 1) / threads;
+    std::vector<double> sum(static_cast<std::size_t>(m), 0.0);
+    std::vector<Index> mark(static_cast<std::size_t>(m), -1);
+    std::vector<int> touched;
+    for (Index i = first; i < last; ++i) {
+      touched.clear();
+      const auto add = [&](int c, double v) {
+        const auto u = static_cast<std::size_t>(c);
+        if (mark[u] != i) {
+          mark[u] = i;
+          sum[u] = 0.0;
+          touched.push_back(c);
+        }
+        sum[u] += v;
+      };
+      double diagonal = 0.0;
+      for (SparseMatrix::InnerIterator a(A, i); a; ++a)
+        if (a.row() == i) diagonal = a.value();
+      // (An SPD matrix has a positive diagonal; a zero one leaves the row unsmoothed.)
+      const double scale = diagonal != 0.0 ? -omega / diagonal : 0.0;
+      for (RowMatrix::InnerIterator ti(Tr, i); ti; ++ti)
+        add(static_cast<int>(ti.col()), ti.value());
+      for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
+        const double s = scale * a.value();
+        for (RowMatrix::InnerIterator tj(Tr, a.row()); tj; ++tj)
+          add(static_cast<int>(tj.col()), s * tj.value());
+      }
+      // Exact zeros kept, as smoothed_prolongation keeps them: the columns of one aggregate
+      // then share their rows, which the Galerkin product forms together (sparse_columns.hpp).
+      std::sort(touched.begin(), touched.end());
+      for (const int c : touched) {
+        out.columns.push_back(c);
+        out.values.push_back(sum[static_cast<std::size_t>(c)]);
+      }
+      out.lengths.push_back(static_cast<int>(touched.size()));
+    }
+  }
+  std::size_t nonzeros = 0;
+  for (const Fragment& f : fragments) nonzeros += f.columns.size();
+  RowMatrix P(k, m);
+  P.resizeNonZeros(static_cast<Index>(nonzeros));
+  int* outer = P.outerIndexPtr();
+  outer[0] = 0;
+  Index row = 0;
+  std::size_t at = 0;
+  for (const Fragment& f : fragments) {
+    for (const int length : f.lengths) {
+      outer[row + 1] = outer[row] + length;
+      ++row;
+    }
+    std::copy(f.columns.begin(), f.columns.end(), P.innerIndexPtr() + at);
+    std::copy(f.values.begin(), f.values.end(), P.valuePtr() + at);
+    at += f.columns.size();
+  }
+  return SparseMatrix(P);
+}
+
+AggregationLevel aggregate_level(const SparseMatrix& A, const Matrix& near_null_space,
+                                 const std::vector<Index>& node_of_unknown,
+                                 const std::vector<Index>& place_of, double strength_threshold) {
+  const auto n = static_cast<Index>(node_of_unknown.size());
+  if (A.cols() != n || A.rows() < n || near_null_space.rows() != n)
+    throw NumericalError(
+        fmt::format("aggregation: A is {}x{}, the near-null space has {} rows, {} node numbers",
+                    A.rows(), A.cols(), near_null_space.rows(), n));
+  const std::vector<Index>& node_of = node_of_unknown;
+  const std::vector<Index> start = node_starts(node_of);
+  const auto m = static_cast<Index>(start.size()) - 1;
+  // Compact node numbers 0 .. m-1 (a node whose unknowns were not consecutive would count as
+  // several: a coarser aggregation, nothing worse).
+  std::vector<Index> compact(node_of.size());
+  for (Index a = 0; a < m; ++a)
+    for (Index i = start[static_cast<std::size_t>(a)]; i < start[static_cast<std::size_t>(a) + 1];
+         ++i)
+      compact[static_cast<std::size_t>(i)] = a;
+  std::vector<Index> offsets, adjacency;
+  strength_graph(A, start, compact, strength_threshold, offsets, adjacency);
+  std::vector<Index> order(static_cast<std::size_t>(m));
+  std::iota(order.begin(), order.end(), Index{0});
+  const auto place = [&](Index a) {
+    const Index id = node_of[static_cast<std::size_t>(start[static_cast<std::size_t>(a)])];
+    return place_of.empty() ? id : place_of[static_cast<std::size_t>(id)];
+  };
+  const auto before = [&](Index a, Index b) { return place(a) < place(b); };
+  if (!std::is_sorted(order.begin(), order.end(), before)) {
+    std::stable_sort(order.begin(), order.end(), before);
+    // Each node's neighbours in that order too: a left-over node joins the aggregate of its
+    // first aggregated neighbour.
+    for (Index a = 0; a < m; ++a)
+      std::sort(adjacency.begin() + offsets[static_cast<std::size_t>(a)],
+                adjacency.begin() + offsets[static_cast<std::size_t>(a) + 1], before);
+  }
+  std::vector<Index> aggregate = aggregate_nodes(offsets, adjacency, std::move(order));
+  // The aggregates numbered by their first node in the level's own order, so that the coarse
+  // unknowns keep the fine ones' locality; their formation order becomes the next level's.
+  std::vector<Index> number(aggregate.size(), -1);
+  std::vector<Index> formed;
+  for (Index& a : aggregate) {
+    Index& k = number[static_cast<std::size_t>(a)];
+    if (k < 0) {
+      k = static_cast<Index>(formed.size());
+      formed.push_back(a);
+    }
+    a = k;
+  }
+  const auto aggregates = static_cast<Index>(formed.size());
+  Tentative t = tentative_prolongation(near_null_space, start, aggregate, aggregates);
+  return {std::move(t.P), std::move(t.coarse_null_space), std::move(t.coarse_node),
+          std::move(formed)};
+}
+
 MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix near_null_space,
                                                   std::vector<Index> node_of_unknown,
                                                   const SmoothedAggregationOptions& options) {
@@ -260,54 +406,15 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
   while (current->rows() > options.max_coarse_unknowns &&
          static_cast<int>(h.prolongations.size()) + 1 < options.max_levels) {
     const SparseMatrix& Al = *current;
-    const std::vector<Index> start = node_starts(node_of);
-    const auto m = static_cast<Index>(start.size()) - 1;
-    // Compact node numbers 0 .. m-1 (a node whose unknowns were not consecutive would count as
-    // several: a coarser aggregation, nothing worse).
-    std::vector<Index> compact(node_of.size());
-    for (Index a = 0; a < m; ++a)
-      for (Index i = start[static_cast<std::size_t>(a)]; i < start[static_cast<std::size_t>(a) + 1];
-           ++i)
-        compact[static_cast<std::size_t>(i)] = a;
-    std::vector<Index> offsets, adjacency;
-    strength_graph(Al, start, compact, options.strength_threshold, offsets, adjacency);
-    std::vector<Index> order(static_cast<std::size_t>(m));
-    std::iota(order.begin(), order.end(), Index{0});
-    const auto place = [&](Index a) {
-      const Index id = node_of[static_cast<std::size_t>(start[static_cast<std::size_t>(a)])];
-      return place_of.empty() ? id : place_of[static_cast<std::size_t>(id)];
-    };
-    const auto before = [&](Index a, Index b) { return place(a) < place(b); };
-    if (!std::is_sorted(order.begin(), order.end(), before)) {
-      std::stable_sort(order.begin(), order.end(), before);
-      // Each node's neighbours in that order too: a left-over node joins the aggregate of its
-      // first aggregated neighbour.
-      for (Index a = 0; a < m; ++a)
-        std::sort(adjacency.begin() + offsets[static_cast<std::size_t>(a)],
-                  adjacency.begin() + offsets[static_cast<std::size_t>(a) + 1], before);
-    }
-    std::vector<Index> aggregate = aggregate_nodes(offsets, adjacency, std::move(order));
-    // The aggregates numbered by their first node in the level's own order, so that the coarse
-    // unknowns keep the fine ones' locality; their formation order becomes the next level's.
-    std::vector<Index> number(aggregate.size(), -1);
-    place_of.clear();
-    for (Index& a : aggregate) {
-      Index& k = number[static_cast<std::size_t>(a)];
-      if (k < 0) {
-        k = static_cast<Index>(place_of.size());
-        place_of.push_back(a);
-      }
-      a = k;
-    }
-    const auto aggregates = static_cast<Index>(place_of.size());
-    Tentative t = tentative_prolongation(B, start, aggregate, aggregates);
-    if (static_cast<double>(t.P.cols()) >
+    AggregationLevel t = aggregate_level(Al, B, node_of, place_of, options.strength_threshold);
+    place_of = std::move(t.place_of);
+    if (static_cast<double>(t.tentative.cols()) >
         (1.0 - options.min_reduction) * static_cast<double>(Al.rows()))
       break;  // no real coarsening left (e.g. a level of isolated nodes)
     // P = (I - omega D^{-1} A) P_tent, omega = 4 / (3 rho(D^{-1} A)) (Vanek et al., eq. 4.4).
     const double radius = jacobi_spectral_radius(Al);
     if (current == &A) h.fine_jacobi_radius = radius;
-    SparseMatrix P = smoothed_prolongation(Al, t.P, 4.0 / (3.0 * radius));
+    SparseMatrix P = smoothed_prolongation(Al, t.tentative, 4.0 / (3.0 * radius));
     h.coarse_operators.push_back(galerkin_product(Al, P));
     h.prolongations.push_back(std::move(P));
     current = &h.coarse_operators.back();

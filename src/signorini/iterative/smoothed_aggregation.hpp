@@ -42,6 +42,36 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
                                                   std::vector<Index> node_of_unknown,
                                                   const SmoothedAggregationOptions& options = {});
 
+/// One level's aggregation and tentative prolongation, for a caller that smooths the
+/// prolongation and forms the Galerkin product itself (the distributed path's levels,
+/// petsc/aggregation_levels.hpp).
+struct AggregationLevel {
+  SparseMatrix tentative;          ///< P_tent: the numbered unknowns x the coarse unknowns
+  Matrix coarse_null_space;        ///< the near-null space's coarse rows (the stacked R_a)
+  std::vector<Index> coarse_node;  ///< the aggregate of each coarse unknown
+  std::vector<Index> place_of;     ///< per aggregate, its place in the aggregation's order
+};
+
+/// Aggregates the nodes of the unknowns 0 .. n-1 (n = node_of_unknown.size()) and forms the
+/// tentative prolongation. A holds the columns of those unknowns (n columns, both triangles);
+/// it may have more rows (another rank's unknowns), which are not aggregated and do not count
+/// as couplings. `place_of`: per node number, its place in the order of aggregation (empty:
+/// the number itself); the result's place_of is the next level's.
+AggregationLevel aggregate_level(const SparseMatrix& A, const Matrix& near_null_space,
+                                 const std::vector<Index>& node_of_unknown,
+                                 const std::vector<Index>& place_of, double strength_threshold);
+
+/// The smoothed prolongation P = (I - omega D^{-1} A) T for a symmetric A (n x n), in parallel
+/// over groups of columns (those of an aggregate share their rows in T); exact zeros kept.
+SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T, double omega);
+
+/// The rows 0 .. k-1 of the smoothed prolongation P = (I - omega D^{-1} A) T, with A given by
+/// its first k columns (n x k, both triangles: A's rows of the unknowns 0 .. k-1, by symmetry)
+/// and T (n x m) by all its rows: what one rank forms of the prolongation of its own unknowns
+/// when T's rows k .. n-1 are its neighbours' (petsc/aggregation_levels.hpp). k x m, exact
+/// zeros kept (as smoothed_prolongation keeps them); in parallel over the rows.
+SparseMatrix smoothed_prolongation_rows(const SparseMatrix& A, const SparseMatrix& T, double omega);
+
 /// The aggregation step alone (exposed for tests): the aggregate of every node of the node graph
 /// given by the CSR-like arrays (neighbours of node a are adjacency[offsets[a] .. offsets[a+1]),
 /// strong couplings only, without a itself). Every node gets an aggregate; the numbers are

@@ -223,6 +223,35 @@ std::vector<Vec> near_null_vectors(const Matrix& modes, Mat like) {
 
 }  // namespace
 
+double jacobi_lambda_max(Mat A) {
+  KSP k = nullptr;
+  check(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &k), "an estimate");
+  check(KSPSetOperators(k, A, A), "an estimate");
+  check(KSPSetType(k, KSPCG), "an estimate");
+  PC p = nullptr;
+  check(KSPGetPC(k, &p), "an estimate");
+  check(PCSetType(p, PCJACOBI), "an estimate");
+  check(KSPSetComputeSingularValues(k, PETSC_TRUE), "an estimate");
+  check(KSPSetNormType(k, KSP_NORM_NONE), "an estimate");
+  check(KSPSetConvergenceTest(k, KSPConvergedSkip, nullptr, nullptr), "an estimate");
+  check(KSPSetTolerances(k, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 10), "an estimate");
+  Vec b = nullptr, x = nullptr;
+  check(MatCreateVecs(A, &x, &b), "an estimate");
+  PetscRandom random = nullptr;
+  check(PetscRandomCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &random),
+        "an estimate");
+  check(PetscRandomSetFromOptions(random), "an estimate");
+  check(VecSetRandom(b, random), "an estimate");
+  check(KSPSolve(k, b, x), "an estimate");
+  PetscReal emax = 0.0, emin = 0.0;
+  check(KSPComputeExtremeSingularValues(k, &emax, &emin), "an estimate");
+  PetscRandomDestroy(&random);
+  VecDestroy(&b);
+  VecDestroy(&x);
+  KSPDestroy(&k);
+  return emax;
+}
+
 std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space) {
   PetscInt rows = 0;
   check(MatGetLocalSize(M, &rows, nullptr), "near-null space");
@@ -254,7 +283,7 @@ bool keeps_gamg_levels(const ContactSolverOptions& o) {
   check(PetscOptionsHasName(nullptr, nullptr, "-pc_type", &pc_type_given), "PETSc options");
   return o.linear.type == LinearSolverType::ConjugateGradient &&
          o.linear.preconditioner == PreconditionerType::Multigrid &&
-         o.petsc_multigrid == PetscMultigrid::Gamg && !pc_type_given;
+         o.petsc_multigrid != PetscMultigrid::Hypre && !pc_type_given;
 }
 
 KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& o,

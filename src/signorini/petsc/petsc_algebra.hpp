@@ -39,6 +39,10 @@ void mark_spd(Mat M, const char* what);
 /// ranks) to M as its near-null space, for GAMG; returns how many were kept.
 std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space);
 
+/// lambda_max(D^-1 A) estimated by 10 steps of Jacobi-preconditioned CG from a random right-hand
+/// side (the Lanczos values of CG), as GAMG's smoothers estimate theirs.
+[[nodiscard]] double jacobi_lambda_max(Mat A);
+
 /// Returns the memory that the process has freed to the system (glibc keeps freed blocks in the
 /// process's heap, where later allocations fit only in part, and its resident size stays): after
 /// GAMG's set-up and when a Newton space is destroyed, so that neither the node-block matrices
@@ -72,8 +76,8 @@ struct KspChoice {
 /// solver.petsc_options into PETSc's options database.
 void insert_petsc_options(const ContactSolverOptions& options);
 
-/// Whether Uzawa-GNM's CG keeps GAMG's levels (ContactMultigrid): "cg" with "multigrid" on
-/// "gamg", and no -pc_type among the PETSc options.
+/// Whether Uzawa-GNM's CG keeps its multigrid levels (ContactMultigrid): "cg" with "multigrid"
+/// on "gamg" or "aggregation", and no -pc_type among the PETSc options.
 [[nodiscard]] bool keeps_gamg_levels(const ContactSolverOptions& options);
 
 /// Makes `pc` the multigrid of CG for "cg" with "multigrid" on GAMG (ContactMultigrid); returns

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "signorini/core/error.hpp"
+#include "signorini/petsc/aggregation_levels.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
@@ -26,37 +27,6 @@ void make_smoother(KSP k) {
   PC p = nullptr;
   check(KSPGetPC(k, &p), "the multigrid smoother");
   check(PCSetType(p, PCJACOBI), "the multigrid smoother");
-}
-
-// lambda_max(D^-1 A) estimated by 10 steps of Jacobi-preconditioned CG from a random right-hand
-// side (the Lanczos values of CG), as GAMG's smoothers estimate theirs.
-double jacobi_lambda_max(Mat A) {
-  KSP k = nullptr;
-  check(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &k), "an estimate");
-  check(KSPSetOperators(k, A, A), "an estimate");
-  check(KSPSetType(k, KSPCG), "an estimate");
-  PC p = nullptr;
-  check(KSPGetPC(k, &p), "an estimate");
-  check(PCSetType(p, PCJACOBI), "an estimate");
-  check(KSPSetComputeSingularValues(k, PETSC_TRUE), "an estimate");
-  check(KSPSetNormType(k, KSP_NORM_NONE), "an estimate");
-  check(KSPSetConvergenceTest(k, KSPConvergedSkip, nullptr, nullptr), "an estimate");
-  check(KSPSetTolerances(k, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 10), "an estimate");
-  Vec b = nullptr, x = nullptr;
-  check(MatCreateVecs(A, &x, &b), "an estimate");
-  PetscRandom random = nullptr;
-  check(PetscRandomCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &random),
-        "an estimate");
-  check(PetscRandomSetFromOptions(random), "an estimate");
-  check(VecSetRandom(b, random), "an estimate");
-  check(KSPSolve(k, b, x), "an estimate");
-  PetscReal emax = 0.0, emin = 0.0;
-  check(KSPComputeExtremeSingularValues(k, &emax, &emin), "an estimate");
-  PetscRandomDestroy(&random);
-  VecDestroy(&b);
-  VecDestroy(&x);
-  KSPDestroy(&k);
-  return emax;
 }
 
 // A PETSc option in the options database for the life of the object, unless the options hold
@@ -94,10 +64,18 @@ constexpr bool kHypreProducts = false;
 }  // namespace
 
 ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows,
-                                   MPI_Comm comm)
+                                   MPI_Comm comm, Levels levels)
     : pc_(pc), comm_(comm) {
-  // GAMG once, on A; PETSc's options for GAMG (-pc_gamg_*) apply to it.
-  {
+  if (levels == Levels::Aggregation) {
+    // Our own levels, fine first; PCMG numbers them coarsest first.
+    AggregationLevels own = aggregation_levels(A_setup);
+    P_.assign(own.prolongations.rbegin(), own.prolongations.rend());
+    levels_.resize(own.operators.size());
+    for (std::size_t l = 0; l < own.operators.size(); ++l)
+      levels_[l].A = own.operators[own.operators.size() - 1 - l];
+    fine_lambda_a_ = own.fine_jacobi_radius;
+  } else {
+    // GAMG once, on A; PETSc's options for GAMG (-pc_gamg_*) apply to it.
     KSP setup = nullptr;
     check(KSPCreate(comm_, &setup), "GAMG");
     check(KSPSetOperators(setup, A_setup, A_setup), "GAMG");
@@ -238,7 +216,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
     }
     if (l > 0 || L == 1) make_smoother(k);
   }
-  fine_lambda_a_ = jacobi_lambda_max(A_setup);
+  if (fine_lambda_a_ <= 0.0) fine_lambda_a_ = jacobi_lambda_max(A_setup);
   sizes_.push_back(cols);
   for (std::size_t l = levels_.size(); l-- > 0;) {
     PetscInt n = 0;

@@ -37,7 +37,11 @@ class ContactMultigrid {
   /// attached; only needed during the call) and makes `pc` a PCMG on GAMG's levels, whose finest
   /// operator is the one the KSP of `pc` is given. `rows`: this rank's contact rows (of the fine
   /// level's unknowns).
-  ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows, MPI_Comm comm);
+  /// Where the levels come from: GAMG's set-up, or signorini's smoothed aggregation on each
+  /// rank's nodes (aggregation_levels.hpp; A_setup then needs its block size set too).
+  enum class Levels { Gamg, Aggregation };
+  ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows, MPI_Comm comm,
+                   Levels levels = Levels::Gamg);
   ~ContactMultigrid();
   ContactMultigrid(const ContactMultigrid&) = delete;
   ContactMultigrid& operator=(const ContactMultigrid&) = delete;

@@ -144,10 +144,16 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
   petsc::MultigridBuilder keep_levels;
   if (keeps_levels)
     keep_levels = [&](PC pc) {
-      std::string what = "GAMG's levels, kept for every active set";
+      const bool own = o_.petsc_multigrid == PetscMultigrid::Aggregation;
+      std::string what =
+          own ? "smoothed aggregation on each rank's nodes, kept for every active set"
+              : "GAMG's levels, kept for every active set";
       if (modes().cols() > 0)  // (on every rank alike, whatever its rows: collective)
         what += fmt::format(", {} rigid-body modes", petsc::attach_near_null_space(A_aij, modes()));
-      multigrid_ = std::make_unique<petsc::ContactMultigrid>(pc, A_aij, rows_, comm_);
+      multigrid_ = std::make_unique<petsc::ContactMultigrid>(
+          pc, A_aij, rows_, comm_,
+          own ? petsc::ContactMultigrid::Levels::Aggregation
+              : petsc::ContactMultigrid::Levels::Gamg);
       std::string sizes;
       for (const PetscInt n : multigrid_->level_sizes())
         sizes += fmt::format("{}{}", sizes.empty() ? "" : ", ", n);

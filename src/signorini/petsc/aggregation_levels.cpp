@@ -1,0 +1,372 @@
+#include "signorini/petsc/aggregation_levels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+
+#include "signorini/core/error.hpp"
+#include "signorini/core/types.hpp"
+#include "signorini/iterative/galerkin_product.hpp"
+#include "signorini/iterative/smoothed_aggregation.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
+#include "signorini/petsc/petsc_check.hpp"
+
+namespace signorini::petsc {
+
+namespace {
+
+using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
+// A level's numbering on one rank: the rank's own unknowns (global first .. first + count - 1)
+// first, then the others' it needs (`foreign`, ascending).
+struct ExtNumbering {
+  PetscInt first = 0;
+  PetscInt count = 0;
+  std::vector<PetscInt> foreign;
+
+  [[nodiscard]] Index size() const { return count + static_cast<Index>(foreign.size()); }
+  [[nodiscard]] bool own(PetscInt g) const { return g >= first && g < first + count; }
+  [[nodiscard]] Index local(PetscInt g) const {
+    if (own(g)) return g - first;
+    return count + static_cast<Index>(std::lower_bound(foreign.begin(), foreign.end(), g) -
+                                      foreign.begin());
+  }
+  [[nodiscard]] PetscInt global(Index i) const {
+    return i < count ? first + static_cast<PetscInt>(i)
+                     : foreign[static_cast<std::size_t>(i - count)];
+  }
+  // Adds the global numbers in `seen` that are not own to `foreign` (sorted, unique).
+  void add_foreign(const std::vector<PetscInt>& seen) {
+    for (const PetscInt g : seen)
+      if (!own(g)) foreign.push_back(g);
+    std::sort(foreign.begin(), foreign.end());
+    foreign.erase(std::unique(foreign.begin(), foreign.end()), foreign.end());
+  }
+};
+
+// Rows read from PETSc with global column numbers: CSR arrays.
+struct GlobalRows {
+  std::vector<int> outer{0};
+  std::vector<PetscInt> columns;
+  std::vector<double> values;
+};
+
+void append_rows(Mat M, PetscInt lo, PetscInt hi, GlobalRows& out) {
+  for (PetscInt r = lo; r < hi; ++r) {
+    PetscInt nc = 0;
+    const PetscInt* c = nullptr;
+    const PetscScalar* v = nullptr;
+    check(MatGetRow(M, r, &nc, &c, &v), "a multigrid level's rows");
+    out.columns.insert(out.columns.end(), c, c + nc);
+    out.values.insert(out.values.end(), v, v + nc);
+    check(MatRestoreRow(M, r, &nc, &c, &v), "a multigrid level's rows");
+    out.outer.push_back(static_cast<int>(out.columns.size()));
+  }
+}
+
+// Global rows into row-major local numbering (each row's columns sorted in it).
+RowMatrix local_rows(const GlobalRows& g, Index columns, const ExtNumbering& numbering) {
+  const auto rows = static_cast<Index>(g.outer.size()) - 1;
+  RowMatrix R(rows, columns);
+  R.resizeNonZeros(static_cast<Index>(g.columns.size()));
+  std::copy(g.outer.begin(), g.outer.end(), R.outerIndexPtr());
+  std::vector<std::pair<int, double>> row;
+  for (Index r = 0; r < rows; ++r) {
+    const int b = g.outer[static_cast<std::size_t>(r)];
+    const int e = g.outer[static_cast<std::size_t>(r) + 1];
+    row.clear();
+    bool sorted = true;
+    for (int k = b; k < e; ++k) {
+      const auto c = static_cast<int>(numbering.local(g.columns[static_cast<std::size_t>(k)]));
+      sorted = sorted && (row.empty() || row.back().first < c);
+      row.emplace_back(c, g.values[static_cast<std::size_t>(k)]);
+    }
+    if (!sorted) std::sort(row.begin(), row.end());
+    for (int k = b; k < e; ++k) {
+      R.innerIndexPtr()[k] = row[static_cast<std::size_t>(k - b)].first;
+      R.valuePtr()[k] = row[static_cast<std::size_t>(k - b)].second;
+    }
+  }
+  return R;
+}
+
+// The rows `rows` (global, ascending; this rank's neighbours') of the distributed M, with
+// global column numbers. Collective (every rank calls it, with its own rows).
+GlobalRows fetch_rows(Mat M, const std::vector<PetscInt>& rows) {
+  PetscInt columns = 0;
+  check(MatGetSize(M, nullptr, &columns), "a multigrid level's ghost rows");
+  IS row_set = nullptr, column_set = nullptr;
+  check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(rows.size()), rows.data(),
+                        PETSC_COPY_VALUES, &row_set),
+        "a multigrid level's ghost rows");
+  // Every column, in order: the rows come with their global column numbers.
+  check(ISCreateStride(PETSC_COMM_SELF, columns, 0, 1, &column_set),
+        "a multigrid level's ghost rows");
+  Mat* sub = nullptr;
+  check(MatCreateSubMatrices(M, 1, &row_set, &column_set, MAT_INITIAL_MATRIX, &sub),
+        "a multigrid level's ghost rows");
+  GlobalRows out;
+  append_rows(sub[0], 0, static_cast<PetscInt>(rows.size()), out);
+  check(MatDestroySubMatrices(1, &sub), "a multigrid level's ghost rows");
+  ISDestroy(&row_set);
+  ISDestroy(&column_set);
+  return out;
+}
+
+// This rank's rows of a distributed matrix from their local form (rows: the rank's own;
+// columns: `numbering`), `local_columns` of its columns owned here.
+Mat distributed_matrix(MPI_Comm comm, const RowMatrix& R, const ExtNumbering& numbering,
+                       PetscInt local_columns) {
+  const auto rows = static_cast<PetscInt>(R.rows());
+  std::vector<PetscInt> outer(R.outerIndexPtr(), R.outerIndexPtr() + rows + 1);
+  std::vector<std::pair<PetscInt, double>> row;
+  std::vector<PetscInt> columns(static_cast<std::size_t>(R.nonZeros()));
+  std::vector<double> values(columns.size());
+  for (PetscInt r = 0; r < rows; ++r) {
+    row.clear();
+    for (RowMatrix::InnerIterator it(R, r); it; ++it)
+      row.emplace_back(numbering.global(it.col()), it.value());
+    std::sort(row.begin(), row.end());  // (PETSc's CSR: each row's global columns ascending)
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      columns[static_cast<std::size_t>(outer[static_cast<std::size_t>(r)]) + k] = row[k].first;
+      values[static_cast<std::size_t>(outer[static_cast<std::size_t>(r)]) + k] = row[k].second;
+    }
+  }
+  Mat M = nullptr;
+  check(MatCreate(comm, &M), "a prolongation");
+  check(MatSetSizes(M, rows, local_columns, PETSC_DETERMINE, PETSC_DETERMINE), "a prolongation");
+  check(MatSetType(M, MATAIJ), "a prolongation");
+  // (Each call is a no-op on the other type.)
+  check(MatSeqAIJSetPreallocationCSR(M, outer.data(), columns.data(), values.data()),
+        "a prolongation");
+  check(MatMPIAIJSetPreallocationCSR(M, outer.data(), columns.data(), values.data()),
+        "a prolongation");
+  return M;
+}
+
+// A prolongation's rows on this rank: its own (R, columns in `numbering`), then those of the
+// ghosts fetched from P; `numbering` gains the columns the fetched rows bring. Column-major,
+// n_ext x the numbering's size.
+SparseMatrix extended_rows(MPI_Comm comm, Mat P, const RowMatrix& own,
+                           const std::vector<PetscInt>& ghosts, ExtNumbering& numbering) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  GlobalRows g;
+  // Own rows in global columns first, so that the numbering can take the fetched ones in.
+  for (Index r = 0; r < own.rows(); ++r) {
+    for (RowMatrix::InnerIterator it(own, r); it; ++it) {
+      g.columns.push_back(numbering.global(it.col()));
+      g.values.push_back(it.value());
+    }
+    g.outer.push_back(static_cast<int>(g.columns.size()));
+  }
+  if (size > 1) {
+    const GlobalRows fetched = fetch_rows(P, ghosts);
+    numbering.add_foreign(fetched.columns);
+    const int base = g.outer.back();
+    for (std::size_t r = 1; r < fetched.outer.size(); ++r)
+      g.outer.push_back(base + fetched.outer[r]);
+    g.columns.insert(g.columns.end(), fetched.columns.begin(), fetched.columns.end());
+    g.values.insert(g.values.end(), fetched.values.begin(), fetched.values.end());
+  }
+  return SparseMatrix(local_rows(g, numbering.size(), numbering));
+}
+
+// A level's rows on this rank as the columns of its own unknowns (n_ext x n_own, A being
+// symmetric), copied from PETSc's own arrays: its diagonal block (columns of this rank) and, on
+// several ranks, its off-diagonal block, whose columns PETSc numbers in the ascending order of
+// their global numbers (the ghosts, which `fine` takes as its foreign unknowns), so that each
+// row comes out sorted in the local numbering.
+SparseMatrix own_columns(Mat level, ExtNumbering& fine) {
+  Mat diagonal = level, off = nullptr;
+  const PetscInt* ghosts = nullptr;
+  PetscBool distributed = PETSC_FALSE;
+  check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(level), MATMPIAIJ, &distributed),
+        "a multigrid level's rows");
+  if (distributed) check(MatMPIAIJGetSeqAIJ(level, &diagonal, &off, &ghosts), "a level's rows");
+  struct Csr {
+    Mat M = nullptr;
+    PetscInt n = 0;
+    const PetscInt* ia = nullptr;
+    const PetscInt* ja = nullptr;
+    const PetscScalar* a = nullptr;
+    explicit Csr(Mat m) : M(m) {
+      PetscBool done = PETSC_FALSE;
+      check(MatGetRowIJ(M, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done),
+            "a multigrid level's rows");
+      if (!done) throw NumericalError("PETSc: a multigrid level's rows are not in CSR");
+      check(MatSeqAIJGetArrayRead(M, &a), "a multigrid level's rows");
+    }
+    ~Csr() {
+      PetscBool done = PETSC_FALSE;
+      MatSeqAIJRestoreArrayRead(M, &a);
+      MatRestoreRowIJ(M, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done);
+    }
+    Csr(const Csr&) = delete;
+    Csr& operator=(const Csr&) = delete;
+    [[nodiscard]] PetscInt length(PetscInt r) const { return ia[r + 1] - ia[r]; }
+  };
+  const Csr d(diagonal);
+  std::optional<Csr> o;
+  PetscInt off_columns = 0;
+  if (off != nullptr) {
+    o.emplace(off);
+    check(MatGetSize(off, nullptr, &off_columns), "a multigrid level's rows");
+    fine.foreign.assign(ghosts, ghosts + off_columns);
+  }
+  SparseMatrix Al(fine.size(), fine.count);
+  Index nonzeros = d.ia[fine.count];
+  if (o) nonzeros += o->ia[fine.count];
+  Al.resizeNonZeros(nonzeros);
+  int* outer = Al.outerIndexPtr();
+  int* inner = Al.innerIndexPtr();
+  double* values = Al.valuePtr();
+  outer[0] = 0;
+  int at = 0;
+  for (PetscInt r = 0; r < fine.count; ++r) {
+    for (PetscInt k = d.ia[r]; k < d.ia[r + 1]; ++k, ++at) {
+      inner[at] = static_cast<int>(d.ja[k]);
+      values[at] = d.a[k];
+    }
+    if (o)
+      for (PetscInt k = o->ia[r]; k < o->ia[r + 1]; ++k, ++at) {
+        inner[at] = static_cast<int>(fine.count + o->ja[k]);
+        values[at] = o->a[k];
+      }
+    outer[r + 1] = at;
+  }
+  return Al;
+}
+
+}  // namespace
+
+AggregationLevels aggregation_levels(Mat A) {
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(A));
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  const SmoothedAggregationOptions options;  // the serial tool's, as its hierarchy
+  AggregationLevels out;
+
+  // The fine level's near-null space (this rank's rows) and nodes (A's blocks).
+  // Without one attached, the translations, one per unknown of a node (GAMG's default too).
+  MatNullSpace space = nullptr;
+  check(MatGetNearNullSpace(A, &space), "the near-null space");
+  PetscInt lo = 0, hi = 0, block = 1;
+  check(MatGetOwnershipRange(A, &lo, &hi), "smoothed aggregation");
+  check(MatGetBlockSize(A, &block), "smoothed aggregation");
+  Matrix B;
+  if (space != nullptr) {
+    PetscBool has_constant = PETSC_FALSE;
+    PetscInt modes = 0;
+    const Vec* vectors = nullptr;
+    check(MatNullSpaceGetVecs(space, &has_constant, &modes, &vectors), "the near-null space");
+    B.resize(hi - lo, modes);
+    for (PetscInt k = 0; k < modes; ++k) {
+      const PetscScalar* v = nullptr;
+      check(VecGetArrayRead(vectors[k], &v), "the near-null space");
+      for (PetscInt i = 0; i < hi - lo; ++i) B(i, k) = v[i];
+      check(VecRestoreArrayRead(vectors[k], &v), "the near-null space");
+    }
+  } else {
+    B = Matrix::Zero(hi - lo, block);
+    for (PetscInt i = 0; i < hi - lo; ++i) B(i, i % block) = 1.0;
+  }
+  std::vector<Index> node_of(static_cast<std::size_t>(hi - lo));
+  for (PetscInt i = 0; i < hi - lo; ++i) node_of[static_cast<std::size_t>(i)] = i / block;
+  std::vector<Index> place_of;
+
+  Mat level = A;
+  for (int depth = 0; depth + 1 < options.max_levels; ++depth) {
+    PetscInt n = 0;
+    check(MatGetSize(level, &n, nullptr), "smoothed aggregation");
+    // (The fine level is coarsened once however small: PCMG's coarsest solve is direct, and
+    // a single level would be the smoother alone.)
+    if (n <= options.max_coarse_unknowns && depth > 0) break;
+    check(MatGetOwnershipRange(level, &lo, &hi), "smoothed aggregation");
+
+    // The rank's rows, as the columns of its own unknowns (n_ext x n_own).
+    ExtNumbering fine{lo, hi - lo, {}};
+    SparseMatrix Al = own_columns(level, fine);
+
+    // The rank's nodes aggregated among themselves; the coarse unknowns numbered rank by rank.
+    AggregationLevel t = aggregate_level(Al, B, node_of, place_of, options.strength_threshold);
+    auto own_coarse = static_cast<PetscInt>(t.tentative.cols());
+    PetscInt first_coarse = 0, coarse = 0;
+    MPI_Exscan(&own_coarse, &first_coarse, 1, MPIU_INT, MPI_SUM, comm);
+    MPI_Allreduce(&own_coarse, &coarse, 1, MPIU_INT, MPI_SUM, comm);
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    if (rank == 0) first_coarse = 0;
+    if (static_cast<double>(coarse) > (1.0 - options.min_reduction) * static_cast<double>(n))
+      break;  // no real coarsening left
+
+    // T's rows of the ghosts from their ranks, then this rank's rows of the smoothed P.
+    ExtNumbering coarse_numbering{first_coarse, own_coarse, {}};
+    const double radius = jacobi_lambda_max(level);
+    if (depth == 0) out.fine_jacobi_radius = radius;
+    SparseMatrix T_ext;
+    {
+      const RowMatrix T_own(t.tentative);
+      if (size > 1) {
+        Mat T = distributed_matrix(comm, T_own, coarse_numbering, own_coarse);
+        T_ext = extended_rows(comm, T, T_own, fine.foreign, coarse_numbering);
+        check(MatDestroy(&T), "a tentative prolongation");
+      } else {
+        T_ext = t.tentative;
+      }
+    }
+    // P = (I - omega D^{-1} A) P_tent, omega = 4 / (3 rho(D^{-1} A)) (Vanek et al., eq. 4.4).
+    // (On one rank A_l is square: the serial kernel, by groups of columns, is the faster.)
+    const double omega = 4.0 / (3.0 * radius);
+    const RowMatrix P_own(size == 1 ? smoothed_prolongation(Al, T_ext, omega)
+                                    : smoothed_prolongation_rows(Al, T_ext, omega));
+    T_ext = SparseMatrix();
+    Mat P = distributed_matrix(comm, P_own, coarse_numbering, own_coarse);
+    SparseMatrix P_ext = size > 1 ? extended_rows(comm, P, P_own, fine.foreign, coarse_numbering)
+                                  : SparseMatrix(P_own);
+
+    // This rank's share of P^T A P (coarse numbering local), summed into the coarse level by
+    // PETSc's COO assembly, which sends the other ranks' rows to them; on one rank, the
+    // product itself (symmetric: its columns are its rows).
+    SparseMatrix share = galerkin_product(Al, P_ext);
+    Al = SparseMatrix();
+    P_ext = SparseMatrix();
+    Mat C = nullptr;
+    check(MatCreate(comm, &C), "a coarse level");
+    check(MatSetSizes(C, own_coarse, own_coarse, coarse, coarse), "a coarse level");
+    check(MatSetType(C, MATAIJ), "a coarse level");
+    if (size == 1) {
+      const std::vector<PetscInt> outer(share.outerIndexPtr(),
+                                        share.outerIndexPtr() + share.outerSize() + 1);
+      const std::vector<PetscInt> inner(share.innerIndexPtr(),
+                                        share.innerIndexPtr() + share.nonZeros());
+      check(MatSeqAIJSetPreallocationCSR(C, outer.data(), inner.data(), share.valuePtr()),
+            "a coarse level");
+    } else {
+      std::vector<PetscInt> ci, cj;
+      ci.reserve(static_cast<std::size_t>(share.nonZeros()));
+      cj.reserve(ci.capacity());
+      for (Index c = 0; c < share.outerSize(); ++c)
+        for (SparseMatrix::InnerIterator it(share, c); it; ++it) {
+          ci.push_back(coarse_numbering.global(it.row()));
+          cj.push_back(coarse_numbering.global(c));
+        }
+      check(MatSetPreallocationCOO(C, static_cast<PetscCount>(ci.size()), ci.data(), cj.data()),
+            "a coarse level");
+      check(MatSetValuesCOO(C, share.valuePtr(), INSERT_VALUES), "a coarse level");
+    }
+    share = SparseMatrix();
+    check(MatSetOption(C, MAT_SYMMETRIC, PETSC_TRUE), "a coarse level");
+    out.prolongations.push_back(P);
+    out.operators.push_back(C);
+    level = C;
+    B = std::move(t.coarse_null_space);
+    node_of = std::move(t.coarse_node);
+    place_of = std::move(t.place_of);
+  }
+  return out;
+}
+
+}  // namespace signorini::petsc
