@@ -3,8 +3,11 @@
 
 #include <map>
 #include <string>
+#include <utility>
 
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/mesh/box_mesh.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/rectangle_hierarchy.hpp"
 
@@ -31,6 +34,31 @@ inline ProblemWithHierarchy paper_problem_with_hierarchy(Index nx) {
   h.prolongations = make_rectangle_prolongations(spec.mesh, spec.clamps, model.dofs);
   h.kind = HierarchyKind::Geometric;
   return {model.problem, std::move(h)};
+}
+
+/// An elastic block of nx x ny x nz cells of `cell` (E = 1000, nu = 0.3) clamped at its bottom
+/// (zmin): its stiffness and rigid-body modes, for the multigrid tests.
+struct ClampedBlock {
+  Mesh mesh;
+  DofMap dofs;
+  SparseMatrix A;
+  Matrix modes;
+};
+inline ClampedBlock clamped_block(Index nx, Index ny, Index nz, CellType cell = CellType::Hex8) {
+  BoxMeshOptions box;
+  box.nx = nx;
+  box.ny = ny;
+  box.nz = nz;
+  box.cell = cell;
+  Mesh mesh = make_box_mesh(box);
+  ClampSpec bottom;
+  bottom.boundary = "zmin";
+  DofMap dofs = make_dof_map(mesh, {bottom});
+  ElasticityOptions elasticity;
+  elasticity.material = {1000.0, 0.3};
+  SparseMatrix A = assemble_stiffness(mesh, dofs, elasticity);
+  Matrix modes = rigid_body_modes(mesh, dofs);
+  return {std::move(mesh), std::move(dofs), std::move(A), std::move(modes)};
 }
 
 /// `spec` with every contact boundary given the friction law `model`: Coulomb's coefficient

@@ -22,6 +22,7 @@
 #include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
+#include "test_problems.hpp"
 
 namespace signorini {
 namespace {
@@ -117,21 +118,12 @@ TEST(SmoothedAggregation, ProlongationsCarryTheRigidBodyModes) {
 TEST(SmoothedAggregation, ThreeDimensionalProductsMatchEigens) {
   // In 3D each aggregate carries six modes, so the prolongation's and the Galerkin product's
   // columns are formed six at a time (form_column_groups): both against Eigen's own products.
-  BoxMeshOptions box;
-  box.nx = 6;
-  box.ny = 5;
-  box.nz = 4;
-  const Mesh mesh = make_box_mesh(box);
-  ClampSpec bottom;
-  bottom.boundary = "zmin";
-  const DofMap dofs = make_dof_map(mesh, {bottom});
-  ElasticityOptions elasticity;
-  elasticity.material = {1000.0, 0.3};
-  const SparseMatrix A = assemble_stiffness(mesh, dofs, elasticity);
+  const testing::ClampedBlock block = testing::clamped_block(6, 5, 4);
+  const SparseMatrix& A = block.A;
   SmoothedAggregationOptions o;
   o.max_coarse_unknowns = 30;
   const MultigridHierarchy h =
-      smoothed_aggregation_hierarchy(A, rigid_body_modes(mesh, dofs), free_dof_nodes(dofs), o);
+      smoothed_aggregation_hierarchy(A, block.modes, free_dof_nodes(block.dofs), o);
   ASSERT_GE(h.prolongations.size(), 1U);
   const SparseMatrix& P = h.prolongations[0];
   EXPECT_EQ(P.cols() % 6, 0);  // six modes per aggregate (none too small to carry them)
@@ -149,19 +141,10 @@ TEST(SmoothedAggregation, ThreeDimensionalProductsMatchEigens) {
 // rows of the smoothed prolongation are those of the whole one, and the aggregation of a rank's
 // nodes ignores the rows of the other's unknowns.
 TEST(SmoothedAggregation, ARanksSharesOfTheProductsSumToTheWholeOnes) {
-  BoxMeshOptions box;
-  box.nx = 6;
-  box.ny = 5;
-  box.nz = 4;
-  const Mesh mesh = make_box_mesh(box);
-  ClampSpec bottom;
-  bottom.boundary = "zmin";
-  const DofMap dofs = make_dof_map(mesh, {bottom});
-  ElasticityOptions elasticity;
-  elasticity.material = {1000.0, 0.3};
-  const SparseMatrix A = assemble_stiffness(mesh, dofs, elasticity);
-  const Matrix B = rigid_body_modes(mesh, dofs);
-  const std::vector<Index> nodes = free_dof_nodes(dofs);
+  const testing::ClampedBlock block = testing::clamped_block(6, 5, 4);
+  const SparseMatrix& A = block.A;
+  const Matrix& B = block.modes;
+  const std::vector<Index> nodes = free_dof_nodes(block.dofs);
   const Index n = A.rows();
   const AggregationLevel whole = aggregate_level(A, B, nodes, {}, 0.0);
   const double omega = 0.4;

@@ -10,12 +10,11 @@
 
 #include <cmath>
 
-#include "signorini/fem/rigid_body_modes.hpp"
-#include "signorini/mesh/box_mesh.hpp"
 #include "signorini/petsc/aggregation_levels.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 #include "signorini/problem/model.hpp"
+#include "test_problems.hpp"
 
 namespace signorini::petsc {
 namespace {
@@ -34,19 +33,9 @@ double relative_difference(Mat X, Mat Y) {
 
 TEST(AggregationLevels, CoarseOperatorsArePetscsGalerkinProducts) {
   // A hex8 block clamped at its bottom (3,630 unknowns), every rank holding whole nodes.
-  BoxMeshOptions box;
-  box.nx = 12;
-  box.ny = 10;
-  box.nz = 9;
-  box.cell = CellType::Hex8;
-  const Mesh mesh = make_box_mesh(box);
-  ClampSpec bottom;
-  bottom.boundary = "zmin";
-  const DofMap dofs = make_dof_map(mesh, {bottom});
-  ElasticityOptions elasticity;
-  elasticity.material = {1000.0, 0.3};
-  const SparseMatrix A = assemble_stiffness(mesh, dofs, elasticity);
-  const Matrix B = rigid_body_modes(mesh, dofs);
+  const testing::ClampedBlock block = testing::clamped_block(12, 10, 9);
+  const SparseMatrix& A = block.A;
+  const Matrix& B = block.modes;
   int rank = 0, size = 1;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &size);

@@ -7,7 +7,7 @@
 
 namespace signorini {
 
-SparseMatrix galerkin_product(const SparseMatrix& A, const SparseMatrix& P) {
+SparseMatrix galerkin_product(const SparseView& A, const SparseMatrix& P) {
   if (A.cols() > A.rows() || P.rows() != A.rows())
     throw NumericalError("galerkin_product: A must have as many rows as P and no more columns");
   // Columns of A past k (another rank's unknowns) are rows of E that this rank does not hold:
@@ -38,11 +38,11 @@ SparseMatrix galerkin_product(const SparseMatrix& A, const SparseMatrix& P) {
           const Index i = p_inner[p_outer[J0] + k];
           if (i >= k_columns) continue;
           if (counting) {
-            for (SparseMatrix::InnerIterator a(A, i); a; ++a) fine.row(a.row());
+            for (SparseView::InnerIterator a(A, i); a; ++a) fine.row(a.row());
             continue;
           }
           for (int c = 0; c < w; ++c) p[c] = p_values[p_outer[J0 + c] + k];
-          for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
+          for (SparseView::InnerIterator a(A, i); a; ++a) {
             double* f = fine.row(a.row());
             const double value = a.value();
             for (int c = 0; c < w; ++c) f[c] += value * p[c];

@@ -16,6 +16,9 @@ namespace signorini {
 /// k .. n-1 are another rank's (petsc/aggregation_levels.hpp). The result is then (P^T E P)^T,
 /// E = A with the rows k .. n-1 set to zero: this rank's share of the whole product, which the
 /// ranks' shares sum to (it is not symmetric by itself).
-SparseMatrix galerkin_product(const SparseMatrix& A, const SparseMatrix& P);
+SparseMatrix galerkin_product(const SparseView& A, const SparseMatrix& P);
+inline SparseMatrix galerkin_product(const SparseMatrix& A, const SparseMatrix& P) {
+  return galerkin_product(view_of(A), P);
+}
 
 }  // namespace signorini

@@ -40,7 +40,7 @@ std::vector<Index> node_starts(const std::vector<Index>& node_of_unknown) {
 
 // The strong couplings between nodes (the node graph of A, self excluded), from the Frobenius
 // norms of A's node blocks.
-void strength_graph(const SparseMatrix& A, const std::vector<Index>& start,
+void strength_graph(const SparseView& A, const std::vector<Index>& start,
                     const std::vector<Index>& node_of, double theta, std::vector<Index>& offsets,
                     std::vector<Index>& adjacency) {
   const auto m = static_cast<Index>(start.size()) - 1;
@@ -50,7 +50,7 @@ void strength_graph(const SparseMatrix& A, const std::vector<Index>& start,
   for (Index a = 0; a < m; ++a)
     for (Index j = start[static_cast<std::size_t>(a)]; j < start[static_cast<std::size_t>(a) + 1];
          ++j)
-      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+      for (SparseView::InnerIterator it(A, j); it; ++it)
         if (it.row() < n && node_of[static_cast<std::size_t>(it.row())] == a)
           diagonal[static_cast<std::size_t>(a)] += it.value() * it.value();
   for (double& d : diagonal) d = std::sqrt(d);
@@ -64,7 +64,7 @@ void strength_graph(const SparseMatrix& A, const std::vector<Index>& start,
     touched.clear();
     for (Index j = start[static_cast<std::size_t>(a)]; j < start[static_cast<std::size_t>(a) + 1];
          ++j)
-      for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+      for (SparseView::InnerIterator it(A, j); it; ++it) {
         if (it.row() >= n) continue;
         const Index b = node_of[static_cast<std::size_t>(it.row())];
         if (b == a) continue;
@@ -208,8 +208,14 @@ std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
 // P = (I - omega D^{-1} A) T, in parallel over groups of columns (Eigen's general sparse product
 // takes ten times longer, on one thread): the columns of one aggregate have the same rows in T,
 // so they are formed together, each entry of A read once for all of them.
-SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T, double omega) {
-  const Vector scale = -omega * A.diagonal().cwiseInverse();
+SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, double omega) {
+  Vector scale(A.cols());
+  for (Index j = 0; j < A.cols(); ++j) {
+    double diagonal = 0.0;
+    for (SparseView::InnerIterator a(A, j); a; ++a)
+      if (a.row() == j) diagonal = a.value();
+    scale(j) = -omega / diagonal;
+  }
   const int* t_outer = T.outerIndexPtr();
   const int* t_inner = T.innerIndexPtr();
   const double* t_values = T.valuePtr();
@@ -225,13 +231,13 @@ SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T,
           const Index i = t_inner[t_outer[J0] + k];
           if (counting) {
             out.row(i);
-            for (SparseMatrix::InnerIterator a(A, i); a; ++a) out.row(a.row());
+            for (SparseView::InnerIterator a(A, i); a; ++a) out.row(a.row());
             continue;
           }
           for (int c = 0; c < w; ++c) t[c] = t_values[t_outer[J0 + c] + k];
           double* own = out.row(i);
           for (int c = 0; c < w; ++c) own[c] += t[c];
-          for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
+          for (SparseView::InnerIterator a(A, i); a; ++a) {
             const double s = scale[a.row()] * a.value();
             double* v = out.row(a.row());
             for (int c = 0; c < w; ++c) v[c] += s * t[c];
@@ -243,8 +249,7 @@ SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T,
   return form_column_groups(A.rows(), T.cols(), same_row_groups(T), make_group);
 }
 
-SparseMatrix smoothed_prolongation_rows(const SparseMatrix& A, const SparseMatrix& T,
-                                        double omega) {
+SparseMatrix smoothed_prolongation_rows(const SparseView& A, const SparseMatrix& T, double omega) {
   const Index k = A.cols();
   const Index m = T.cols();
   if (k > A.rows() || T.rows() != A.rows())
@@ -287,13 +292,13 @@ SparseMatrix smoothed_prolongation_rows(const SparseMatrix& A, const SparseMatri
         sum[u] += v;
       };
       double diagonal = 0.0;
-      for (SparseMatrix::InnerIterator a(A, i); a; ++a)
+      for (SparseView::InnerIterator a(A, i); a; ++a)
         if (a.row() == i) diagonal = a.value();
       // (An SPD matrix has a positive diagonal; a zero one leaves the row unsmoothed.)
       const double scale = diagonal != 0.0 ? -omega / diagonal : 0.0;
       for (RowMatrix::InnerIterator ti(Tr, i); ti; ++ti)
         add(static_cast<int>(ti.col()), ti.value());
-      for (SparseMatrix::InnerIterator a(A, i); a; ++a) {
+      for (SparseView::InnerIterator a(A, i); a; ++a) {
         const double s = scale * a.value();
         for (RowMatrix::InnerIterator tj(Tr, a.row()); tj; ++tj)
           add(static_cast<int>(tj.col()), s * tj.value());
@@ -328,7 +333,7 @@ SparseMatrix smoothed_prolongation_rows(const SparseMatrix& A, const SparseMatri
   return SparseMatrix(P);
 }
 
-AggregationLevel aggregate_level(const SparseMatrix& A, const Matrix& near_null_space,
+AggregationLevel aggregate_level(const SparseView& A, const Matrix& near_null_space,
                                  const std::vector<Index>& node_of_unknown,
                                  const std::vector<Index>& place_of, double strength_threshold) {
   const auto n = static_cast<Index>(node_of_unknown.size());

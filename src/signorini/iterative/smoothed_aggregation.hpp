@@ -57,20 +57,35 @@ struct AggregationLevel {
 /// it may have more rows (another rank's unknowns), which are not aggregated and do not count
 /// as couplings. `place_of`: per node number, its place in the order of aggregation (empty:
 /// the number itself); the result's place_of is the next level's.
-AggregationLevel aggregate_level(const SparseMatrix& A, const Matrix& near_null_space,
+AggregationLevel aggregate_level(const SparseView& A, const Matrix& near_null_space,
                                  const std::vector<Index>& node_of_unknown,
                                  const std::vector<Index>& place_of, double strength_threshold);
+inline AggregationLevel aggregate_level(const SparseMatrix& A, const Matrix& near_null_space,
+                                        const std::vector<Index>& node_of_unknown,
+                                        const std::vector<Index>& place_of,
+                                        double strength_threshold) {
+  return aggregate_level(view_of(A), near_null_space, node_of_unknown, place_of,
+                         strength_threshold);
+}
 
 /// The smoothed prolongation P = (I - omega D^{-1} A) T for a symmetric A (n x n), in parallel
 /// over groups of columns (those of an aggregate share their rows in T); exact zeros kept.
-SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T, double omega);
+SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, double omega);
+inline SparseMatrix smoothed_prolongation(const SparseMatrix& A, const SparseMatrix& T,
+                                          double omega) {
+  return smoothed_prolongation(view_of(A), T, omega);
+}
 
 /// The rows 0 .. k-1 of the smoothed prolongation P = (I - omega D^{-1} A) T, with A given by
 /// its first k columns (n x k, both triangles: A's rows of the unknowns 0 .. k-1, by symmetry)
 /// and T (n x m) by all its rows: what one rank forms of the prolongation of its own unknowns
 /// when T's rows k .. n-1 are its neighbours' (petsc/aggregation_levels.hpp). k x m, exact
 /// zeros kept (as smoothed_prolongation keeps them); in parallel over the rows.
-SparseMatrix smoothed_prolongation_rows(const SparseMatrix& A, const SparseMatrix& T, double omega);
+SparseMatrix smoothed_prolongation_rows(const SparseView& A, const SparseMatrix& T, double omega);
+inline SparseMatrix smoothed_prolongation_rows(const SparseMatrix& A, const SparseMatrix& T,
+                                               double omega) {
+  return smoothed_prolongation_rows(view_of(A), T, omega);
+}
 
 /// The aggregation step alone (exposed for tests): the aggregate of every node of the node graph
 /// given by the CSR-like arrays (neighbours of node a are adjacency[offsets[a] .. offsets[a+1]),

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include "signorini/core/error.hpp"
@@ -115,34 +116,56 @@ GlobalRows fetch_rows(Mat M, const std::vector<PetscInt>& rows) {
   return out;
 }
 
+// Fills M (type AIJ, sized) with this rank's rows in CSR (global column numbers, each row's
+// ascending); PETSc copies them. (Each call is a no-op on the other type.)
+template <class O, class C>
+void set_rows(Mat M, Index rows, const O* outer, const C* columns, const double* values) {
+  if constexpr (std::is_same_v<O, PetscInt> && std::is_same_v<C, PetscInt>) {
+    // (Whole rows, sorted, the preallocation exact: PETSc copies each row in one go.)
+    check(MatSetOption(M, MAT_SORTED_FULL, PETSC_TRUE), "a multigrid level");
+    check(MatSeqAIJSetPreallocationCSR(M, outer, columns, values), "a multigrid level");
+    check(MatMPIAIJSetPreallocationCSR(M, outer, columns, values), "a multigrid level");
+  } else {
+    const std::vector<PetscInt> o(outer, outer + rows + 1);
+    const std::vector<PetscInt> c(columns, columns + outer[rows]);
+    set_rows(M, rows, o.data(), c.data(), values);
+  }
+}
+
 // This rank's rows of a distributed matrix from their local form (rows: the rank's own;
 // columns: `numbering`), `local_columns` of its columns owned here.
 Mat distributed_matrix(MPI_Comm comm, const RowMatrix& R, const ExtNumbering& numbering,
                        PetscInt local_columns) {
   const auto rows = static_cast<PetscInt>(R.rows());
-  std::vector<PetscInt> outer(R.outerIndexPtr(), R.outerIndexPtr() + rows + 1);
-  std::vector<std::pair<PetscInt, double>> row;
-  std::vector<PetscInt> columns(static_cast<std::size_t>(R.nonZeros()));
-  std::vector<double> values(columns.size());
-  for (PetscInt r = 0; r < rows; ++r) {
-    row.clear();
-    for (RowMatrix::InnerIterator it(R, r); it; ++it)
-      row.emplace_back(numbering.global(it.col()), it.value());
-    std::sort(row.begin(), row.end());  // (PETSc's CSR: each row's global columns ascending)
-    for (std::size_t k = 0; k < row.size(); ++k) {
-      columns[static_cast<std::size_t>(outer[static_cast<std::size_t>(r)]) + k] = row[k].first;
-      values[static_cast<std::size_t>(outer[static_cast<std::size_t>(r)]) + k] = row[k].second;
-    }
-  }
   Mat M = nullptr;
   check(MatCreate(comm, &M), "a prolongation");
   check(MatSetSizes(M, rows, local_columns, PETSC_DETERMINE, PETSC_DETERMINE), "a prolongation");
   check(MatSetType(M, MATAIJ), "a prolongation");
-  // (Each call is a no-op on the other type.)
-  check(MatSeqAIJSetPreallocationCSR(M, outer.data(), columns.data(), values.data()),
-        "a prolongation");
-  check(MatMPIAIJSetPreallocationCSR(M, outer.data(), columns.data(), values.data()),
-        "a prolongation");
+  if (numbering.first == 0 && numbering.foreign.empty()) {  // (one rank: local is global)
+    set_rows(M, rows, R.outerIndexPtr(), R.innerIndexPtr(), R.valuePtr());
+    return M;
+  }
+  std::vector<PetscInt> columns(static_cast<std::size_t>(R.nonZeros()));
+  std::vector<double> values(R.valuePtr(), R.valuePtr() + R.nonZeros());
+  std::vector<std::pair<PetscInt, double>> row;
+  for (PetscInt r = 0; r < rows; ++r) {
+    const auto b = static_cast<std::size_t>(R.outerIndexPtr()[r]);
+    const auto e = static_cast<std::size_t>(R.outerIndexPtr()[r + 1]);
+    bool sorted = true;
+    for (std::size_t k = b; k < e; ++k) {
+      columns[k] = numbering.global(R.innerIndexPtr()[k]);
+      sorted = sorted && (k == b || columns[k - 1] < columns[k]);
+    }
+    if (sorted) continue;  // (only rows that reach a neighbour's columns need it)
+    row.clear();
+    for (std::size_t k = b; k < e; ++k) row.emplace_back(columns[k], values[k]);
+    std::sort(row.begin(), row.end());
+    for (std::size_t k = b; k < e; ++k) {
+      columns[k] = row[k - b].first;
+      values[k] = row[k - b].second;
+    }
+  }
+  set_rows(M, rows, R.outerIndexPtr(), columns.data(), values.data());
   return M;
 }
 
@@ -174,71 +197,99 @@ SparseMatrix extended_rows(MPI_Comm comm, Mat P, const RowMatrix& own,
   return SparseMatrix(local_rows(g, numbering.size(), numbering));
 }
 
+// A SeqAIJ matrix's CSR arrays, borrowed from PETSc for the object's life.
+class Csr {
+ public:
+  explicit Csr(Mat M) : M_(M) {
+    PetscBool done = PETSC_FALSE;
+    check(MatGetRowIJ(M_, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done),
+          "a multigrid level's rows");
+    if (!done) throw NumericalError("PETSc: a multigrid level's rows are not in CSR");
+    check(MatSeqAIJGetArrayRead(M_, &a), "a multigrid level's rows");
+  }
+  ~Csr() {
+    PetscBool done = PETSC_FALSE;
+    MatSeqAIJRestoreArrayRead(M_, &a);
+    MatRestoreRowIJ(M_, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done);
+  }
+  Csr(const Csr&) = delete;
+  Csr& operator=(const Csr&) = delete;
+
+  PetscInt n = 0;
+  const PetscInt* ia = nullptr;
+  const PetscInt* ja = nullptr;
+  const PetscScalar* a = nullptr;
+
+ private:
+  Mat M_;
+};
+
+// PETSc's indices are the kernels' (32-bit): its arrays can be read in place.
+constexpr bool kSameIndices = std::is_same_v<PetscInt, int>;
+
 // A level's rows on this rank as the columns of its own unknowns (n_ext x n_own, A being
-// symmetric), copied from PETSc's own arrays: its diagonal block (columns of this rank) and, on
-// several ranks, its off-diagonal block, whose columns PETSc numbers in the ascending order of
-// their global numbers (the ghosts, which `fine` takes as its foreign unknowns), so that each
-// row comes out sorted in the local numbering.
-SparseMatrix own_columns(Mat level, ExtNumbering& fine) {
-  Mat diagonal = level, off = nullptr;
-  const PetscInt* ghosts = nullptr;
-  PetscBool distributed = PETSC_FALSE;
-  check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(level), MATMPIAIJ, &distributed),
-        "a multigrid level's rows");
-  if (distributed) check(MatMPIAIJGetSeqAIJ(level, &diagonal, &off, &ghosts), "a level's rows");
-  struct Csr {
-    Mat M = nullptr;
-    PetscInt n = 0;
-    const PetscInt* ia = nullptr;
-    const PetscInt* ja = nullptr;
-    const PetscScalar* a = nullptr;
-    explicit Csr(Mat m) : M(m) {
-      PetscBool done = PETSC_FALSE;
-      check(MatGetRowIJ(M, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done),
-            "a multigrid level's rows");
-      if (!done) throw NumericalError("PETSc: a multigrid level's rows are not in CSR");
-      check(MatSeqAIJGetArrayRead(M, &a), "a multigrid level's rows");
+// symmetric). On one rank, PETSc's own CSR arrays read in place (they are A's CSC arrays);
+// on several, a copy of its diagonal block (the rank's columns) and its off-diagonal block,
+// whose columns PETSc numbers in the ascending order of their global numbers (the ghosts,
+// which `fine` takes as its foreign unknowns), so that each row comes out sorted.
+class LevelColumns {
+ public:
+  LevelColumns(Mat level, ExtNumbering& fine) {
+    Mat diagonal = level, off = nullptr;
+    const PetscInt* ghosts = nullptr;
+    PetscBool distributed = PETSC_FALSE;
+    check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(level), MATMPIAIJ, &distributed),
+          "a multigrid level's rows");
+    if (distributed)
+      check(MatMPIAIJGetSeqAIJ(level, &diagonal, &off, &ghosts), "a multigrid level's rows");
+    in_place_.emplace(diagonal);
+    const Csr& d = *in_place_;
+    if (kSameIndices && off == nullptr) return;
+    std::optional<Csr> o;
+    PetscInt off_columns = 0;
+    if (off != nullptr) {
+      o.emplace(off);
+      check(MatGetSize(off, nullptr, &off_columns), "a multigrid level's rows");
+      fine.foreign.assign(ghosts, ghosts + off_columns);
     }
-    ~Csr() {
-      PetscBool done = PETSC_FALSE;
-      MatSeqAIJRestoreArrayRead(M, &a);
-      MatRestoreRowIJ(M, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done);
-    }
-    Csr(const Csr&) = delete;
-    Csr& operator=(const Csr&) = delete;
-    [[nodiscard]] PetscInt length(PetscInt r) const { return ia[r + 1] - ia[r]; }
-  };
-  const Csr d(diagonal);
-  std::optional<Csr> o;
-  PetscInt off_columns = 0;
-  if (off != nullptr) {
-    o.emplace(off);
-    check(MatGetSize(off, nullptr, &off_columns), "a multigrid level's rows");
-    fine.foreign.assign(ghosts, ghosts + off_columns);
-  }
-  SparseMatrix Al(fine.size(), fine.count);
-  Index nonzeros = d.ia[fine.count];
-  if (o) nonzeros += o->ia[fine.count];
-  Al.resizeNonZeros(nonzeros);
-  int* outer = Al.outerIndexPtr();
-  int* inner = Al.innerIndexPtr();
-  double* values = Al.valuePtr();
-  outer[0] = 0;
-  int at = 0;
-  for (PetscInt r = 0; r < fine.count; ++r) {
-    for (PetscInt k = d.ia[r]; k < d.ia[r + 1]; ++k, ++at) {
-      inner[at] = static_cast<int>(d.ja[k]);
-      values[at] = d.a[k];
-    }
-    if (o)
-      for (PetscInt k = o->ia[r]; k < o->ia[r + 1]; ++k, ++at) {
-        inner[at] = static_cast<int>(fine.count + o->ja[k]);
-        values[at] = o->a[k];
+    copy_.resize(fine.size(), fine.count);
+    Index nonzeros = d.ia[fine.count];
+    if (o) nonzeros += o->ia[fine.count];
+    copy_.resizeNonZeros(nonzeros);
+    int* outer = copy_.outerIndexPtr();
+    int* inner = copy_.innerIndexPtr();
+    double* values = copy_.valuePtr();
+    outer[0] = 0;
+    int at = 0;
+    for (PetscInt r = 0; r < fine.count; ++r) {
+      for (PetscInt k = d.ia[r]; k < d.ia[r + 1]; ++k, ++at) {
+        inner[at] = static_cast<int>(d.ja[k]);
+        values[at] = d.a[k];
       }
-    outer[r + 1] = at;
+      if (o)
+        for (PetscInt k = o->ia[r]; k < o->ia[r + 1]; ++k, ++at) {
+          inner[at] = static_cast<int>(fine.count + o->ja[k]);
+          values[at] = o->a[k];
+        }
+      outer[r + 1] = at;
+    }
+    in_place_.reset();
   }
-  return Al;
-}
+
+  [[nodiscard]] SparseView view() const {
+    if constexpr (kSameIndices) {
+      if (in_place_) {
+        const Csr& d = *in_place_;
+        return {d.n, d.n, d.ia[d.n], d.ia, d.ja, d.a};
+      }
+    }
+    return view_of(copy_);
+  }
+
+ private:
+  std::optional<Csr> in_place_;
+  SparseMatrix copy_;
+};
 
 }  // namespace
 
@@ -288,7 +339,8 @@ AggregationLevels aggregation_levels(Mat A) {
 
     // The rank's rows, as the columns of its own unknowns (n_ext x n_own).
     ExtNumbering fine{lo, hi - lo, {}};
-    SparseMatrix Al = own_columns(level, fine);
+    std::optional<LevelColumns> columns(std::in_place, level, fine);
+    const SparseView Al = columns->view();
 
     // The rank's nodes aggregated among themselves; the coarse unknowns numbered rank by rank.
     AggregationLevel t = aggregate_level(Al, B, node_of, place_of, options.strength_threshold);
@@ -320,30 +372,34 @@ AggregationLevels aggregation_levels(Mat A) {
     // P = (I - omega D^{-1} A) P_tent, omega = 4 / (3 rho(D^{-1} A)) (Vanek et al., eq. 4.4).
     // (On one rank A_l is square: the serial kernel, by groups of columns, is the faster.)
     const double omega = 4.0 / (3.0 * radius);
-    const RowMatrix P_own(size == 1 ? smoothed_prolongation(Al, T_ext, omega)
-                                    : smoothed_prolongation_rows(Al, T_ext, omega));
-    T_ext = SparseMatrix();
-    Mat P = distributed_matrix(comm, P_own, coarse_numbering, own_coarse);
-    SparseMatrix P_ext = size > 1 ? extended_rows(comm, P, P_own, fine.foreign, coarse_numbering)
-                                  : SparseMatrix(P_own);
+    SparseMatrix P_ext;
+    Mat P = nullptr;
+    {
+      RowMatrix P_own;
+      if (size == 1) {
+        P_ext = smoothed_prolongation(Al, T_ext, omega);
+        P_own = P_ext;
+      } else {
+        P_own = smoothed_prolongation_rows(Al, T_ext, omega);
+      }
+      T_ext = SparseMatrix();
+      P = distributed_matrix(comm, P_own, coarse_numbering, own_coarse);
+      if (size > 1) P_ext = extended_rows(comm, P, P_own, fine.foreign, coarse_numbering);
+    }
 
     // This rank's share of P^T A P (coarse numbering local), summed into the coarse level by
     // PETSc's COO assembly, which sends the other ranks' rows to them; on one rank, the
     // product itself (symmetric: its columns are its rows).
     SparseMatrix share = galerkin_product(Al, P_ext);
-    Al = SparseMatrix();
+    columns.reset();
     P_ext = SparseMatrix();
     Mat C = nullptr;
     check(MatCreate(comm, &C), "a coarse level");
     check(MatSetSizes(C, own_coarse, own_coarse, coarse, coarse), "a coarse level");
     check(MatSetType(C, MATAIJ), "a coarse level");
     if (size == 1) {
-      const std::vector<PetscInt> outer(share.outerIndexPtr(),
-                                        share.outerIndexPtr() + share.outerSize() + 1);
-      const std::vector<PetscInt> inner(share.innerIndexPtr(),
-                                        share.innerIndexPtr() + share.nonZeros());
-      check(MatSeqAIJSetPreallocationCSR(C, outer.data(), inner.data(), share.valuePtr()),
-            "a coarse level");
+      set_rows(C, share.outerSize(), share.outerIndexPtr(), share.innerIndexPtr(),
+               share.valuePtr());
     } else {
       std::vector<PetscInt> ci, cj;
       ci.reserve(static_cast<std::size_t>(share.nonZeros()));

@@ -6,8 +6,9 @@
 // threads, and PETSc carrying what crosses the ranks.
 //
 // Per level, on each rank:
-//  - its rows of A_l (MatGetRow), as the columns of its own unknowns (n_ext x n_own: its own
-//    unknowns first, then the others' that its rows touch, the ghosts);
+//  - its rows of A_l as the columns of its own unknowns (n_ext x n_own: its own unknowns first,
+//    then the others' that its rows touch, the ghosts), read in place from PETSc's CSR arrays
+//    on one rank, copied from its diagonal and off-diagonal blocks on several;
 //  - its nodes aggregated among themselves ("uncoupled" aggregation: no aggregate crosses two
 //    ranks, so no rank waits for another's choices), the tentative prolongation T of its rows
 //    and the coarse near-null space, as the serial aggregate_level does;

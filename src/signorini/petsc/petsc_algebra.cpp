@@ -66,6 +66,10 @@ Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, P
   // rank's. MatXAIJSetPreallocation would reset the block size that GAMG reads.)
   check(MatSeqAIJSetPreallocation(M, 0, d_nnz.data()), "a distributed matrix");
   check(MatMPIAIJSetPreallocation(M, 0, d_nnz.data(), 0, o_nnz.data()), "a distributed matrix");
+  // Each row whole, in one call, its columns ascending, the preallocation exact: PETSc copies
+  // the row instead of searching its place for each entry (3.9 s -> 1.8 s at a million
+  // hex8 unknowns, one rank).
+  check(MatSetOption(M, MAT_SORTED_FULL, PETSC_TRUE), "a distributed matrix");
   std::vector<PetscInt> columns;
   std::vector<PetscScalar> values;
   for (Index i = lo; i < hi; ++i) {
