@@ -31,7 +31,7 @@ double relative_difference(Mat X, Mat Y) {
   return d / y;
 }
 
-TEST(AggregationLevels, CoarseOperatorsArePetscsGalerkinProducts) {
+TEST(CoarseLevels, CoarseOperatorsArePetscsGalerkinProducts) {
   // A hex8 block clamped at its bottom (3,630 unknowns), every rank holding whole nodes.
   const testing::ClampedBlock block = testing::clamped_block(12, 10, 9);
   const SparseMatrix& A = block.A;
@@ -44,7 +44,7 @@ TEST(AggregationLevels, CoarseOperatorsArePetscsGalerkinProducts) {
   Mat M = distributed_rows(A, lo, hi, PETSC_COMM_WORLD, 3);
   ASSERT_EQ(attach_near_null_space(M, B.middleRows(lo, hi - lo)), 6U);
 
-  const AggregationLevels levels = aggregation_levels(M);
+  const CoarseLevels levels = aggregation_levels(M);
   ASSERT_GE(levels.prolongations.size(), 1U);
   ASSERT_EQ(levels.operators.size(), levels.prolongations.size());
   EXPECT_GT(levels.fine_jacobi_radius, 1.0);  // (D^-1 A has unit diagonal and couplings)

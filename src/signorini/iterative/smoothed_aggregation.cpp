@@ -205,17 +205,26 @@ std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
   return agg;
 }
 
+namespace {
+
+// -omega / a_jj for the columns j of A (with A's columns of the first unknowns only, their
+// diagonal): the smoothing step's row scaling. (An SPD matrix has a positive diagonal; a zero
+// one leaves its row unsmoothed.)
+Vector smoothing_scale(const SparseView& A, double omega) {
+  Vector scale = Vector::Zero(A.cols());
+  for (Index j = 0; j < A.cols(); ++j)
+    for (SparseView::InnerIterator a(A, j); a; ++a)
+      if (a.row() == j && a.value() != 0.0) scale(j) = -omega / a.value();
+  return scale;
+}
+
+}  // namespace
+
 // P = (I - omega D^{-1} A) T, in parallel over groups of columns (Eigen's general sparse product
 // takes ten times longer, on one thread): the columns of one aggregate have the same rows in T,
 // so they are formed together, each entry of A read once for all of them.
 SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, double omega) {
-  Vector scale(A.cols());
-  for (Index j = 0; j < A.cols(); ++j) {
-    double diagonal = 0.0;
-    for (SparseView::InnerIterator a(A, j); a; ++a)
-      if (a.row() == j) diagonal = a.value();
-    scale(j) = -omega / diagonal;
-  }
+  const Vector scale = smoothing_scale(A, omega);
   const int* t_outer = T.outerIndexPtr();
   const int* t_inner = T.innerIndexPtr();
   const double* t_values = T.valuePtr();
@@ -257,6 +266,7 @@ SparseMatrix smoothed_prolongation_rows(const SparseView& A, const SparseMatrix&
                                      A.cols(), T.rows(), T.cols()));
   using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
   const RowMatrix Tr(T);
+  const Vector scale = smoothing_scale(A, omega);
   int threads = 1;
 #ifdef _OPENMP
   if (k >= 20000) threads = omp_get_max_threads();
@@ -291,15 +301,10 @@ SparseMatrix smoothed_prolongation_rows(const SparseView& A, const SparseMatrix&
         }
         sum[u] += v;
       };
-      double diagonal = 0.0;
-      for (SparseView::InnerIterator a(A, i); a; ++a)
-        if (a.row() == i) diagonal = a.value();
-      // (An SPD matrix has a positive diagonal; a zero one leaves the row unsmoothed.)
-      const double scale = diagonal != 0.0 ? -omega / diagonal : 0.0;
       for (RowMatrix::InnerIterator ti(Tr, i); ti; ++ti)
         add(static_cast<int>(ti.col()), ti.value());
       for (SparseView::InnerIterator a(A, i); a; ++a) {
-        const double s = scale * a.value();
+        const double s = scale(i) * a.value();
         for (RowMatrix::InnerIterator tj(Tr, a.row()); tj; ++tj)
           add(static_cast<int>(tj.col()), s * tj.value());
       }

@@ -170,12 +170,10 @@ Mat distributed_matrix(MPI_Comm comm, const RowMatrix& R, const ExtNumbering& nu
 }
 
 // A prolongation's rows on this rank: its own (R, columns in `numbering`), then those of the
-// ghosts fetched from P; `numbering` gains the columns the fetched rows bring. Column-major,
-// n_ext x the numbering's size.
-SparseMatrix extended_rows(MPI_Comm comm, Mat P, const RowMatrix& own,
-                           const std::vector<PetscInt>& ghosts, ExtNumbering& numbering) {
-  int size = 1;
-  MPI_Comm_size(comm, &size);
+// ghosts fetched from P (on several ranks; collective); `numbering` gains the columns the
+// fetched rows bring. Column-major, n_ext x the numbering's size.
+SparseMatrix extended_rows(Mat P, const RowMatrix& own, const std::vector<PetscInt>& ghosts,
+                           ExtNumbering& numbering) {
   GlobalRows g;
   // Own rows in global columns first, so that the numbering can take the fetched ones in.
   for (Index r = 0; r < own.rows(); ++r) {
@@ -185,15 +183,12 @@ SparseMatrix extended_rows(MPI_Comm comm, Mat P, const RowMatrix& own,
     }
     g.outer.push_back(static_cast<int>(g.columns.size()));
   }
-  if (size > 1) {
-    const GlobalRows fetched = fetch_rows(P, ghosts);
-    numbering.add_foreign(fetched.columns);
-    const int base = g.outer.back();
-    for (std::size_t r = 1; r < fetched.outer.size(); ++r)
-      g.outer.push_back(base + fetched.outer[r]);
-    g.columns.insert(g.columns.end(), fetched.columns.begin(), fetched.columns.end());
-    g.values.insert(g.values.end(), fetched.values.begin(), fetched.values.end());
-  }
+  const GlobalRows fetched = fetch_rows(P, ghosts);
+  numbering.add_foreign(fetched.columns);
+  const int base = g.outer.back();
+  for (std::size_t r = 1; r < fetched.outer.size(); ++r) g.outer.push_back(base + fetched.outer[r]);
+  g.columns.insert(g.columns.end(), fetched.columns.begin(), fetched.columns.end());
+  g.values.insert(g.values.end(), fetched.values.begin(), fetched.values.end());
   return SparseMatrix(local_rows(g, numbering.size(), numbering));
 }
 
@@ -293,12 +288,12 @@ class LevelColumns {
 
 }  // namespace
 
-AggregationLevels aggregation_levels(Mat A) {
+CoarseLevels aggregation_levels(Mat A) {
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(A));
   int size = 1;
   MPI_Comm_size(comm, &size);
   const SmoothedAggregationOptions options;  // the serial tool's, as its hierarchy
-  AggregationLevels out;
+  CoarseLevels out;
 
   // The fine level's near-null space (this rank's rows) and nodes (A's blocks).
   // Without one attached, the translations, one per unknown of a node (GAMG's default too).
@@ -344,13 +339,10 @@ AggregationLevels aggregation_levels(Mat A) {
 
     // The rank's nodes aggregated among themselves; the coarse unknowns numbered rank by rank.
     AggregationLevel t = aggregate_level(Al, B, node_of, place_of, options.strength_threshold);
-    auto own_coarse = static_cast<PetscInt>(t.tentative.cols());
-    PetscInt first_coarse = 0, coarse = 0;
-    MPI_Exscan(&own_coarse, &first_coarse, 1, MPIU_INT, MPI_SUM, comm);
+    const auto own_coarse = static_cast<PetscInt>(t.tentative.cols());
+    const PetscInt first_coarse = count_before(own_coarse, comm);
+    PetscInt coarse = 0;
     MPI_Allreduce(&own_coarse, &coarse, 1, MPIU_INT, MPI_SUM, comm);
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
-    if (rank == 0) first_coarse = 0;
     if (static_cast<double>(coarse) > (1.0 - options.min_reduction) * static_cast<double>(n))
       break;  // no real coarsening left
 
@@ -358,17 +350,14 @@ AggregationLevels aggregation_levels(Mat A) {
     ExtNumbering coarse_numbering{first_coarse, own_coarse, {}};
     const double radius = jacobi_lambda_max(level);
     if (depth == 0) out.fine_jacobi_radius = radius;
-    SparseMatrix T_ext;
-    {
+    SparseMatrix T_ghosts;  // (on several ranks: T's rows of the ghosts too)
+    if (size > 1) {
       const RowMatrix T_own(t.tentative);
-      if (size > 1) {
-        Mat T = distributed_matrix(comm, T_own, coarse_numbering, own_coarse);
-        T_ext = extended_rows(comm, T, T_own, fine.foreign, coarse_numbering);
-        check(MatDestroy(&T), "a tentative prolongation");
-      } else {
-        T_ext = t.tentative;
-      }
+      Mat T = distributed_matrix(comm, T_own, coarse_numbering, own_coarse);
+      T_ghosts = extended_rows(T, T_own, fine.foreign, coarse_numbering);
+      check(MatDestroy(&T), "a tentative prolongation");
     }
+    const SparseMatrix& T_ext = size > 1 ? T_ghosts : t.tentative;
     // P = (I - omega D^{-1} A) P_tent, omega = 4 / (3 rho(D^{-1} A)) (Vanek et al., eq. 4.4).
     // (On one rank A_l is square: the serial kernel, by groups of columns, is the faster.)
     const double omega = 4.0 / (3.0 * radius);
@@ -382,9 +371,9 @@ AggregationLevels aggregation_levels(Mat A) {
       } else {
         P_own = smoothed_prolongation_rows(Al, T_ext, omega);
       }
-      T_ext = SparseMatrix();
+      T_ghosts = SparseMatrix();
       P = distributed_matrix(comm, P_own, coarse_numbering, own_coarse);
-      if (size > 1) P_ext = extended_rows(comm, P, P_own, fine.foreign, coarse_numbering);
+      if (size > 1) P_ext = extended_rows(P, P_own, fine.foreign, coarse_numbering);
     }
 
     // This rank's share of P^T A P (coarse numbering local), summed into the coarse level by

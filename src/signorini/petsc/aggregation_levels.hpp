@@ -31,8 +31,9 @@ namespace signorini::petsc {
 
 /// The levels below the fine one, fine first: prolongations[l] takes level l + 1 to level l
 /// (level 0 the fine one), operators[l] is level l + 1's Galerkin product; the caller owns the
-/// matrices. fine_jacobi_radius: lambda_max(D^-1 A) of the fine level, as estimated here.
-struct AggregationLevels {
+/// matrices. fine_jacobi_radius: lambda_max(D^-1 A) of the fine level where the maker
+/// estimated it (0 where not). Made here, or by GAMG (petsc_contact_multigrid.cpp).
+struct CoarseLevels {
   std::vector<Mat> prolongations;
   std::vector<Mat> operators;
   double fine_jacobi_radius = 0.0;
@@ -41,6 +42,6 @@ struct AggregationLevels {
 /// The levels of A (AIJ, symmetric positive definite, its block size the unknowns of a node and
 /// its near-null space attached, as for GAMG; without one, the translations of the nodes'
 /// unknowns). Collective on A's communicator.
-[[nodiscard]] AggregationLevels aggregation_levels(Mat A);
+[[nodiscard]] CoarseLevels aggregation_levels(Mat A);
 
 }  // namespace signorini::petsc

@@ -227,6 +227,14 @@ std::vector<Vec> near_null_vectors(const Matrix& modes, Mat like) {
 
 }  // namespace
 
+PetscInt count_before(PetscInt mine, MPI_Comm comm) {
+  PetscInt before = 0;
+  MPI_Exscan(&mine, &before, 1, MPIU_INT, MPI_SUM, comm);
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank == 0 ? 0 : before;  // (MPI_Exscan leaves the first rank's undefined)
+}
+
 double jacobi_lambda_max(Mat A) {
   KSP k = nullptr;
   check(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &k), "an estimate");
@@ -281,7 +289,7 @@ void insert_petsc_options(const ContactSolverOptions& o) {
           fmt::format("solver.petsc_options = \"{}\"", o.petsc_options).c_str());
 }
 
-bool keeps_gamg_levels(const ContactSolverOptions& o) {
+bool keeps_multigrid_levels(const ContactSolverOptions& o) {
   insert_petsc_options(o);
   PetscBool pc_type_given = PETSC_FALSE;
   check(PetscOptionsHasName(nullptr, nullptr, "-pc_type", &pc_type_given), "PETSc options");

@@ -39,6 +39,10 @@ void mark_spd(Mat M, const char* what);
 /// ranks) to M as its near-null space, for GAMG; returns how many were kept.
 std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space);
 
+/// The sum of `mine` over the ranks before this one (0 on the first): where this rank's share
+/// starts in a numbering rank by rank. Collective.
+[[nodiscard]] PetscInt count_before(PetscInt mine, MPI_Comm comm);
+
 /// lambda_max(D^-1 A) estimated by 10 steps of Jacobi-preconditioned CG from a random right-hand
 /// side (the Lanczos values of CG), as GAMG's smoothers estimate theirs.
 [[nodiscard]] double jacobi_lambda_max(Mat A);
@@ -78,7 +82,7 @@ void insert_petsc_options(const ContactSolverOptions& options);
 
 /// Whether Uzawa-GNM's CG keeps its multigrid levels (ContactMultigrid): "cg" with "multigrid"
 /// on "gamg" or "aggregation", and no -pc_type among the PETSc options.
-[[nodiscard]] bool keeps_gamg_levels(const ContactSolverOptions& options);
+[[nodiscard]] bool keeps_multigrid_levels(const ContactSolverOptions& options);
 
 /// Makes `pc` the multigrid of CG for "cg" with "multigrid" on GAMG (ContactMultigrid); returns
 /// what it made, for the description.
@@ -89,8 +93,8 @@ using MultigridBuilder = std::function<std::string(PC pc)>;
 /// empty), "cg" with "jacobi" -> CG with Jacobi, a direct solver -> MUMPS's Cholesky
 /// factorisation; CG measures the unpreconditioned residual and starts from the given x. Then
 /// solver.petsc_options. `reuse_interpolation`: GAMG keeps its prolongators when H's values
-/// change. `multigrid`, where given (the caller asks keeps_gamg_levels), makes the multigrid of
-/// "cg" with "multigrid"; H may then be null, the caller giving the KSP its operator later (the
+/// change. `multigrid`, where given (the caller asks keeps_multigrid_levels), makes the multigrid
+/// of "cg" with "multigrid"; H may then be null, the caller giving the KSP its operator later (the
 /// multigrid's levels do not need it).
 KspChoice configure_ksp(KSP ksp, Mat H, const ContactSolverOptions& options,
                         const Matrix& near_null_space, bool reuse_interpolation,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iterator>
 
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/aggregation_levels.hpp"
@@ -61,69 +62,69 @@ constexpr bool kHypreProducts = true;
 constexpr bool kHypreProducts = false;
 #endif
 
+// GAMG's levels of A_setup, fine first (GAMG gives them coarsest first).
+CoarseLevels gamg_levels(Mat A_setup) {
+  // GAMG once, on A; PETSc's options for GAMG (-pc_gamg_*) apply to it.
+  KSP setup = nullptr;
+  check(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A_setup)), &setup), "GAMG");
+  check(KSPSetOperators(setup, A_setup, A_setup), "GAMG");
+  PC g = nullptr;
+  check(KSPGetPC(setup, &g), "GAMG");
+  check(PCSetType(g, PCGAMG), "GAMG");
+  // Two defaults of ours for GAMG's set-up, where PETSc's options (solver.petsc_options,
+  // PETSC_OPTIONS) do not choose otherwise (docs/distributed.md, "The multigrid of the Newton
+  // systems"), both measured on Hertz's ball at a million unknowns, one rank of two cores:
+  // - aggressive coarsening (the graph squared, MIS-2) on the first two levels, not only the
+  //   first: the third level is some 7 times smaller (828 against 6,066 unknowns) and the
+  //   Galerkin product that makes it, from the second level's dense 6 x 6 blocks, 1.3 s
+  //   instead of 4.5-7.3 s; the levels' refreshes for each active set are cheaper too, for
+  //   some 15 % more CG iterations;
+  // - the Galerkin products by hypre's, which run on the rank's OpenMP threads (PETSc's own
+  //   run on one): the finest level's 5.6 s instead of 8.5 s. Only for GAMG's set-up: the
+  //   contact terms' small products below stay PETSc's, cheaper there.
+  {
+    const ScopedDefaultOption aggressive("-pc_gamg_aggressive_coarsening", "2",
+                                         "-pc_gamg_square_graph");
+    const ScopedDefaultOption products("-matptap_via", kHypreProducts ? "hypre" : "");
+    check(PCSetFromOptions(g), "GAMG options");  // (no -pc_type: keeps_multigrid_levels)
+    check(PCSetUp(g), "GAMG's set-up");
+  }
+  PetscInt np = 0, na = 0;
+  Mat* Ps = nullptr;
+  Mat* As = nullptr;
+  check(PCGetInterpolations(g, &np, &Ps), "GAMG's levels");
+  check(PCGetCoarseOperators(g, &na, &As), "GAMG's levels");
+  // Both report the number of levels and hold one matrix fewer (PETSc referenced each). One
+  // level (a problem of a few dozen unknowns): the smoother alone preconditions.
+  if (np != na || np < 1)
+    throw NumericalError(fmt::format("PETSc: GAMG made {} prolongators for {} levels", np, na));
+  // (np - 1 of each: the levels below the fine one, coarsest first.)
+  CoarseLevels out;
+  out.prolongations.assign(std::make_reverse_iterator(Ps + np - 1), std::make_reverse_iterator(Ps));
+  out.operators.assign(std::make_reverse_iterator(As + na - 1), std::make_reverse_iterator(As));
+  check(PetscFree(Ps), "GAMG's levels");
+  check(PetscFree(As), "GAMG's levels");
+  check(KSPDestroy(&setup), "GAMG");
+  return out;
+}
+
 }  // namespace
 
 ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows,
                                    MPI_Comm comm, Levels levels)
     : pc_(pc), comm_(comm) {
-  if (levels == Levels::Aggregation) {
-    // Our own levels, fine first; PCMG numbers them coarsest first.
-    AggregationLevels own = aggregation_levels(A_setup);
-    P_.assign(own.prolongations.rbegin(), own.prolongations.rend());
-    levels_.resize(own.operators.size());
-    for (std::size_t l = 0; l < own.operators.size(); ++l)
-      levels_[l].A = own.operators[own.operators.size() - 1 - l];
-    fine_lambda_a_ = own.fine_jacobi_radius;
-  } else {
-    // GAMG once, on A; PETSc's options for GAMG (-pc_gamg_*) apply to it.
-    KSP setup = nullptr;
-    check(KSPCreate(comm_, &setup), "GAMG");
-    check(KSPSetOperators(setup, A_setup, A_setup), "GAMG");
-    PC g = nullptr;
-    check(KSPGetPC(setup, &g), "GAMG");
-    check(PCSetType(g, PCGAMG), "GAMG");
-    // Two defaults of ours for GAMG's set-up, where PETSc's options (solver.petsc_options,
-    // PETSC_OPTIONS) do not choose otherwise (docs/distributed.md, "The multigrid of the Newton
-    // systems"), both measured on Hertz's ball at a million unknowns, one rank of two cores:
-    // - aggressive coarsening (the graph squared, MIS-2) on the first two levels, not only the
-    //   first: the third level is some 7 times smaller (828 against 6,066 unknowns) and the
-    //   Galerkin product that makes it, from the second level's dense 6 x 6 blocks, 1.3 s
-    //   instead of 4.5-7.3 s; the levels' refreshes for each active set are cheaper too, for
-    //   some 15 % more CG iterations;
-    // - the Galerkin products by hypre's, which run on the rank's OpenMP threads (PETSc's own
-    //   run on one): the finest level's 5.6 s instead of 8.5 s. Only for GAMG's set-up: the
-    //   contact terms' small products below stay PETSc's, cheaper there.
-    {
-      const ScopedDefaultOption aggressive("-pc_gamg_aggressive_coarsening", "2",
-                                           "-pc_gamg_square_graph");
-      const ScopedDefaultOption products("-matptap_via", kHypreProducts ? "hypre" : "");
-      check(PCSetFromOptions(g), "GAMG options");  // (no -pc_type: keeps_gamg_levels)
-      check(PCSetUp(g), "GAMG's set-up");
-    }
-    PetscInt np = 0, na = 0;
-    Mat* Ps = nullptr;
-    Mat* As = nullptr;
-    check(PCGetInterpolations(g, &np, &Ps), "GAMG's levels");
-    check(PCGetCoarseOperators(g, &na, &As), "GAMG's levels");
-    // Both report the number of levels and hold one matrix fewer (PETSc referenced each). One
-    // level (a problem of a few dozen unknowns): the smoother alone preconditions.
-    if (np != na || np < 1)
-      throw NumericalError(fmt::format("PETSc: GAMG made {} prolongators for {} levels", np, na));
-    P_.assign(Ps, Ps + np - 1);
-    levels_.resize(static_cast<std::size_t>(na) - 1);
-    for (PetscInt l = 0; l + 1 < na; ++l) levels_[static_cast<std::size_t>(l)].A = As[l];
-    check(PetscFree(Ps), "GAMG's levels");
-    check(PetscFree(As), "GAMG's levels");
-    check(KSPDestroy(&setup), "GAMG");
-  }
+  // The levels, fine first; PCMG numbers them coarsest first.
+  CoarseLevels made =
+      levels == Levels::Aggregation ? aggregation_levels(A_setup) : gamg_levels(A_setup);
+  P_.assign(made.prolongations.rbegin(), made.prolongations.rend());
+  levels_.resize(made.operators.size());
+  for (std::size_t l = 0; l < made.operators.size(); ++l)
+    levels_[l].A = made.operators[made.operators.size() - 1 - l];
+  fine_lambda_a_ = made.fine_jacobi_radius;
 
   // N on the finest level: this rank's contact rows, numbered after the lower ranks' ones.
   const auto m = static_cast<PetscInt>(rows.size());
-  PetscInt first = 0;
-  MPI_Exscan(&m, &first, 1, MPIU_INT, MPI_SUM, comm_);
-  int rank = 0;
-  MPI_Comm_rank(comm_, &rank);
-  if (rank == 0) first = 0;
+  const PetscInt first = count_before(m, comm_);
   PetscInt local_cols = 0, cols = 0;
   check(MatGetLocalSize(A_setup, &local_cols, nullptr), "the contact matrix");
   check(MatGetSize(A_setup, &cols, nullptr), "the contact matrix");

@@ -51,7 +51,7 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   n_ = problem.A.rows();
   nc_ = problem.contact.N.rows();
   components_ = problem.contact.components;
-  const bool keeps_levels = petsc::keeps_gamg_levels(o_);
+  const bool keeps_levels = petsc::keeps_multigrid_levels(o_);
   // The unknowns in whole node blocks (node_padding.hpp): this rank's range [first, last) of
   // unknowns becomes [lo_, hi_) of slots.
   const auto [first, last] = petsc::owned_rows(problem, comm_);
