@@ -197,6 +197,22 @@ TEST(DistributedUzawaGnm, BallOnBlockWithGamgMatchesTheSerialSolve) {
   EXPECT_GT(cg_iterations(distributed), 0);
 }
 
+// Inexact Uzawa-GNM ends with the active-set finish (docs/solvers.md) on PETSc's vectors as the
+// serial backend path ends with it on its own: the same steps and the same answer, with the
+// tighter KKT residuals of the finish's projected CG.
+TEST(DistributedUzawaGnm, ActiveSetFinishMatchesTheSerialOne) {
+  ProblemSpec spec = ball_with_multigrid(8);
+  spec.solver.inner_tolerance = InnerTolerance::Adaptive;
+  const Model model = testing::distributed_model(spec);
+  const ContactResult distributed = testing::distributed_solve(model, model.solver);
+  const Model serial_model = testing::serial_model(spec);
+  const ContactResult serial = testing::serial_solve(serial_model, serial_model.solver);
+  expect_same_solve(distributed, serial);
+  EXPECT_TRUE(distributed.summary.active_set_finish) << distributed.summary.message;
+  EXPECT_TRUE(serial.summary.active_set_finish) << serial.summary.message;
+  EXPECT_LT(distributed.summary.kkt.max(), 1e-11);
+}
+
 // A problem that every rank holds whole (a library caller's, not partitioned by build_model):
 // each rank takes its rows of A, b and the rigid-body modes from it, and the answers are the
 // serial ones, with GAMG and with MUMPS's semismooth Newton.

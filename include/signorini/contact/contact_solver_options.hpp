@@ -135,6 +135,13 @@ struct ContactSolverOptions {
   /// Auto: adaptive where build_model plans the iterative path (problem/solver_plan.hpp), fixed
   /// otherwise.
   InnerTolerance inner_tolerance = InnerTolerance::Auto;
+  /// With inexact Uzawa-GNM (adaptive inner tolerance) on the iterative and distributed paths:
+  /// once the multipliers change by less than 1e-2, solve the problem with the nodes in contact
+  /// as they are (the energy minimised under (N x)_j = g_j there alone, by projected CG) and
+  /// take it as the answer where its multipliers are nonnegative and no other node penetrates
+  /// (uzawa_iteration.cpp, docs/solvers.md). The same solution to the solver's tolerances in
+  /// fewer CG iterations. false: Uzawa's steps to the end.
+  bool active_set_finish = true;
 
   /// True when the Uzawa steps are minimised inexactly (inner_tolerance = Adaptive).
   [[nodiscard]] bool adaptive_inner_tolerance() const {

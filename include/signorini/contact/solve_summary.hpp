@@ -117,8 +117,11 @@ struct SolveSummary {
   /// The steps of a loading history up to this one (its last), empty for one solve.
   std::vector<LoadStepRecord> load_steps;
   Termination termination = Termination::Converged;
-  std::string message;                 ///< one line: why it stopped, with the residuals
-  int outer_iterations = 0;            ///< Uzawa iterations (or Newton iterations)
+  std::string message;       ///< one line: why it stopped, with the residuals
+  int outer_iterations = 0;  ///< Uzawa iterations (or Newton iterations)
+  /// Uzawa-GNM ended by its active-set finish (ContactSolverOptions::active_set_finish): the
+  /// last step's projected CG iterations are in its record's linear_iterations.
+  bool active_set_finish = false;
   std::vector<OuterStepRecord> steps;  ///< one per outer iteration
   KktResiduals kkt;
   double lagrangian = 0.0;     ///< M(u, l), the modified Lagrangian (10) at the result

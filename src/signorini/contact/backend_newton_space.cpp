@@ -127,6 +127,29 @@ NewtonStepNorms BackendNewtonSpace::norms(const Vector& contact_forces) {
   return n;
 }
 
+std::optional<ActiveSetSolve> BackendNewtonSpace::solve_on_active_set(const ActiveSet& S, double r,
+                                                                      double tolerance) {
+  if (!constraint_ && constraint_possible_) {
+    constraint_possible_ = p_.contact.components == 1 && contact_rows_disjoint(p_.contact.N);
+    if (constraint_possible_)
+      constraint_ = std::make_unique<ActiveSetConstraint>(p_, o_.linear, newton_, be_);
+  }
+  if (!constraint_) return std::nullopt;
+  set_active(S, r);  // (the preconditioner: the Newton matrix of S)
+  ActiveSetSolve out;
+  const LinearSolveStats s =
+      constraint_->solve(S, x_, b_, norm(be_, b_), tolerance, out.l, out.gap_residual, timings_);
+  H().apply_stiffness(x_, residual_);  // A x - b and N x at the new x
+  be_.axpby(-1.0, b_, 1.0, residual_);
+  Nx_ = contact_values_of(x_);
+  out.stats.converged = s.converged;
+  out.stats.iterations = s.iterations;
+  out.stats.residual = s.residual;
+  out.stats.solver = "projected conjugate gradients";
+  out.stats.tolerance = tolerance;
+  return out;
+}
+
 Vector BackendNewtonSpace::contact_values_of(const DeviceVector& v) {
   H().apply_contact(v, contact_);
   return to_host(contact_);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "signorini/backend/backend.hpp"
+#include "signorini/contact/active_set_constraint.hpp"
 #include "signorini/contact/backend_newton_matrix.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/contact/newton_space.hpp"
@@ -38,6 +39,9 @@ class BackendNewtonSpace final : public NewtonSpace {
   void step(double t) override;
   NewtonStepNorms norms(const Vector& contact_forces) override;
   [[nodiscard]] int factorizations() const override { return refreshes_; }
+  /// Projected CG with the Newton matrix of S as the preconditioner (active_set_constraint.hpp).
+  std::optional<ActiveSetSolve> solve_on_active_set(const ActiveSet& S, double r,
+                                                    double tolerance) override;
 
   /// x, downloaded.
   [[nodiscard]] Vector solution() const { return to_host(x_); }
@@ -62,6 +66,8 @@ class BackendNewtonSpace final : public NewtonSpace {
   double last_t_ = 1.0;
   double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance
   int refreshes_ = 0;
+  std::unique_ptr<ActiveSetConstraint> constraint_;  // made at the first solve_on_active_set
+  bool constraint_possible_ = true;                  // no friction, the contact rows disjoint
 };
 
 }  // namespace signorini

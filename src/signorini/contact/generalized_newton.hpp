@@ -32,6 +32,8 @@ struct GnmResult {
 /// tolerance of the Uzawa step, which is this fraction of the previous step's dual change.
 inline constexpr double kLinearForcing = 0.1;
 inline constexpr double kInnerForcing = 1e-3;
+/// Uzawa-GNM's active-set finish is tried below this relative dual change (uzawa_iteration.cpp).
+inline constexpr double kFinishDualChange = 1e-2;
 
 class GeneralizedNewton {
  public:

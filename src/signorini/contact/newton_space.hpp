@@ -5,6 +5,7 @@
 // (vectors in the backend's memory, PCG there: backend_newton_space.hpp). Only vectors of the
 // contact nodes (n_c values: N x, N d, the active set) and scalars cross the interface.
 
+#include <optional>
 #include <string>
 
 #include "signorini/contact/modified_lagrangian.hpp"
@@ -28,6 +29,13 @@ struct NewtonStepNorms {
   double residual = 0.0;  ///< ||A x - b||
   double x = 0.0;         ///< ||x||
   double step = 0.0;      ///< ||t d||, the step just taken
+};
+
+/// What a solve with the active set known reports (NewtonSpace::solve_on_active_set).
+struct ActiveSetSolve {
+  NewtonSolveStats stats;
+  Vector l;             ///< the multipliers: the reactions on S, 0 elsewhere
+  Vector gap_residual;  ///< N x - g at the new x
 };
 
 class NewtonSpace {
@@ -59,6 +67,15 @@ class NewtonSpace {
   virtual void step(double t) = 0;
   /// The norms at the current point; `contact_forces` are h z_+ at x (n_c values).
   virtual NewtonStepNorms norms(const Vector& contact_forces) = 0;
+
+  /// Where the space can: x <- the minimiser of the energy under (N x)_j = g_j for j in S and
+  /// nothing else (active_set_constraint.hpp), to `tolerance` relative to the forces, with the
+  /// multipliers it implies. Empty where it cannot: a space without such a solve (the host's,
+  /// whose direct paths run the exact method), friction, or contact rows that share a dof.
+  virtual std::optional<ActiveSetSolve> solve_on_active_set(const ActiveSet& /*S*/, double /*r*/,
+                                                            double /*tolerance*/) {
+    return std::nullopt;
+  }
 
   /// Numeric factorisations (direct solvers) or preconditioner refreshes (iterative) so far.
   [[nodiscard]] virtual int factorizations() const = 0;

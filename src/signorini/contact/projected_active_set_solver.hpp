@@ -1,23 +1,18 @@
 #pragma once
 // The semismooth Newton step (active_set_solver.hpp) on a backend, for meshes whose factor does
-// not fit: conjugate gradients on the constrained subspace {x : (N x)_j = 0, j in S}, which is a
-// product of one small subspace per node, since each contact row of N holds the free dofs of
-// its own node. The projection onto it is local, P v = v - sum_{j in S} n_j (n_j . v) / |n_j|^2,
-// and x = x_S + z with x_S = sum_{j in S} n_j g_j / |n_j|^2 (which meets the constraints) and z
-// the solution of P A P z = P (b - A x_S) by CG, preconditioned by P M P, where M is the
-// preconditioner of the Newton matrix A + N^T diag(c) N with c_j = r h_j on S (the GNM's, a
-// multigrid V-cycle or Jacobi): the penalty stands in for the constraint, and P makes it exact.
-// No penalty enters the answer: l_j = n_j . (b - A x) / (|n_j|^2 h_j) on S.
+// not fit: each step is the problem with its active set S known, solved by projected conjugate
+// gradients on the constrained subspace (active_set_constraint.hpp), preconditioned by the
+// Newton matrix A + N^T diag(c) N with c_j = r h_j on S (the GNM's, a multigrid V-cycle or
+// Jacobi), which follows S.
 
 #include <memory>
 
 #include "signorini/backend/backend.hpp"
+#include "signorini/contact/active_set_constraint.hpp"
 #include "signorini/contact/active_set_solver.hpp"
 #include "signorini/contact/backend_newton_matrix.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
 #include "signorini/iterative/multigrid_hierarchy.hpp"
-#include "signorini/iterative/pcg.hpp"
-#include "signorini/iterative/penalized_operator.hpp"
 
 namespace signorini {
 
@@ -40,19 +35,13 @@ class ProjectedActiveSetSolver final : public ActiveSetSolver {
   [[nodiscard]] const std::vector<Index>& levels() const { return newton_->levels; }
 
  private:
-  class Projected;
-  void project(DeviceVector& v);
-
   const ContactProblem& p_;
   const ContactSolverOptions& o_;
   double r_;
   Backend& be_;
-  Index n_, nc_;
-  Vector inverse_norm2_;  // 1 / |n_j|^2 (0 where n_j = 0)
   std::unique_ptr<BackendNewtonMatrix> newton_;
-  std::unique_ptr<Projected> projected_;
-  std::unique_ptr<Pcg> pcg_;
-  DeviceVector b_, x_, z_, rhs_, work_, contact_, minus_w_;
+  std::unique_ptr<ActiveSetConstraint> constraint_;
+  DeviceVector b_, x_;
   ActiveSet active_;
   bool first_ = true;
   int last_refreshes_ = 0;

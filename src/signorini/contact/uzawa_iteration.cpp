@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/generalized_newton.hpp"
@@ -10,6 +12,23 @@
 #include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
+
+bool contact_conditions_hold(const ContactSet& contact, const ActiveSet& S,
+                             const ActiveSetSolve& solve, double tolerance) {
+  // (kkt_residuals.cpp's measures, with the contact nodes' normal displacements for lengths.)
+  const double l_max = solve.l.size() > 0 ? solve.l.lpNorm<Eigen::Infinity>() : 0.0;
+  double length = contact.gaps.size() > 0 ? contact.gaps.lpNorm<Eigen::Infinity>() : 0.0;
+  double sign = 0.0, penetration = 0.0;
+  for (Index j = 0; j < contact.size(); ++j) {
+    if (!contact.movable[static_cast<std::size_t>(j)]) continue;
+    length = std::max(length, std::abs(solve.gap_residual(j) + contact.gaps(j)));
+    if (S[static_cast<std::size_t>(j)])
+      sign = std::max(sign, -solve.l(j));
+    else
+      penetration = std::max(penetration, solve.gap_residual(j));
+  }
+  return sign <= tolerance * l_max && penetration <= tolerance * length;
+}
 
 void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
                          ModifiedLagrangian& phi, NewtonSpace& space, Vector l0,
@@ -19,6 +38,43 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
   loop.max_steps = options.max_uzawa_iterations;
   double previous_change = 1.0;     // ||l^k - l^(k-1)|| / ||l^k|| of the previous step
   double previous_tolerance = 1.0;  // step (i)'s tolerance at the previous step
+  // The active-set finish (docs/solvers.md): once the multipliers change by less than
+  // kFinishDualChange, the nodes where l^k > 0 (S) are most likely the solution's contact set,
+  // and the solution is then that of a linear problem: the energy minimised under
+  // (N x)_j = g_j on S alone. The space solves it once (projected CG); where its multipliers are
+  // nonnegative and no node off S penetrates, it is the answer (the KKT conditions hold, to the
+  // Uzawa tolerance), and the Uzawa steps that would have approached it one contraction at a
+  // time are saved. Else Uzawa goes on from there; each S is tried once.
+  const bool finishes =
+      options.active_set_finish && options.adaptive_inner_tolerance() && phi.components() == 1;
+  ActiveSet tried;
+  bool finished = false;
+  const auto try_active_set_finish = [&](int k, OuterStepOutcome& o) {
+    OuterStepRecord& rec = o.record;
+    if (k < 2 || !(rec.dual_change < kFinishDualChange)) return;
+    const Index nc = o.l.size();
+    ActiveSet S(static_cast<std::size_t>(nc));
+    for (Index j = 0; j < nc; ++j) S[static_cast<std::size_t>(j)] = o.l(j) > 0.0;
+    if (S == tried) return;
+    tried = S;
+    const double tolerance = 10.0 * options.linear.cg_tolerance;
+    const int refreshes = space.factorizations();
+    const std::optional<ActiveSetSolve> f = space.solve_on_active_set(S, phi.r(), tolerance);
+    if (!f) return;
+    rec.linear_iterations += f->stats.iterations;
+    rec.factorizations += space.factorizations() - refreshes;
+    if (!f->stats.converged) return;
+    if (!contact_conditions_hold(problem.contact, S, *f, options.uzawa_tolerance)) return;
+    rec.dual_change = relative_change(f->l, o.l);
+    rec.active_set_size = count_in_contact(f->l, phi.components());
+    o.l = f->l;
+    o.stop = Termination::Converged;
+    finished = true;
+    o.message = fmt::format(
+        "the {} nodes in contact after Uzawa step {} solved for exactly (projected CG, {} "
+        "iterations): multipliers nonnegative and no penetration elsewhere, to {:.0e}",
+        rec.active_set_size, k, f->stats.iterations, options.uzawa_tolerance);
+  };
   loop.step = [&](int k, const Vector& l) {
     OuterStepOutcome o;
     phi.set_multipliers(l);
@@ -60,7 +116,9 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
     if (rec.dual_change < options.uzawa_tolerance) {
       o.stop = Termination::Converged;
       o.message = dual_change_message(rec, options.uzawa_tolerance, k, "Uzawa steps");
+      return o;
     }
+    if (finishes) try_active_set_finish(k, o);
     return o;
   };
   loop.limit_message = [&](const OuterStepRecord& last) {
@@ -70,6 +128,7 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
         options.max_uzawa_iterations, last.dual_change, options.uzawa_tolerance);
   };
   run_outer_loop(loop, std::move(l0), options, out);
+  out.summary.active_set_finish = finished;
 }
 
 }  // namespace signorini

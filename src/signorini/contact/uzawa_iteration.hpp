@@ -16,4 +16,11 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
                          ModifiedLagrangian& phi, NewtonSpace& space, Vector l0,
                          ContactResult& out);
 
+/// Whether a solve with the active set S fixed (NewtonSpace::solve_on_active_set) meets the
+/// contact conditions to `tolerance`: multipliers on S nonnegative (relative to the largest) and
+/// no node off S penetrating (relative to the largest of the gaps and the normal displacements
+/// of the contact nodes). The active-set finish's acceptance (docs/solvers.md).
+[[nodiscard]] bool contact_conditions_hold(const ContactSet& contact, const ActiveSet& S,
+                                           const ActiveSetSolve& solve, double tolerance);
+
 }  // namespace signorini

@@ -111,6 +111,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   // the one linear solve of each, classical Uzawa steps), and the paper's names for the same.
   j["outer_iterations"] = summary.outer_iterations;
   j["uzawa_iterations"] = summary.outer_iterations;
+  j["active_set_finish"] = summary.active_set_finish;
   if (!summary.load_steps.empty()) {
     json steps = json::array();
     for (const LoadStepRecord& s : summary.load_steps)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <functional>
 
+#include "signorini/contact/active_set_constraint.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
@@ -309,6 +310,117 @@ NewtonStepNorms PetscNewtonSpace::norms(const Vector& contact_forces) {
   check(VecNorm(x_, NORM_2, &x), "norms");
   check(VecNorm(d_, NORM_2, &d), "norms");
   return {g, r, x, last_t_ * d};
+}
+
+void PetscNewtonSpace::project(const ActiveSet& S, Vec v) {
+  PetscScalar* a = nullptr;
+  check(VecGetArray(v, &a), "the projection");
+  for (const petsc::ContactRow& row : rows_) {
+    if (!S[static_cast<std::size_t>(row.j)]) continue;
+    double dot = 0.0, norm2 = 0.0;
+    for (std::size_t k = 0; k < row.dofs.size(); ++k) {
+      dot += row.normal[k] * a[row.dofs[k] - lo_];
+      norm2 += row.normal[k] * row.normal[k];
+    }
+    if (norm2 > 0.0)
+      for (std::size_t k = 0; k < row.dofs.size(); ++k)
+        a[row.dofs[k] - lo_] -= row.normal[k] * dot / norm2;
+  }
+  check(VecRestoreArray(v, &a), "the projection");
+}
+
+// The serial method (active_set_constraint.cpp) on PETSc's vectors: x moved onto S's
+// constraints, then CG on P A P z = P (b - A x) preconditioned by P M P, M the KSP's
+// preconditioner of the Newton matrix of S; the multipliers are the reactions on S.
+std::optional<ActiveSetSolve> PetscNewtonSpace::solve_on_active_set(const ActiveSet& S, double r,
+                                                                    double tolerance) {
+  const ContactSet& c = p_.contact;
+  if (rows_disjoint_ < 0) {
+    // (Each rank checks the columns of N it holds, its own unknowns' at least; collective.)
+    int disjoint = components_ == 1 && contact_rows_disjoint(c.N) ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &disjoint, 1, MPI_INT, MPI_MIN, comm_);
+    rows_disjoint_ = disjoint;
+  }
+  if (rows_disjoint_ == 0) return std::nullopt;
+  set_active(S, r);
+  // |n_j|^2 of every contact row on every rank (each row's owner adds it).
+  Vector norm2 = Vector::Zero(nc_);
+  for (const petsc::ContactRow& row : rows_)
+    for (const double v : row.normal) norm2(row.j) += v * v;
+  if (nc_ > 0)
+    MPI_Allreduce(MPI_IN_PLACE, norm2.data(), static_cast<int>(nc_), MPI_DOUBLE, MPI_SUM, comm_);
+  // The start: x = P x + sum_{j in S} n_j g_j / |n_j|^2.
+  project(S, x_);
+  Vector target = Vector::Zero(nc_);
+  for (Index j = 0; j < nc_; ++j)
+    if (S[static_cast<std::size_t>(j)] && norm2(j) > 0.0) target(j) = c.gaps(j) / norm2(j);
+  add_contact_transpose(target, x_);
+  const Mat A = threaded_A_ ? threaded_A_->shell() : A_;
+  Vec& rv = work_;
+  Vec& z = x_new_;
+  Vec& p = d_;
+  Vec& q = Ad_;
+  check(MatMult(A, x_, rv), "A x");
+  check(VecAYPX(rv, -1.0, b_), "b - A x");
+  PetscReal b_norm = 0.0, start_norm = 0.0, rnorm = 0.0;
+  check(VecNorm(b_, NORM_2, &b_norm), "norms");
+  check(VecNorm(rv, NORM_2, &start_norm), "norms");
+  project(S, rv);
+  check(VecNorm(rv, NORM_2, &rnorm), "norms");
+  const double goal = tolerance * std::max(b_norm, start_norm);
+  ActiveSetSolve out;
+  out.stats.solver = "projected conjugate gradients (PETSc vectors)";
+  out.stats.tolerance = tolerance;
+  if (rnorm > goal) {
+    check(KSPSetUp(ksp_), "the preconditioner");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "the preconditioner");
+    const int limit = o_.linear.cg_iteration_limit(n_);
+    const double start = rnorm;
+    ScopedTimer t(timings_, "linear solve");
+    PetscScalar rz = 0.0;
+    out.stats.converged = false;
+    for (int it = 1; it <= limit; ++it) {
+      check(PCApply(pc, rv, z), "the preconditioner");
+      project(S, z);
+      PetscScalar rz_new = 0.0;
+      check(VecDot(rv, z, &rz_new), "dot product");
+      if (it == 1)
+        check(VecCopy(z, p), "CG");
+      else
+        check(VecAYPX(p, rz_new / rz, z), "CG");
+      rz = rz_new;
+      check(MatMult(A, p, q), "A p");
+      project(S, q);
+      PetscScalar pq = 0.0;
+      check(VecDot(p, q, &pq), "dot product");
+      if (!(pq > 0.0)) break;  // (breakdown: not positive definite on the subspace)
+      const double alpha = rz / pq;
+      check(VecAXPY(x_, alpha, p), "CG");
+      check(VecAXPY(rv, -alpha, q), "CG");
+      check(VecNorm(rv, NORM_2, &rnorm), "norms");
+      out.stats.iterations = it;
+      if (rnorm <= goal) {
+        out.stats.converged = true;
+        break;
+      }
+    }
+    out.stats.residual = start > 0.0 ? rnorm / start : 0.0;
+  }
+  // A x - b, N x and the reactions h_j l_j = n_j . (b - A x) / |n_j|^2 on S at the new x.
+  check(MatMult(A, x_, residual_), "A x");
+  check(VecAXPY(residual_, -1.0, b_), "A x - b");
+  Nx_ = contact_values_of(x_);
+  const Vector reaction = contact_values_of(residual_);  // (of A x - b: the sign turned below)
+  out.l = Vector::Zero(nc_);
+  out.gap_residual = Vector::Zero(nc_);
+  for (Index j = 0; j < nc_; ++j) {
+    if (!c.movable[static_cast<std::size_t>(j)]) continue;
+    if (S[static_cast<std::size_t>(j)] && norm2(j) > 0.0)
+      out.l(j) = -reaction(j) / (norm2(j) * c.weights(j));
+    out.gap_residual(j) = Nx_(j) - c.gaps(j);
+  }
+  return out;
 }
 
 Vector PetscNewtonSpace::gathered_solution() {

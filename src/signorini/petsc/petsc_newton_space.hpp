@@ -46,6 +46,11 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   void step(double t) override;
   NewtonStepNorms norms(const Vector& contact_forces) override;
   [[nodiscard]] int factorizations() const override { return refreshes_; }
+  /// Projected CG on PETSc's vectors, preconditioned by the KSP's preconditioner of the Newton
+  /// matrix of S (active_set_constraint.hpp has the method); the projection is each rank's own,
+  /// since each contact row lies on the dofs of one rank.
+  std::optional<ActiveSetSolve> solve_on_active_set(const ActiveSet& S, double r,
+                                                    double tolerance) override;
 
   [[nodiscard]] Vector gathered_solution() override;
   [[nodiscard]] std::string linear_solver_description() const override {
@@ -55,6 +60,8 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
  private:
   Vector contact_values_of(Vec v);
   void add_contact_transpose(const Vector& values, Vec v);  // v += N^T values
+  // v <- v - sum_{j in S} n_j (n_j . v) / |n_j|^2 over this rank's contact rows.
+  void project(const ActiveSet& S, Vec v);
   // H = A + sum_j B_j^T W_j B_j, W_j(a, b) = weight(row a, row b) of N for two rows of node j
   // (set_active: diag(c) on the normal rows; set_linearization: friction's blocks), and the
   // preconditioner set up for it; `coupled_rows`: the fine smoother's bound counts the unknowns
@@ -98,6 +105,7 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   double last_t_ = 1.0;
   double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance
   int refreshes_ = 0;
+  int rows_disjoint_ = -1;  // whether no dof lies in two contact rows (-1: not yet known)
 };
 
 }  // namespace signorini
