@@ -56,13 +56,15 @@ class ActiveSetConstraint::Projected {
 
 ActiveSetConstraint::ActiveSetConstraint(const ContactProblem& problem,
                                          const LinearSolverOptions& linear,
-                                         BackendNewtonMatrix& newton, Backend& backend)
+                                         BackendNewtonMatrix& newton, Backend& backend,
+                                         Workspace workspace)
     : p_(problem),
       linear_(linear),
       newton_(newton),
       be_(backend),
       n_(problem.A.rows()),
-      nc_(problem.contact.size()) {
+      nc_(problem.contact.size()),
+      w_(workspace) {
   const SparseMatrix& N = problem.contact.N;
   inverse_norm2_ = Vector::Zero(nc_);
   for (Index k = 0; k < N.outerSize(); ++k)
@@ -70,13 +72,9 @@ ActiveSetConstraint::ActiveSetConstraint(const ContactProblem& problem,
       inverse_norm2_(it.row()) += it.value() * it.value();
   for (Index j = 0; j < nc_; ++j)
     if (inverse_norm2_(j) > 0.0) inverse_norm2_(j) = 1.0 / inverse_norm2_(j);
-  z_ = DeviceVector(be_, n_);
-  rhs_ = DeviceVector(be_, n_);
-  work_ = DeviceVector(be_, n_);
   contact_ = DeviceVector(be_, nc_);
   minus_w_ = DeviceVector(be_, nc_);
   projected_ = std::make_unique<Projected>(*this);
-  pcg_ = std::make_unique<Pcg>(be_, n_);
 }
 
 ActiveSetConstraint::~ActiveSetConstraint() = default;
@@ -112,11 +110,11 @@ LinearSolveStats ActiveSetConstraint::solve(const ActiveSet& S, DeviceVector& x,
   // P A P z = P (b - A x) by CG, to ||P (b - A x)|| <= tolerance max(||b||, ||b - A x||): the
   // force scale of the loads, or where there are none (a body pressed by its obstacles alone)
   // of the forces that the start's constraints ask for.
-  newton_.H->apply_stiffness(x, rhs_);
-  be_.axpby(1.0, b, -1.0, rhs_);
-  const double force_scale = std::max(b_norm, norm(be_, rhs_));
-  project(rhs_);
-  const double rhs_norm = norm(be_, rhs_);
+  newton_.H->apply_stiffness(x, w_.rhs);
+  be_.axpby(1.0, b, -1.0, w_.rhs);
+  const double force_scale = std::max(b_norm, norm(be_, w_.rhs));
+  project(w_.rhs);
+  const double rhs_norm = norm(be_, w_.rhs);
   LinearSolveStats stats;
   const double goal = tolerance * force_scale;
   if (rhs_norm > goal) {
@@ -126,17 +124,17 @@ LinearSolveStats ActiveSetConstraint::solve(const ActiveSet& S, DeviceVector& x,
     PcgResult lin;
     {
       ScopedTimer t(timings, "linear solve");
-      lin = pcg_->solve(projected_->stiffness, projected_->preconditioning, rhs_, z_, po);
+      lin = w_.pcg.solve(projected_->stiffness, projected_->preconditioning, w_.rhs, w_.z, po);
     }
-    be_.axpby(1.0, z_, 1.0, x);
+    be_.axpby(1.0, w_.z, 1.0, x);
     stats.iterations = lin.iterations;
     stats.residual = lin.residual;
     stats.converged = lin.converged;
   }
   // Multipliers from the reactions: h_j l_j = n_j . (b - A x) / |n_j|^2 on S.
-  newton_.H->apply_stiffness(x, work_);
-  be_.axpby(1.0, b, -1.0, work_);
-  newton_.H->apply_contact(work_, contact_);
+  newton_.H->apply_stiffness(x, w_.work);
+  be_.axpby(1.0, b, -1.0, w_.work);
+  newton_.H->apply_contact(w_.work, contact_);
   const Vector reaction = to_host(contact_);
   newton_.H->apply_contact(x, contact_);
   const Vector Nx = to_host(contact_);

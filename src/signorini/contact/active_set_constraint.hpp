@@ -35,8 +35,16 @@ class ActiveSetConstraint {
  public:
   /// `newton` is the Newton matrix whose preconditioner serves (the caller keeps it set for the
   /// active set it passes to solve). The contact rows must be disjoint (contact_rows_disjoint).
+  /// CG and three vectors of n entries are the caller's, lent for each solve (a Newton space
+  /// lends those of its Newton systems: no more memory of the mesh's size).
+  struct Workspace {
+    Pcg& pcg;
+    DeviceVector& z;
+    DeviceVector& rhs;
+    DeviceVector& work;
+  };
   ActiveSetConstraint(const ContactProblem& problem, const LinearSolverOptions& linear,
-                      BackendNewtonMatrix& newton, Backend& backend);
+                      BackendNewtonMatrix& newton, Backend& backend, Workspace workspace);
   ~ActiveSetConstraint();
 
   /// x <- the minimiser under S's constraints, from x, to ||P (b - A x)|| <= tolerance
@@ -56,8 +64,8 @@ class ActiveSetConstraint {
   Index n_, nc_;
   Vector inverse_norm2_;  // 1 / |n_j|^2 (0 where n_j = 0)
   std::unique_ptr<Projected> projected_;
-  std::unique_ptr<Pcg> pcg_;
-  DeviceVector z_, rhs_, work_, contact_, minus_w_;
+  Workspace w_;
+  DeviceVector contact_, minus_w_;
   ActiveSet weights_for_;  // the S whose -1/|n_j|^2 minus_w_ holds
   bool has_weights_ = false;
 };

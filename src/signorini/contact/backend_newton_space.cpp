@@ -132,7 +132,10 @@ std::optional<ActiveSetSolve> BackendNewtonSpace::solve_on_active_set(const Acti
   if (!constraint_ && constraint_possible_) {
     constraint_possible_ = p_.contact.components == 1 && contact_rows_disjoint(p_.contact.N);
     if (constraint_possible_)
-      constraint_ = std::make_unique<ActiveSetConstraint>(p_, o_.linear, newton_, be_);
+      // (The Newton systems' CG and vectors, free between GNM iterations: x_new, d and A d are
+      // set again before the next one reads them.)
+      constraint_ = std::make_unique<ActiveSetConstraint>(
+          p_, o_.linear, newton_, be_, ActiveSetConstraint::Workspace{*pcg_, x_new_, d_, Ad_});
   }
   if (!constraint_) return std::nullopt;
   set_active(S, r);  // (the preconditioner: the Newton matrix of S)

@@ -25,7 +25,14 @@ ProjectedActiveSetSolver::ProjectedActiveSetSolver(const ContactProblem& problem
     b_ = to_device(be_, problem.b);
     x_ = to_device(be_, x0);
     b_norm_ = norm(be_, b_);
-    constraint_ = std::make_unique<ActiveSetConstraint>(problem, options.linear, *newton_, be_);
+    const Index n = problem.A.rows();
+    z_ = DeviceVector(be_, n);
+    rhs_ = DeviceVector(be_, n);
+    work_ = DeviceVector(be_, n);
+    pcg_ = std::make_unique<Pcg>(be_, n);
+    constraint_ = std::make_unique<ActiveSetConstraint>(
+        problem, options.linear, *newton_, be_,
+        ActiveSetConstraint::Workspace{*pcg_, z_, rhs_, work_});
     be_.synchronize();
   }
 }

@@ -40,8 +40,9 @@ class ProjectedActiveSetSolver final : public ActiveSetSolver {
   double r_;
   Backend& be_;
   std::unique_ptr<BackendNewtonMatrix> newton_;
+  std::unique_ptr<Pcg> pcg_;
+  DeviceVector b_, x_, z_, rhs_, work_;
   std::unique_ptr<ActiveSetConstraint> constraint_;
-  DeviceVector b_, x_;
   ActiveSet active_;
   bool first_ = true;
   int last_refreshes_ = 0;
