@@ -22,8 +22,10 @@
 #include <algorithm>
 
 #include "signorini/contact/active_set_solver.hpp"
+#include "signorini/contact/active_set_update.hpp"
 #include "signorini/contact/backend_newton_matrix.hpp"
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/normal_rotation.hpp"
 #include "signorini/contact/outer_iteration.hpp"
@@ -37,10 +39,6 @@
 namespace signorini {
 
 namespace {
-
-// The relative residual of the inexact steps (above): measured at 405,600 unknowns in 3D, the
-// same active sets as the exact steps, with half the CG iterations (docs/solvers.md).
-constexpr double kLooseNewtonTolerance = 1e-6;
 
 class RotatedEliminationSolver final : public ActiveSetSolver {
  public:
@@ -293,20 +291,8 @@ void run_semismooth_newton(const ContactProblem& problem, const ContactSolverOpt
                       st.residual);
       return o;
     }
-    // The next active set: nodes pressed (l_j > 0) stay, free nodes that penetrate join. A node
-    // that touches without pressing (l_j = 0 and u_n = g_j: no strict complementarity, as at the
-    // corners of quadratic triangles under a uniform pressure) gets l_j and its gap residual
-    // within rounding of 0 with either sign: it keeps its state within 1e-13 of the largest
-    // values, instead of leaving and rejoining in a cycle.
-    const double l_tol = 1e-13 * o.l.cwiseAbs().maxCoeff();
-    const double g_tol = 1e-13 * std::max(gap_residual.cwiseAbs().maxCoeff(),
-                                          c.gaps.size() > 0 ? c.gaps.cwiseAbs().maxCoeff() : 0.0);
-    ActiveSet next(static_cast<std::size_t>(nc), false);
-    for (Index j = 0; j < nc; ++j) {
-      if (!c.movable[static_cast<std::size_t>(j)]) continue;
-      next[static_cast<std::size_t>(j)] =
-          active[static_cast<std::size_t>(j)] ? o.l(j) > -l_tol : gap_residual(j) > g_tol;
-    }
+    // The next active set: nodes pressed (l_j > 0) stay, free nodes that penetrate join.
+    ActiveSet next = next_active_set(c, active, o.l, gap_residual);
     rec.dual_change = relative_change(o.l, l);
     rec.active_set_size = count_active(active);
     const bool returns = std::find(history.begin(), history.end(), next) != history.end();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "signorini/contact/active_set_update.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/outer_iteration.hpp"
@@ -39,12 +40,15 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
   double previous_change = 1.0;     // ||l^k - l^(k-1)|| / ||l^k|| of the previous step
   double previous_tolerance = 1.0;  // step (i)'s tolerance at the previous step
   // The active-set finish (docs/solvers.md): once the multipliers change by less than
-  // kFinishDualChange, the nodes where l^k > 0 (S) are most likely the solution's contact set,
-  // and the solution is then that of a linear problem: the energy minimised under
-  // (N x)_j = g_j on S alone. The space solves it once (projected CG); where its multipliers are
-  // nonnegative and no node off S penetrates, it is the answer (the KKT conditions hold, to the
-  // Uzawa tolerance), and the Uzawa steps that would have approached it one contraction at a
-  // time are saved. Else Uzawa goes on from there; each S is tried once.
+  // kFinishDualChange, the nodes where l^k > 0 are close to the solution's contact set, and the
+  // solution is that of a linear problem once the set is right: the energy minimised under
+  // (N x)_j = g_j on the set alone. The space solves it (projected CG), and the set is corrected
+  // by semismooth Newton's primal-dual rule (pressing nodes stay, penetrating ones join), solved
+  // to kLooseNewtonTolerance while it moves, then exactly; where an exact solve repeats its set,
+  // its multipliers are nonnegative and no node off it penetrates, it is the answer (the KKT
+  // conditions hold, to the Uzawa tolerance), and the Uzawa steps that would have approached it
+  // one contraction at a time are saved. Else (kFinishSolves solves without that) Uzawa goes on
+  // from there; each starting set is tried once.
   const bool finishes =
       options.active_set_finish && options.adaptive_inner_tolerance() && phi.components() == 1;
   ActiveSet tried;
@@ -57,23 +61,38 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
     for (Index j = 0; j < nc; ++j) S[static_cast<std::size_t>(j)] = o.l(j) > 0.0;
     if (S == tried) return;
     tried = S;
-    const double tolerance = 10.0 * options.linear.cg_tolerance;
     const int refreshes = space.factorizations();
-    const std::optional<ActiveSetSolve> f = space.solve_on_active_set(S, phi.r(), tolerance);
-    if (!f) return;
-    rec.linear_iterations += f->stats.iterations;
+    std::optional<ActiveSetSolve> f;
+    bool exact = false, repeated = false;
+    int solves = 0, iterations = 0;
+    while (solves < kFinishSolves && !repeated) {
+      const double tolerance = exact ? 10.0 * options.linear.cg_tolerance : kLooseNewtonTolerance;
+      f = space.solve_on_active_set(S, phi.r(), tolerance);
+      if (!f) return;
+      ++solves;
+      iterations += f->stats.iterations;
+      rec.linear_iterations += f->stats.iterations;
+      if (!f->stats.converged) break;
+      ActiveSet next = next_active_set(problem.contact, S, f->l, f->gap_residual);
+      if (next == S) {
+        repeated = exact;
+        exact = true;  // (the same set again, now solved exactly)
+      }
+      S = std::move(next);
+    }
     rec.factorizations += space.factorizations() - refreshes;
-    if (!f->stats.converged) return;
-    if (!contact_conditions_hold(problem.contact, S, *f, options.uzawa_tolerance)) return;
+    if (!repeated || !contact_conditions_hold(problem.contact, S, *f, options.uzawa_tolerance))
+      return;
     rec.dual_change = relative_change(f->l, o.l);
     rec.active_set_size = count_in_contact(f->l, phi.components());
     o.l = f->l;
     o.stop = Termination::Converged;
     finished = true;
     o.message = fmt::format(
-        "the {} nodes in contact after Uzawa step {} solved for exactly (projected CG, {} "
-        "iterations): multipliers nonnegative and no penetration elsewhere, to {:.0e}",
-        rec.active_set_size, k, f->stats.iterations, options.uzawa_tolerance);
+        "the {} nodes in contact solved for exactly after Uzawa step {} ({} active-set solves, "
+        "{} projected CG iterations): multipliers nonnegative and no penetration elsewhere, to "
+        "{:.0e}",
+        rec.active_set_size, k, solves, iterations, options.uzawa_tolerance);
   };
   loop.step = [&](int k, const Vector& l) {
     OuterStepOutcome o;
