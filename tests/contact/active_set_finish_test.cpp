@@ -39,16 +39,21 @@ Block ball_on_block(Index n) {
   return b;
 }
 
+// The sparse direct solve of the same discrete problem, Uzawa to 1e-12: the reference.
+ContactResult direct_solve(const ContactProblem& p) {
+  ContactSolverOptions o;
+  o.automatic_path = false;
+  o.uzawa_tolerance = 1e-12;
+  return solve_contact(p, o);
+}
+
 // A 3D block on a rigid ball (the iterative path's problem) and the paper's 2D benchmark: the
 // finish ends Uzawa with the sparse direct solution, to the tolerances, with fewer CG
 // iterations than Uzawa's steps to the end and tighter KKT residuals.
 TEST(ActiveSetFinish, EndsUzawaWithTheDirectSolutionInFewerCgIterations) {
   const Block b = ball_on_block(12);
   const ContactProblem& p = b.model.problem;
-  ContactSolverOptions direct_options;
-  direct_options.automatic_path = false;
-  direct_options.uzawa_tolerance = 1e-12;
-  const ContactResult direct = solve_contact(p, direct_options);
+  const ContactResult direct = direct_solve(p);
   ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;
   ASSERT_GT(direct.summary.num_active, 10);
 
@@ -77,9 +82,7 @@ TEST(ActiveSetFinish, EndsUzawaWithTheDirectSolutionInFewerCgIterations) {
 
 TEST(ActiveSetFinish, PaperProblemOnTheBackendPath) {
   const auto [p, multigrid] = testing::paper_problem_with_hierarchy(120);
-  ContactSolverOptions direct_options;
-  direct_options.uzawa_tolerance = 1e-12;
-  const ContactResult direct = solve_contact(p, direct_options);
+  const ContactResult direct = direct_solve(p);
   ContactSolverOptions o;
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.preconditioner = PreconditionerType::Multigrid;
@@ -102,10 +105,7 @@ TEST(ActiveSetFinish, PaperProblemOnTheBackendPath) {
 TEST(ActiveSetFinish, TheActiveSetSolveAndItsAcceptance) {
   const Block b = ball_on_block(10);
   const ContactProblem& p = b.model.problem;
-  ContactSolverOptions direct_options;
-  direct_options.automatic_path = false;
-  direct_options.uzawa_tolerance = 1e-12;
-  const ContactResult direct = solve_contact(p, direct_options);
+  const ContactResult direct = direct_solve(p);
   ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;
   const Index nc = p.contact.size();
   ActiveSet right(static_cast<std::size_t>(nc)), all(static_cast<std::size_t>(nc), true);
