@@ -136,11 +136,11 @@ struct ContactSolverOptions {
   /// otherwise.
   InnerTolerance inner_tolerance = InnerTolerance::Auto;
   /// With inexact Uzawa-GNM (adaptive inner tolerance) on the iterative and distributed paths:
-  /// once the multipliers change by less than 1e-2, solve the problem with the nodes in contact
-  /// as they are (the energy minimised under (N x)_j = g_j there alone, by projected CG) and
-  /// take it as the answer where its multipliers are nonnegative and no other node penetrates
-  /// (uzawa_iteration.cpp, docs/solvers.md). The same solution to the solver's tolerances in
-  /// fewer CG iterations. false: Uzawa's steps to the end.
+  /// from step 2 on, once the multipliers change by less than 0.2, finish by semismooth Newton's
+  /// steps from Uzawa's state (the energy minimised with the nodes in contact fixed, by
+  /// projected CG, the set corrected by the primal-dual rule) and take the result as the answer
+  /// where the KKT conditions hold (uzawa_iteration.cpp, docs/solvers.md). The same solution to
+  /// the solver's tolerances in fewer CG iterations. false: Uzawa's steps to the end.
   bool active_set_finish = true;
 
   /// True when the Uzawa steps are minimised inexactly (inner_tolerance = Adaptive).

@@ -84,11 +84,12 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
              "fixed otherwise ([solvers.md](solvers.md))");
     t.boolean("active_set_finish", &O::active_set_finish,
               "with inexact Uzawa-GNM (`inner_tolerance` adaptive, the iterative and distributed "
-              "paths): once the multipliers change by less than 1e-2, solve the problem with the "
-              "nodes in contact as they are (projected CG) and take that as the answer where its "
-              "multipliers are nonnegative and no other node penetrates; the same solution to the "
-              "solver's tolerances in fewer CG iterations ([solvers.md](solvers.md)). `false`: "
-              "Uzawa's steps to the end");
+              "paths): from step 2 on, once the multipliers change by less than 0.2, finish by "
+              "semismooth Newton's steps from Uzawa's state (the problem with the nodes in "
+              "contact fixed, by projected CG, the set corrected until it repeats) and take the "
+              "result as the answer where its multipliers are nonnegative and no other node "
+              "penetrates; the same solution to the solver's tolerances in fewer CG iterations "
+              "([solvers.md](solvers.md)). `false`: Uzawa's steps to the end");
     t.boolean("automatic_path", &O::automatic_path,
               "choose the solver path from the problem's size and this machine's memory: with "
               "the default `cholmod` solver on the CPU, `cg` with `multigrid` for 3D problems "
