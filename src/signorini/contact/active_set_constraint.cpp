@@ -92,13 +92,12 @@ LinearSolveStats ActiveSetConstraint::solve(const ActiveSet& S, DeviceVector& x,
                                             Vector& l, Vector& gap_residual, TimingTable& timings) {
   const ContactSet& c = p_.contact;
   const auto in_S = [&](Index j) { return S[static_cast<std::size_t>(j)]; };
-  if (!has_weights_ || S != weights_for_) {
+  if (S != weights_for_) {
     Vector minus_w = Vector::Zero(nc_);
     for (Index j = 0; j < nc_; ++j)
       if (in_S(j)) minus_w(j) = -inverse_norm2_(j);
     upload_into(minus_w, minus_w_);
     weights_for_ = S;
-    has_weights_ = true;
   }
   // The start: x moved onto the constraints, x = P x + x_S.
   project(x);

@@ -66,8 +66,7 @@ class ActiveSetConstraint {
   std::unique_ptr<Projected> projected_;
   Workspace w_;
   DeviceVector contact_, minus_w_;
-  ActiveSet weights_for_;  // the S whose -1/|n_j|^2 minus_w_ holds
-  bool has_weights_ = false;
+  ActiveSet weights_for_;  // the S whose -1/|n_j|^2 minus_w_ holds (empty: none yet)
 };
 
 }  // namespace signorini

@@ -30,6 +30,7 @@ BackendNewtonSpace::BackendNewtonSpace(const ContactProblem& problem,
     contact_ = DeviceVector(be_, nc_);
     H().apply_stiffness(x_, residual_);  // A x - b at x0
     be_.axpby(-1.0, b_, 1.0, residual_);
+    b_norm_ = norm(be_, b_);
     be_.synchronize();
   }
   pcg_ = std::make_unique<Pcg>(be_, n_);
@@ -141,7 +142,7 @@ std::optional<ActiveSetSolve> BackendNewtonSpace::solve_on_active_set(const Acti
   set_active(S, r);  // (the preconditioner: the Newton matrix of S)
   ActiveSetSolve out;
   const LinearSolveStats s =
-      constraint_->solve(S, x_, b_, norm(be_, b_), tolerance, out.l, out.gap_residual, timings_);
+      constraint_->solve(S, x_, b_, b_norm_, tolerance, out.l, out.gap_residual, timings_);
   H().apply_stiffness(x_, residual_);  // A x - b and N x at the new x
   be_.axpby(-1.0, b_, 1.0, residual_);
   Nx_ = contact_values_of(x_);

@@ -65,6 +65,7 @@ class BackendNewtonSpace final : public NewtonSpace {
   Vector Nx_;
   double last_t_ = 1.0;
   double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance
+  double b_norm_ = 0.0;            // ||b||
   int refreshes_ = 0;
   std::unique_ptr<ActiveSetConstraint> constraint_;  // made at the first solve_on_active_set
   bool constraint_possible_ = true;                  // no friction, the contact rows disjoint

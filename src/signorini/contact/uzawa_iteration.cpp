@@ -52,7 +52,6 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
   const bool finishes =
       options.active_set_finish && options.adaptive_inner_tolerance() && phi.components() == 1;
   ActiveSet tried;
-  bool finished = false;
   const auto try_active_set_finish = [&](int k, OuterStepOutcome& o) {
     OuterStepRecord& rec = o.record;
     if (k < 2 || !(rec.dual_change < kFinishDualChange)) return;
@@ -87,7 +86,7 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
     rec.active_set_size = count_in_contact(f->l, phi.components());
     o.l = f->l;
     o.stop = Termination::Converged;
-    finished = true;
+    out.summary.active_set_finish = true;
     o.message = fmt::format(
         "the {} nodes in contact solved for exactly after Uzawa step {} ({} active-set solves, "
         "{} projected CG iterations): multipliers nonnegative and no penetration elsewhere, to "
@@ -147,7 +146,6 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
         options.max_uzawa_iterations, last.dual_change, options.uzawa_tolerance);
   };
   run_outer_loop(loop, std::move(l0), options, out);
-  out.summary.active_set_finish = finished;
 }
 
 }  // namespace signorini

@@ -316,15 +316,12 @@ void PetscNewtonSpace::project(const ActiveSet& S, Vec v) {
   PetscScalar* a = nullptr;
   check(VecGetArray(v, &a), "the projection");
   for (const petsc::ContactRow& row : rows_) {
-    if (!S[static_cast<std::size_t>(row.j)]) continue;
-    double dot = 0.0, norm2 = 0.0;
-    for (std::size_t k = 0; k < row.dofs.size(); ++k) {
-      dot += row.normal[k] * a[row.dofs[k] - lo_];
-      norm2 += row.normal[k] * row.normal[k];
-    }
-    if (norm2 > 0.0)
-      for (std::size_t k = 0; k < row.dofs.size(); ++k)
-        a[row.dofs[k] - lo_] -= row.normal[k] * dot / norm2;
+    const double norm2 = norm2_(row.j);
+    if (!S[static_cast<std::size_t>(row.j)] || !(norm2 > 0.0)) continue;
+    double dot = 0.0;
+    for (std::size_t k = 0; k < row.dofs.size(); ++k) dot += row.normal[k] * a[row.dofs[k] - lo_];
+    for (std::size_t k = 0; k < row.dofs.size(); ++k)
+      a[row.dofs[k] - lo_] -= row.normal[k] * dot / norm2;
   }
   check(VecRestoreArray(v, &a), "the projection");
 }
@@ -335,25 +332,25 @@ void PetscNewtonSpace::project(const ActiveSet& S, Vec v) {
 std::optional<ActiveSetSolve> PetscNewtonSpace::solve_on_active_set(const ActiveSet& S, double r,
                                                                     double tolerance) {
   const ContactSet& c = p_.contact;
-  if (rows_disjoint_ < 0) {
+  if (!rows_disjoint_) {
     // (Each rank checks the columns of N it holds, its own unknowns' at least; collective.)
     int disjoint = components_ == 1 && contact_rows_disjoint(c.N) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &disjoint, 1, MPI_INT, MPI_MIN, comm_);
-    rows_disjoint_ = disjoint;
+    rows_disjoint_ = disjoint != 0;
+    // |n_j|^2, each row's owner adding it.
+    norm2_ = Vector::Zero(nc_);
+    for (const petsc::ContactRow& row : rows_)
+      for (const double v : row.normal) norm2_(row.j) += v * v;
+    if (nc_ > 0)
+      MPI_Allreduce(MPI_IN_PLACE, norm2_.data(), static_cast<int>(nc_), MPI_DOUBLE, MPI_SUM, comm_);
   }
-  if (rows_disjoint_ == 0) return std::nullopt;
+  if (!*rows_disjoint_) return std::nullopt;
   set_active(S, r);
-  // |n_j|^2 of every contact row on every rank (each row's owner adds it).
-  Vector norm2 = Vector::Zero(nc_);
-  for (const petsc::ContactRow& row : rows_)
-    for (const double v : row.normal) norm2(row.j) += v * v;
-  if (nc_ > 0)
-    MPI_Allreduce(MPI_IN_PLACE, norm2.data(), static_cast<int>(nc_), MPI_DOUBLE, MPI_SUM, comm_);
   // The start: x = P x + sum_{j in S} n_j g_j / |n_j|^2.
   project(S, x_);
   Vector target = Vector::Zero(nc_);
   for (Index j = 0; j < nc_; ++j)
-    if (S[static_cast<std::size_t>(j)] && norm2(j) > 0.0) target(j) = c.gaps(j) / norm2(j);
+    if (S[static_cast<std::size_t>(j)] && norm2_(j) > 0.0) target(j) = c.gaps(j) / norm2_(j);
   add_contact_transpose(target, x_);
   const Mat A = threaded_A_ ? threaded_A_->shell() : A_;
   Vec& rv = work_;
@@ -416,8 +413,8 @@ std::optional<ActiveSetSolve> PetscNewtonSpace::solve_on_active_set(const Active
   out.gap_residual = Vector::Zero(nc_);
   for (Index j = 0; j < nc_; ++j) {
     if (!c.movable[static_cast<std::size_t>(j)]) continue;
-    if (S[static_cast<std::size_t>(j)] && norm2(j) > 0.0)
-      out.l(j) = -reaction(j) / (norm2(j) * c.weights(j));
+    if (S[static_cast<std::size_t>(j)] && norm2_(j) > 0.0)
+      out.l(j) = -reaction(j) / (norm2_(j) * c.weights(j));
     out.gap_residual(j) = Nx_(j) - c.gaps(j);
   }
   return out;

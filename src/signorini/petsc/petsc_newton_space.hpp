@@ -105,7 +105,10 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   double last_t_ = 1.0;
   double linear_tolerance_ = 0.0;  // 0: o_.linear.cg_tolerance
   int refreshes_ = 0;
-  int rows_disjoint_ = -1;  // whether no dof lies in two contact rows (-1: not yet known)
+  // The active-set solve's, made at its first call: whether no dof lies in two contact rows, and
+  // |n_j|^2 of every contact row on every rank.
+  std::optional<bool> rows_disjoint_;
+  Vector norm2_;
 };
 
 }  // namespace signorini
