@@ -28,7 +28,12 @@ namespace {
 // with multigrid, as the solver plan chooses in 3D) conjugate gradients from x = 0 with the same
 // hierarchy, its set-up included, to the same tolerance: CHOLMOD or Jacobi CG would be a
 // yardstick far slower than that path's own linear solver.
-double linear_solve_seconds(const Model& model, const ContactSolverOptions& solver) {
+struct LinearSolveRun {
+  double seconds = 0.0;
+  int cg_iterations = 0;  // 0 on the direct paths
+};
+
+LinearSolveRun linear_solve(const Model& model, const ContactSolverOptions& solver) {
   const SparseMatrix& A = model.problem.A;
   const Index n = A.rows();
   if (uses_backend_path(solver) && solver.device == DeviceKind::Cpu) {
@@ -45,14 +50,15 @@ double linear_solve_seconds(const Model& model, const ContactSolverOptions& solv
     if (!r.converged)
       throw NumericalError(
           fmt::format("bench: the yardstick's CG did not converge ({:.1e})", r.residual));
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+            r.iterations};
   }
   const auto linear = make_linear_solver(solver.linear);
   linear->analyze(A);
   linear->factorize(A);
   Vector x = Vector::Zero(n);
   linear->solve(model.problem.b, x);
-  return linear->timings().total();
+  return {linear->timings().total(), 0};
 }
 
 }  // namespace
@@ -71,6 +77,7 @@ int run_problem_bench(const ProblemBenchOptions& options) {
   // the library's own timers.
   double best_build = 1e300, best_contact = 1e300, best_linear = 1e300;
   Index dofs = 0, contact_nodes = 0;
+  int contact_cg = 0, linear_cg = 0;  // CG iterations of the last round (they do not vary)
   int repeats = std::max(options.repeats, 2);
   bool converged = true;
   std::string path;
@@ -85,8 +92,12 @@ int run_problem_bench(const ProblemBenchOptions& options) {
     best_contact = std::min(best_contact, result.summary.timings.seconds("contact solve"));
     converged = converged && result.summary.converged();
     path = enum_to_string(kSolvePathNames, result.summary.path);
+    contact_cg = 0;
+    for (const OuterStepRecord& step : result.summary.steps) contact_cg += step.linear_iterations;
 
-    best_linear = std::min(best_linear, linear_solve_seconds(model, solver));
+    const LinearSolveRun linear = linear_solve(model, solver);
+    best_linear = std::min(best_linear, linear.seconds);
+    linear_cg = linear.cg_iterations;
   }
 
   // From the shell: `signorini solve FILE -o SCRATCH -q`, as a child, best of the same number
@@ -110,32 +121,38 @@ int run_problem_bench(const ProblemBenchOptions& options) {
              options.file, dofs, contact_nodes,
              enum_to_string(kContactMethodNames, spec.solver.method), path, repeats, child_repeats);
   fmt::print("  {:<44} {:>9}  {:>8}\n", "", "seconds", "ratio");
-  fmt::print("  {:<44} {:>9.3f}  {:>8}\n",
+  // The CG iterations where the path iterates: they do not drift with the machine's moment.
+  const auto iterations = [&](int cg) {
+    return linear_cg > 0 ? fmt::format("   ({} CG iterations)", cg) : std::string();
+  };
+  fmt::print("  {:<44} {:>9.3f}  {:>8}{}\n",
              path == "backend" ? "one linear solve (CG, the same multigrid)"
                                : "one linear solve (analyse, factorise, solve)",
-             best_linear, "1");
-  fmt::print("  {:<44} {:>9.3f}  {:>8.2f}\n", "contact solve (in this process)", best_contact,
-             best_contact / best_linear);
+             best_linear, "1", iterations(linear_cg));
+  fmt::print("  {:<44} {:>9.3f}  {:>8.2f}{}\n", "contact solve (in this process)", best_contact,
+             best_contact / best_linear, iterations(contact_cg));
   fmt::print("  {:<44} {:>9.3f}\n", "model: mesh, assembly, loads, contact set", best_build);
   fmt::print("  {:<44} {:>9.3f}  {:>8.2f}   (peak {:.2f} GB)\n",
              "whole process (signorini solve, from outside)", best_child.wall_seconds,
              best_child.wall_seconds / best_linear, best_child.peak_rss_bytes / 1e9);
   if (!options.json_file.empty()) {
-    const nlohmann::json j = {{"file", options.file},
-                              {"n_dofs", dofs},
-                              {"n_contact_nodes", contact_nodes},
-                              {"method", enum_to_string(kContactMethodNames, spec.solver.method)},
-                              {"path", path},
-                              {"repeats", repeats},
-                              {"converged", converged},
-                              {"seconds",
-                               {{"linear_solve", best_linear},
-                                {"contact_solve", best_contact},
-                                {"model", best_build},
-                                {"whole_process", best_child.wall_seconds}}},
-                              {"contact_over_linear", best_contact / best_linear},
-                              {"whole_process_over_linear", best_child.wall_seconds / best_linear},
-                              {"whole_process_peak_bytes", best_child.peak_rss_bytes}};
+    const nlohmann::json j = {
+        {"file", options.file},
+        {"n_dofs", dofs},
+        {"n_contact_nodes", contact_nodes},
+        {"method", enum_to_string(kContactMethodNames, spec.solver.method)},
+        {"path", path},
+        {"repeats", repeats},
+        {"converged", converged},
+        {"seconds",
+         {{"linear_solve", best_linear},
+          {"contact_solve", best_contact},
+          {"model", best_build},
+          {"whole_process", best_child.wall_seconds}}},
+        {"cg_iterations", {{"linear_solve", linear_cg}, {"contact_solve", contact_cg}}},
+        {"contact_over_linear", best_contact / best_linear},
+        {"whole_process_over_linear", best_child.wall_seconds / best_linear},
+        {"whole_process_peak_bytes", best_child.peak_rss_bytes}};
     write_file_atomically(options.json_file, j.dump(2) + "\n");
   }
   return converged ? kSuccess : kNotConverged;
