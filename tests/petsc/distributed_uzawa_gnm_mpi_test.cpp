@@ -98,18 +98,18 @@ void expect_own_columns(const ProblemSpec& spec) {
       ASSERT_LT(A.innerIndexPtr()[k - 1], A.innerIndexPtr()[k]) << "column " << col;
   const auto w = [&](Index i) { return whole_of[static_cast<std::size_t>(i)]; };
   const double scale = whole.problem.A.norm();  // (sums in another order: rounding differs)
-  for (Index col = 0; col < A.cols(); ++col) {
-    const Index entries = A.outerIndexPtr()[col + 1] - A.outerIndexPtr()[col];
-    if (col < lo || col >= hi) {
-      EXPECT_EQ(entries, 0) << "column " << col;
-    } else {
-      const Index serial_entries =
-          whole.problem.A.outerIndexPtr()[w(col) + 1] - whole.problem.A.outerIndexPtr()[w(col)];
-      EXPECT_EQ(entries, serial_entries) << "column " << col;
-      for (SparseMatrix::InnerIterator it(A, col); it; ++it)
-        EXPECT_LE(std::abs(it.value() - whole.problem.A.coeff(w(it.row()), w(col))), 1e-12 * scale)
-            << "entry (" << it.row() << ", " << col << ")";
-    }
+  // The rank's columns only (no array of all n columns): column k is unknown lo + k's.
+  ASSERT_EQ(A.cols(), hi - lo);
+  for (Index col = lo; col < hi; ++col) {
+    const Index k = part.problem.column_of(col);
+    ASSERT_EQ(k, col - lo);
+    const Index entries = A.outerIndexPtr()[k + 1] - A.outerIndexPtr()[k];
+    const Index serial_entries =
+        whole.problem.A.outerIndexPtr()[w(col) + 1] - whole.problem.A.outerIndexPtr()[w(col)];
+    EXPECT_EQ(entries, serial_entries) << "column " << col;
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+      EXPECT_LE(std::abs(it.value() - whole.problem.A.coeff(w(it.row()), w(col))), 1e-12 * scale)
+          << "entry (" << it.row() << ", " << col << ")";
   }
   const Vector u = Vector::LinSpaced(A.rows(), -1.0, 1.0);
   Vector u_whole(A.rows());

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "signorini/core/error.hpp"
+
 namespace signorini::petsc {
 namespace {
 
@@ -48,16 +50,17 @@ TEST(NodePadding, MatrixHoldsAOnTheSlotsAndADiagonalOnThePadding) {
     EXPECT_EQ(P.row(s).cwiseAbs().sum(), d) << s;
     EXPECT_EQ(P.col(s).cwiseAbs().sum(), d) << s;
   }
-  // One rank's columns only: [3, 6) -> slots [3, 9), the others empty.
+  // One rank's columns only: [3, 6) -> slots [3, 9), held as the result's 6 columns, from all
+  // of A's columns or from a partitioned problem's A, which holds only the rank's (column i at
+  // i - 3: ContactProblem::column_of).
   const SparseMatrix part = p.matrix(A, 3, 6);
-  for (Index s = 0; s < 9; ++s) {
-    const Index entries = part.outerIndexPtr()[s + 1] - part.outerIndexPtr()[s];
-    if (s < 3)
-      EXPECT_EQ(entries, 0) << s;
-    else
-      EXPECT_GT(entries, 0) << s;
-  }
-  EXPECT_EQ(Matrix(part).rightCols(6), P.rightCols(6));
+  ASSERT_EQ(part.rows(), 9);
+  ASSERT_EQ(part.cols(), 6);
+  EXPECT_EQ(Matrix(part), P.rightCols(6));
+  const SparseMatrix held_columns = A.rightCols(3);
+  EXPECT_EQ(Matrix(p.matrix(held_columns, 3, 6)), P.rightCols(6));
+  // Neither all columns nor the rank's: refused.
+  EXPECT_THROW((void)p.matrix(SparseMatrix(A.rightCols(2)), 3, 6), NumericalError);
 }
 
 TEST(NodePadding, VectorsGoToTheSlotsAndBack) {

@@ -21,10 +21,11 @@ struct ContactProblem {
   std::vector<Index> node_of_unknown = {};
   /// Non-empty for a partitioned problem (docs/distributed.md): rank `rank` of a distributed run
   /// owns the free dofs [row_starts[rank], row_starts[rank + 1]); A holds only their columns (by
-  /// symmetry their rows), the other columns empty, and b and the near-null space only their
-  /// rows. The contact set is whole on every rank. Products with A and the sums over the
-  /// unknowns (the energy, the KKT residuals) are then sums over the ranks
-  /// (parallel/distributed_engine.hpp). Only the distributed path solves such a problem.
+  /// symmetry their rows), as an n x (end_row() - first_row()) matrix whose column k is unknown
+  /// first_row() + k's (column_of), so that no array of A has all n entries on every rank; b
+  /// and the near-null space hold only their rows. The contact set is whole on every rank. Products
+  /// with A and the sums over the unknowns (the energy, the KKT residuals) are then sums over the
+  /// ranks (parallel/distributed_engine.hpp). Only the distributed path solves such a problem.
   std::vector<Index> row_starts = {};
   int rank = 0;
 
@@ -37,6 +38,8 @@ struct ContactProblem {
   [[nodiscard]] Index end_row() const {
     return partitioned() ? row_starts[static_cast<std::size_t>(rank) + 1] : A.rows();
   }
+  /// The column of A that holds unknown i's column (i in [first_row(), end_row())).
+  [[nodiscard]] Index column_of(Index i) const { return i - first_row(); }
   /// The rows of a vector of all n unknowns that this process holds (all of it unless
   /// partitioned), as b is held.
   [[nodiscard]] Vector held_rows(const Vector& whole) const {

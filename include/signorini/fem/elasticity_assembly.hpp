@@ -34,9 +34,10 @@ void require_supported_cells(const Mesh& mesh);
 
 /// Reduced stiffness A (num_free x num_free, SPD when clamping holds the body, both triangles
 /// stored). Throws InputError on an inverted or degenerate cell, naming it.
-/// `columns_of` (optional, one flag per node): only the columns of these nodes, the others left
-/// empty, from the cells that touch them (a distributed run's part: by symmetry the rows of its
-/// unknowns; docs/distributed.md).
+/// `columns_of` (optional, one flag per node): only the columns of these nodes, from the cells
+/// that touch them (a distributed run's part: by symmetry the rows of its unknowns;
+/// docs/distributed.md). Their free dofs must be consecutive, [lo, hi): the result is then
+/// num_free x (hi - lo), its column k that of dof lo + k (ContactProblem::column_of).
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
                                 const ElasticityOptions& options,
                                 const std::vector<bool>* columns_of = nullptr);

@@ -18,6 +18,12 @@ struct MethodStart {
   Vector x;
   [[nodiscard]] Vector multipliers(Index n) const { return l.size() == n ? l : Vector::Zero(n); }
   [[nodiscard]] Vector displacement(Index n) const { return x.size() == n ? x : Vector::Zero(n); }
+  /// The rows of x that this process holds (ContactProblem::held_rows), zero without x: on the
+  /// distributed path no vector of all n unknowns is made for the start.
+  [[nodiscard]] Vector held_displacement(const ContactProblem& problem) const {
+    return x.size() == problem.A.rows() ? problem.held_rows(x)
+                                        : Vector::Zero(problem.end_row() - problem.first_row());
+  }
 };
 
 // The methods themselves; ContactSolver calls one and completes its summary.

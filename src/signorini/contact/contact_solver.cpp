@@ -143,8 +143,8 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
     : impl_(std::make_unique<Impl>()) {
   validate(given);
   const Index n = problem.A.rows();
-  if (problem.A.cols() != n || problem.b.size() != problem.end_row() - problem.first_row() ||
-      problem.contact.N.cols() != n)
+  const Index held = problem.end_row() - problem.first_row();  // (A's columns: column_of)
+  if (problem.A.cols() != held || problem.b.size() != held || problem.contact.N.cols() != n)
     throw InputError("contact problem: sizes of A, b and N do not match");
   Impl& m = *impl_;
   m.problem = &problem;

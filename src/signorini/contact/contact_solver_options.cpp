@@ -185,7 +185,8 @@ double automatic_r(const ContactProblem& p, double factor) {
   for (Index j = 0; j < c.size(); ++j)
     for (SparseMatrix::InnerIterator a(Nt, c.components * j); a; ++a)
       for (SparseMatrix::InnerIterator b(Nt, c.components * j); b; ++b)
-        stiffness(j) += a.value() * p.A.coeff(a.row(), b.row()) * b.value();
+        if (b.row() >= p.first_row() && b.row() < p.end_row())  // (A's columns: column_of)
+          stiffness(j) += a.value() * p.A.coeff(a.row(), p.column_of(b.row())) * b.value();
   sum_over_ranks(p, stiffness.data(), stiffness.size());
   std::vector<double> values;
   values.reserve(static_cast<std::size_t>(c.size()));

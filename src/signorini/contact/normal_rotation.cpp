@@ -63,10 +63,18 @@ NormalRotation make_normal_rotation(const ContactSet& c, Index num_free) {
 // on a copy of A: the dofs of one node are consecutive and their columns share one row pattern in
 // a nodal stiffness matrix, so each block mixes entries that already exist. Falls back to sparse
 // products where that structure is missing.
-SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation) {
+SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation,
+                           Index first_column) {
   if (rotation.identity()) return A;
   const SparseMatrix& Q = rotation.Q;
   const auto& blocks = rotation.blocks;
+  // The columns held: [c0, c1) of the unknowns, column i of A at i - c0. Q is block diagonal by
+  // nodes, so (Q^T A Q)'s columns there are Q^T A Q(held, held).
+  const Index c0 = first_column, c1 = first_column + A.cols();
+  const auto product = [&] {
+    if (c0 == 0 && c1 == A.rows()) return SparseMatrix(Q * A * Q);
+    return SparseMatrix(Q * A * SparseMatrix(Q.block(c0, c0, c1 - c0, c1 - c0)));
+  };
   SparseMatrix R = A;
   R.makeCompressed();
   const int* outer = R.outerIndexPtr();
@@ -77,38 +85,42 @@ SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     const auto& d = blocks[b];
     for (std::size_t a = 0; a < d.size(); ++a) {
-      if (d[a] != d.front() + static_cast<Index>(a)) return SparseMatrix(Q * A * Q);
+      if (d[a] != d.front() + static_cast<Index>(a)) return product();
       block_of[static_cast<std::size_t>(d[a])] = static_cast<Index>(b);
     }
-    const Index len = outer[d.front() + 1] - outer[d.front()];
+    if (d.front() >= c1 || d.back() < c0) continue;  // another rank's node: its rows only
+    if (d.front() < c0 || d.back() >= c1) return product();
+    const Index f = d.front() - c0;
+    const Index len = outer[f + 1] - outer[f];
     for (const Index col : d)
-      if (outer[col + 1] - outer[col] != len ||
-          !std::equal(inner + outer[col], inner + outer[col + 1], inner + outer[d.front()]))
-        return SparseMatrix(Q * A * Q);
+      if (outer[col - c0 + 1] - outer[col - c0] != len ||
+          !std::equal(inner + outer[col - c0], inner + outer[col - c0 + 1], inner + outer[f]))
+        return product();
   }
   auto q = [&](Index row, Index col) { return Q.coeff(row, col); };
   // Columns: R(:, d) <- R(:, d) Q_b.
   std::vector<double> tmp;
   for (const auto& d : blocks) {
+    if (d.front() >= c1 || d.back() < c0) continue;  // (columns not held)
     const auto k = d.size();
-    const Index len = outer[d.front() + 1] - outer[d.front()];
+    const Index len = outer[d.front() - c0 + 1] - outer[d.front() - c0];
     tmp.assign(k * static_cast<std::size_t>(len), 0.0);
     for (std::size_t a = 0; a < k; ++a)
       for (std::size_t c = 0; c < k; ++c) {
         const double qca = q(d[c], d[a]);
         if (qca == 0.0) continue;
-        const double* src = v + outer[d[c]];
+        const double* src = v + outer[d[c] - c0];
         for (Index p = 0; p < len; ++p)
           tmp[a * static_cast<std::size_t>(len) + static_cast<std::size_t>(p)] += qca * src[p];
       }
     for (std::size_t a = 0; a < k; ++a)
       std::copy(tmp.begin() + static_cast<std::ptrdiff_t>(a * static_cast<std::size_t>(len)),
                 tmp.begin() + static_cast<std::ptrdiff_t>((a + 1) * static_cast<std::size_t>(len)),
-                v + outer[d[a]]);
+                v + outer[d[a] - c0]);
   }
   // Rows: R(d, :) <- Q_b R(d, :); in every column the rows of a block are consecutive entries.
   double buf[3];
-  for (Index col = 0; col < n; ++col)
+  for (Index col = 0; col < R.cols(); ++col)
     for (int p = outer[col]; p < outer[col + 1];) {
       const Index b = block_of[static_cast<std::size_t>(inner[p])];
       if (b < 0) {
@@ -118,7 +130,7 @@ SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation
       const auto& d = blocks[static_cast<std::size_t>(b)];
       const auto k = static_cast<int>(d.size());
       if (inner[p] != d.front() || p + k > outer[col + 1] || inner[p + k - 1] != d.back())
-        return SparseMatrix(Q * A * Q);
+        return product();
       for (int a = 0; a < k; ++a) {
         buf[a] = 0.0;
         for (int c = 0; c < k; ++c)

@@ -28,6 +28,9 @@ struct NormalRotation {
 NormalRotation make_normal_rotation(const ContactSet& contact, Index num_free);
 
 /// Q^T A Q, computed in place on a copy of A where the node blocks allow it (A itself when Q = I).
-SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation);
+/// A may hold only the columns [first_column, first_column + A.cols()) (a partitioned problem's
+/// A, ContactProblem::column_of; each node's unknowns in one such range), and so does the result.
+SparseMatrix rotate_matrix(const SparseMatrix& A, const NormalRotation& rotation,
+                           Index first_column = 0);
 
 }  // namespace signorini

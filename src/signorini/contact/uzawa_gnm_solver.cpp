@@ -56,7 +56,7 @@ ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
   ContactResult out;
   TimingTable timings;
   const std::unique_ptr<DistributedNewtonSpace> space =
-      engine.newton_space(problem, options, start.displacement(problem.A.rows()), timings);
+      engine.newton_space(problem, options, start.held_displacement(problem), timings);
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
   run_uzawa_iteration(problem, options, phi, *space, start.multipliers(problem.contact.N.rows()),
                       out);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "signorini/core/error.hpp"
 #include "signorini/fem/cell_threads.hpp"
@@ -283,6 +284,39 @@ void require_valid_cells(const Mesh& mesh, const ElasticityOptions& options) {
     check_cells<3>(mesh, options);
 }
 
+namespace {
+
+// The free dofs [lo, hi) of the flagged nodes, which must be consecutive.
+std::pair<Index, Index> flagged_dofs(const DofMap& dofs, const std::vector<bool>& flags) {
+  Index lo = dofs.num_free(), hi = 0, count = 0;
+  for (Index v = 0; v < dofs.num_nodes(); ++v) {
+    if (!flags[static_cast<std::size_t>(v)]) continue;
+    for (int k = 0; k < dofs.dim(); ++k)
+      if (const Index f = dofs.free_index(v, k); f >= 0) {
+        lo = std::min(lo, f);
+        hi = std::max(hi, f + 1);
+        ++count;
+      }
+  }
+  if (count == 0) return {0, 0};
+  if (hi - lo != count)
+    throw std::logic_error("assemble_stiffness: the flagged nodes' free dofs are not consecutive");
+  return {lo, hi};
+}
+
+// A whose columns outside [lo, hi) are empty as the n x (hi - lo) matrix of the others, in
+// place: the column pointers moved down and their array shortened, the entries untouched.
+void keep_columns(SparseMatrix& A, Index lo, Index hi) {
+  A.makeCompressed();
+  int* outer = A.outerIndexPtr();
+  if (outer[lo] != 0 || outer[hi] != A.nonZeros())
+    throw std::logic_error("assemble_stiffness: entries outside the flagged nodes' columns");
+  std::copy(outer + lo, outer + hi + 1, outer);
+  A.conservativeResize(A.rows(), hi - lo);  // (keeps the entries; the pointers' array shrinks)
+}
+
+}  // namespace
+
 SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
                                 const ElasticityOptions& options,
                                 const std::vector<bool>* columns_of) {
@@ -291,8 +325,15 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const DofMap& dofs,
     throw std::logic_error("assemble_stiffness: the dof map has another dimension than the mesh");
   if (columns_of != nullptr && static_cast<Index>(columns_of->size()) != mesh.num_nodes())
     throw InputError("assemble_stiffness: one flag per node expected");
-  return mesh.dim() == 2 ? assemble<2>(mesh, dofs, options, columns_of)
-                         : assemble<3>(mesh, dofs, options, columns_of);
+  SparseMatrix A = mesh.dim() == 2 ? assemble<2>(mesh, dofs, options, columns_of)
+                                   : assemble<3>(mesh, dofs, options, columns_of);
+  if (columns_of != nullptr) {
+    // Only the flagged nodes' columns are held: no array of all n columns (its pointers, 4
+    // bytes per unknown on every rank of a distributed run; docs/distributed.md).
+    const auto [lo, hi] = flagged_dofs(dofs, *columns_of);
+    keep_columns(A, lo, hi);
+  }
+  return A;
 }
 
 Vector internal_forces(const Mesh& mesh, const ElasticityOptions& options, const Vector& u,

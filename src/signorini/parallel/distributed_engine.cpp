@@ -45,7 +45,8 @@ Vector held_stiffness_rows(const ContactProblem& problem, const Vector& u) {
   Vector rows(end - first);
   for (Index i = first; i < end; ++i) {
     double s = 0.0;
-    for (SparseMatrix::InnerIterator it(problem.A, i); it; ++it) s += it.value() * u(it.row());
+    for (SparseMatrix::InnerIterator it(problem.A, problem.column_of(i)); it; ++it)
+      s += it.value() * u(it.row());
     rows(i - first) = s;
   }
   return rows;

@@ -45,8 +45,8 @@ class DistributedEngine {
   [[nodiscard]] virtual int size() const = 0;
   /// "PETSc 3.18.5 on 2 MPI ranks".
   [[nodiscard]] virtual std::string description() const = 0;
-  /// The Newton space of `problem` (which every rank holds whole; each keeps only its rows of
-  /// A), starting at x0 (timed in `timings`).
+  /// The Newton space of `problem` (partitioned, or held whole by every rank), starting at x0,
+  /// this rank's rows of the start (ContactProblem::held_rows; timed in `timings`).
   [[nodiscard]] virtual std::unique_ptr<DistributedNewtonSpace> newton_space(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) = 0;

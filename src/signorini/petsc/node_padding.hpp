@@ -45,7 +45,8 @@ class NodePadding {
   [[nodiscard]] Index start(Index i) const;
 
   /// A's columns [lo, hi) (by symmetry its rows) on the slots, the padding slots of their nodes
-  /// with a diagonal entry; the other columns empty.
+  /// with a diagonal entry: size() x (start(hi) - start(lo)), column s of the slots at
+  /// s - start(lo). A holds all its columns, or only these (n x (hi - lo), column i at i - lo).
   [[nodiscard]] SparseMatrix matrix(const SparseMatrix& A, Index lo, Index hi) const;
   /// The rows [first, last) of a vector (`rows`: last - first entries, or rows of a matrix) on
   /// their slots [start(first), start(last)), zero on the padding slots.

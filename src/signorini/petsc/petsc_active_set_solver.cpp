@@ -26,7 +26,8 @@ PetscActiveSetSolver::PetscActiveSetSolver(const ContactProblem& problem,
     const Index a = rotation_.normal_dof[static_cast<std::size_t>(j)];
     if (a >= lo_ && a < hi_) owned_.push_back(j);
   }
-  Ar_ = petsc::distributed_rows(rotate_matrix(problem.A, rotation_), lo_, hi_, comm_);
+  Ar_ = petsc::distributed_rows(rotate_matrix(problem.A, rotation_, problem.first_row()), lo_, hi_,
+                                comm_);
   check(MatDuplicate(Ar_, MAT_COPY_VALUES, &K_), "the Newton matrix");
   // MatZeroRowsColumns keeps K's pattern, so every step's matrix has A_r's.
   check(MatSetOption(K_, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE), "the Newton matrix");

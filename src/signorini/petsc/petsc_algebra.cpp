@@ -49,16 +49,26 @@ Mat new_matrix(MPI_Comm comm, PetscInt m, PetscInt n, PetscInt block, MatType ty
   return M;
 }
 
+// Where A's column of unknown i is: i - offset (A holds all n columns, offset 0, or only the
+// rank's [lo, hi), offset lo: a partitioned problem's A, ContactProblem::column_of).
+Index held_column_offset(const SparseMatrix& A, Index lo, Index hi) {
+  if (A.cols() == A.rows()) return 0;
+  if (A.cols() != hi - lo)
+    throw NumericalError("a distributed matrix: A holds neither all its columns nor this rank's");
+  return lo;
+}
+
 }  // namespace
 
 Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscInt block) {
   const auto m = static_cast<PetscInt>(hi - lo);
+  const Index offset = held_column_offset(A, lo, hi);  // column i of A at i - offset
   // Preallocated exactly (the entries of each row in this rank's columns and elsewhere), then
   // filled a row at a time: no CSR copy of the rank's rows beside A and PETSc's own (at 405,600
   // unknowns that copy was 0.39 GB of the process's peak).
   std::vector<PetscInt> d_nnz(static_cast<std::size_t>(m), 0), o_nnz(d_nnz);
   for (Index i = lo; i < hi; ++i)
-    for (SparseMatrix::InnerIterator it(A, i); it; ++it)
+    for (SparseMatrix::InnerIterator it(A, i - offset); it; ++it)
       ++(it.row() >= lo && it.row() < hi ? d_nnz : o_nnz)[static_cast<std::size_t>(i - lo)];
   const auto n = static_cast<PetscInt>(A.rows());
   Mat M = new_matrix(comm, m, n, block, MATAIJ, "a distributed matrix");
@@ -76,7 +86,7 @@ Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, P
     // Column i of A is row i (A is symmetric, both triangles stored), its entries sorted.
     columns.clear();
     values.clear();
-    for (SparseMatrix::InnerIterator it(A, i); it; ++it) {
+    for (SparseMatrix::InnerIterator it(A, i - offset); it; ++it) {
       columns.push_back(static_cast<PetscInt>(it.row()));
       values.push_back(it.value());
     }
@@ -97,9 +107,10 @@ Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscIn
   // nodes that share a cell with it): their block columns are those of its first row.
   const Index bs = block;
   const Index rows = (hi - lo) / bs;
+  const Index offset = held_column_offset(A, lo, hi);  // column i of A at i - offset
   std::vector<PetscInt> d_blocks(static_cast<std::size_t>(rows), 0), o_blocks(d_blocks);
   for (Index ib = 0; ib < rows; ++ib)
-    for (SparseMatrix::InnerIterator it(A, lo + ib * bs); it; ++it)
+    for (SparseMatrix::InnerIterator it(A, lo - offset + ib * bs); it; ++it)
       if (it.row() % bs == 0) {
         const bool own = it.row() >= lo && it.row() < hi;
         ++(own ? d_blocks : o_blocks)[static_cast<std::size_t>(ib)];
@@ -113,13 +124,13 @@ Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscIn
   std::vector<PetscScalar> values;
   for (Index ib = 0; ib < rows; ++ib) {
     columns.clear();
-    for (SparseMatrix::InnerIterator it(A, lo + ib * bs); it; ++it)
+    for (SparseMatrix::InnerIterator it(A, lo - offset + ib * bs); it; ++it)
       if (it.row() % bs == 0) columns.push_back(static_cast<PetscInt>(it.row() / bs));
     const std::size_t width = columns.size() * static_cast<std::size_t>(bs);
     values.assign(width * static_cast<std::size_t>(bs), 0.0);
     for (Index k = 0; k < bs; ++k) {
       std::size_t c = 0;  // the position of the entry's block among `columns`
-      for (SparseMatrix::InnerIterator it(A, lo + ib * bs + k); it; ++it) {
+      for (SparseMatrix::InnerIterator it(A, lo - offset + ib * bs + k); it; ++it) {
         const auto b = static_cast<PetscInt>(it.row() / bs);
         while (columns[c] != b) ++c;
         values[static_cast<std::size_t>(k) * width + c * static_cast<std::size_t>(bs) +

@@ -24,7 +24,9 @@ namespace signorini::petsc {
 void mark_spd(Mat M, const char* what);
 
 /// Rows [lo, hi) of the symmetric, column-major A (row i of A is its column i) as an MPIAIJ
-/// matrix of block size `block`, marked symmetric positive definite.
+/// matrix of block size `block`, marked symmetric positive definite. A holds either all its
+/// columns (n x n) or only these (n x (hi - lo), column i at i - lo: a partitioned problem's A,
+/// ContactProblem::column_of).
 [[nodiscard]] Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm,
                                    PetscInt block = 1);
 

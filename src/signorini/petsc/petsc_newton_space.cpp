@@ -31,7 +31,7 @@ petsc::NodePadding node_padding(const ContactProblem& problem, MPI_Comm comm) {
     throw NumericalError("the nodes of the unknowns: neither all of them nor this rank's");
   std::vector<Index> ghosts;
   for (Index col = first; col < last; ++col)
-    for (SparseMatrix::InnerIterator it(problem.A, col); it; ++it)
+    for (SparseMatrix::InnerIterator it(problem.A, problem.column_of(col)); it; ++it)
       if (it.row() < first || it.row() >= last) ghosts.push_back(it.row());
   std::sort(ghosts.begin(), ghosts.end());
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
@@ -89,10 +89,10 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
 
   check(MatCreateVecs(A_aij, &x_, &b_), "vectors");
   for (Vec* v : {&x_new_, &residual_, &d_, &Ad_, &work_}) check(VecDuplicate(x_, v), "vectors");
-  // (x0 has every unknown.)
   petsc::set_owned(b_,
                    padding_.rows(petsc::rank_rows(problem, problem.b, first, last), first, last));
-  petsc::set_owned(x_, padding_.rows(Vector(x0.segment(first, last - first)), first, last));
+  // (x0 has the problem's held rows: all n where it is whole, else the rank's.)
+  petsc::set_owned(x_, padding_.rows(petsc::rank_rows(problem, x0, first, last), first, last));
   check(MatMult(A_aij, x_, residual_), "A x");  // A x - b at x0
   check(VecAXPY(residual_, -1.0, b_), "A x - b");
 

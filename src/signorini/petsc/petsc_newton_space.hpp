@@ -27,8 +27,8 @@ namespace signorini {
 
 class PetscNewtonSpace final : public DistributedNewtonSpace {
  public:
-  /// Takes this rank's rows of problem.A and problem.b, starts at x0 (every rank holds the whole
-  /// problem and x0), sets the KSP up (timed in `timings`).
+  /// Takes this rank's rows of problem.A and problem.b, starts at x0 (the problem's held rows:
+  /// ContactProblem::held_rows), sets the KSP up (timed in `timings`).
   PetscNewtonSpace(const ContactProblem& problem, const ContactSolverOptions& options,
                    const Vector& x0, TimingTable& timings, MPI_Comm comm);
   ~PetscNewtonSpace() override;
