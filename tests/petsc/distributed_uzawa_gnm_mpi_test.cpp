@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
+#include <algorithm>
+
 #include "../problem/ball_on_block.hpp"
 #include "../problem/hertz_ball.hpp"
 #include "../test_problems.hpp"
@@ -117,18 +119,34 @@ void expect_own_columns(const ProblemSpec& spec) {
   const Vector Au_whole = whole.problem.A * u_whole;
   Vector Au(A.rows());
   for (Index i = 0; i < A.rows(); ++i) Au(i) = Au_whole(w(i));
+  // On a rank's part of the mesh a solution holds the part's unknowns only (its own, and those
+  // of the part's other nodes, increasing), as the distributed solve returns it.
+  Vector u_held = u;
+  if (part.problem.part_solution()) {
+    const std::vector<Index>& unknowns = part.problem.solution_unknowns;
+    ASSERT_TRUE(std::is_sorted(unknowns.begin(), unknowns.end()));
+    u_held.resize(static_cast<Index>(unknowns.size()));
+    for (std::size_t k = 0; k < unknowns.size(); ++k)
+      u_held(static_cast<Index>(k)) = u(unknowns[k]);
+    for (Index i = lo; i < hi; ++i) ASSERT_GE(part.problem.solution_index(i), 0) << i;
+  }
   // Each rank holds its rows of A u, of b and of the near-null space (none here: the direct
   // solver), and the sums over the unknowns add up over the ranks.
   EXPECT_EQ(part.problem.first_row(), lo);
   EXPECT_EQ(part.problem.end_row(), hi);
-  EXPECT_LT(relative_difference(held_stiffness_rows(part.problem, u), Au.segment(lo, hi - lo)),
+  EXPECT_LT(relative_difference(held_stiffness_rows(part.problem, u_held), Au.segment(lo, hi - lo)),
             1e-14);
+  EXPECT_EQ(part.problem.held_rows(u_held), u.segment(lo, hi - lo));
+  // N u and ||u||_inf, each row from the rank that owns it, summed.
+  EXPECT_LT(relative_difference(contact_rows(part.problem, u_held), part.problem.contact.N * u),
+            1e-14);
+  EXPECT_EQ(largest_displacement(part.problem, u_held), 1.0);
   ASSERT_EQ(part.problem.b.size(), hi - lo);
   for (Index i = lo; i < hi; ++i)
     EXPECT_EQ(part.problem.b(i - lo), whole.problem.b(w(i))) << "row " << i;
   EXPECT_NEAR(load_norm(part.problem), whole.problem.b.norm(), 1e-14 * whole.problem.b.norm());
   const double energy = 0.5 * u_whole.dot(Au_whole) - whole.problem.b.dot(u_whole);
-  EXPECT_NEAR(quadratic_energy(part.problem, u), energy, 1e-12 * std::abs(energy));
+  EXPECT_NEAR(quadratic_energy(part.problem, u_held), energy, 1e-12 * std::abs(energy));
   EXPECT_NEAR(automatic_r(part.problem, 10.0), automatic_r(whole.problem, 10.0),
               1e-12 * automatic_r(whole.problem, 10.0));
   // A partitioned problem is the distributed path's only.

@@ -86,11 +86,17 @@ inline void expect_distributed_agrees(const ContactResult& distributed,
 }
 
 /// The distributed solve; u the mesh's whole displacement, as serial_solve's. A rank that holds
-/// a part of the mesh (Model::is_part) knows it at its part's nodes only: NaN elsewhere.
+/// a part of the mesh (Model::is_part) knows it at its part's nodes only: NaN elsewhere (its
+/// solution holds the part's unknowns only, ContactProblem::solution_unknowns, which
+/// Model::full_displacement expands).
 inline ContactResult distributed_solve(const Model& model, ContactSolverOptions o) {
   o.distributed = DistributedMode::Petsc;
   ContactResult r = solve_contact(model.problem, o);
-  const Vector held = model.dofs.expand(r.u);
+  if (model.is_part()) {
+    EXPECT_TRUE(model.problem.part_solution());
+    EXPECT_EQ(r.u.size(), static_cast<Index>(model.problem.solution_unknowns.size()));
+  }
+  const Vector held = model.full_displacement(r);
   if (!model.is_part()) {
     r.u = held;
     return r;

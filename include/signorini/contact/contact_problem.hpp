@@ -2,6 +2,7 @@
 // The discrete contact problem (14) in the free dofs: minimise 1/2 <A x, x> - <b, x> subject to
 // (N x)_j <= g_j for the contact nodes j.
 
+#include <algorithm>
 #include <vector>
 
 #include "signorini/contact/contact_set.hpp"
@@ -28,8 +29,23 @@ struct ContactProblem {
   /// ranks (parallel/distributed_engine.hpp). Only the distributed path solves such a problem.
   std::vector<Index> row_starts = {};
   int rank = 0;
+  /// A partitioned problem on the ranks' parts of the mesh (docs/distributed.md): the unknowns
+  /// whose values this rank's solution holds (ContactResult::u), increasing: its own
+  /// [first_row(), end_row()) and the other free dofs of the nodes of its part of the mesh, so
+  /// that no rank holds a vector of all n unknowns. Empty: the solution has all n.
+  std::vector<Index> solution_unknowns = {};
 
   [[nodiscard]] bool partitioned() const { return !row_starts.empty(); }
+  /// The solution holds solution_unknowns only (the same on every rank: a branch on it is
+  /// collective-safe).
+  [[nodiscard]] bool part_solution() const { return !solution_unknowns.empty(); }
+  /// Where unknown i is in the solution: i itself, or its place in solution_unknowns (-1 where
+  /// the part does not have it).
+  [[nodiscard]] Index solution_index(Index i) const {
+    if (!part_solution()) return i;
+    const auto it = std::lower_bound(solution_unknowns.begin(), solution_unknowns.end(), i);
+    return it != solution_unknowns.end() && *it == i ? it - solution_unknowns.begin() : -1;
+  }
   /// The first unknown whose row this process holds, and one past the last: [0, n) unless
   /// partitioned.
   [[nodiscard]] Index first_row() const {
@@ -40,10 +56,13 @@ struct ContactProblem {
   }
   /// The column of A that holds unknown i's column (i in [first_row(), end_row())).
   [[nodiscard]] Index column_of(Index i) const { return i - first_row(); }
-  /// The rows of a vector of all n unknowns that this process holds (all of it unless
-  /// partitioned), as b is held.
-  [[nodiscard]] Vector held_rows(const Vector& whole) const {
-    return partitioned() ? Vector(whole.segment(first_row(), end_row() - first_row())) : whole;
+  /// The rows of a vector of all n unknowns, or of a solution (ContactResult::u), that this
+  /// process holds (all of it unless partitioned), as b is held.
+  [[nodiscard]] Vector held_rows(const Vector& v) const {
+    if (!partitioned()) return v;
+    if (end_row() == first_row()) return Vector();
+    const Index first = v.size() == A.rows() ? first_row() : solution_index(first_row());
+    return v.segment(first, end_row() - first_row());
   }
 };
 

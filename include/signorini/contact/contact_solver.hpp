@@ -14,7 +14,9 @@
 namespace signorini {
 
 struct ContactResult {
-  Vector u;  ///< displacement, free dofs
+  /// Displacement, free dofs: all n, or on a rank's part of a distributed run's mesh the
+  /// values of ContactProblem::solution_unknowns (Model::full_displacement expands either).
+  Vector u;
   Vector l;  ///< contact pressure l_j >= 0 per contact node (l* = -sigma_nu)
   /// Friction only (empty otherwise): (d - 1) x contact nodes, the tangential traction per node
   /// in its tangent basis (fem/contact_tangents.hpp), the force per area that the obstacle

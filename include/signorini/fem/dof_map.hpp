@@ -10,6 +10,7 @@
 // ([[displacement]] normal). Full vectors (expand, restrict_to_free, prescribed_values) are always
 // Cartesian; the free dofs, value() and is_clamped() are in the node's frame.
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -88,6 +89,11 @@ class DofMap {
   /// Likewise with a factor per full dof (in the node's axes, as value(); a step of a loading
   /// history, Model::full_displacement): its prescribed value times scales(dof).
   [[nodiscard]] Vector expand(const Vector& free_values, const Vector& scales) const;
+  /// Likewise from the values of some free dofs only, free dof f's at values(place(f)) (a rank's
+  /// part of a distributed run: ContactProblem::solution_index); InputError where a free dof of
+  /// this numbering has no place (-1).
+  [[nodiscard]] Vector expand(const Vector& values, const Vector& scales,
+                              const std::function<Index(Index)>& place) const;
   /// The prescribed displacement times a factor per full dof, Cartesian.
   [[nodiscard]] Vector prescribed_values(const Vector& scales) const;
   /// Free vector from a full (Cartesian) vector: at a node with a frame, its components along

@@ -18,11 +18,15 @@ struct MethodStart {
   Vector x;
   [[nodiscard]] Vector multipliers(Index n) const { return l.size() == n ? l : Vector::Zero(n); }
   [[nodiscard]] Vector displacement(Index n) const { return x.size() == n ? x : Vector::Zero(n); }
-  /// The rows of x that this process holds (ContactProblem::held_rows), zero without x: on the
-  /// distributed path no vector of all n unknowns is made for the start.
+  /// The rows of x (all n unknowns, or a rank's part of a solution) that this process holds
+  /// (ContactProblem::held_rows), zero without x: on the distributed path no vector of all n
+  /// unknowns is made for the start.
   [[nodiscard]] Vector held_displacement(const ContactProblem& problem) const {
-    return x.size() == problem.A.rows() ? problem.held_rows(x)
-                                        : Vector::Zero(problem.end_row() - problem.first_row());
+    const bool part =
+        problem.part_solution() && x.size() == static_cast<Index>(problem.solution_unknowns.size());
+    return x.size() == problem.A.rows() || part
+               ? problem.held_rows(x)
+               : Vector::Zero(problem.end_row() - problem.first_row());
   }
 };
 
@@ -37,7 +41,7 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
 /// `multigrid`: the levels when the preconditioner is multigrid (null otherwise).
 /// Uzawa-GNM on the registered distributed engine (parallel/distributed_engine.hpp): the same
 /// loop, its vectors and Newton systems PETSc's, spread over the MPI ranks; u gathered on every
-/// rank.
+/// rank, or on the ranks' parts of the mesh each rank's part (ContactProblem::solution_unknowns).
 ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
                                           const ContactSolverOptions& options,
                                           const MethodStart& start);
@@ -58,7 +62,7 @@ ContactResult solve_semismooth_newton(const ContactProblem& problem,
 /// semismooth_newton on a backend (projected CG, projected_active_set_solver.hpp), used when
 /// uses_backend_path(options).
 /// Semismooth Newton on the registered distributed engine: the same loop, its Newton steps
-/// solved by PETSc with the active normal displacements eliminated; u gathered on every rank.
+/// solved by PETSc with the active normal displacements eliminated; u as Uzawa-GNM's.
 ContactResult solve_semismooth_newton_distributed(const ContactProblem& problem,
                                                   const ContactSolverOptions& options,
                                                   const MethodStart& start);

@@ -229,7 +229,10 @@ void ContactSolver::warm_start(const ContactResult& previous) {
   const Impl& m = *impl_;
   const ContactSet& c = m.problem->contact;
   const Index k = c.components;
-  if (previous.u.size() != m.problem->A.rows() || previous.l.size() != c.size() ||
+  const Index size = m.problem->part_solution()  // (a rank's part of the solution)
+                         ? static_cast<Index>(m.problem->solution_unknowns.size())
+                         : m.problem->A.rows();
+  if (previous.u.size() != size || previous.l.size() != c.size() ||
       (k > 1 && (previous.tangential.rows() != k - 1 || previous.tangential.cols() != c.size())))
     throw InputError("ContactSolver::warm_start: the result is not one of this problem");
   // The layout of the methods: with friction d values per node.
@@ -241,10 +244,13 @@ void ContactSolver::set_slip_origin(const Vector& u) {
   Impl& m = *impl_;
   const ContactSet& c = m.problem->contact;
   if (c.components == 1) return;  // frictionless: slip plays no part
-  if (u.size() != m.problem->A.rows())
+  const Index size = m.problem->part_solution()
+                         ? static_cast<Index>(m.problem->solution_unknowns.size())
+                         : m.problem->A.rows();
+  if (u.size() != size)
     throw InputError("ContactSolver::set_slip_origin: a displacement of this problem expected");
   const Index k = c.components;
-  const Vector rows = c.N * u;
+  const Vector rows = contact_rows(*m.problem, u);
   Vector origin(static_cast<Index>(k - 1) * c.size());
   for (Index j = 0; j < c.size(); ++j)
     origin.segment((k - 1) * j, k - 1) = rows.segment(k * j + 1, k - 1);
@@ -331,7 +337,7 @@ ContactResult ContactSolver::solve() {
     // The methods' layout (d values per node) split into the pressure and the tangential part.
     const Index k = c.components;
     const Vector flat = std::move(result.l);
-    const Vector rows = c.N * result.u - row_offsets(c);  // the slip on the tangential rows
+    const Vector rows = contact_rows(problem, result.u) - row_offsets(c);  // the tangential slip
     result.l.resize(c.size());
     result.tangential.resize(k - 1, c.size());
     result.slip.resize(c.size());

@@ -11,14 +11,17 @@ namespace signorini {
 
 namespace {
 
-// ||A u - b + N^T W l|| / max(||b||, ||N^T W l||) (`reaction` = N^T W l, all n rows: the contact
-// set is whole on every rank). A partitioned problem sums its rows' squares over the ranks.
-double equilibrium_residual(const ContactProblem& p, const Vector& u, const Vector& reaction) {
-  const double b_norm = std::max(load_norm(p), reaction.norm());
+// ||A u - b + N^T W l|| / max(||b||, ||N^T W l||) (`weighted` = W l, one value per row of N:
+// the contact set is whole on every rank). A partitioned problem sums its rows' squares over the
+// ranks.
+double equilibrium_residual(const ContactProblem& p, const Vector& u, const Vector& weighted) {
+  const Vector reaction = held_contact_transpose_rows(p, weighted);  // this process's rows
+  double sums[2] = {reaction.squaredNorm(),
+                    (held_stiffness_rows(p, u) - p.b + reaction).squaredNorm()};
+  sum_over_ranks(p, sums, 2);
+  const double b_norm = std::max(load_norm(p), std::sqrt(sums[0]));
   if (!(b_norm > 0.0)) return 0.0;
-  double squares = (held_stiffness_rows(p, u) - p.b + p.held_rows(reaction)).squaredNorm();
-  sum_over_ranks(p, &squares, 1);
-  return std::sqrt(squares) / b_norm;
+  return std::sqrt(sums[1]) / b_norm;
 }
 
 // With friction: the rows of N per node (normal, tangents), the multipliers likewise.
@@ -27,10 +30,9 @@ KktResiduals frictional_kkt_residuals(const ContactProblem& p, const Vector& u, 
   const ContactSet& c = p.contact;
   const Index m = c.components, nc = c.size();
   KktResiduals k;
-  const Vector reaction = c.N.transpose() * row_weights(c).cwiseProduct(l);
-  k.equilibrium = equilibrium_residual(p, u, reaction);
-  const Vector rows = c.N * u - row_offsets(c);  // gap residual, then slip v_j
-  const double length = std::max(u.lpNorm<Eigen::Infinity>(),
+  k.equilibrium = equilibrium_residual(p, u, row_weights(c).cwiseProduct(l));
+  const Vector rows = contact_rows(p, u) - row_offsets(c);  // gap residual, then slip v_j
+  const double length = std::max(largest_displacement(p, u),
                                  c.gaps.size() > 0 ? c.gaps.lpNorm<Eigen::Infinity>() : 0.0);
   const double l_max = l.size() > 0 ? l.lpNorm<Eigen::Infinity>() : 0.0;
   const Vector bounds = law.slip_bounds(l);
@@ -64,11 +66,10 @@ KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vecto
     return frictional_kkt_residuals(p, u, l, *friction);
   }
   KktResiduals k;
-  const Vector reaction = c.N.transpose() * c.weights.cwiseProduct(l);
-  k.equilibrium = equilibrium_residual(p, u, reaction);
+  k.equilibrium = equilibrium_residual(p, u, c.weights.cwiseProduct(l));
 
-  const Vector gap_residual = c.N * u - c.gaps;  // <= 0 where feasible
-  const double length = std::max(u.lpNorm<Eigen::Infinity>(),
+  const Vector gap_residual = contact_rows(p, u) - c.gaps;  // <= 0 where feasible
+  const double length = std::max(largest_displacement(p, u),
                                  c.gaps.size() > 0 ? c.gaps.lpNorm<Eigen::Infinity>() : 0.0);
   const double l_max = l.size() > 0 ? l.lpNorm<Eigen::Infinity>() : 0.0;
   double pen = 0.0, sign = 0.0, comp = 0.0;

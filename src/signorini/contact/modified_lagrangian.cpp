@@ -273,7 +273,7 @@ double ModifiedLagrangian::phi_change(const Direction& dir, double t) const {
 
 double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector& u,
                                  const Vector& l, const ContactLaw& law) {
-  const Vector Nu = p.contact.N * u;
+  const Vector Nu = contact_rows(p, u);  // (a collective call for a rank's part of the solution)
   double penalty = 0.0;
   if (law.components() > 1) {
     // psi(l + r (N u - g^)) - |l|^2 / 2 = psi(z) - psi(l) for admissible l.

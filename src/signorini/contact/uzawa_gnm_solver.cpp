@@ -62,7 +62,7 @@ ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
                       out);
   {
     ScopedTimer t(timings, "gather");
-    out.u = space->gathered_solution();
+    out.u = space->rank_solution();
   }
   record_distributed(out.summary, engine, space->linear_solver_description());
   out.summary.timings.merge(timings);

@@ -1,8 +1,12 @@
 #include "signorini/fem/dof_map.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
+
+#include "signorini/core/error.hpp"
 
 namespace signorini {
 
@@ -131,6 +135,22 @@ Vector DofMap::expand(const Vector& free_values, const Vector& scales) const {
   for (Index d = 0; d < num_dofs(); ++d) {
     const Index f = free_[static_cast<std::size_t>(d)];
     if (f >= 0) full(d) = free_values(f);
+  }
+  if (has_frames()) rotate_frames(full, /*to_local=*/false);
+  return full;
+}
+
+Vector DofMap::expand(const Vector& values, const Vector& scales,
+                      const std::function<Index(Index)>& place) const {
+  Vector full =
+      values_.size() == 0 ? Vector::Zero(num_dofs()) : Vector(scales.cwiseProduct(values_));
+  for (Index d = 0; d < num_dofs(); ++d) {
+    const Index f = free_[static_cast<std::size_t>(d)];
+    if (f < 0) continue;
+    const Index at = place(f);
+    if (at < 0 || at >= values.size())
+      throw InputError(fmt::format("expanding a part's displacement: free dof {} has no value", f));
+    full(d) = values(at);
   }
   if (has_frames()) rotate_frames(full, /*to_local=*/false);
   return full;

@@ -40,15 +40,61 @@ void sum_over_ranks(const ContactProblem& problem, double* values, Index count) 
 
 Vector held_stiffness_rows(const ContactProblem& problem, const Vector& u) {
   if (!problem.partitioned()) return problem.A * u;
-  // Row i of A is its column i, which a partitioned A holds for the rows it owns.
+  // Row i of A is its column i, which a partitioned A holds for the rows it owns; a part's
+  // solution has their own unknowns in one run (from `own`) and the others by their place.
   const Index first = problem.first_row(), end = problem.end_row();
+  const bool part = problem.part_solution();
+  const Index own = part && end > first ? problem.solution_index(first) : first;
   Vector rows(end - first);
   for (Index i = first; i < end; ++i) {
     double s = 0.0;
-    for (SparseMatrix::InnerIterator it(problem.A, problem.column_of(i)); it; ++it)
-      s += it.value() * u(it.row());
+    for (SparseMatrix::InnerIterator it(problem.A, problem.column_of(i)); it; ++it) {
+      const Index r = it.row();
+      const Index at =
+          !part ? r : (r >= first && r < end ? own + (r - first) : problem.solution_index(r));
+      if (at < 0)
+        throw NumericalError(
+            fmt::format("A u: unknown {} is neither this rank's nor in its part", r));
+      s += it.value() * u(at);
+    }
     rows(i - first) = s;
   }
+  return rows;
+}
+
+Vector contact_rows(const ContactProblem& problem, const Vector& u) {
+  const SparseMatrix& N = problem.contact.N;
+  if (!problem.part_solution()) return N * u;
+  // Each row's unknowns are one node's, on one rank (parallel/row_partition.hpp): that rank
+  // computes the row, the others add 0.
+  const Index first = problem.first_row(), end = problem.end_row();
+  const Index own = end > first ? problem.solution_index(first) : 0;
+  Vector rows = Vector::Zero(N.rows());
+  for (Index col = first; col < end; ++col)
+    for (SparseMatrix::InnerIterator it(N, col); it; ++it)
+      rows(it.row()) += it.value() * u(own + (col - first));
+  sum_over_ranks(problem, rows.data(), rows.size());
+  return rows;
+}
+
+double largest_displacement(const ContactProblem& problem, const Vector& u) {
+  if (!problem.part_solution()) return u.size() > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0;
+  // The largest of the ranks' own: each rank's in its slot, summed.
+  const Vector own = problem.held_rows(u);
+  Vector each = Vector::Zero(static_cast<Index>(problem.row_starts.size()) - 1);
+  each(problem.rank) = own.size() > 0 ? own.lpNorm<Eigen::Infinity>() : 0.0;
+  sum_over_ranks(problem, each.data(), each.size());
+  return each.size() > 0 ? each.maxCoeff() : 0.0;
+}
+
+Vector held_contact_transpose_rows(const ContactProblem& problem, const Vector& v) {
+  const SparseMatrix& N = problem.contact.N;
+  if (!problem.partitioned()) return N.transpose() * v;
+  const Index first = problem.first_row(), end = problem.end_row();
+  Vector rows = Vector::Zero(end - first);
+  for (Index col = first; col < end; ++col)
+    for (SparseMatrix::InnerIterator it(N, col); it; ++it)
+      rows(col - first) += it.value() * v(it.row());
   return rows;
 }
 

@@ -22,11 +22,12 @@
 
 namespace signorini {
 
-/// A NewtonSpace whose vectors are distributed; the solution can be gathered on every rank.
+/// A NewtonSpace whose vectors are distributed.
 class DistributedNewtonSpace : public NewtonSpace {
  public:
-  /// x on every rank, in the problem's numbering of the free dofs.
-  [[nodiscard]] virtual Vector gathered_solution() = 0;
+  /// x as this rank's solution (a collective call): all n unknowns, gathered on every rank, or
+  /// on a rank's part of the mesh the values of ContactProblem::solution_unknowns.
+  [[nodiscard]] virtual Vector rank_solution() = 0;
   /// How the Newton systems are solved ("CG with GAMG (6 rigid-body modes)").
   [[nodiscard]] virtual std::string linear_solver_description() const = 0;
 };
@@ -95,13 +96,23 @@ void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
 /// Registers (or, with null, removes) the engine; not owned, it must outlive its use.
 void set_distributed_engine(DistributedEngine* engine);
 
+// In these, u is a solution of the problem (ContactResult::u): all n unknowns, or on a rank's
+// part of the mesh the values of ContactProblem::solution_unknowns.
+
 /// The rows of A u that this process holds (ContactProblem::first_row to end_row; all of them
-/// unless partitioned), u being all n unknowns. No message: a partitioned A holds the columns of
-/// these rows, and A is symmetric.
+/// unless partitioned). No message: a partitioned A holds the columns of these rows, A is
+/// symmetric, and a part's solution has the unknowns of their columns.
 [[nodiscard]] Vector held_stiffness_rows(const ContactProblem& problem, const Vector& u);
-/// 1/2 <A u, u> - <b, u>, u being all n unknowns (a collective call where partitioned: a
-/// single number is summed over the ranks).
+/// 1/2 <A u, u> - <b, u> (a collective call where partitioned: a single number is summed over
+/// the ranks).
 [[nodiscard]] double quadratic_energy(const ContactProblem& problem, const Vector& u);
+/// N u, every row on every rank (a collective call for a part's solution: each row is computed
+/// by the rank that owns its unknowns, and the n_c values summed over the ranks).
+[[nodiscard]] Vector contact_rows(const ContactProblem& problem, const Vector& u);
+/// ||u||_inf over all n unknowns (a collective call for a part's solution).
+[[nodiscard]] double largest_displacement(const ContactProblem& problem, const Vector& u);
+/// The rows of N^T v (v: one value per row of N) that this process holds.
+[[nodiscard]] Vector held_contact_transpose_rows(const ContactProblem& problem, const Vector& v);
 /// ||b|| over all n unknowns (a collective call where partitioned).
 [[nodiscard]] double load_norm(const ContactProblem& problem);
 /// Sums values over the ranks where the problem is partitioned (a collective call then).

@@ -44,6 +44,16 @@ std::vector<Index> PartCells::cells(const std::vector<Index>& own) {
   return cells;
 }
 
+std::vector<Index> part_unknowns(const DofMap& dofs) {
+  std::vector<Index> unknowns;
+  for (Index v = 0; v < dofs.num_nodes(); ++v)
+    for (int k = 0; k < dofs.dim(); ++k)
+      if (const Index f = dofs.free_index(v, k); f >= 0) unknowns.push_back(f);
+  std::sort(unknowns.begin(), unknowns.end());
+  unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
+  return unknowns;
+}
+
 MeshPart mesh_part(const Mesh& mesh, const std::vector<Index>& cells) {
   std::vector<Index> global;
   for (const Index c : cells)

@@ -45,6 +45,10 @@ struct MeshPart {
 };
 [[nodiscard]] MeshPart mesh_part(const Mesh& mesh, const std::vector<Index>& cells);
 
+/// The free dofs of a part's numbering (its nodes' global free numbers), increasing: the
+/// unknowns whose values the rank's solution holds (ContactProblem::solution_unknowns).
+[[nodiscard]] std::vector<Index> part_unknowns(const DofMap& dofs);
+
 // The bytes of each, for ByteWriter and ByteReader (parallel/byte_message.hpp).
 void pack(ByteWriter& out, const Mesh& mesh);
 [[nodiscard]] Mesh unpack_mesh(ByteReader& in);

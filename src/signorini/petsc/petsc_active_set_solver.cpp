@@ -133,7 +133,14 @@ LinearSolveStats PetscActiveSetSolver::solve(const ActiveSet& S, Vector& l, Vect
 }
 
 Vector PetscActiveSetSolver::displacement() const {
-  return rotation_.from_rotated(petsc::gather(y_));
+  // (Gathered whole and rotated back: semismooth Newton's distributed steps still hold the
+  // rotation of all n unknowns; a rank's part of the mesh then keeps its part's values.)
+  const Vector whole = rotation_.from_rotated(petsc::gather(y_));
+  if (!p_.part_solution()) return whole;
+  Vector part(static_cast<Index>(p_.solution_unknowns.size()));
+  for (std::size_t k = 0; k < p_.solution_unknowns.size(); ++k)
+    part(static_cast<Index>(k)) = whole(p_.solution_unknowns[k]);
+  return part;
 }
 
 }  // namespace signorini

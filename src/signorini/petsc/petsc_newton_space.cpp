@@ -29,7 +29,14 @@ petsc::NodePadding node_padding(const ContactProblem& problem, MPI_Comm comm) {
   if (whole != 0) return {nodes, n};
   if (static_cast<Index>(nodes.size()) != last - first)
     throw NumericalError("the nodes of the unknowns: neither all of them nor this rank's");
+  // The slots of the others' unknowns that this rank reads: those of its part of the solution
+  // (ContactProblem::solution_unknowns, rank_solution), else those its columns of A reach.
   std::vector<Index> ghosts;
+  if (problem.part_solution()) {
+    for (const Index i : problem.solution_unknowns)
+      if (i < first || i >= last) ghosts.push_back(i);
+    return {nodes, first, last, n, ghosts, comm};
+  }
   for (Index col = first; col < last; ++col)
     for (SparseMatrix::InnerIterator it(problem.A, problem.column_of(col)); it; ++it)
       if (it.row() < first || it.row() >= last) ghosts.push_back(it.row());
@@ -420,7 +427,35 @@ std::optional<ActiveSetSolve> PetscNewtonSpace::solve_on_active_set(const Active
   return out;
 }
 
-Vector PetscNewtonSpace::gathered_solution() {
+Vector PetscNewtonSpace::rank_solution() {
+  if (p_.part_solution()) {
+    // The part's unknowns, from their owners' slots: one scatter into a vector of this rank's.
+    const auto& unknowns = p_.solution_unknowns;
+    std::vector<PetscInt> slots(unknowns.size());
+    for (std::size_t k = 0; k < unknowns.size(); ++k)
+      slots[k] = static_cast<PetscInt>(padding_.slot(unknowns[k]));
+    const auto count = static_cast<PetscInt>(slots.size());
+    IS from = nullptr;
+    Vec values = nullptr;
+    VecScatter scatter = nullptr;
+    check(ISCreateGeneral(PETSC_COMM_SELF, count, slots.data(), PETSC_USE_POINTER, &from),
+          "the part's solution");
+    check(VecCreateSeq(PETSC_COMM_SELF, count, &values), "the part's solution");
+    check(VecScatterCreate(x_, from, values, nullptr, &scatter), "the part's solution");
+    check(VecScatterBegin(scatter, x_, values, INSERT_VALUES, SCATTER_FORWARD),
+          "the part's solution");
+    check(VecScatterEnd(scatter, x_, values, INSERT_VALUES, SCATTER_FORWARD),
+          "the part's solution");
+    Vector out(count);
+    const PetscScalar* a = nullptr;
+    check(VecGetArrayRead(values, &a), "the part's solution");
+    std::copy(a, a + count, out.data());
+    check(VecRestoreArrayRead(values, &a), "the part's solution");
+    VecScatterDestroy(&scatter);
+    VecDestroy(&values);
+    ISDestroy(&from);
+    return out;
+  }
   // Each rank's unknowns from its slots, then put together (no whole padded copy).
   PetscInt m = 0;
   check(VecGetLocalSize(x_, &m), "the solution");

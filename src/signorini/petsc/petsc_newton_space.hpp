@@ -52,7 +52,7 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   std::optional<ActiveSetSolve> solve_on_active_set(const ActiveSet& S, double r,
                                                     double tolerance) override;
 
-  [[nodiscard]] Vector gathered_solution() override;
+  [[nodiscard]] Vector rank_solution() override;
   [[nodiscard]] std::string linear_solver_description() const override {
     return petsc::with_workspace_note(description_, workspace_);
   }

@@ -476,6 +476,8 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
   if (uses_multigrid(plan.options))
     problem.near_null_space =
         rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &whole.centroid);
+  // The solution comes back as the part's unknowns only (no vector of all n on any rank).
+  problem.solution_unknowns = part_unknowns(dofs);
   Model model{std::move(mesh),
               std::move(dofs),
               std::move(problem),

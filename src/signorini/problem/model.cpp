@@ -753,6 +753,11 @@ int Model::cell_rank(Index cell) const {
 }
 
 Vector Model::full_displacement(const Vector& u, double factor, int step) const {
+  // (A rank's part of a distributed run's mesh holds its part of the solution:
+  // ContactProblem::solution_unknowns.)
+  if (problem.part_solution())
+    return dofs.expand(u, prescribed_scales(factor, step),
+                       [this](Index f) { return problem.solution_index(f); });
   return dofs.expand(u, prescribed_scales(factor, step));
 }
 

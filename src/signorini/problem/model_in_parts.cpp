@@ -13,6 +13,7 @@
 #include "signorini/fem/contact_tangents.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/parallel/model_part.hpp"
 #include "signorini/problem/distributed_model.hpp"
 
 namespace signorini {
@@ -559,6 +560,8 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
     problem.near_null_space = rigid_body_modes(mesh, dofs, first_row, end_row, &whole.centroid);
   std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, part.entry);
   part.entry = {};
+  // The solution comes back as the part's unknowns only (no vector of all n on any rank).
+  problem.solution_unknowns = part_unknowns(part.dofs);
   return Model{std::move(part.mesh),
                std::move(part.dofs),
                std::move(problem),
