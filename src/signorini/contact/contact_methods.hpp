@@ -3,6 +3,7 @@
 // completes its summary with KKT residuals, energies and timings.
 
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -22,9 +23,7 @@ struct MethodStart {
   /// (ContactProblem::held_rows), zero without x: on the distributed path no vector of all n
   /// unknowns is made for the start.
   [[nodiscard]] Vector held_displacement(const ContactProblem& problem) const {
-    const bool part =
-        problem.part_solution() && x.size() == static_cast<Index>(problem.solution_unknowns.size());
-    return x.size() == problem.A.rows() || part
+    return x.size() == problem.A.rows() || x.size() == solution_size(problem)
                ? problem.held_rows(x)
                : Vector::Zero(problem.end_row() - problem.first_row());
   }

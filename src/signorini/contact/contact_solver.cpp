@@ -229,10 +229,7 @@ void ContactSolver::warm_start(const ContactResult& previous) {
   const Impl& m = *impl_;
   const ContactSet& c = m.problem->contact;
   const Index k = c.components;
-  const Index size = m.problem->part_solution()  // (a rank's part of the solution)
-                         ? static_cast<Index>(m.problem->solution_unknowns.size())
-                         : m.problem->A.rows();
-  if (previous.u.size() != size || previous.l.size() != c.size() ||
+  if (previous.u.size() != solution_size(*m.problem) || previous.l.size() != c.size() ||
       (k > 1 && (previous.tangential.rows() != k - 1 || previous.tangential.cols() != c.size())))
     throw InputError("ContactSolver::warm_start: the result is not one of this problem");
   // The layout of the methods: with friction d values per node.
@@ -244,10 +241,7 @@ void ContactSolver::set_slip_origin(const Vector& u) {
   Impl& m = *impl_;
   const ContactSet& c = m.problem->contact;
   if (c.components == 1) return;  // frictionless: slip plays no part
-  const Index size = m.problem->part_solution()
-                         ? static_cast<Index>(m.problem->solution_unknowns.size())
-                         : m.problem->A.rows();
-  if (u.size() != size)
+  if (u.size() != solution_size(*m.problem))
     throw InputError("ContactSolver::set_slip_origin: a displacement of this problem expected");
   const Index k = c.components;
   const Vector rows = contact_rows(*m.problem, u);

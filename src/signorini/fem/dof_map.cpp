@@ -130,14 +130,7 @@ Vector DofMap::expand(const Vector& free_values) const {
 }
 
 Vector DofMap::expand(const Vector& free_values, const Vector& scales) const {
-  Vector full =
-      values_.size() == 0 ? Vector::Zero(num_dofs()) : Vector(scales.cwiseProduct(values_));
-  for (Index d = 0; d < num_dofs(); ++d) {
-    const Index f = free_[static_cast<std::size_t>(d)];
-    if (f >= 0) full(d) = free_values(f);
-  }
-  if (has_frames()) rotate_frames(full, /*to_local=*/false);
-  return full;
+  return expand(free_values, scales, [](Index f) { return f; });
 }
 
 Vector DofMap::expand(const Vector& values, const Vector& scales,

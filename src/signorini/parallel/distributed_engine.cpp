@@ -67,24 +67,26 @@ Vector contact_rows(const ContactProblem& problem, const Vector& u) {
   if (!problem.part_solution()) return N * u;
   // Each row's unknowns are one node's, on one rank (parallel/row_partition.hpp): that rank
   // computes the row, the others add 0.
-  const Index first = problem.first_row(), end = problem.end_row();
-  const Index own = end > first ? problem.solution_index(first) : 0;
+  const Index first = problem.first_row();
+  const Vector own = problem.held_rows(u);
   Vector rows = Vector::Zero(N.rows());
-  for (Index col = first; col < end; ++col)
-    for (SparseMatrix::InnerIterator it(N, col); it; ++it)
-      rows(it.row()) += it.value() * u(own + (col - first));
+  for (Index k = 0; k < own.size(); ++k)
+    for (SparseMatrix::InnerIterator it(N, first + k); it; ++it)
+      rows(it.row()) += it.value() * own(k);
   sum_over_ranks(problem, rows.data(), rows.size());
   return rows;
 }
 
+Index solution_size(const ContactProblem& problem) {
+  return problem.part_solution() ? static_cast<Index>(problem.solution_unknowns.size())
+                                 : problem.A.rows();
+}
+
 double largest_displacement(const ContactProblem& problem, const Vector& u) {
   if (!problem.part_solution()) return u.size() > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0;
-  // The largest of the ranks' own: each rank's in its slot, summed.
+  // The largest of the ranks' own unknowns (each unknown is one rank's).
   const Vector own = problem.held_rows(u);
-  Vector each = Vector::Zero(static_cast<Index>(problem.row_starts.size()) - 1);
-  each(problem.rank) = own.size() > 0 ? own.lpNorm<Eigen::Infinity>() : 0.0;
-  sum_over_ranks(problem, each.data(), each.size());
-  return each.size() > 0 ? each.maxCoeff() : 0.0;
+  return required_distributed_engine().max(own.size() > 0 ? own.lpNorm<Eigen::Infinity>() : 0.0);
 }
 
 Vector held_contact_transpose_rows(const ContactProblem& problem, const Vector& v) {

@@ -65,6 +65,8 @@ class DistributedEngine {
   virtual void note_partition(const std::string& how) = 0;
   /// Sums `values` over the ranks, in place on every rank (a collective call).
   virtual void sum(double* values, Index count) const = 0;
+  /// The largest of the ranks' `value`, on every rank (a collective call).
+  [[nodiscard]] virtual double max(double value) const = 0;
   /// True on every rank when `flag` is true on any (a collective call).
   [[nodiscard]] virtual bool any(bool flag) const = 0;
   /// Rank 0's `bytes` on every rank (a collective call; the others' are replaced).
@@ -109,6 +111,9 @@ void set_distributed_engine(DistributedEngine* engine);
 /// N u, every row on every rank (a collective call for a part's solution: each row is computed
 /// by the rank that owns its unknowns, and the n_c values summed over the ranks).
 [[nodiscard]] Vector contact_rows(const ContactProblem& problem, const Vector& u);
+/// The length of a solution of the problem: all n, or a part's (ContactProblem::
+/// solution_unknowns).
+[[nodiscard]] Index solution_size(const ContactProblem& problem);
 /// ||u||_inf over all n unknowns (a collective call for a part's solution).
 [[nodiscard]] double largest_displacement(const ContactProblem& problem, const Vector& u);
 /// The rows of N^T v (v: one value per row of N) that this process holds.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "signorini/core/error.hpp"
+#include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
 namespace signorini::petsc {
@@ -85,33 +86,17 @@ NodePadding::NodePadding(const std::vector<Index>& own_nodes, Index first, Index
   // The ghosts' slots from their owners: a distributed vector of every unknown's slot, read at
   // the ghosts (PETSc's scatter).
   ghosts_ = ghosts;
-  Vec slots = nullptr, got = nullptr;
+  Vec slots = nullptr;
   check(VecCreateMPI(comm, static_cast<PetscInt>(m), static_cast<PetscInt>(n), &slots),
         "the padding's slots");
   PetscScalar* a = nullptr;
   check(VecGetArray(slots, &a), "the padding's slots");
   for (Index i = 0; i < m; ++i) a[i] = static_cast<PetscScalar>(slot_[static_cast<std::size_t>(i)]);
   check(VecRestoreArray(slots, &a), "the padding's slots");
-  const std::vector<PetscInt> at(ghosts.begin(), ghosts.end());
-  check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(at.size()), &got),
-        "the padding's slots");
-  IS from = nullptr;
-  check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(at.size()), at.data(),
-                        PETSC_COPY_VALUES, &from),
-        "the padding's slots");
-  VecScatter scatter = nullptr;
-  check(VecScatterCreate(slots, from, got, nullptr, &scatter), "the padding's slots");
-  check(VecScatterBegin(scatter, slots, got, INSERT_VALUES, SCATTER_FORWARD),
-        "the padding's slots");
-  check(VecScatterEnd(scatter, slots, got, INSERT_VALUES, SCATTER_FORWARD), "the padding's slots");
-  const PetscScalar* g = nullptr;
-  check(VecGetArrayRead(got, &g), "the padding's slots");
-  ghost_slots_.resize(at.size());
-  for (std::size_t k = 0; k < at.size(); ++k) ghost_slots_[k] = static_cast<Index>(g[k]);
-  check(VecRestoreArrayRead(got, &g), "the padding's slots");
-  VecScatterDestroy(&scatter);
-  ISDestroy(&from);
-  VecDestroy(&got);
+  const Vector got = values_at(slots, std::vector<PetscInt>(ghosts.begin(), ghosts.end()));
+  ghost_slots_.resize(ghosts.size());
+  for (std::size_t k = 0; k < ghosts.size(); ++k)
+    ghost_slots_[k] = static_cast<Index>(got(static_cast<Index>(k)));
   VecDestroy(&slots);
 }
 

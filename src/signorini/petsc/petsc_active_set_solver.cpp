@@ -136,11 +136,7 @@ Vector PetscActiveSetSolver::displacement() const {
   // (Gathered whole and rotated back: semismooth Newton's distributed steps still hold the
   // rotation of all n unknowns; a rank's part of the mesh then keeps its part's values.)
   const Vector whole = rotation_.from_rotated(petsc::gather(y_));
-  if (!p_.part_solution()) return whole;
-  Vector part(static_cast<Index>(p_.solution_unknowns.size()));
-  for (std::size_t k = 0; k < p_.solution_unknowns.size(); ++k)
-    part(static_cast<Index>(k)) = whole(p_.solution_unknowns[k]);
-  return part;
+  return p_.part_solution() ? Vector(whole(p_.solution_unknowns)) : whole;
 }
 
 }  // namespace signorini

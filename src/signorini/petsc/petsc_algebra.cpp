@@ -184,6 +184,30 @@ Vector gather(Vec v) {
   return allgather(own, PetscObjectComm(reinterpret_cast<PetscObject>(v)));
 }
 
+Vector values_at(Vec v, const std::vector<PetscInt>& at) {
+  const auto count = static_cast<PetscInt>(at.size());
+  IS from = nullptr;
+  Vec got = nullptr;
+  VecScatter scatter = nullptr;
+  check(ISCreateGeneral(PETSC_COMM_SELF, count, at.data(), PETSC_USE_POINTER, &from),
+        "reading a distributed vector");
+  check(VecCreateSeq(PETSC_COMM_SELF, count, &got), "reading a distributed vector");
+  check(VecScatterCreate(v, from, got, nullptr, &scatter), "reading a distributed vector");
+  check(VecScatterBegin(scatter, v, got, INSERT_VALUES, SCATTER_FORWARD),
+        "reading a distributed vector");
+  check(VecScatterEnd(scatter, v, got, INSERT_VALUES, SCATTER_FORWARD),
+        "reading a distributed vector");
+  Vector out(count);
+  const PetscScalar* a = nullptr;
+  check(VecGetArrayRead(got, &a), "reading a distributed vector");
+  std::copy(a, a + count, out.data());
+  check(VecRestoreArrayRead(got, &a), "reading a distributed vector");
+  VecScatterDestroy(&scatter);
+  VecDestroy(&got);
+  ISDestroy(&from);
+  return out;
+}
+
 Vector allgather(const Vector& own, MPI_Comm comm) {
   int size = 1;
   MPI_Comm_size(comm, &size);

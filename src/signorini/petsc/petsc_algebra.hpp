@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/contact_solver_options.hpp"
@@ -69,6 +70,9 @@ void set_owned(Vec v, const Vector& rows);
 
 /// The whole vector on every rank.
 [[nodiscard]] Vector gather(Vec v);
+/// The entries `at` (global indices, any rank's) of the distributed v on this rank, from their
+/// owners by one scatter (a collective call).
+[[nodiscard]] Vector values_at(Vec v, const std::vector<PetscInt>& at);
 /// The ranks' entries `own` (each rank's, in the order of the ranks) put together on every rank:
 /// one MPI_Allgatherv into the result, with no whole copy beside it.
 [[nodiscard]] Vector allgather(const Vector& own, MPI_Comm comm);

@@ -152,6 +152,11 @@ void PetscEngine::sum(double* values, Index count) const {
                   PETSC_COMM_WORLD);
 }
 
+double PetscEngine::max(double value) const {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+  return value;
+}
+
 bool PetscEngine::any(bool flag) const {
   int local = flag ? 1 : 0, global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LOR, PETSC_COMM_WORLD);

@@ -36,6 +36,7 @@ class PetscEngine final : public DistributedEngine {
                                            const ContactSolverOptions& options) override;
   void note_partition(const std::string& how) override { partitioner_ = how; }
   void sum(double* values, Index count) const override;
+  [[nodiscard]] double max(double value) const override;
   [[nodiscard]] bool any(bool flag) const override;
   void broadcast(std::vector<char>& bytes) const override;
   void send_from_root(int to, const std::vector<char>& bytes) const override;

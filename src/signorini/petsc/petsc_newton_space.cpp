@@ -429,32 +429,12 @@ std::optional<ActiveSetSolve> PetscNewtonSpace::solve_on_active_set(const Active
 
 Vector PetscNewtonSpace::rank_solution() {
   if (p_.part_solution()) {
-    // The part's unknowns, from their owners' slots: one scatter into a vector of this rank's.
-    const auto& unknowns = p_.solution_unknowns;
-    std::vector<PetscInt> slots(unknowns.size());
-    for (std::size_t k = 0; k < unknowns.size(); ++k)
-      slots[k] = static_cast<PetscInt>(padding_.slot(unknowns[k]));
-    const auto count = static_cast<PetscInt>(slots.size());
-    IS from = nullptr;
-    Vec values = nullptr;
-    VecScatter scatter = nullptr;
-    check(ISCreateGeneral(PETSC_COMM_SELF, count, slots.data(), PETSC_USE_POINTER, &from),
-          "the part's solution");
-    check(VecCreateSeq(PETSC_COMM_SELF, count, &values), "the part's solution");
-    check(VecScatterCreate(x_, from, values, nullptr, &scatter), "the part's solution");
-    check(VecScatterBegin(scatter, x_, values, INSERT_VALUES, SCATTER_FORWARD),
-          "the part's solution");
-    check(VecScatterEnd(scatter, x_, values, INSERT_VALUES, SCATTER_FORWARD),
-          "the part's solution");
-    Vector out(count);
-    const PetscScalar* a = nullptr;
-    check(VecGetArrayRead(values, &a), "the part's solution");
-    std::copy(a, a + count, out.data());
-    check(VecRestoreArrayRead(values, &a), "the part's solution");
-    VecScatterDestroy(&scatter);
-    VecDestroy(&values);
-    ISDestroy(&from);
-    return out;
+    // The part's unknowns, read at their slots from their owners.
+    std::vector<PetscInt> slots;
+    slots.reserve(p_.solution_unknowns.size());
+    for (const Index i : p_.solution_unknowns)
+      slots.push_back(static_cast<PetscInt>(padding_.slot(i)));
+    return petsc::values_at(x_, slots);
   }
   // Each rank's unknowns from its slots, then put together (no whole padded copy).
   PetscInt m = 0;
