@@ -38,8 +38,11 @@ int run_check(const CheckArguments& args) {
         model.solver.linear.type != LinearSolverType::ConjugateGradient
             ? "MUMPS (the plan's direct solver)"
         : model.solver.linear.preconditioner == PreconditionerType::Jacobi ? "CG with Jacobi"
-        : model.solver.petsc_multigrid == PetscMultigrid::Hypre ? "CG with hypre's BoomerAMG"
-        : model.solver.petsc_multigrid == PetscMultigrid::Aggregation
+        : resolved_petsc_multigrid(model.solver.petsc_multigrid, engine->size()) ==
+                PetscMultigrid::Hypre
+            ? "CG with hypre's BoomerAMG"
+        : resolved_petsc_multigrid(model.solver.petsc_multigrid, engine->size()) ==
+                PetscMultigrid::Aggregation
             ? "CG with smoothed aggregation on each rank's nodes"
             : "CG with GAMG");
   fmt::print("ok: {} dofs, {} contact nodes\n", model.num_dofs(), model.problem.contact.size());

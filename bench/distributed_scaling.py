@@ -13,7 +13,7 @@ with the Uzawa and CG counts and the energies, which must agree. Two problems:
                                                  # hertz_sphere.geo at -clscale S (0.185: about
                                                  # a million unknowns; needs the gmsh program)
 
---repeats R keeps the best of R runs of each; --petsc-multigrid gamg|aggregation chooses the
+--repeats R keeps the best of R runs of each; --petsc-multigrid auto|gamg|aggregation chooses the
 PETSc path's multigrid levels (solver.petsc_multigrid). SIGNORINI names the serial executable (default:
 the release build; signorini-mpi must be beside it)."""
 
@@ -45,7 +45,7 @@ def main():
     ap.add_argument("problem", choices=["box", "hertz"])
     ap.add_argument("size", type=float, help="N for box, -clscale for hertz")
     ap.add_argument("--repeats", type=int, default=1)
-    ap.add_argument("--petsc-multigrid", choices=["gamg", "aggregation"],
+    ap.add_argument("--petsc-multigrid", choices=["auto", "gamg", "aggregation"],
                     help="solver.petsc_multigrid of the PETSc path (default: the problem's)")
     args = ap.parse_args()
     exe = pathlib.Path(os.environ.get("SIGNORINI", ROOT / "build/release/app/signorini"))

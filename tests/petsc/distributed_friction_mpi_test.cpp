@@ -2,8 +2,8 @@
 // and Coulomb's laws on the PETSc engine, run on 1, 2 and 4 ranks, against the serial solve of
 // the same problem on the same rank (u, l and the tangential forces to 1e-8, the same Uzawa
 // counts), in 2D with MUMPS and in 3D with CG and GAMG's kept levels (the nodes' coupled blocks
-// on the fine level, W's diagonal on the coarse ones); semismooth Newton with friction is refused
-// there with a message.
+// on the fine level, W's diagonal on the coarse ones), and classical Uzawa; semismooth Newton
+// with friction is refused there with a message.
 
 #include <gtest/gtest.h>
 
@@ -72,6 +72,7 @@ TEST(DistributedFriction, BallOnBlockWithGamgMatchesTheSerialSolve) {
   spec.solver.linear.cg_tolerance = 1e-13;
   spec.solver.inner_tolerance = InnerTolerance::Fixed;
   spec.solver.uzawa_tolerance = 1e-10;
+  spec.solver.petsc_multigrid = PetscMultigrid::Gamg;  // (the default's choice on several ranks)
   const auto [distributed, serial] = solve_both_ways(spec);
   EXPECT_NE(distributed.summary.device.find("PC mg (GAMG's levels, kept"), std::string::npos)
       << distributed.summary.device;
@@ -81,6 +82,18 @@ TEST(DistributedFriction, BallOnBlockWithGamgMatchesTheSerialSolve) {
     if (serial.l(j) > 0.0 && serial.tangential.col(j).norm() > (1.0 - 1e-6) * 0.2 * serial.l(j))
       ++sliding;
   EXPECT_GT(sliding, 0);
+}
+
+// Classical Uzawa with Tresca's law: the same projected steps on every row of N (normals and
+// tangents), A factorised once by MUMPS, against the serial tool's.
+TEST(DistributedFriction, ClassicalUzawaMatchesTheSerialSolve) {
+  ProblemSpec spec = with_friction(paper_benchmark(12, 4), FrictionModel::Tresca, 0.05);
+  spec.solver.method = ContactMethod::ClassicalUzawa;
+  spec.solver.uzawa_tolerance = 1e-9;
+  const auto [distributed, serial] = solve_both_ways(spec);
+  EXPECT_GT(serial.summary.outer_iterations, 10);
+  EXPECT_NEAR(distributed.summary.classical_step, serial.summary.classical_step,
+              1e-9 * serial.summary.classical_step);
 }
 
 // Semismooth Newton with friction factorises the whole KKT system in one process: refused on

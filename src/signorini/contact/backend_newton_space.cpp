@@ -91,6 +91,12 @@ NewtonSolveStats BackendNewtonSpace::solve(const Vector& terms) {
     ScopedTimer t(timings_, "linear solve");
     lin = pcg_->solve(H(), *newton_.preconditioner, work_, x_new_, options);
   }
+  // A x_new for direction(), from what the solve left: H x_new = rhs - r (PCG's residual), so
+  // A x_new = rhs - r - N^T W N x_new, the contact rows' products instead of a product with A
+  // (one of the fine level's largest costs) in every GNM iteration.
+  be_.axpbyz(1.0, work_, -1.0, pcg_->residual(), Ad_);
+  H().add_contact_terms(x_new_, Ad_, -1.0);
+  stiffness_of_new_ = true;
   NewtonSolveStats out;
   out.converged = lin.converged;
   out.iterations = lin.iterations;
@@ -102,7 +108,14 @@ NewtonSolveStats BackendNewtonSpace::solve(const Vector& terms) {
 
 void BackendNewtonSpace::direction(ModifiedLagrangian::Direction& dir) {
   be_.axpbyz(1.0, x_new_, -1.0, x_, d_);
-  H().apply_stiffness(d_, Ad_);
+  if (stiffness_of_new_) {
+    // A d = A x_new - A x, where A x = residual + b.
+    be_.axpby(-1.0, residual_, 1.0, Ad_);
+    be_.axpby(-1.0, b_, 1.0, Ad_);
+    stiffness_of_new_ = false;
+  } else {
+    H().apply_stiffness(d_, Ad_);
+  }
   dir.residual_dot_d = be_.dot(residual_, d_);
   dir.d_A_d = be_.dot(Ad_, d_);
   dir.Nd = contact_values_of(d_);
@@ -139,7 +152,8 @@ std::optional<ActiveSetSolve> BackendNewtonSpace::solve_on_active_set(const Acti
           p_, o_.linear, newton_, be_, ActiveSetConstraint::Workspace{*pcg_, x_new_, d_, Ad_});
   }
   if (!constraint_) return std::nullopt;
-  set_active(S, r);  // (the preconditioner: the Newton matrix of S)
+  stiffness_of_new_ = false;  // (Ad_ is the constraint's work vector)
+  set_active(S, r);           // (the preconditioner: the Newton matrix of S)
   ActiveSetSolve out;
   const LinearSolveStats s =
       constraint_->solve(S, x_, b_, b_norm_, tolerance, out.l, out.gap_residual, timings_);

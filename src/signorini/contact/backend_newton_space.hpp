@@ -60,6 +60,7 @@ class BackendNewtonSpace final : public NewtonSpace {
   BackendNewtonMatrix newton_;
   std::unique_ptr<Pcg> pcg_;
   DeviceVector b_, x_, x_new_, residual_, d_, Ad_, work_, contact_;
+  bool stiffness_of_new_ = false;  // Ad_ holds A x_new, from the last solve()
   ActiveSet weights_active_;
   Linearization linearization_;  // friction's, where one was set
   Vector Nx_;

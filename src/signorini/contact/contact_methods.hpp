@@ -35,6 +35,11 @@ ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolver
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
                                     const ContactSolverOptions& options,
                                     const MethodStart& start = {});
+/// Classical Uzawa on the registered distributed engine: step (i) by the engine's Newton space
+/// with no node active (its matrix A, its KSP), step (ii) on every rank alike; u as Uzawa-GNM's.
+ContactResult solve_classical_uzawa_distributed(const ContactProblem& problem,
+                                                const ContactSolverOptions& options,
+                                                const MethodStart& start);
 /// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
 /// uses_backend_path(options).
 /// `multigrid`: the levels when the preconditioner is multigrid (null otherwise).

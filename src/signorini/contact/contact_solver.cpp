@@ -168,24 +168,21 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
     // factorises the whole KKT system (the full problem's, in one process).
     if (m.path == SolvePath::CondensedDirect && m.options.method == ContactMethod::SemismoothNewton)
       m.path = SolvePath::SparseDirect;
-    if ((m.path == SolvePath::Distributed || m.path == SolvePath::Backend) &&
-        m.options.method != ContactMethod::UzawaGnm)
+    if ((m.path == SolvePath::Distributed && m.options.method == ContactMethod::SemismoothNewton) ||
+        (m.path == SolvePath::Backend && m.options.method != ContactMethod::UzawaGnm))
       throw InputError(
           fmt::format("the contact law \"{}\" (friction) with solver.method = \"{}\" runs {}; use "
-                      "\"uzawa_gnm\" there (docs/solvers.md)",
+                      "\"uzawa_gnm\"{} there (docs/solvers.md)",
                       law.name(), enum_to_string(kContactMethodNames, m.options.method),
                       m.path == SolvePath::Distributed
                           ? "in one process, not on the distributed path (solver.distributed)"
-                          : "on the host's sparse paths, not on the multigrid or GPU path"));
+                          : "on the host's sparse paths, not on the multigrid or GPU path",
+                      m.path == SolvePath::Distributed ? " or \"classical_uzawa\"" : ""));
   }
   if (problem.partitioned() && m.path != SolvePath::Distributed)
     throw InputError(
         "a partitioned contact problem (each rank holding its part of A) is solved on the "
         "distributed path only (solver.distributed)");
-  if (m.path == SolvePath::Distributed && m.options.method == ContactMethod::ClassicalUzawa)
-    throw InputError(
-        "solver.method = \"classical_uzawa\": the distributed path runs \"uzawa_gnm\" and "
-        "\"semismooth_newton\" (docs/distributed.md)");
   m.multigrid = multigrid;
   if (m.path == SolvePath::CondensedDirect) {
     ScopedTimer timer(m.setup_timings, "contact solve");
@@ -274,6 +271,8 @@ ContactResult ContactSolver::solve() {
       case SolvePath::Distributed:
         result = options.method == ContactMethod::SemismoothNewton
                      ? solve_semismooth_newton_distributed(problem, options, start)
+                 : options.method == ContactMethod::ClassicalUzawa
+                     ? solve_classical_uzawa_distributed(problem, options, start)
                      : solve_uzawa_gnm_distributed(problem, options, start);
         break;
       case SolvePath::Backend:

@@ -116,7 +116,8 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
            "none");
     t.choice("petsc_multigrid", &O::petsc_multigrid, kPetscMultigridNames,
              "on the distributed path, the multigrid of `[solver.linear] preconditioner = "
-             "\"multigrid\"`: `\"gamg\"`, PETSc's smoothed aggregation on the rigid-body "
+             "\"multigrid\"`: `\"auto\"`, `\"aggregation\"` on one rank and `\"gamg\"` on "
+             "several; `\"gamg\"`, PETSc's smoothed aggregation on the rigid-body "
              "modes, its levels formed once and kept for every active set of Uzawa-GNM (a "
              "`-pc_type` in `petsc_options` replaces them); `\"aggregation\"`, the serial "
              "tool's smoothed aggregation made on each rank's own nodes, with its own Galerkin "
@@ -162,7 +163,8 @@ void validate(const ContactSolverOptions& o) {
         "solver.method = \"semismooth_newton\" solves the unilateral contact law only, not "
         "\"{}\"; use \"uzawa_gnm\"",
         contact_law(o).name()));
-  if (backend_path && o.method == ContactMethod::ClassicalUzawa)
+  // (On the distributed path the multigrid is the KSP's, for classical Uzawa too.)
+  if (backend_path && o.method == ContactMethod::ClassicalUzawa && !distributed_path(o))
     throw InputError(
         fmt::format("solver.method = \"{}\": the {} runs \"uzawa_gnm\" and "
                     "\"semismooth_newton\" only",

@@ -91,7 +91,7 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   // The coarsest level on the host, for its dense factorisation (only if it is solved so).
   if (current->rows() <= options_.max_dense_coarse) {
     coarse_A_ = *current;
-    coarse_N_ = Nl;
+    coarse_Nt_ = Nl.transpose();
   }
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];
@@ -193,8 +193,16 @@ void MultigridPreconditioner::refresh() {
 void MultigridPreconditioner::factor_coarsest() {
   // H_L = A_L + N_L^T diag(c) N_L, dense, inverted once per active set.
   const Vector& c = levels_.front()->op->weights();
+  // The contact terms from the active rows alone (c_j = 0 elsewhere), each row's outer product
+  // added in place: a sparse product over all the contact rows was half of every refresh of
+  // this level (5 ms of 9 at 7,366 contact rows, of which about 1,000 active).
   Matrix H = Matrix(coarse_A_);
-  if (coarse_N_.rows() > 0) H += Matrix(coarse_N_.transpose() * c.asDiagonal() * coarse_N_);
+  for (Index j = 0; j < coarse_Nt_.outerSize(); ++j) {
+    if (c(j) == 0.0) continue;
+    for (SparseMatrix::InnerIterator a(coarse_Nt_, j); a; ++a)
+      for (SparseMatrix::InnerIterator b(coarse_Nt_, j); b; ++b)
+        H(a.row(), b.row()) += c(j) * a.value() * b.value();
+  }
   auto llt = std::make_unique<Eigen::LLT<Matrix>>(H);
   if (llt->info() != Eigen::Success)
     throw NumericalError(fmt::format(

@@ -83,7 +83,9 @@ class MultigridPreconditioner final : public Preconditioner {
                                    // must outlive them)
   std::vector<std::unique_ptr<Level>> levels_;
   TimingTable setup_timings_;
-  SparseMatrix coarse_A_, coarse_N_;  // host copies of the coarsest level, for its factorisation
+  // Host copies of the coarsest level, for its factorisation: A_L, and N_L^T (a column per
+  // contact row).
+  SparseMatrix coarse_A_, coarse_Nt_;
   // The fine level's lambda_max(D^-1 A) without contact (estimated at the first refresh with
   // c = 0; 0 until then), and per contact row j the number of nonzero entries of N's row j.
   double fine_lambda_without_contact_ = 0.0;

@@ -14,6 +14,7 @@ PcgResult Pcg::solve(LinearOperator& H, Preconditioner& M, const DeviceVector& b
   const double b_norm = norm(be, b);
   if (b_norm == 0.0) {  // H x = 0 has the solution 0
     be.fill(x, 0.0);
+    be.fill(r_, 0.0);
     res.converged = true;
     return res;
   }

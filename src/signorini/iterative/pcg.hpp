@@ -36,6 +36,9 @@ class Pcg {
   /// every step are appended to it.
   PcgResult solve(LinearOperator& H, Preconditioner& M, const DeviceVector& b, DeviceVector& x,
                   const PcgOptions& options, PcgCoefficients* record = nullptr);
+  /// b - H x at the end of the last solve: the recursively updated residual (equal to the true
+  /// one up to rounding), so that H x = b - residual() costs no product with H.
+  [[nodiscard]] const DeviceVector& residual() const { return r_; }
 
  private:
   Backend& backend_;

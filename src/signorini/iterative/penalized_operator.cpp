@@ -29,15 +29,19 @@ PenalizedOperator::PenalizedOperator(Backend& backend, const SparseMatrix& A, co
 
 void PenalizedOperator::apply(const DeviceVector& x, DeviceVector& y) {
   backend_.spmv(*A_, x, y);
+  add_contact_terms(x, y, 1.0);
+}
+
+void PenalizedOperator::add_contact_terms(const DeviceVector& x, DeviceVector& y, double alpha) {
   if (nc_ == 0) return;
   backend_.spmv(*N_, x, t_);
   if (W_) {
     backend_.spmv(*W_, t_, t2_);
-    backend_.spmv(*Nt_, t2_, y, 1.0, 1.0);
+    backend_.spmv(*Nt_, t2_, y, alpha, 1.0);
     return;
   }
   backend_.multiply(c_, t_, t_);
-  backend_.spmv(*Nt_, t_, y, 1.0, 1.0);
+  backend_.spmv(*Nt_, t_, y, alpha, 1.0);
 }
 
 void PenalizedOperator::apply_stiffness(const DeviceVector& x, DeviceVector& y) {

@@ -29,6 +29,8 @@ class PenalizedOperator final : public LinearOperator {
   [[nodiscard]] Index num_contact() const { return nc_; }
   /// y = A x + N^T (c .* (N x))
   void apply(const DeviceVector& x, DeviceVector& y) override;
+  /// y += alpha N^T W N x: the contact terms alone (W = diag(c), or the block weights).
+  void add_contact_terms(const DeviceVector& x, DeviceVector& y, double alpha);
   /// y = A x only (the energy and the residual A x - b need the stiffness alone).
   void apply_stiffness(const DeviceVector& x, DeviceVector& y);
   /// y = N x (n_c values) and y = N^T w (n values).

@@ -30,6 +30,9 @@ class DistributedNewtonSpace : public NewtonSpace {
   [[nodiscard]] virtual Vector rank_solution() = 0;
   /// How the Newton systems are solved ("CG with GAMG (6 rigid-body modes)").
   [[nodiscard]] virtual std::string linear_solver_description() const = 0;
+  /// N H^-1 N^T w on the current Newton matrix H (n_c values on every rank; x unchanged): the
+  /// dual operator of classical Uzawa, where H = A. `stats` says how the solve went.
+  [[nodiscard]] virtual Vector contact_response(const Vector& w, NewtonSolveStats& stats) = 0;
 };
 
 /// The Newton steps of semismooth Newton (active_set_solver.hpp) on distributed objects.

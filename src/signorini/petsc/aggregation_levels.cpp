@@ -292,7 +292,13 @@ CoarseLevels aggregation_levels(Mat A) {
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(A));
   int size = 1;
   MPI_Comm_size(comm, &size);
-  const SmoothedAggregationOptions options;  // the serial tool's, as its hierarchy
+  SmoothedAggregationOptions options;  // the serial tool's, as its hierarchy
+  // PETSc's -pc_mg_levels caps the levels, as it caps GAMG's (the PCMG takes it too: levels
+  // made beyond it would meet no smoother).
+  PetscInt most = 0;
+  PetscBool given = PETSC_FALSE;
+  check(PetscOptionsGetInt(nullptr, nullptr, "-pc_mg_levels", &most, &given), "-pc_mg_levels");
+  if (given && most >= 1) options.max_levels = static_cast<int>(most);
   CoarseLevels out;
 
   // The fine level's near-null space (this rank's rows) and nodes (A's blocks).

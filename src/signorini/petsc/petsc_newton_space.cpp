@@ -152,7 +152,10 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
   petsc::MultigridBuilder keep_levels;
   if (keeps_levels)
     keep_levels = [&](PC pc) {
-      const bool own = o_.petsc_multigrid == PetscMultigrid::Aggregation;
+      PetscMPIInt ranks = 1;
+      check(MPI_Comm_size(comm_, &ranks), "MPI");
+      const bool own =
+          resolved_petsc_multigrid(o_.petsc_multigrid, ranks) == PetscMultigrid::Aggregation;
       std::string what =
           own ? "smoothed aggregation on each rank's nodes, kept for every active set"
               : "GAMG's levels, kept for every active set";
@@ -287,6 +290,27 @@ NewtonSolveStats PetscNewtonSpace::solve(const Vector& terms) {
   out.solver = direct_ ? "MUMPS" : "PETSc CG";
   if (!out.converged) out.solver += " (" + k.reason + ")";
   return out;
+}
+
+Vector PetscNewtonSpace::contact_response(const Vector& w, NewtonSolveStats& stats) {
+  // H y = N^T w from y = 0 in d_ (free until the next direction()), then N y.
+  check(VecSet(work_, 0.0), "N^T w");
+  add_contact_transpose(w, work_);
+  check(VecSet(d_, 0.0), "the initial guess");
+  const double tolerance = linear_tolerance_ > 0.0 ? linear_tolerance_ : o_.linear.cg_tolerance;
+  if (!direct_) petsc::set_ksp_tolerance(ksp_, o_, tolerance, n_);
+  petsc::KspOutcome k;
+  {
+    ScopedTimer t(timings_, "linear solve");
+    k = petsc::solve(ksp_, work_, d_, direct_, workspace_);
+  }
+  stats.converged = k.converged;
+  stats.iterations = k.iterations;
+  stats.residual = k.residual;
+  stats.tolerance = direct_ ? 0.0 : tolerance;
+  stats.solver = direct_ ? "MUMPS" : "PETSc CG";
+  if (!stats.converged) stats.solver += " (" + k.reason + ")";
+  return contact_values_of(d_);
 }
 
 void PetscNewtonSpace::direction(ModifiedLagrangian::Direction& dir) {

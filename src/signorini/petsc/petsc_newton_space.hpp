@@ -53,6 +53,7 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
                                                     double tolerance) override;
 
   [[nodiscard]] Vector rank_solution() override;
+  [[nodiscard]] Vector contact_response(const Vector& w, NewtonSolveStats& stats) override;
   [[nodiscard]] std::string linear_solver_description() const override {
     return petsc::with_workspace_note(description_, workspace_);
   }
