@@ -157,47 +157,39 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
 ContactResult solve_classical_uzawa_distributed(const ContactProblem& problem,
                                                 const ContactSolverOptions& options,
                                                 const MethodStart& start) {
-  DistributedEngine& engine = required_distributed_engine();
-  ContactResult out;
-  TimingTable timings;
-  const std::unique_ptr<DistributedNewtonSpace> space =
-      engine.newton_space(problem, options, start.held_displacement(problem), timings);
-  const Index nc = problem.contact.N.rows();
-  // H = A: no row active (a Newton matrix with no contact terms). Each solve starts from the
-  // last u and moves there: solve gives u_new, direction() d = u_new - u, step(1) u = u_new.
-  space->set_active(ActiveSet(static_cast<std::size_t>(nc), false), 1.0);
-  ModifiedLagrangian::Direction dir;
-  LoadSolves solves;
-  solves.solve = [&](const Vector& w) {
-    const NewtonSolveStats st = space->solve(w);
-    LinearSolveStats out_stats;
-    out_stats.converged = st.converged;
-    out_stats.iterations = st.iterations;
-    out_stats.residual = st.residual;
-    if (st.converged) {
-      space->direction(dir);
-      space->step(1.0);
-    }
-    return out_stats;
-  };
-  solves.contact_values = [&] { return space->contact_values(); };
-  solves.dual_product = [&](const Vector& w) {
-    NewtonSolveStats st;
-    Vector y = space->contact_response(w, st);
-    if (!st.converged)
-      throw NumericalError(fmt::format(
-          "classical Uzawa: {} did not converge in the estimate of the step (residual {:.3e})",
-          st.solver, st.residual));
-    return y;
-  };
-  run_classical_uzawa(problem, options, start, solves, false, out);
-  {
-    ScopedTimer t(timings, "gather");
-    out.u = space->rank_solution();
-  }
-  record_distributed(out.summary, engine, space->linear_solver_description());
-  out.summary.timings.merge(timings);
-  return out;
+  return run_on_distributed_space(
+      problem, options, start, [&](DistributedNewtonSpace& space, ContactResult& out) {
+        // H = A: no row active (a Newton matrix with no contact terms). Each solve starts from
+        // the last u and moves there: solve gives u_new, direction() d = u_new - u, step(1)
+        // u = u_new.
+        space.set_active(ActiveSet(static_cast<std::size_t>(problem.contact.N.rows()), false), 1.0);
+        ModifiedLagrangian::Direction dir;
+        LoadSolves solves;
+        solves.solve = [&](const Vector& w) {
+          const NewtonSolveStats st = space.solve(w);
+          LinearSolveStats stats;
+          stats.converged = st.converged;
+          stats.iterations = st.iterations;
+          stats.residual = st.residual;
+          if (st.converged) {
+            space.direction(dir);
+            space.step(1.0);
+          }
+          return stats;
+        };
+        solves.contact_values = [&] { return space.contact_values(); };
+        solves.dual_product = [&](const Vector& w) {
+          NewtonSolveStats st;
+          Vector y = space.contact_response(w, st);
+          if (!st.converged)
+            throw NumericalError(fmt::format(
+                "classical Uzawa: {} did not converge in the estimate of the step (residual "
+                "{:.3e})",
+                st.solver, st.residual));
+          return y;
+        };
+        run_classical_uzawa(problem, options, start, solves, false, out);
+      });
 }
 
 }  // namespace signorini

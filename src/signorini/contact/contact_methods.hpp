@@ -2,6 +2,8 @@
 // The contact methods themselves (private to the library): solve_contact() picks one and
 // completes its summary with KKT residuals, energies and timings.
 
+#include <functional>
+
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
 
@@ -35,21 +37,26 @@ ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolver
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
                                     const ContactSolverOptions& options,
                                     const MethodStart& start = {});
+/// A method's loop on the registered distributed engine's Newton space (made from start's rows):
+/// `method` runs it and fills out's summary; then u is the rank's solution and the summary says
+/// where the solve ran.
+ContactResult run_on_distributed_space(
+    const ContactProblem& problem, const ContactSolverOptions& options, const MethodStart& start,
+    const std::function<void(DistributedNewtonSpace&, ContactResult&)>& method);
 /// Classical Uzawa on the registered distributed engine: step (i) by the engine's Newton space
 /// with no node active (its matrix A, its KSP), step (ii) on every rank alike; u as Uzawa-GNM's.
 ContactResult solve_classical_uzawa_distributed(const ContactProblem& problem,
                                                 const ContactSolverOptions& options,
                                                 const MethodStart& start);
-/// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
-/// uses_backend_path(options).
-/// `multigrid`: the levels when the preconditioner is multigrid (null otherwise).
 /// Uzawa-GNM on the registered distributed engine (parallel/distributed_engine.hpp): the same
 /// loop, its vectors and Newton systems PETSc's, spread over the MPI ranks; u gathered on every
 /// rank, or on the ranks' parts of the mesh each rank's part (ContactProblem::solution_unknowns).
 ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
                                           const ContactSolverOptions& options,
                                           const MethodStart& start);
-
+/// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
+/// uses_backend_path(options). `multigrid`: the levels when the preconditioner is multigrid
+/// (null otherwise).
 ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
                                          const ContactSolverOptions& options,
                                          const MethodStart& start = {},
@@ -63,14 +70,13 @@ ContactResult solve_friction_semismooth_newton(const ContactProblem& problem,
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options,
                                       const MethodStart& start = {});
-/// semismooth_newton on a backend (projected CG, projected_active_set_solver.hpp), used when
-/// uses_backend_path(options).
 /// Semismooth Newton on the registered distributed engine: the same loop, its Newton steps
 /// solved by PETSc with the active normal displacements eliminated; u as Uzawa-GNM's.
 ContactResult solve_semismooth_newton_distributed(const ContactProblem& problem,
                                                   const ContactSolverOptions& options,
                                                   const MethodStart& start);
-
+/// semismooth_newton on a backend (projected CG, projected_active_set_solver.hpp), used when
+/// uses_backend_path(options).
 ContactResult solve_semismooth_newton_on_backend(const ContactProblem& problem,
                                                  const ContactSolverOptions& options,
                                                  const MethodStart& start = {},

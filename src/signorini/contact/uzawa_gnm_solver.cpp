@@ -49,17 +49,15 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   return out;
 }
 
-ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
-                                          const ContactSolverOptions& options,
-                                          const MethodStart& start) {
+ContactResult run_on_distributed_space(
+    const ContactProblem& problem, const ContactSolverOptions& options, const MethodStart& start,
+    const std::function<void(DistributedNewtonSpace&, ContactResult&)>& method) {
   DistributedEngine& engine = required_distributed_engine();
   ContactResult out;
   TimingTable timings;
   const std::unique_ptr<DistributedNewtonSpace> space =
       engine.newton_space(problem, options, start.held_displacement(problem), timings);
-  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(options));
-  run_uzawa_iteration(problem, options, phi, *space, start.multipliers(problem.contact.N.rows()),
-                      out);
+  method(*space, out);
   {
     ScopedTimer t(timings, "gather");
     out.u = space->rank_solution();
@@ -67,6 +65,18 @@ ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
   record_distributed(out.summary, engine, space->linear_solver_description());
   out.summary.timings.merge(timings);
   return out;
+}
+
+ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
+                                          const ContactSolverOptions& options,
+                                          const MethodStart& start) {
+  return run_on_distributed_space(
+      problem, options, start, [&](DistributedNewtonSpace& space, ContactResult& out) {
+        ModifiedLagrangian phi(problem, augmentation_parameter(problem, options),
+                               contact_law(options));
+        run_uzawa_iteration(problem, options, phi, space,
+                            start.multipliers(problem.contact.N.rows()), out);
+      });
 }
 
 }  // namespace signorini

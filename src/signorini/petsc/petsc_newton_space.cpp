@@ -275,12 +275,25 @@ NewtonSolveStats PetscNewtonSpace::solve(const Vector& terms) {
   check(VecCopy(b_, work_), "the right-hand side");
   add_contact_transpose(-terms, work_);
   check(VecCopy(x_, x_new_), "the initial guess");
+  return solve_newton_system(work_, x_new_);
+}
+
+Vector PetscNewtonSpace::contact_response(const Vector& w, NewtonSolveStats& stats) {
+  // H y = N^T w from y = 0 in d_ (free until the next direction()), then N y.
+  check(VecSet(work_, 0.0), "N^T w");
+  add_contact_transpose(w, work_);
+  check(VecSet(d_, 0.0), "the initial guess");
+  stats = solve_newton_system(work_, d_);
+  return contact_values_of(d_);
+}
+
+NewtonSolveStats PetscNewtonSpace::solve_newton_system(Vec rhs, Vec x) {
   const double tolerance = linear_tolerance_ > 0.0 ? linear_tolerance_ : o_.linear.cg_tolerance;
   if (!direct_) petsc::set_ksp_tolerance(ksp_, o_, tolerance, n_);
   petsc::KspOutcome k;
   {
     ScopedTimer t(timings_, "linear solve");
-    k = petsc::solve(ksp_, work_, x_new_, direct_, workspace_);
+    k = petsc::solve(ksp_, rhs, x, direct_, workspace_);
   }
   NewtonSolveStats out;
   out.converged = k.converged;
@@ -290,27 +303,6 @@ NewtonSolveStats PetscNewtonSpace::solve(const Vector& terms) {
   out.solver = direct_ ? "MUMPS" : "PETSc CG";
   if (!out.converged) out.solver += " (" + k.reason + ")";
   return out;
-}
-
-Vector PetscNewtonSpace::contact_response(const Vector& w, NewtonSolveStats& stats) {
-  // H y = N^T w from y = 0 in d_ (free until the next direction()), then N y.
-  check(VecSet(work_, 0.0), "N^T w");
-  add_contact_transpose(w, work_);
-  check(VecSet(d_, 0.0), "the initial guess");
-  const double tolerance = linear_tolerance_ > 0.0 ? linear_tolerance_ : o_.linear.cg_tolerance;
-  if (!direct_) petsc::set_ksp_tolerance(ksp_, o_, tolerance, n_);
-  petsc::KspOutcome k;
-  {
-    ScopedTimer t(timings_, "linear solve");
-    k = petsc::solve(ksp_, work_, d_, direct_, workspace_);
-  }
-  stats.converged = k.converged;
-  stats.iterations = k.iterations;
-  stats.residual = k.residual;
-  stats.tolerance = direct_ ? 0.0 : tolerance;
-  stats.solver = direct_ ? "MUMPS" : "PETSc CG";
-  if (!stats.converged) stats.solver += " (" + k.reason + ")";
-  return contact_values_of(d_);
 }
 
 void PetscNewtonSpace::direction(ModifiedLagrangian::Direction& dir) {

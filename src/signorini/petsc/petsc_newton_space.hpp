@@ -59,6 +59,8 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   }
 
  private:
+  /// H x = rhs from x as it is, by the KSP (the tolerance of the next solve, timed).
+  NewtonSolveStats solve_newton_system(Vec rhs, Vec x);
   Vector contact_values_of(Vec v);
   void add_contact_transpose(const Vector& values, Vec v);  // v += N^T values
   // v <- v - sum_{j in S} n_j (n_j . v) / |n_j|^2 over this rank's contact rows.
