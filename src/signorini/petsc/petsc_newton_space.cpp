@@ -79,7 +79,9 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
     if (!padding_.active()) return make(problem.A, lo_, hi_, comm_, block);
     return make(padding_.matrix(problem.A, first, last), lo_, hi_, comm_, block);
   };
+  ScopedTimer matrices(timings_, "distributed: matrices");
   Mat A_aij = from_slots(&petsc::distributed_rows);
+  matrices.stop();
   // The Newton matrix H starts as a copy of A. With GAMG's kept levels, A in node blocks and H
   // are made after the levels' set-up, once the AIJ copy of A is freed, so that the process
   // never holds the AIJ copy, GAMG's set-up and either of them at once (docs/distributed.md,
@@ -115,13 +117,16 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
     }
     rows_.push_back(std::move(row));
   }
+  ScopedTimer levels(timings_, "distributed: preconditioner");
   set_up_solver(A_aij, keeps_levels);
   check(MatDestroy(&A_aij), "A");
+  levels.stop();
   // What the AIJ copy and GAMG's set-up freed goes back to the system: A's and H's node blocks,
   // made next, would fit in it only in part (135 MB higher a peak on one rank at 405,600
   // unknowns without it; docs/distributed.md, "Memory per rank").
   petsc::give_back_freed_memory();
   if (keeps_levels) {
+    const ScopedTimer blocks(timings_, "distributed: matrices");
     A_ = from_slots(&petsc::block_rows);
     make_newton_matrix();
     if (petsc::ThreadedProduct::worthwhile(H_)) {
