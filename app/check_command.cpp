@@ -30,7 +30,9 @@ int run_check(const CheckArguments& args) {
   // Under mpirun the solve is distributed (docs/distributed.md): the plan above then says which
   // Newton-system solver the ranks share.
   if (const DistributedEngine* engine = distributed_engine();
-      engine != nullptr && distributed_path(model.solver))
+      engine != nullptr && distributed_path(model.solver)) {
+    const PetscMultigrid multigrid =
+        resolved_petsc_multigrid(model.solver.petsc_multigrid, engine->size());
     fmt::print(
         "distributed: {}, each rank holding its part of the stiffness; the Newton "
         "systems by {}\n",
@@ -38,13 +40,11 @@ int run_check(const CheckArguments& args) {
         model.solver.linear.type != LinearSolverType::ConjugateGradient
             ? "MUMPS (the plan's direct solver)"
         : model.solver.linear.preconditioner == PreconditionerType::Jacobi ? "CG with Jacobi"
-        : resolved_petsc_multigrid(model.solver.petsc_multigrid, engine->size()) ==
-                PetscMultigrid::Hypre
-            ? "CG with hypre's BoomerAMG"
-        : resolved_petsc_multigrid(model.solver.petsc_multigrid, engine->size()) ==
-                PetscMultigrid::Aggregation
+        : multigrid == PetscMultigrid::Hypre ? "CG with hypre's BoomerAMG"
+        : multigrid == PetscMultigrid::Aggregation
             ? "CG with smoothed aggregation on each rank's nodes"
             : "CG with GAMG");
+  }
   fmt::print("ok: {} dofs, {} contact nodes\n", model.num_dofs(), model.problem.contact.size());
   return kSuccess;
 }
