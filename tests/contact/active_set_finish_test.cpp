@@ -5,10 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <optional>
+#include <vector>
+
 #include "../problem/ball_on_block.hpp"
 #include "signorini/backend/host_backend.hpp"
+#include "signorini/contact/active_set_update.hpp"
 #include "signorini/contact/backend_newton_space.hpp"
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/uzawa_iteration.hpp"
 #include "test_problems.hpp"
 
@@ -140,6 +146,77 @@ TEST(ActiveSetFinish, TheActiveSetSolveAndItsAcceptance) {
     EXPECT_LT(f->l.minCoeff(), 0.0);
     EXPECT_FALSE(contact_conditions_hold(p.contact, all, *f, 1e-8));
   }
+}
+
+// A space that passes everything to the backend's and records the tolerance of each active-set
+// solve and whether it repeated the set it was given.
+class RecordingSpace : public NewtonSpace {
+ public:
+  RecordingSpace(NewtonSpace& inner, const ContactSet& contact)
+      : inner_(inner), contact_(contact) {}
+  [[nodiscard]] const Vector& contact_values() const override { return inner_.contact_values(); }
+  void set_active(const ActiveSet& active, double r) override { inner_.set_active(active, r); }
+  NewtonSolveStats solve(const Vector& terms) override { return inner_.solve(terms); }
+  void set_linear_tolerance(double t) override { inner_.set_linear_tolerance(t); }
+  void direction(ModifiedLagrangian::Direction& dir) override { inner_.direction(dir); }
+  void step(double t) override { inner_.step(t); }
+  NewtonStepNorms norms(const Vector& forces) override { return inner_.norms(forces); }
+  std::optional<ActiveSetSolve> solve_on_active_set(const ActiveSet& S, double r,
+                                                    double tolerance) override {
+    std::optional<ActiveSetSolve> f = inner_.solve_on_active_set(S, r, tolerance);
+    if (f) solves.push_back({tolerance, next_active_set(contact_, S, f->l, f->gap_residual) == S});
+    return f;
+  }
+  [[nodiscard]] int factorizations() const override { return inner_.factorizations(); }
+
+  struct Solve {
+    double tolerance;
+    bool repeated;  // the primal-dual rule gave back the set solved for
+  };
+  std::vector<Solve> solves;
+
+ private:
+  NewtonSpace& inner_;
+  const ContactSet& contact_;
+};
+
+// The finish's tolerances (docs/solvers.md): 1e-6 while the set moves; once a set repeats, the
+// geometric mean of 1e-6 and the exact tolerance; once it repeats there, exact; the answer is
+// the exact solve that repeats its set. A tolerance is tightened only after a repeat.
+TEST(ActiveSetFinish, TightensTheSolvesInThreeSteps) {
+  const Block b = ball_on_block(12);
+  const ContactProblem& p = b.model.problem;
+  HostBackend backend;
+  TimingTable timings;
+  BackendNewtonSpace inner(p, b.iterative, &b.model.multigrid, backend, timings,
+                           Vector::Zero(p.A.rows()));
+  RecordingSpace space(inner, p.contact);
+  ModifiedLagrangian phi(p, augmentation_parameter(p, b.iterative), contact_law(b.iterative));
+  ContactResult out;
+  run_uzawa_iteration(p, b.iterative, phi, space, Vector::Zero(p.contact.size()), out);
+  ASSERT_TRUE(out.summary.converged()) << out.summary.message;
+  ASSERT_TRUE(out.summary.active_set_finish);
+  const double loose = kLooseNewtonTolerance;
+  const double exact = 10.0 * b.iterative.linear.cg_tolerance;
+  const double middle = std::sqrt(loose * exact);
+  const std::vector<RecordingSpace::Solve>& s = space.solves;
+  ASSERT_GE(s.size(), 3U);
+  EXPECT_EQ(s.front().tolerance, loose);
+  EXPECT_EQ(s.back().tolerance, exact);
+  EXPECT_TRUE(s.back().repeated);
+  bool met_middle = false;
+  for (std::size_t k = 1; k < s.size(); ++k) {
+    const double before = s[k - 1].tolerance, now = s[k].tolerance;
+    met_middle = met_middle || now == middle;
+    if (now != before) {
+      EXPECT_TRUE(s[k - 1].repeated) << "solve " << k + 1 << ": tightened without a repeat";
+      EXPECT_TRUE((before == loose && now == middle) || (before == middle && now == exact))
+          << "solve " << k + 1 << ": " << before << " -> " << now;
+    } else {
+      EXPECT_FALSE(s[k - 1].repeated) << "solve " << k + 1 << ": a repeat not tightened";
+    }
+  }
+  EXPECT_TRUE(met_middle);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 // Galerkin product of the level above, checked against PETSc's own MatPtAP of the same distributed
 // matrices; the levels coarsen, down to at most 1,000 unknowns; the prolongations have the fine
 // level's rows on each rank and carry the translations of the near-null space on their aggregates'
-// own nodes.
+// own nodes; on one rank each level's restriction comes with it, P^T.
 
 #include <gtest/gtest.h>
 #include <petscksp.h>
@@ -72,12 +72,22 @@ TEST(CoarseLevels, CoarseOperatorsArePetscsGalerkinProducts) {
     check(MatIsSymmetric(reference, 1e-10, &symmetric), "test");
     EXPECT_TRUE(symmetric);
     MatDestroy(&reference);
+    // Where the levels come with their restrictions (one rank: P^T in place), they are P^T.
+    if (l < levels.restrictions.size() && levels.restrictions[l] != nullptr) {
+      Mat Pt = nullptr;
+      check(MatTranspose(P, MAT_INITIAL_MATRIX, &Pt), "test");
+      EXPECT_LT(relative_difference(levels.restrictions[l], Pt), 1e-15) << "level " << l + 1;
+      MatDestroy(&Pt);
+    }
     finer = C;
   }
+  ASSERT_EQ(levels.restrictions.size(), levels.prolongations.size());
+  for (Mat R : levels.restrictions) EXPECT_EQ(R != nullptr, size == 1);
   PetscInt coarsest = 0;
   check(MatGetSize(levels.operators.back(), &coarsest, nullptr), "test");
   EXPECT_LE(coarsest, 1000);
   for (Mat P : levels.prolongations) MatDestroy(&P);
+  for (Mat R : levels.restrictions) MatDestroy(&R);
   for (Mat C : levels.operators) MatDestroy(&C);
   MatDestroy(&M);
 }

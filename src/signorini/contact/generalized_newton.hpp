@@ -40,7 +40,7 @@ inline constexpr double kLooseNewtonTolerance = 1e-6;
 /// Uzawa-GNM's active-set finish is tried from step 2 on, once the relative dual change is below
 /// this, with at most kFinishSolves active-set solves each time (uzawa_iteration.cpp).
 inline constexpr double kFinishDualChange = 0.2;
-inline constexpr int kFinishSolves = 8;
+inline constexpr int kFinishSolves = 10;
 
 class GeneralizedNewton {
  public:

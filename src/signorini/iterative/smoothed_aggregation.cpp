@@ -87,17 +87,6 @@ void strength_graph(const SparseView& A, const std::vector<Index>& start,
   }
 }
 
-// rho(D^{-1} A) by Lanczos steps (eigenvalue_estimate.hpp): a dozen give the prolongation
-// smoother's damping to well under a per cent, more than it needs.
-double jacobi_spectral_radius(const SparseMatrix& A) {
-  HostBackend host;
-  SymmetricMatrixOperator op(A);
-  const DeviceVector dinv = to_device(host, Vector(A.diagonal().cwiseInverse()));
-  DiagonalPreconditioner jacobi(dinv);
-  const DeviceVector start = to_device(host, eigenvalue_estimate_start(A.rows()));
-  return estimate_largest_eigenvalue(op, jacobi, start, ChebyshevOptions{}.lanczos_steps);
-}
-
 struct Tentative {
   SparseMatrix P;
   Matrix coarse_null_space;
@@ -153,6 +142,17 @@ Tentative tentative_prolongation(const Matrix& B, const std::vector<Index>& star
 }
 
 }  // namespace
+
+// A dozen Lanczos steps give the prolongation smoother's damping to well under a per cent, more
+// than it needs.
+double jacobi_spectral_radius(const SparseMatrix& A) {
+  HostBackend host;
+  SymmetricMatrixOperator op(A);
+  const DeviceVector dinv = to_device(host, Vector(A.diagonal().cwiseInverse()));
+  DiagonalPreconditioner jacobi(dinv);
+  const DeviceVector start = to_device(host, eigenvalue_estimate_start(A.rows()));
+  return estimate_largest_eigenvalue(op, jacobi, start, ChebyshevOptions{}.lanczos_steps);
+}
 
 std::vector<Index> aggregate_nodes(const std::vector<Index>& offsets,
                                    const std::vector<Index>& adjacency, std::vector<Index> order) {

@@ -68,6 +68,11 @@ inline AggregationLevel aggregate_level(const SparseMatrix& A, const Matrix& nea
                          strength_threshold);
 }
 
+/// rho(D^{-1} A) of a symmetric positive definite A by Lanczos steps from the fixed start
+/// (eigenvalue_estimate.hpp), on the process's threads: the damping omega = 4 / (3 rho) of the
+/// prolongation smoother below.
+[[nodiscard]] double jacobi_spectral_radius(const SparseMatrix& A);
+
 /// The smoothed prolongation P = (I - omega D^{-1} A) T for a symmetric A (n x n), in parallel
 /// over groups of columns (those of an aggregate share their rows in T); exact zeros kept.
 SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, double omega);

@@ -354,7 +354,11 @@ CoarseLevels aggregation_levels(Mat A) {
 
     // T's rows of the ghosts from their ranks, then this rank's rows of the smoothed P.
     ExtNumbering coarse_numbering{first_coarse, own_coarse, {}};
-    const double radius = jacobi_lambda_max(level);
+    // (On one rank the serial tool's estimate, on the rank's threads, where the level is held
+    // in place: the serial hierarchy's omega; else PETSc's CG.)
+    const SparseMatrix* held = held_matrix(level);
+    const double radius =
+        held != nullptr ? jacobi_spectral_radius(*held) : jacobi_lambda_max(level);
     if (depth == 0) out.fine_jacobi_radius = radius;
     SparseMatrix T_ghosts;  // (on several ranks: T's rows of the ghosts too)
     if (size > 1) {
@@ -369,17 +373,13 @@ CoarseLevels aggregation_levels(Mat A) {
     const double omega = 4.0 / (3.0 * radius);
     SparseMatrix P_ext;
     Mat P = nullptr;
-    {
-      RowMatrix P_own;
-      if (size == 1) {
-        P_ext = smoothed_prolongation(Al, T_ext, omega);
-        P_own = P_ext;
-      } else {
-        P_own = smoothed_prolongation_rows(Al, T_ext, omega);
-      }
+    if (size == 1) {
+      P_ext = smoothed_prolongation(Al, T_ext, omega);  // (P's PETSc form after its last use)
+    } else {
+      const RowMatrix P_own = smoothed_prolongation_rows(Al, T_ext, omega);
       T_ghosts = SparseMatrix();
       P = distributed_matrix(comm, P_own, coarse_numbering, own_coarse);
-      if (size > 1) P_ext = extended_rows(P, P_own, fine.foreign, coarse_numbering);
+      P_ext = extended_rows(P, P_own, fine.foreign, coarse_numbering);
     }
 
     // This rank's share of P^T A P (coarse numbering local), summed into the coarse level by
@@ -387,15 +387,22 @@ CoarseLevels aggregation_levels(Mat A) {
     // product itself (symmetric: its columns are its rows).
     SparseMatrix share = galerkin_product(Al, P_ext);
     columns.reset();
+    Mat R = nullptr;
+    if (size == 1) {
+      // On one rank P^T in place from P's column-major arrays (sequential_matrix: no copy),
+      // and P its transpose, made by PETSc (at 434,235 unknowns 0.06 s, where P's row-major
+      // copy and its copy into PETSc took 0.57 s). P^T is kept for the restriction.
+      R = sequential_matrix(std::move(P_ext), comm);
+      check(MatTranspose(R, MAT_INITIAL_MATRIX, &P), "a prolongation");
+    }
     P_ext = SparseMatrix();
     Mat C = nullptr;
-    check(MatCreate(comm, &C), "a coarse level");
-    check(MatSetSizes(C, own_coarse, own_coarse, coarse, coarse), "a coarse level");
-    check(MatSetType(C, MATAIJ), "a coarse level");
     if (size == 1) {
-      set_rows(C, share.outerSize(), share.outerIndexPtr(), share.innerIndexPtr(),
-               share.valuePtr());
+      C = sequential_matrix(std::move(share), comm);  // (symmetric: in place, no copy)
     } else {
+      check(MatCreate(comm, &C), "a coarse level");
+      check(MatSetSizes(C, own_coarse, own_coarse, coarse, coarse), "a coarse level");
+      check(MatSetType(C, MATAIJ), "a coarse level");
       std::vector<PetscInt> ci, cj;
       ci.reserve(static_cast<std::size_t>(share.nonZeros()));
       cj.reserve(ci.capacity());
@@ -411,6 +418,7 @@ CoarseLevels aggregation_levels(Mat A) {
     share = SparseMatrix();
     check(MatSetOption(C, MAT_SYMMETRIC, PETSC_TRUE), "a coarse level");
     out.prolongations.push_back(P);
+    out.restrictions.push_back(R);
     out.operators.push_back(C);
     level = C;
     B = std::move(t.coarse_null_space);

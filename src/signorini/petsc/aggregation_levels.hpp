@@ -35,6 +35,8 @@ namespace signorini::petsc {
 /// estimated it (0 where not). Made here, or by GAMG (petsc_contact_multigrid.cpp).
 struct CoarseLevels {
   std::vector<Mat> prolongations;
+  /// restrictions[l] = prolongations[l]^T where the maker has it (else null, or none at all).
+  std::vector<Mat> restrictions;
   std::vector<Mat> operators;
   double fine_jacobi_radius = 0.0;
 };

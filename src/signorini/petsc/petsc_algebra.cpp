@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <iterator>
 #include <limits>
+#include <memory>
+#include <stdexcept>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 #if defined(__GLIBC__)
 #include <malloc.h>  // malloc_trim
@@ -99,6 +103,72 @@ Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, P
   check(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY), "a distributed matrix");
   mark_spd(M, "a distributed matrix");
   return M;
+}
+
+namespace {
+PetscErrorCode free_held_matrix(void* held) {
+  delete static_cast<SparseMatrix*>(held);
+  return 0;
+}
+}  // namespace
+
+Mat sequential_matrix(SparseMatrix&& S, MPI_Comm comm, PetscInt block) {
+  const char* what = "a matrix";
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  if (size != 1) throw std::logic_error("sequential_matrix: a communicator of several processes");
+  auto held = std::make_unique<SparseMatrix>(std::move(S));
+  held->makeCompressed();
+  // PETSc's rows need their columns ascending.
+  const Index m = held->cols();
+  int* outer = held->outerIndexPtr();
+  int* inner = held->innerIndexPtr();
+  double* values = held->valuePtr();
+  std::vector<std::pair<int, double>> column;
+  for (Index c = 0; c < m; ++c) {
+    const int b = outer[c], e = outer[c + 1];
+    if (std::is_sorted(inner + b, inner + e)) continue;
+    column.clear();
+    for (int k = b; k < e; ++k) column.emplace_back(inner[k], values[k]);
+    std::sort(column.begin(), column.end());
+    for (int k = b; k < e; ++k)
+      std::tie(inner[k], values[k]) = column[static_cast<std::size_t>(k - b)];
+  }
+  const auto rows = static_cast<PetscInt>(m);
+  const auto cols = static_cast<PetscInt>(held->rows());
+  Mat M = nullptr;
+  if constexpr (std::is_same_v<PetscInt, int>) {
+    check(MatCreateSeqAIJWithArrays(comm, rows, cols, outer, inner, values, &M), what);
+    // The arrays go with M: a container composed on it frees them when M goes.
+    PetscContainer container = nullptr;
+    check(PetscContainerCreate(comm, &container), what);
+    check(PetscContainerSetPointer(container, held.get()), what);
+    check(PetscContainerSetUserDestroy(container, &free_held_matrix), what);
+    held.release();
+    check(PetscObjectCompose(reinterpret_cast<PetscObject>(M), "signorini_arrays",
+                             reinterpret_cast<PetscObject>(container)),
+          what);
+    check(PetscContainerDestroy(&container), what);  // (M holds it)
+  } else {
+    const std::vector<PetscInt> o(outer, outer + m + 1), i(inner, inner + outer[m]);
+    check(MatCreate(comm, &M), what);
+    check(MatSetSizes(M, rows, cols, rows, cols), what);
+    check(MatSetType(M, MATSEQAIJ), what);
+    check(MatSetOption(M, MAT_SORTED_FULL, PETSC_TRUE), what);
+    check(MatSeqAIJSetPreallocationCSR(M, o.data(), i.data(), values), what);
+  }
+  if (block > 1) check(MatSetBlockSize(M, block), what);
+  return M;
+}
+
+const SparseMatrix* held_matrix(Mat M) {
+  PetscObject container = nullptr;
+  check(PetscObjectQuery(reinterpret_cast<PetscObject>(M), "signorini_arrays", &container),
+        "a matrix");
+  if (container == nullptr) return nullptr;
+  void* held = nullptr;
+  check(PetscContainerGetPointer(reinterpret_cast<PetscContainer>(container), &held), "a matrix");
+  return static_cast<const SparseMatrix*>(held);
 }
 
 Mat block_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm, PetscInt block) {

@@ -31,6 +31,19 @@ void mark_spd(Mat M, const char* what);
 [[nodiscard]] Mat distributed_rows(const SparseMatrix& A, Index lo, Index hi, MPI_Comm comm,
                                    PetscInt block = 1);
 
+/// S^T as a SeqAIJ matrix on `comm` (of one process) in blocks of `block`: S itself where it is
+/// symmetric, such as A or a Galerkin product, and a prolongation's restriction from the
+/// prolongation. The matrix takes S and reads its arrays in place (S's column pointers are the
+/// row pointers of S^T), freeing them with itself: no copy, where a copy into PETSc took a
+/// third of a second per 18 million entries (a level's matrix is made once and only read).
+/// S's entries are sorted in each column here where they are not. (A copy where PETSc's
+/// indices are not 32-bit.)
+[[nodiscard]] Mat sequential_matrix(SparseMatrix&& S, MPI_Comm comm, PetscInt block = 1);
+
+/// The matrix S that sequential_matrix made M from (read-only, alive as long as M), or null
+/// where M was made otherwise.
+[[nodiscard]] const SparseMatrix* held_matrix(Mat M);
+
 /// As distributed_rows, in node blocks of `block` rows (MPIBAIJ) where `block` is above 1: a
 /// product with a 3 x 3 block matrix reads a ninth of the column indices (12 ms against AIJ's
 /// 14 ms at 100,860 unknowns). GAMG's set-up needs AIJ; the products of the CG and the smoothers

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/aggregation_levels.hpp"
@@ -108,6 +109,83 @@ CoarseLevels gamg_levels(Mat A_setup) {
   return out;
 }
 
+// The rows of this rank where Q has entries, if each of them lies in A's pattern (structurally;
+// collective: every rank's answer together) and A is AIJ, else nothing. On aggregation's
+// levels it does: Q_l = N_l^T diag(c) N_l couples two coarse unknowns only where the
+// prolongations of both reach one contact node's unknowns, and A's node block there is
+// structurally full, so A_l = P^T A P couples them too (and level by level below).
+std::optional<std::vector<PetscInt>> rows_within_pattern(Mat A, Mat Q, MPI_Comm comm) {
+  PetscBool aij = PETSC_FALSE;
+  check(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(A), &aij, MATSEQAIJ, MATMPIAIJ, ""),
+        "a coarse level's pattern");
+  PetscInt lo = 0, hi = 0;
+  check(MatGetOwnershipRange(Q, &lo, &hi), "a coarse level's pattern");
+  std::vector<PetscInt> rows;
+  int within = aij ? 1 : 0;
+  for (PetscInt r = lo; r < hi && within != 0; ++r) {
+    PetscInt nq = 0, na = 0;
+    const PetscInt* cq = nullptr;
+    const PetscInt* ca = nullptr;
+    check(MatGetRow(Q, r, &nq, &cq, nullptr), "a coarse level's pattern");
+    if (nq > 0) {
+      rows.push_back(r);
+      check(MatGetRow(A, r, &na, &ca, nullptr), "a coarse level's pattern");
+      // (MatGetRow gives each row's columns ascending.)
+      within = std::includes(ca, ca + na, cq, cq + nq) ? 1 : 0;
+      check(MatRestoreRow(A, r, &na, &ca, nullptr), "a coarse level's pattern");
+    }
+    check(MatRestoreRow(Q, r, &nq, &cq, nullptr), "a coarse level's pattern");
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &within, 1, MPI_INT, MPI_MIN, comm);
+  if (within == 0) return std::nullopt;
+  return rows;
+}
+
+// The values of the AIJ matrix M in its rows `rows` (global, this rank's, ascending): saved
+// into `values` (save), or written back from them. Each row's values lie in one piece of
+// each of the rank's blocks (its own columns, and the others').
+void move_row_values(Mat M, const std::vector<PetscInt>& rows, std::vector<PetscScalar>& values,
+                     bool save) {
+  PetscBool mpi = PETSC_FALSE;
+  check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(M), MATMPIAIJ, &mpi),
+        "a coarse level");
+  PetscInt lo = 0;
+  check(MatGetOwnershipRange(M, &lo, nullptr), "a coarse level");
+  Mat parts[2] = {M, nullptr};
+  if (mpi) check(MatMPIAIJGetSeqAIJ(M, &parts[0], &parts[1], nullptr), "a coarse level");
+  if (save) values.clear();
+  std::size_t at = 0;
+  for (Mat part : parts) {
+    if (part == nullptr) continue;
+    PetscInt n = 0;
+    const PetscInt* ia = nullptr;
+    const PetscInt* ja = nullptr;
+    PetscBool done = PETSC_FALSE;
+    check(MatGetRowIJ(part, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done), "a coarse level");
+    PetscScalar* a = nullptr;
+    check(MatSeqAIJGetArray(part, &a), "a coarse level");
+    for (const PetscInt r : rows) {
+      const PetscInt b = ia[r - lo], e = ia[r - lo + 1];
+      if (save) {
+        values.insert(values.end(), a + b, a + e);
+      } else {
+        std::copy(
+            values.begin() + static_cast<std::ptrdiff_t>(at),
+            values.begin() + static_cast<std::ptrdiff_t>(at + static_cast<std::size_t>(e - b)),
+            a + b);
+        at += static_cast<std::size_t>(e - b);
+      }
+    }
+    check(MatSeqAIJRestoreArray(part, &a), "a coarse level");
+    check(MatRestoreRowIJ(part, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done),
+          "a coarse level");
+  }
+  if (!save) {  // (the blocks' states changed; an assembly, with nothing to send, marks M's)
+    check(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY), "a coarse level");
+    check(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY), "a coarse level");
+  }
+}
+
 }  // namespace
 
 ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows,
@@ -147,7 +225,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
   check(MatAssemblyBegin(N, MAT_FINAL_ASSEMBLY), "the contact matrix");
   check(MatAssemblyEnd(N, MAT_FINAL_ASSEMBLY), "the contact matrix");
 
-  // diag(c), every diagonal entry stored, so that the products' patterns hold for every c.
+  // so that the products' patterns hold for every c.
   check(MatCreateAIJ(comm_, m, m, PETSC_DETERMINE, PETSC_DETERMINE, 1, nullptr, 0, nullptr, &C_),
         "diag(c)");
   check(MatCreateVecs(C_, &c_, nullptr), "diag(c)");
@@ -162,12 +240,33 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
           "the contact rows on a coarse level");
     check(MatPtAP(C_, c.N, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &c.Q),
           "the contact term on a coarse level");
-    check(MatDuplicate(c.A, MAT_COPY_VALUES, &c.H), "a coarse level");
-    check(MatAXPY(c.H, 1.0, c.Q, DIFFERENT_NONZERO_PATTERN), "a coarse level");
-    mark_spd(c.H, "a coarse level");
-    check(MatDuplicate(c.H, MAT_DO_NOT_COPY_VALUES, &c.A_in_H), "a coarse level");
-    check(MatAXPY(c.A_in_H, 1.0, c.A, SUBSET_NONZERO_PATTERN), "a coarse level");
-    check(MatDestroy(&c.A), "a coarse level");  // A_in_H holds it from here on
+    // Where Q's pattern lies in A's (as on aggregation's levels), H is on A's pattern, and a
+    // refresh writes back A's values in Q's rows alone, saved here. On our own levels H is A
+    // itself, changed in place; GAMG's coarse operators are objects of its own solvers (on one
+    // rank the coarsest is its coarse solver's, and changed in place it left CG with an
+    // indefinite preconditioner), so H is a copy there. At a million unknowns, one rank, the
+    // first coarse level has 24 million entries: H on the union of both patterns took 2.0 s
+    // to make (two copies of the level, and the union), and each refresh copied the whole
+    // level. Else H is a copy on the union, and A_in_H A on it.
+    std::optional<std::vector<PetscInt>> q_rows = rows_within_pattern(c.A, c.Q, comm_);
+    if (q_rows) {
+      if (levels == Levels::Aggregation)
+        std::swap(c.H, c.A);
+      else
+        check(MatDuplicate(c.A, MAT_COPY_VALUES, &c.H), "a coarse level");
+      check(MatDestroy(&c.A), "a coarse level");
+      c.q_rows = std::move(*q_rows);
+      move_row_values(c.H, c.q_rows, c.q_row_values, true);
+      check(MatAXPY(c.H, 1.0, c.Q, SUBSET_NONZERO_PATTERN), "a coarse level");
+      mark_spd(c.H, "a coarse level");
+    } else {
+      check(MatDuplicate(c.A, MAT_COPY_VALUES, &c.H), "a coarse level");
+      check(MatAXPY(c.H, 1.0, c.Q, DIFFERENT_NONZERO_PATTERN), "a coarse level");
+      mark_spd(c.H, "a coarse level");
+      check(MatDuplicate(c.H, MAT_DO_NOT_COPY_VALUES, &c.A_in_H), "a coarse level");
+      check(MatAXPY(c.A_in_H, 1.0, c.A, SUBSET_NONZERO_PATTERN), "a coarse level");
+      check(MatDestroy(&c.A), "a coarse level");  // A_in_H holds it from here on
+    }
     finer = c.N;
   }
   check(MatDestroy(&N), "the contact matrix");
@@ -183,10 +282,18 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
     return local_rows >= 5000 && ThreadedProduct::worthwhile(M);
   };
   transfers_.resize(P_.size());
+  made.restrictions.resize(P_.size(), nullptr);  // (fine first; P_ and transfers_ too)
   for (std::size_t l = 0; l < P_.size(); ++l) {
-    if (!threaded_pays(P_[l])) continue;
+    Mat& R = made.restrictions[P_.size() - 1 - l];
+    if (!threaded_pays(P_[l])) {
+      check(MatDestroy(&R), "a restriction");
+      continue;
+    }
     Transfer& t = transfers_[l];
-    check(MatTranspose(P_[l], MAT_INITIAL_MATRIX, &t.R), "a restriction");
+    if (R != nullptr)
+      std::swap(t.R, R);  // (the maker's P^T)
+    else
+      check(MatTranspose(P_[l], MAT_INITIAL_MATRIX, &t.R), "a restriction");
     t.prolongation = std::make_unique<ThreadedProduct>(P_[l]);
     t.restriction = std::make_unique<ThreadedProduct>(t.R);
   }
@@ -252,7 +359,10 @@ void ContactMultigrid::set_weights(const Vector& c, int block_unknowns) {
     Coarse& lev = levels_[l];
     check(MatPtAP(C_, lev.N, MAT_REUSE_MATRIX, PETSC_DEFAULT, &lev.Q),
           "the contact term on a coarse level");
-    check(MatCopy(lev.A_in_H, lev.H, SAME_NONZERO_PATTERN), "a coarse level");
+    if (lev.A_in_H == nullptr)  // (H on A's pattern: Q's rows alone differ from A's)
+      move_row_values(lev.H, lev.q_rows, lev.q_row_values, false);
+    else
+      check(MatCopy(lev.A_in_H, lev.H, SAME_NONZERO_PATTERN), "a coarse level");
     check(MatAXPY(lev.H, 1.0, lev.Q, SUBSET_NONZERO_PATTERN), "a coarse level");
     if (lev.threaded) lev.threaded->refresh();
     // The smoothers' diagonals and bounds and the coarsest factorisation are set up again.
