@@ -225,7 +225,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
   check(MatAssemblyBegin(N, MAT_FINAL_ASSEMBLY), "the contact matrix");
   check(MatAssemblyEnd(N, MAT_FINAL_ASSEMBLY), "the contact matrix");
 
-  // so that the products' patterns hold for every c.
+  // diag(c), every diagonal entry stored, so that the products' patterns hold for every c.
   check(MatCreateAIJ(comm_, m, m, PETSC_DETERMINE, PETSC_DETERMINE, 1, nullptr, 0, nullptr, &C_),
         "diag(c)");
   check(MatCreateVecs(C_, &c_, nullptr), "diag(c)");

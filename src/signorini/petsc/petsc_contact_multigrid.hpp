@@ -61,8 +61,8 @@ class ContactMultigrid {
     Mat A = nullptr;       // the Galerkin product, until H is made
     Mat N = nullptr;       // the contact rows on this level: N_{l+1} P_l
     Mat Q = nullptr;       // N^T diag(c) N
-    Mat H = nullptr;       // A + Q, on the union of their patterns
-    Mat A_in_H = nullptr;  // A on H's pattern, copied into H before Q is added
+    Mat H = nullptr;       // A + Q, on A's pattern (below) or on the union of both patterns
+    Mat A_in_H = nullptr;  // on the union: A on H's pattern, copied into H before Q is added
     // Where Q's pattern lies in A's: H on A's pattern (A_in_H null; on our own levels A itself,
     // changed in place), and A's values in Q's rows (this rank's) written back before Q is added.
     std::vector<PetscInt> q_rows;
