@@ -46,11 +46,10 @@ void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptio
   // (N x)_j = g_j on the set alone. The space solves it (projected CG), and the set is corrected
   // by semismooth Newton's primal-dual rule (pressing nodes stay, penetrating ones join), solved
   // to kLooseNewtonTolerance while it moves, then more tightly, then exactly (below); where an
-  // exact solve repeats its set,
-  // its multipliers are nonnegative and no node off it penetrates, it is the answer (the KKT
-  // conditions hold, to the Uzawa tolerance), and the Uzawa steps that would have approached it
-  // one contraction at a time are saved. Else (kFinishSolves solves without that) Uzawa goes on
-  // from there; each starting set is tried once.
+  // exact solve repeats its set, its multipliers are nonnegative and no node off it penetrates,
+  // it is the answer (the KKT conditions hold, to the Uzawa tolerance), and the Uzawa steps that
+  // would have approached it one contraction at a time are saved. Else (kFinishSolves solves
+  // without that) Uzawa goes on from there; each starting set is tried once.
   const bool finishes =
       options.active_set_finish && options.adaptive_inner_tolerance() && phi.components() == 1;
   ActiveSet tried;
