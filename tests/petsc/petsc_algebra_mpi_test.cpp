@@ -6,8 +6,9 @@
 #include <gtest/gtest.h>
 #include <petscmat.h>
 
-#include <algorithm>
+#include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "signorini/petsc/petsc_algebra.hpp"
@@ -16,22 +17,13 @@
 namespace signorini::petsc {
 namespace {
 
-// y = M x for a PETSc matrix and an Eigen vector.
+// y = M x for a PETSc matrix on one process and an Eigen vector.
 Vector product(Mat M, const Vector& x) {
   Vec vx = nullptr, vy = nullptr;
   check(MatCreateVecs(M, &vx, &vy), "test");
-  PetscScalar* a = nullptr;
-  check(VecGetArray(vx, &a), "test");
-  std::copy(x.data(), x.data() + x.size(), a);
-  check(VecRestoreArray(vx, &a), "test");
+  set_owned(vx, x);
   check(MatMult(M, vx, vy), "test");
-  PetscInt n = 0;
-  check(VecGetLocalSize(vy, &n), "test");
-  Vector y(n);
-  const PetscScalar* b = nullptr;
-  check(VecGetArrayRead(vy, &b), "test");
-  std::copy(b, b + n, y.data());
-  check(VecRestoreArrayRead(vy, &b), "test");
+  const Vector y = gather(vy);
   VecDestroy(&vx);
   VecDestroy(&vy);
   return y;

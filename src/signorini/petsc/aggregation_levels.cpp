@@ -141,7 +141,7 @@ Mat distributed_matrix(MPI_Comm comm, const RowMatrix& R, const ExtNumbering& nu
   check(MatCreate(comm, &M), "a prolongation");
   check(MatSetSizes(M, rows, local_columns, PETSC_DETERMINE, PETSC_DETERMINE), "a prolongation");
   check(MatSetType(M, MATAIJ), "a prolongation");
-  if (numbering.first == 0 && numbering.foreign.empty()) {  // (one rank: local is global)
+  if (numbering.first == 0 && numbering.foreign.empty()) {  // (no ghosts: local is global)
     set_rows(M, rows, R.outerIndexPtr(), R.innerIndexPtr(), R.valuePtr());
     return M;
   }

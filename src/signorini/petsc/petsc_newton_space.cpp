@@ -85,12 +85,15 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   // On one rank the AIJ copy is A on the slots itself, its arrays in place (sequential_matrix:
   // the padded copy made here, or a copy of A, instead of PETSc's copy of either made entry by
   // entry: 0.45 s at 434,235 unknowns).
-  Mat A_aij = ranks == 1 ? petsc::sequential_matrix(padding_.active()
-                                                        ? padding_.matrix(problem.A, first, last)
-                                                        : SparseMatrix(problem.A),
-                                                    comm_, block)
-                         : from_slots(&petsc::distributed_rows);
-  petsc::mark_spd(A_aij, "A");
+  Mat A_aij = nullptr;
+  if (ranks == 1) {
+    A_aij = petsc::sequential_matrix(
+        padding_.active() ? padding_.matrix(problem.A, first, last) : SparseMatrix(problem.A),
+        comm_, block);
+    petsc::mark_spd(A_aij, "A");  // (distributed_rows marks its own)
+  } else {
+    A_aij = from_slots(&petsc::distributed_rows);
+  }
   matrices.stop();
   // The Newton matrix H starts as a copy of A. With GAMG's kept levels, A in node blocks and H
   // are made after the levels' set-up, once the AIJ copy of A is freed, so that the process
