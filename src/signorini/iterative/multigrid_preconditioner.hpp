@@ -7,8 +7,10 @@
 // interpolation between nested rectangle meshes); the coarse operators are Galerkin products
 // A_l = P_l^T A_{l-1} P_l and N_l = N_{l-1} P_l, formed once. Since P^T (N^T diag(c) N) P =
 // N_l^T diag(c) N_l, a new active set only changes c: the hierarchy stays, and refresh() redoes
-// the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation); the fine
-// level's eigenvalue is bounded from A's instead of estimated again (refresh()).
+// the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation). Each
+// level's eigenvalue is A_l's, estimated once, or the contact zone's, estimated on the unknowns
+// that the active rows touch (contact_zone_estimate.hpp), whichever is larger: no Lanczos steps
+// on a whole level per active set (refresh()).
 // Smoothing is Chebyshev–Jacobi; the coarsest level is solved by a dense Cholesky factorisation
 // (on a GPU as its inverse, applied by one dense product on the device; on the CPU by the
 // factor's triangular solves).
@@ -53,7 +55,7 @@ class MultigridPreconditioner final : public Preconditioner {
   ~MultigridPreconditioner() override;
 
   /// After fine.set_weights(c): carries c to every level and redoes diagonals, eigenvalue
-  /// estimates and the coarsest factorisation.
+  /// estimates (on the contact zones, once A_l's own are known) and the coarsest factorisation.
   void refresh() override;
   void apply(const DeviceVector& r, DeviceVector& z) override;
 
@@ -64,9 +66,11 @@ class MultigridPreconditioner final : public Preconditioner {
   /// uploads" (P, P^T and each level's operator to the backend) and "multigrid: first refresh"
   /// (work vectors, smoothers, the set-up for c = 0).
   [[nodiscard]] const TimingTable& setup_timings() const { return setup_timings_; }
-  /// The fine level's lambda_max(D^-1 H) as the smoother uses it: estimated for c = 0, bounded
-  /// after a refresh for another c (refresh()).
-  [[nodiscard]] double fine_lambda_max() const;
+  /// The fine level's lambda_max(D^-1 H) as the smoother uses it: estimated for c = 0 (or
+  /// given), for another c the larger of that and the contact zone's estimate (refresh()).
+  [[nodiscard]] double fine_lambda_max() const { return lambda_max(0); }
+  /// The same on level `level` (0: the finest); 0 on a coarsest level solved exactly.
+  [[nodiscard]] double lambda_max(std::size_t level) const;
   /// The V-cycle as last recorded by apply() (null before the first apply() after a refresh()):
   /// on a GPU, is_graph() tells whether it replays as one CUDA graph.
   [[nodiscard]] const RecordedWork* recorded_cycle() const { return recorded_.get(); }
@@ -86,10 +90,9 @@ class MultigridPreconditioner final : public Preconditioner {
   // Host copies of the coarsest level, for its factorisation: A_L, and N_L^T (a column per
   // contact row).
   SparseMatrix coarse_A_, coarse_Nt_;
-  // The fine level's lambda_max(D^-1 A) without contact (estimated at the first refresh with
-  // c = 0; 0 until then), and per contact row j the number of nonzero entries of N's row j.
-  double fine_lambda_without_contact_ = 0.0;
-  std::vector<int> fine_normal_entries_;
+  // The smoother's lambda_max(D^-1 H) of a level for the current weights where it needs no
+  // Lanczos steps on the level (refresh()); 0 where it must be estimated.
+  double lambda_max_without_lanczos(Level& level, bool without_contact);
   std::vector<std::vector<Index>> fine_row_columns_;  // the unknowns of each row of N
   // Block weights (friction in 3D): the most unknowns that one node's `block` rows of N touch
   // together, the bound of refresh(), computed once per block size.

@@ -53,6 +53,8 @@ class PenalizedOperator final : public LinearOperator {
   void inverse_diagonal(DeviceVector& out);
   [[nodiscard]] Backend& backend() const { return backend_; }
   [[nodiscard]] const Vector& weights() const { return c_host_; }
+  /// N^T on the host (column j is row j of N), whatever the backend.
+  [[nodiscard]] const SparseMatrix& contact_transpose() const { return Nt_host_; }
 
  private:
   Backend& backend_;
@@ -60,7 +62,7 @@ class PenalizedOperator final : public LinearOperator {
   std::unique_ptr<DeviceSparseMatrix> A_, N_, Nt_, N2t_, W_;
   DeviceVector diag_a_, c_, t_, t2_, diag_w_;
   Vector c_host_;
-  SparseMatrix Nt_host_;  // N^T, for the diagonal of N^T W N
+  SparseMatrix Nt_host_;  // N^T, for the diagonal of N^T W N and contact_transpose()
   Index block_size_ = 1;
 };
 
