@@ -101,6 +101,38 @@ TEST(Pcg, JacobiAndMultigridMatchCholmod) {
   EXPECT_LT(rm.iterations * 10, rj.iterations) << rm.iterations << " vs " << rj.iterations;
 }
 
+// A first residual handed in (as a GNM step does, from the A x it keeps) gives the run that
+// computing it gives, and a wrong one is what the iteration follows (it is not recomputed).
+TEST(Pcg, TakesTheFirstResidualWhereGiven) {
+  Fixture f(60);
+  HostBackend be;
+  PenalizedOperator op(be, f.model.problem.A, f.model.problem.contact.N);
+  op.set_weights(f.c);
+  MultigridPreconditioner mg(op, f.model.problem.A, f.model.problem.contact.N, f.P, {});
+  Pcg pcg(be, op.size());
+  const DeviceVector b = to_device(be, f.model.problem.b);
+  const Vector start = Vector::LinSpaced(op.size(), -1e-3, 1e-3);
+  PcgOptions o;
+  o.tolerance = 1e-10;
+  DeviceVector x = to_device(be, start);
+  const PcgResult computed = pcg.solve(op, mg, b, x, o);
+  const Vector x_computed = to_host(x);
+  DeviceVector r(be, op.size());
+  const DeviceVector x0 = to_device(be, start);
+  op.apply(x0, r);
+  be.axpby(1.0, b, -1.0, r);  // b - H x0
+  o.initial_residual = &r;
+  x = to_device(be, start);
+  const PcgResult given = pcg.solve(op, mg, b, x, o);
+  ASSERT_TRUE(computed.converged && given.converged);
+  EXPECT_EQ(given.iterations, computed.iterations);
+  EXPECT_LT(testing::relative_difference(to_host(x), x_computed), 1e-14);
+  be.fill(r, 0.0);  // "already solved": no iteration
+  x = to_device(be, start);
+  EXPECT_EQ(pcg.solve(op, mg, b, x, o).iterations, 0);
+  EXPECT_EQ(to_host(x), start);
+}
+
 TEST(EigenvalueEstimate, LanczosEstimateIsJustBelowTheLargestEigenvalue) {
   Fixture f(30);
   HostBackend be;

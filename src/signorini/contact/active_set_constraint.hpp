@@ -49,7 +49,8 @@ class ActiveSetConstraint {
 
   /// x <- the minimiser under S's constraints, from x, to ||P (b - A x)|| <= tolerance
   /// max(||b||, ||b - A x||) (b_norm = ||b||); l gets the multipliers (0 off S, and on the nodes
-  /// that do not move), gap_residual N x - g. The CG iterations timed as "linear solve".
+  /// that do not move), gap_residual N x - g. The CG iterations timed as "linear solve". On
+  /// return the workspace's `work` holds b - A x at the new x.
   LinearSolveStats solve(const ActiveSet& S, DeviceVector& x, const DeviceVector& b, double b_norm,
                          double tolerance, Vector& l, Vector& gap_residual, TimingTable& timings);
 

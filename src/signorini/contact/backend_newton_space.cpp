@@ -86,6 +86,12 @@ NewtonSolveStats BackendNewtonSpace::solve(const Vector& terms) {
   be_.copy(x_, x_new_);
   PcgOptions options = pcg_options(o_.linear, n_);
   if (linear_tolerance_ > 0.0) options.tolerance = linear_tolerance_;
+  // The first residual rhs - H x = rhs - (A x - b) - b - N^T W N x from the A x - b kept: the
+  // contact rows' products instead of a product with A (d is free until direction()).
+  be_.axpbyz(1.0, work_, -1.0, residual_, d_);
+  be_.axpby(-1.0, b_, 1.0, d_);
+  H().add_contact_terms(x_, d_, -1.0);
+  options.initial_residual = &d_;
   PcgResult lin;
   {
     ScopedTimer t(timings_, "linear solve");
@@ -157,8 +163,9 @@ std::optional<ActiveSetSolve> BackendNewtonSpace::solve_on_active_set(const Acti
   ActiveSetSolve out;
   const LinearSolveStats s =
       constraint_->solve(S, x_, b_, b_norm_, tolerance, out.l, out.gap_residual, timings_);
-  H().apply_stiffness(x_, residual_);  // A x - b and N x at the new x
-  be_.axpby(-1.0, b_, 1.0, residual_);
+  // A x - b and N x at the new x: the constraint's solve leaves b - A x in its work vector (Ad_),
+  // so no product with A is spent on it again.
+  be_.axpbyz(-1.0, Ad_, 0.0, Ad_, residual_);
   Nx_ = contact_values_of(x_);
   out.stats.converged = s.converged;
   out.stats.iterations = s.iterations;

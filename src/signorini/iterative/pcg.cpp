@@ -21,6 +21,8 @@ PcgResult Pcg::solve(LinearOperator& H, Preconditioner& M, const DeviceVector& b
   if (options.zero_initial_guess) {
     be.fill(x, 0.0);
     be.copy(b, r_);
+  } else if (options.initial_residual != nullptr) {
+    be.copy(*options.initial_residual, r_);
   } else {
     H.apply(x, r_);
     be.axpby(1.0, b, -1.0, r_);  // r = b - H x

@@ -15,6 +15,9 @@ struct PcgOptions {
   int max_iterations = 10000;
   /// Start from x = 0 whatever x holds (saves the product H x of the first residual).
   bool zero_initial_guess = false;
+  /// b - H x for the x given, where the caller has it at less than a product with H (a Newton
+  /// step of GNM knows A x); null: computed here.
+  const DeviceVector* initial_residual = nullptr;
 };
 
 /// The step lengths alpha_j and the ratios beta_j = (r_{j+1}, z_{j+1}) / (r_j, z_j) of a run, in
