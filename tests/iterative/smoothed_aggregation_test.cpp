@@ -188,24 +188,31 @@ TEST(SmoothedAggregation, ARanksSharesOfTheProductsSumToTheWholeOnes) {
   EXPECT_LT((Matrix(with_rows.tentative) - Matrix(alone.tentative)).norm(), 1e-14);
 }
 
-TEST(SmoothedAggregation, TheHierarchysEstimateServesTheFineSmoother) {
-  // The damping of the first prolongation needs lambda_max(D^-1 A) of the fine level, the fine
-  // Chebyshev smoother the same number: given it, the multigrid skips its own Lanczos steps and
-  // builds the same V-cycle (the two products sum in other orders: rounding apart).
+TEST(SmoothedAggregation, TheHierarchysEstimatesServeTheSmoothers) {
+  // The damping of each prolongation needs lambda_max(D^-1 A_l) of the level it leaves, that
+  // level's Chebyshev smoother the same number: given them, the multigrid skips its own Lanczos
+  // steps and builds the same V-cycle (the two products sum in other orders: rounding apart).
   const ProblemSpec spec = paper_benchmark(48, 16);
   const Model model = build_model(spec);
   const SparseMatrix& A = model.problem.A;
   const SparseMatrix& N = model.problem.contact.N;
+  SmoothedAggregationOptions o;
+  o.max_coarse_unknowns = 60;  // three levels: a coarse one smoothed too
   const MultigridHierarchy h = smoothed_aggregation_hierarchy(
-      A, rigid_body_modes(model.mesh, model.dofs), free_dof_nodes(model.dofs));
-  ASSERT_GT(h.fine_jacobi_radius, 1.0);
+      A, rigid_body_modes(model.mesh, model.dofs), free_dof_nodes(model.dofs), o);
+  ASSERT_EQ(h.jacobi_radii.size(), h.prolongations.size());
+  ASSERT_GE(h.prolongations.size(), 2U);  // a coarse level smoothed too
+  for (const double radius : h.jacobi_radii) EXPECT_GT(radius, 1.0);
   HostBackend be;
   PenalizedOperator op(be, A, N);
   MultigridOptions estimated, given;
-  given.fine_lambda_max = h.fine_jacobi_radius;
+  given.lambda_max = h.jacobi_radii;
   MultigridPreconditioner a(op, A, N, h.prolongations, estimated, h.coarse_operators);
   MultigridPreconditioner b(op, A, N, h.prolongations, given, h.coarse_operators);
-  EXPECT_NEAR(a.fine_lambda_max(), b.fine_lambda_max(), 1e-12 * a.fine_lambda_max());
+  for (std::size_t l = 0; l < h.jacobi_radii.size(); ++l) {
+    EXPECT_GT(a.lambda_max(l), 0.0) << l;
+    EXPECT_NEAR(a.lambda_max(l), b.lambda_max(l), 1e-12 * a.lambda_max(l)) << l;
+  }
   const Vector r = Vector::LinSpaced(op.size(), -1.0, 1.0).array().sin();
   DeviceVector za(be, op.size()), zb(be, op.size());
   a.apply(to_device(be, r), za);

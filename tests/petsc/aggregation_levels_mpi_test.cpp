@@ -47,7 +47,9 @@ TEST(CoarseLevels, CoarseOperatorsArePetscsGalerkinProducts) {
   const CoarseLevels levels = aggregation_levels(M);
   ASSERT_GE(levels.prolongations.size(), 1U);
   ASSERT_EQ(levels.operators.size(), levels.prolongations.size());
-  EXPECT_GT(levels.fine_jacobi_radius, 1.0);  // (D^-1 A has unit diagonal and couplings)
+  // rho(D^-1 A_l) of every level coarsened (D^-1 A has unit diagonal and couplings).
+  ASSERT_EQ(levels.jacobi_radii.size(), levels.prolongations.size());
+  for (const double radius : levels.jacobi_radii) EXPECT_GT(radius, 1.0);
   Mat finer = M;
   for (std::size_t l = 0; l < levels.prolongations.size(); ++l) {
     Mat P = levels.prolongations[l];

@@ -33,10 +33,11 @@ struct MultigridHierarchy {
   /// preconditioner forms them.
   std::vector<SparseMatrix> coarse_operators;
   HierarchyKind kind = HierarchyKind::None;
-  /// lambda_max(D^-1 A) of level 0 where the maker estimated it (smoothed aggregation does, for
-  /// the damping of its first prolongation); 0 where unknown. The multigrid preconditioner's
-  /// fine smoother needs the same number (MultigridOptions::fine_lambda_max).
-  double fine_jacobi_radius = 0.0;
+  /// lambda_max(D^-1 A_l) of level l (0: the fine one) where the maker estimated it (smoothed
+  /// aggregation does on every level that it coarsens, for the damping of its prolongation);
+  /// missing or 0 where unknown. The multigrid preconditioner's smoothers need the same numbers
+  /// (MultigridOptions::lambda_max).
+  std::vector<double> jacobi_radii;
 };
 
 }  // namespace signorini

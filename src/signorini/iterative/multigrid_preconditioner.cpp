@@ -110,8 +110,8 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
       if (lev.on_host) lev.host_smoother = std::make_unique<ChebyshevSmoother>(*lev.on_host, o);
     }
   }
-  if (options_.fine_lambda_max > 0.0 && levels_.front()->smoother)
-    levels_.front()->lambda_without_contact = options_.fine_lambda_max;
+  for (std::size_t l = 0; l < levels_.size() && l < options_.lambda_max.size(); ++l)
+    if (levels_[l]->smoother) levels_[l]->lambda_without_contact = options_.lambda_max[l];
   refresh();
   backend_.synchronize();
 }

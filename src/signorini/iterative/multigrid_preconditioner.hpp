@@ -36,10 +36,10 @@ struct MultigridOptions {
   /// unknowns (an estimate, to be measured on a GPU). On the CPU backend it is the same
   /// computation. 0: never.
   Index host_estimate_below = 4000;
-  /// lambda_max(D^-1 A) of the fine level without contact where already known
-  /// (MultigridHierarchy::fine_jacobi_radius): the first refresh then skips its Lanczos steps
-  /// on the fine level (12 products with the largest matrix). 0: estimated here.
-  double fine_lambda_max = 0.0;
+  /// lambda_max(D^-1 A_l) of level l (0: the fine one) without contact where already known
+  /// (MultigridHierarchy::jacobi_radii): the first refresh then skips those levels' Lanczos
+  /// steps (12 products with each). Missing or 0: estimated here.
+  std::vector<double> lambda_max;
 };
 
 class MultigridPreconditioner final : public Preconditioner {

@@ -423,7 +423,7 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
       break;  // no real coarsening left (e.g. a level of isolated nodes)
     // P = (I - omega D^{-1} A) P_tent, omega = 4 / (3 rho(D^{-1} A)) (Vanek et al., eq. 4.4).
     const double radius = jacobi_spectral_radius(Al);
-    if (current == &A) h.fine_jacobi_radius = radius;
+    h.jacobi_radii.push_back(radius);
     SparseMatrix P = smoothed_prolongation(Al, t.tentative, 4.0 / (3.0 * radius));
     h.coarse_operators.push_back(galerkin_product(Al, P));
     h.prolongations.push_back(std::move(P));

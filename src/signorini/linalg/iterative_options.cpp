@@ -24,7 +24,7 @@ std::unique_ptr<Preconditioner> make_preconditioner(PenalizedOperator& H, const 
   static const MultigridHierarchy kSingleLevel;  // no hierarchy: smoothing alone
   const MultigridHierarchy& l = levels != nullptr ? *levels : kSingleLevel;
   MultigridOptions o = multigrid_options(options);
-  o.fine_lambda_max = l.fine_jacobi_radius;  // the hierarchy's estimate for the same A and D
+  o.lambda_max = l.jacobi_radii;  // the hierarchy's estimates for the same A_l and D_l
   return std::make_unique<MultigridPreconditioner>(H, A, N, l.prolongations, o, l.coarse_operators);
 }
 

@@ -359,7 +359,7 @@ CoarseLevels aggregation_levels(Mat A) {
     const SparseMatrix* held = held_matrix(level);
     const double radius =
         held != nullptr ? jacobi_spectral_radius(*held) : jacobi_lambda_max(level);
-    if (depth == 0) out.fine_jacobi_radius = radius;
+    out.jacobi_radii.push_back(radius);
     SparseMatrix T_ghosts;  // (on several ranks: T's rows of the ghosts too)
     if (size > 1) {
       const RowMatrix T_own(t.tentative);

@@ -31,14 +31,14 @@ namespace signorini::petsc {
 
 /// The levels below the fine one, fine first: prolongations[l] takes level l + 1 to level l
 /// (level 0 the fine one), operators[l] is level l + 1's Galerkin product; the caller owns the
-/// matrices. fine_jacobi_radius: lambda_max(D^-1 A) of the fine level where the maker
-/// estimated it (0 where not). Made here, or by GAMG (petsc_contact_multigrid.cpp).
+/// matrices. jacobi_radii[l]: lambda_max(D^-1 A_l) of level l (0: the fine one) where the maker
+/// estimated it (missing where not). Made here, or by GAMG (petsc_contact_multigrid.cpp).
 struct CoarseLevels {
   std::vector<Mat> prolongations;
   /// restrictions[l] = prolongations[l]^T where the maker has it (else null, or none at all).
   std::vector<Mat> restrictions;
   std::vector<Mat> operators;
-  double fine_jacobi_radius = 0.0;
+  std::vector<double> jacobi_radii;
 };
 
 /// The levels of A (AIJ, symmetric positive definite, its block size the unknowns of a node and

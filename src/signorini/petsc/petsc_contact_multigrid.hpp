@@ -8,10 +8,12 @@
 // levels once, from A with the rigid-body modes; its prolongators P_l and Galerkin products A_l
 // become the levels of a PCMG, and a new c costs the small products N_l^T diag(c) N_l (rows only
 // where there is contact) instead of GAMG's set-up again (whose Galerkin products with the
-// finest level cost as much as a dozen CG iterations). Smoothing is Chebyshev-Jacobi as in GAMG,
-// its bounds estimated again on each coarse level for each c and, on the fine level, bounded from
-// A's as the serial multigrid does (multigrid_preconditioner.cpp, refresh()); the coarsest level
-// is factorised (LU, redundantly on every rank).
+// finest level cost as much as a dozen CG iterations). Smoothing is Chebyshev-Jacobi as in GAMG.
+// Its interval [0.1, 1.1] lambda_max(D^-1 H_l) follows each c without CG steps on a whole level:
+// on a coarse level lambda_max is the larger of A_l's (estimated once) and that of H_l's principal
+// submatrix on the unknowns that the active rows touch (as the serial multigrid's refresh(),
+// contact_zone_estimate.hpp), on the fine level a bound from A's; the coarsest level is
+// factorised (LU, redundantly on every rank).
 
 #include <petscksp.h>
 
@@ -68,6 +70,7 @@ class ContactMultigrid {
     std::vector<PetscInt> q_rows;
     std::vector<PetscScalar> q_row_values;
     std::unique_ptr<ThreadedProduct> threaded;  // H's products on the rank's threads, if made
+    double lambda_a = 0.0;                      // lambda_max(D^-1 A_l), where the level is smoothed
     [[nodiscard]] Mat op() const { return threaded ? threaded->shell() : H; }
   };
   // A level's transfers on the rank's threads (threaded_product.hpp): P_l, and its transpose
@@ -87,6 +90,9 @@ class ContactMultigrid {
   std::vector<Mat> P_;               // P_[l]: level l to level l + 1
   std::vector<Transfer> transfers_;  // transfers_[l] for P_[l], where threaded
   std::vector<PetscInt> sizes_;
+  // lambda_max(D_ZZ^-1 H_ZZ) on the level's contact zone Z (the unknowns where Q's diagonal is
+  // not 0): PETSc's CG estimate on the submatrix; 0 where Z is empty. Collective.
+  [[nodiscard]] double zone_lambda_max(const Coarse& level) const;
 };
 
 }  // namespace signorini::petsc
