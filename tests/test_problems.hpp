@@ -1,6 +1,7 @@
 #pragma once
 // Shared fixtures for the tests: the paper's benchmark at small sizes, solved once per size.
 
+#include <Eigen/Eigenvalues>
 #include <map>
 #include <string>
 #include <utility>
@@ -78,6 +79,16 @@ inline ProblemSpec with_friction(ProblemSpec spec, FrictionModel model, double v
 /// Relative difference ||a - b|| / ||b||.
 inline double relative_difference(const Vector& a, const Vector& b) {
   return (a - b).norm() / b.norm();
+}
+
+/// lambda_max(D^-1 M) of a symmetric positive definite M, densely (the eigenvalues of
+/// D^-1/2 M D^-1/2): the reference for the Jacobi-scaled Lanczos estimates.
+inline double dense_jacobi_lambda_max(const Matrix& M) {
+  const Vector s = M.diagonal().cwiseSqrt().cwiseInverse();
+  const Matrix scaled = s.asDiagonal() * M * s.asDiagonal();
+  return Eigen::SelfAdjointEigenSolver<Matrix>(scaled, Eigen::EigenvaluesOnly)
+      .eigenvalues()
+      .maxCoeff();
 }
 
 }  // namespace signorini::testing

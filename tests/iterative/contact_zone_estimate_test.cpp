@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <vector>
 
 #include "signorini/core/error.hpp"
@@ -14,16 +13,6 @@
 
 namespace signorini {
 namespace {
-
-// lambda_max(D^-1 M) of a symmetric positive definite M, densely: D^-1/2 M D^-1/2 has the same
-// eigenvalues.
-double dense_jacobi_lambda_max(const Matrix& M) {
-  const Vector s = M.diagonal().cwiseSqrt().cwiseInverse();
-  const Matrix scaled = s.asDiagonal() * M * s.asDiagonal();
-  return Eigen::SelfAdjointEigenSolver<Matrix>(scaled, Eigen::EigenvaluesOnly)
-      .eigenvalues()
-      .maxCoeff();
-}
 
 // The paper's problem on 30 x 10 with oblique normals (0.6, -0.8) (both components of each
 // contact node's row) and the first half of the contact nodes active, with the paper's r = 1e8
@@ -58,15 +47,15 @@ TEST(ContactZoneEstimate, IsTheZonesLargestEigenvalueAndBelowTheWholeOperators) 
   for (std::size_t a = 0; a < k.zone.size(); ++a)
     for (std::size_t b = 0; b < k.zone.size(); ++b)
       Hzz(static_cast<Index>(a), static_cast<Index>(b)) = k.H(k.zone[a], k.zone[b]);
-  const double zone = dense_jacobi_lambda_max(Hzz);
-  const double whole = dense_jacobi_lambda_max(k.H);
+  const double zone = testing::dense_jacobi_lambda_max(Hzz);
+  const double whole = testing::dense_jacobi_lambda_max(k.H);
   const SparseMatrix Nt = k.N.transpose();
   const double estimate = contact_zone_lambda_max(k.model.problem.A, Nt, k.c, 12);
   EXPECT_LE(estimate, zone * (1.0 + 1e-10));  // a Ritz value of the zone's matrix
   EXPECT_GT(estimate, 0.99 * zone);
   EXPECT_LE(zone, whole * (1.0 + 1e-10));  // Cauchy's interlacing
   // The rule of the multigrid's refresh: A's or the zone's, whichever is larger, is H's.
-  const double stiffness = dense_jacobi_lambda_max(Matrix(k.model.problem.A));
+  const double stiffness = testing::dense_jacobi_lambda_max(Matrix(k.model.problem.A));
   EXPECT_GT(std::max(stiffness, estimate), 0.98 * whole) << stiffness << ", " << estimate;
 }
 

@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <map>
 
 #include "signorini/backend/host_backend.hpp"
@@ -35,6 +34,20 @@ struct Fixture {
   [[nodiscard]] SparseMatrix hessian() const {
     const SparseMatrix& N = model.problem.contact.N;
     return SparseMatrix(model.problem.A + SparseMatrix(N.transpose() * c.asDiagonal() * N));
+  }
+};
+
+// The V-cycle of the fixture's H on the CPU backend, the weights set before the set-up.
+struct Cycle {
+  HostBackend be;
+  PenalizedOperator op;
+  MultigridPreconditioner mg;
+  explicit Cycle(const Fixture& f)
+      : op(be, f.model.problem.A, f.model.problem.contact.N),
+        mg(weighted(op, f.c), f.model.problem.A, f.model.problem.contact.N, f.P, {}) {}
+  static PenalizedOperator& weighted(PenalizedOperator& op, const Vector& c) {
+    op.set_weights(c);
+    return op;
   }
 };
 
@@ -105,10 +118,10 @@ TEST(Pcg, JacobiAndMultigridMatchCholmod) {
 // computing it gives, and a wrong one is what the iteration follows (it is not recomputed).
 TEST(Pcg, TakesTheFirstResidualWhereGiven) {
   Fixture f(60);
-  HostBackend be;
-  PenalizedOperator op(be, f.model.problem.A, f.model.problem.contact.N);
-  op.set_weights(f.c);
-  MultigridPreconditioner mg(op, f.model.problem.A, f.model.problem.contact.N, f.P, {});
+  Cycle cycle(f);
+  HostBackend& be = cycle.be;
+  PenalizedOperator& op = cycle.op;
+  MultigridPreconditioner& mg = cycle.mg;
   Pcg pcg(be, op.size());
   const DeviceVector b = to_device(be, f.model.problem.b);
   const Vector start = Vector::LinSpaced(op.size(), -1e-3, 1e-3);
@@ -141,13 +154,7 @@ TEST(EigenvalueEstimate, LanczosEstimateIsJustBelowTheLargestEigenvalue) {
   JacobiPreconditioner jacobi(op);
   const DeviceVector start = to_device(be, eigenvalue_estimate_start(op.size()));
   const double estimate = estimate_largest_eigenvalue(op, jacobi, start, 12);
-  // D^{-1/2} H D^{-1/2} has the eigenvalues of D^{-1} H.
-  const SparseMatrix H = f.hessian();
-  const Vector s = Vector(H.diagonal()).cwiseSqrt().cwiseInverse();
-  const Matrix scaled = s.asDiagonal() * Matrix(H) * s.asDiagonal();
-  const double exact = Eigen::SelfAdjointEigenSolver<Matrix>(scaled, Eigen::EigenvaluesOnly)
-                           .eigenvalues()
-                           .maxCoeff();
+  const double exact = testing::dense_jacobi_lambda_max(Matrix(f.hessian()));
   EXPECT_LE(estimate, exact * (1.0 + 1e-10));
   EXPECT_GT(estimate, 0.9 * exact);  // so that 1.1 * estimate covers the spectrum
 }
@@ -166,11 +173,7 @@ double level_lambda_max(const SparseMatrix& H, const std::vector<SparseMatrix>& 
     const DeviceVector start = to_device(host, eigenvalue_estimate_start(Hl.rows()));
     return estimate_largest_eigenvalue(op, jacobi, start, 300);
   }
-  const Vector s = Vector(Hl.diagonal()).cwiseSqrt().cwiseInverse();
-  const Matrix scaled = s.asDiagonal() * Matrix(Hl) * s.asDiagonal();
-  return Eigen::SelfAdjointEigenSolver<Matrix>(scaled, Eigen::EigenvaluesOnly)
-      .eigenvalues()
-      .maxCoeff();
+  return testing::dense_jacobi_lambda_max(Matrix(Hl));
 }
 
 // After a refresh for an active set, each level's lambda_max is the larger of A_l's (estimated
@@ -220,10 +223,10 @@ TEST(MultigridPreconditioner, RefreshedEigenvaluesCoverEveryLevelsSpectrum) {
 
 TEST(MultigridPreconditioner, IsSymmetricPositiveDefinite) {
   Fixture f(60);
-  HostBackend be;
-  PenalizedOperator op(be, f.model.problem.A, f.model.problem.contact.N);
-  op.set_weights(f.c);
-  MultigridPreconditioner mg(op, f.model.problem.A, f.model.problem.contact.N, f.P, {});
+  Cycle cycle(f);
+  HostBackend& be = cycle.be;
+  PenalizedOperator& op = cycle.op;
+  MultigridPreconditioner& mg = cycle.mg;
   EXPECT_EQ(mg.level_sizes().size(), 3U);  // 60x20, 30x10, 15x5
   const Index n = op.size();
   const Vector x = Vector::LinSpaced(n, 0.0, 1.0).array().sin();
@@ -279,15 +282,14 @@ TEST(MultigridPreconditioner, IterationCountHardlyGrowsWithTheMesh) {
   std::map<Index, int> iterations;
   for (const Index nx : {60, 120, 240}) {
     Fixture f(nx);
-    HostBackend be;
-    PenalizedOperator op(be, f.model.problem.A, f.model.problem.contact.N);
-    op.set_weights(f.c);
-    MultigridPreconditioner mg(op, f.model.problem.A, f.model.problem.contact.N, f.P, {});
+    Cycle cycle(f);
+    HostBackend& be = cycle.be;
+    PenalizedOperator& op = cycle.op;
     Pcg pcg(be, op.size());
     PcgOptions o;
     o.tolerance = 1e-10;
     DeviceVector x(be, op.size());
-    const PcgResult r = pcg.solve(op, mg, to_device(be, f.model.problem.b), x, o);
+    const PcgResult r = pcg.solve(op, cycle.mg, to_device(be, f.model.problem.b), x, o);
     ASSERT_TRUE(r.converged) << nx;
     iterations[nx] = r.iterations;
   }
