@@ -119,9 +119,7 @@ TEST(Pcg, JacobiAndMultigridMatchCholmod) {
 TEST(Pcg, TakesTheFirstResidualWhereGiven) {
   Fixture f(60);
   Cycle cycle(f);
-  HostBackend& be = cycle.be;
-  PenalizedOperator& op = cycle.op;
-  MultigridPreconditioner& mg = cycle.mg;
+  auto& [be, op, mg] = cycle;
   Pcg pcg(be, op.size());
   const DeviceVector b = to_device(be, f.model.problem.b);
   const Vector start = Vector::LinSpaced(op.size(), -1e-3, 1e-3);
@@ -224,9 +222,7 @@ TEST(MultigridPreconditioner, RefreshedEigenvaluesCoverEveryLevelsSpectrum) {
 TEST(MultigridPreconditioner, IsSymmetricPositiveDefinite) {
   Fixture f(60);
   Cycle cycle(f);
-  HostBackend& be = cycle.be;
-  PenalizedOperator& op = cycle.op;
-  MultigridPreconditioner& mg = cycle.mg;
+  auto& [be, op, mg] = cycle;
   EXPECT_EQ(mg.level_sizes().size(), 3U);  // 60x20, 30x10, 15x5
   const Index n = op.size();
   const Vector x = Vector::LinSpaced(n, 0.0, 1.0).array().sin();
