@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/SparseCholesky>
+#include <vector>
+
+#include "../problem/ball_on_block.hpp"
 #include "signorini/backend/make_backend.hpp"
 #include "signorini/contact/armijo_rule.hpp"
 #include "signorini/contact/backend_newton_space.hpp"
@@ -25,8 +29,12 @@ class ScriptedSpace final : public NewtonSpace {
 
   [[nodiscard]] const Vector& contact_values() const override { return Nx_; }
   void set_active(const ActiveSet&, double) override { ++refreshes_; }
-  NewtonSolveStats solve(const Vector&) override { return next_solve; }
+  NewtonSolveStats solve(const Vector&) override {
+    solve_tolerances.push_back(linear_tolerance);
+    return next_solve;
+  }
   double linear_tolerance = -1.0;
+  std::vector<double> solve_tolerances;  // linear_tolerance at each solve
   void set_linear_tolerance(double tolerance) override { linear_tolerance = tolerance; }
   void direction(ModifiedLagrangian::Direction& dir) override {
     dir.residual_dot_d = next_direction.residual_dot_d;
@@ -61,6 +69,56 @@ TEST(GeneralizedNewton, AdaptiveInnerToleranceAsksForATenthOfItsToleranceFromThe
   o.inner_tolerance = InnerTolerance::Fixed;
   static_cast<void>(GeneralizedNewton(o, 1.0).minimize(phi, space, 1, 1e-4));
   EXPECT_EQ(space.linear_tolerance, 0.0);
+}
+
+// The first Newton system with no node active (Uzawa's first step, from l = 0 and x = 0) is
+// solved to kFirstNewtonTolerance. It is no minimiser: a repeat of its (empty) set does not end
+// GNM, and the next system gets the step's own tolerance. The exact method keeps its own.
+TEST(GeneralizedNewton, FirstSystemWithNoNodeActiveIsSolvedLoosely) {
+  const ContactProblem& p = testing::paper_model(30).problem;
+  ASSERT_GE(p.contact.gaps.minCoeff(), 0.0);  // no node active at x = 0 with l = 0
+  ModifiedLagrangian phi(p, 1e3);
+  ContactSolverOptions o;
+  o.max_gnm_iterations = 2;
+  o.inner_tolerance = InnerTolerance::Adaptive;
+  ScriptedSpace space(p.contact.size());
+  space.next_direction.residual_dot_d = -1.0;  // full steps that decrease Phi
+  space.next_direction.d_A_d = 1.0;
+  space.next_direction.Nd = Vector::Zero(p.contact.size());
+  const GnmResult g = GeneralizedNewton(o, 1.0).minimize(phi, space, 1, 1e-4);
+  EXPECT_EQ(space.solve_tolerances, (std::vector<double>{kFirstNewtonTolerance, 1e-5}));
+  EXPECT_EQ(space.steps, 2);  // the repeated empty set did not end GNM after the loose step
+  EXPECT_EQ(g.termination, Termination::IterationLimit);
+  EXPECT_EQ(space.linear_tolerance, 1e-5);
+
+  o.inner_tolerance = InnerTolerance::Fixed;
+  ScriptedSpace exact(p.contact.size());
+  exact.next_direction = space.next_direction;
+  const GnmResult f = GeneralizedNewton(o, 1.0).minimize(phi, exact, 1, 1e-4);
+  EXPECT_EQ(exact.solve_tolerances, (std::vector<double>{0.0}));
+  EXPECT_EQ(f.termination, Termination::Converged);  // the repeat after a full step
+  EXPECT_EQ(exact.steps, 1);
+}
+
+// A body that never reaches its obstacle on the iterative path (inexact Uzawa-GNM): l stays 0,
+// so the dual change is 0 after step 1, whose Newton systems were solved loosely (the first to
+// kFirstNewtonTolerance, the rest to 1e-4); Uzawa goes on to a step solved tightly, and ends at
+// the linear solution without contact (before, it stopped at step 1 and failed the KKT check).
+TEST(GeneralizedNewton, NoContactStillEndsAtTheLinearSolution) {
+  ProblemSpec spec = testing::ball_on_block(16, -0.05);  // the ball 0.05 below the block
+  spec.body_force = [](const Point&) { return Eigen::Vector3d(0.0, 0.0, -1.0); };
+  spec.solver.automatic_path = false;
+  spec.solver.linear.type = LinearSolverType::ConjugateGradient;
+  spec.solver.linear.preconditioner = PreconditionerType::Multigrid;
+  spec.solver.inner_tolerance = InnerTolerance::Adaptive;
+  const Model model = build_model(spec);
+  const ContactResult r = solve_contact(model.problem, model.solver, &model.multigrid);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  EXPECT_EQ(r.l.lpNorm<Eigen::Infinity>(), 0.0);
+  const Vector linear = Eigen::SimplicialLDLT<SparseMatrix>(model.problem.A).solve(model.problem.b);
+  ASSERT_GT(linear.norm(), 0.0);
+  EXPECT_LT(testing::relative_difference(r.u, linear), 1e-9);
+  EXPECT_GE(r.summary.steps.size(), 2U);  // step 1, solved to 1e-3, is not the answer
 }
 
 TEST(GeneralizedNewton, ArmijoFailureStopsWithTheHalvingsTried) {

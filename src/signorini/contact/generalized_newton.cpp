@@ -33,10 +33,11 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
   // Inexact Newton steps: a linear residual of a tenth of the tolerance leaves a gradient below
   // it (both are relative to the loads), so the stopping rule can still be met; and the
   // repeated active set after a full step still marks a minimiser to within that accuracy.
-  space.set_linear_tolerance(
+  const double linear_tolerance =
       options_.adaptive_inner_tolerance()
           ? std::max(options_.linear.cg_tolerance, kLinearForcing * tolerance)
-          : 0.0);
+          : 0.0;
+  space.set_linear_tolerance(linear_tolerance);
   const int factorizations_before = space.factorizations();
   const int updates_before = space.factor_updates();
   auto finish = [&] {
@@ -67,8 +68,16 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
     }
 
     // H(x_{m-1}) = A + r sum_{active} h_j nu_j nu_j^T, then H x_m = b - N^T (h (l - r g))_active.
+    // The first Newton system with no node active (Uzawa's first step, from l = 0) is the
+    // problem without contact: its answer only tells which nodes it pushes through the
+    // obstacle, the next active set, and is solved to kFirstNewtonTolerance (inexact steps only).
+    // Not a minimiser, so a repeat of its set does not end GNM (previous_full below).
     space.set_linearization(active, phi.r());
+    const bool loose = linear_tolerance > 0.0 && linear_tolerance < kFirstNewtonTolerance &&
+                       m == 1 && ev.active == 0;
+    if (loose) space.set_linear_tolerance(kFirstNewtonTolerance);
     const NewtonSolveStats stats = space.solve(phi.newton_contact_terms(active));
+    if (loose) space.set_linear_tolerance(linear_tolerance);
     res.linear_iterations += stats.iterations;
     ev.linear_iterations = stats.iterations;
     if (!stats.converged) {
@@ -112,7 +121,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
     }
     if (res.residual < tolerance) return finish();  // the paper's stopping rule
     previous = std::move(active);
-    previous_full = full;
+    previous_full = full && !loose;
   }
   res.termination = Termination::IterationLimit;
   res.message = fmt::format(

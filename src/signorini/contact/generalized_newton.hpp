@@ -32,6 +32,11 @@ struct GnmResult {
 /// tolerance of the Uzawa step, which is this fraction of the previous step's dual change.
 inline constexpr double kLinearForcing = 0.1;
 inline constexpr double kInnerForcing = 1e-3;
+/// With inner_tolerance = adaptive: the relative residual of GNM's first Newton system where no
+/// node is active (generalized_newton.cpp). On Hertz's ball it took 3 CG iterations instead of
+/// 7-8, and the whole solve 43, 47 and 63 instead of 48, 51 and 68 at 107,586, 434,235 and
+/// 1,041,093 unknowns (docs/performance.md, "The first Newton system, loosely").
+inline constexpr double kFirstNewtonTolerance = 1e-2;
 /// The relative residual of inexact active-set steps (semismooth Newton's on an iterative solver,
 /// and Uzawa-GNM's active-set finish) while the active set still moves: measured at 405,600
 /// unknowns in 3D, the same active sets as exact steps with half the CG iterations
