@@ -154,13 +154,13 @@ void MultigridPreconditioner::refresh() {
     Level& lev = *levels_[l];
     if (l > 0) lev.op->set_weights(c);  // the same c on every level: N_l = N P_1 ... P_l
     if (!lev.smoother) continue;
-    if (lev.on_host) lev.on_host->set_weights(c);
     const double known = lambda_max_without_lanczos(lev, without_contact);
     if (known > 0.0) {
       lev.smoother->refresh(known);
       continue;
     }
-    if (lev.host_smoother) {
+    if (lev.host_smoother) {  // (the host copy is read by its estimate alone)
+      lev.on_host->set_weights(c);
       lev.host_smoother->refresh();
       lev.smoother->refresh(lev.host_smoother->lambda_max());
     } else {
