@@ -76,11 +76,15 @@ TEST(Progress, PlainLogHasEveryIterationAndNoControlCharacters) {
     Progress p(ContactMethod::UzawaGnm, options_for(c, LogFormat::Text, false));
     p.phase("contact solve");
     p.iteration(inner(1, 1));
+    IterationEvent with_cg = inner(1, 2);
+    with_cg.linear_iterations = 7;  // an iterative path's Newton system
+    p.iteration(with_cg);
     p.iteration(outer(1));
     p.report("done\n", {{"event", "x"}});
   }
   EXPECT_EQ(c.text(),
             "  uzawa 1  gnm 1  active 12  residual 1.0e-03  armijo 0\n"
+            "  uzawa 1  gnm 2  active 12  residual 1.0e-03  armijo 0  cg 7\n"
             "uzawa 1: ||dl||/||l|| = 4.5e-09, active 12, gnm 2\n"
             "done\n");
 }
