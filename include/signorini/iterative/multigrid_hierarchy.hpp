@@ -38,6 +38,13 @@ struct MultigridHierarchy {
   /// missing or 0 where unknown. The multigrid preconditioner's smoothers need the same numbers
   /// (MultigridOptions::lambda_max).
   std::vector<double> jacobi_radii;
+  /// Smoothed aggregation's fine tentative prolongation T (prolongations[0] = (I - omega D^-1 A)
+  /// T) and its omega, where kept: the multigrid preconditioner smooths T's rows at the active
+  /// contact nodes again with the Newton matrix (contact_prolongation.hpp). Only the rows of the
+  /// unknowns that the contact rows touch are needed (keep_contact_rows(), there); empty: not
+  /// kept.
+  SparseMatrix fine_tentative;
+  double fine_omega = 0.0;
 };
 
 }  // namespace signorini

@@ -25,6 +25,12 @@ struct MultigridPreconditioner::Level {
   std::unique_ptr<ChebyshevSmoother> host_smoother;  // its smoother: only estimates
   const SparseMatrix* host_A = nullptr;              // A_l on the host (the caller's, or `A` above)
   double lambda_without_contact = 0.0;               // lambda_max(D^-1 A_l) once estimated (c = 0)
+  SparseMatrix N;                        // N_l = N P_1 ... P_l as formed (coarse levels)
+  const SparseMatrix* P_host = nullptr;  // the prolongation from the next level, on the host
+  // The fine level's prolongation change P_H - P (contact_prolongation.hpp): its host matrix
+  // (whose arrays dPt may share), P_H - P and its transpose on the backend; null: none.
+  SparseMatrix dP_host;
+  std::unique_ptr<DeviceSparseMatrix> dP, dPt;
 };
 
 MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A,
@@ -72,9 +78,11 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
     }
     Nl = Nl * P;
     level->host_A = current;
+    level->N = Nl;
     products.stop();
     ScopedTimer uploads(setup_timings_, "multigrid: level uploads");
     Level& finer = *levels_.back();
+    finer.P_host = &P;
     finer.Pt = backend_.upload_transpose(P, HostArrays::Share);  // P's CSC arrays: P^T's CSR
     if (!backend_.has_transposed_product()) finer.P = backend_.upload(P);
     level->owned =
@@ -112,6 +120,19 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   }
   for (std::size_t l = 0; l < levels_.size() && l < options_.lambda_max.size(); ++l)
     if (levels_[l]->smoother) levels_[l]->lambda_without_contact = options_.lambda_max[l];
+  if (options_.contact_prolongation && options_.fine_tentative != nullptr &&
+      options_.fine_tentative->nonZeros() > 0 && options_.fine_omega > 0.0 &&
+      !prolongations.empty() && N.rows() > 0) {
+    try {
+      contact_prolongation_ = std::make_unique<ContactProlongation>(
+          A, N, prolongations.front(), *options_.fine_tentative, options_.fine_omega);
+      fine_N_ = N;
+    } catch (const NumericalError&) {
+      // T kept for other contact rows than these (keep_contact_rows with another N): A's
+      // prolongation alone, as without T.
+      contact_prolongation_.reset();
+    }
+  }
   refresh();
   backend_.synchronize();
 }
@@ -146,13 +167,71 @@ double MultigridPreconditioner::block_unknowns_bound(Index block) {
   return block_bound_;
 }
 
+const SparseMatrix& MultigridPreconditioner::fine_prolongation_change() const {
+  return levels_.front()->dP_host;
+}
+
+SparseMatrix MultigridPreconditioner::contact_rows(std::size_t level) const {
+  if (level >= levels_.size())
+    throw NumericalError(fmt::format("multigrid: no level {} of {}", level, levels_.size()));
+  return levels_[level]->op->contact_transpose().transpose();
+}
+
+void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
+  // Scalar weights only: friction's block weights keep A's prolongation.
+  SparseMatrix change;
+  if (levels_.front()->op->block_size() == 1) change = contact_prolongation_->change(c);
+  Level& fine = *levels_.front();
+  const bool dense_coarsest = !levels_.back()->smoother;
+  fine.dP.reset();
+  fine.dPt.reset();
+  fine.dP_host = SparseMatrix();
+  if (change.nonZeros() == 0) {
+    if (!prolongation_changed_) return;
+    for (std::size_t l = 1; l < levels_.size(); ++l) {
+      Level& lev = *levels_[l];
+      lev.op->set_contact_matrix(lev.N);
+      if (lev.on_host) lev.on_host->set_contact_matrix(lev.N);
+    }
+    if (dense_coarsest) coarse_Nt_ = levels_.back()->N.transpose();
+    prolongation_changed_ = false;
+    return;
+  }
+  // The transfers P + (P_H - P): the restriction by (P_H - P)^T's rows (P's CSC arrays shared on
+  // the CPU, as P^T's), the prolongation by P_H - P's own rows.
+  fine.dP_host = std::move(change);
+  fine.dPt = backend_.upload_transpose(fine.dP_host, HostArrays::Share);
+  fine.dP = backend_.upload(fine.dP_host);
+  // The contact rows on the coarse levels: N P_H P_1 ... P_l = N_l + (N (P_H - P)) P_1 ... P_l,
+  // so that the coarse contact terms are those of P_H (the coarse A_l stay A's).
+  // Only the active rows count (c_j = 0 elsewhere), so the others are left out: at 434,235
+  // unknowns on Hertz's ball about 1,000 of 7,366 rows, each a few hundred coarse columns, whose
+  // copies and uploads per refresh are then a seventh (and so are the products per V-cycle).
+  SparseMatrix D = fine_N_ * fine.dP_host;
+  const auto active_row = [&c](Index row, Index, double) { return c(row) != 0.0; };
+  for (std::size_t l = 1; l < levels_.size(); ++l) {
+    Level& lev = *levels_[l];
+    SparseMatrix Nl = lev.N;
+    Nl.prune(active_row);
+    Nl += D;
+    lev.op->set_contact_matrix(Nl);
+    if (lev.on_host) lev.on_host->set_contact_matrix(Nl);
+    if (l + 1 < levels_.size())
+      D = D * *lev.P_host;
+    else if (dense_coarsest)
+      coarse_Nt_ = Nl.transpose();
+  }
+  prolongation_changed_ = true;
+}
+
 void MultigridPreconditioner::refresh() {
   recorded_.reset();
   const Vector& c = levels_.front()->op->weights();
   const bool without_contact = (c.array() == 0.0).all();
+  if (contact_prolongation_) update_contact_prolongation(c);
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];
-    if (l > 0) lev.op->set_weights(c);  // the same c on every level: N_l = N P_1 ... P_l
+    if (l > 0) lev.op->set_weights(c);  // the same c on every level: N_l = N P_H P_1 ... P_l
     if (!lev.smoother) continue;
     const double known = lambda_max_without_lanczos(lev, without_contact);
     if (known > 0.0) {
@@ -259,13 +338,15 @@ void MultigridPreconditioner::cycle(std::size_t l, const DeviceVector& b, Device
   Level& next = *levels_[l + 1];
   lev.smoother->smooth(b, x, true);  // pre-smoothing from x = 0
   lev.op->apply(x, lev.r);
-  backend_.axpby(1.0, b, -1.0, lev.r);    // r = b - H x
-  backend_.spmv(*lev.Pt, lev.r, next.b);  // restriction P^T r
-  cycle(l + 1, next.b, next.x);           // coarse correction
+  backend_.axpby(1.0, b, -1.0, lev.r);                            // r = b - H x
+  backend_.spmv(*lev.Pt, lev.r, next.b);                          // restriction P^T r
+  if (lev.dPt) backend_.spmv(*lev.dPt, lev.r, next.b, 1.0, 1.0);  // + (P_H - P)^T r
+  cycle(l + 1, next.b, next.x);                                   // coarse correction
   if (lev.P)
     backend_.spmv(*lev.P, next.x, x, 1.0, 1.0);  // x += P e
   else
     backend_.spmv_transpose(*lev.Pt, next.x, x, 1.0, 1.0);
+  if (lev.dP) backend_.spmv(*lev.dP, next.x, x, 1.0, 1.0);  // + (P_H - P) e
   lev.smoother->smooth(b, x, false);  // post-smoothing (same polynomial: symmetric cycle)
 }
 

@@ -7,7 +7,10 @@
 // interpolation between nested rectangle meshes); the coarse operators are Galerkin products
 // A_l = P_l^T A_{l-1} P_l and N_l = N_{l-1} P_l, formed once. Since P^T (N^T diag(c) N) P =
 // N_l^T diag(c) N_l, a new active set only changes c: the hierarchy stays, and refresh() redoes
-// the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation). Each
+// the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation). With
+// smoothed aggregation's tentative prolongation at hand, refresh() also smooths the fine
+// prolongation's rows at the active nodes again with H (contact_prolongation.hpp), and the coarse
+// contact rows follow it: N_l = N P_H P_1 ... (the coarse A_l stay). Each
 // level's eigenvalue is A_l's, estimated once, or the contact zone's, estimated on the unknowns
 // that the active rows touch (contact_zone_estimate.hpp), whichever is larger: no Lanczos steps
 // on a whole level per active set (refresh()).
@@ -21,6 +24,7 @@
 
 #include "signorini/core/timing_table.hpp"
 #include "signorini/iterative/chebyshev_smoother.hpp"
+#include "signorini/iterative/contact_prolongation.hpp"
 #include "signorini/iterative/multigrid_hierarchy.hpp"
 
 namespace signorini {
@@ -40,6 +44,13 @@ struct MultigridOptions {
   /// (MultigridHierarchy::jacobi_radii): the first refresh then skips those levels' Lanczos
   /// steps (12 products with each). Missing or 0: estimated here.
   std::vector<double> lambda_max;
+  /// Smoothed aggregation's fine tentative prolongation and its omega
+  /// (MultigridHierarchy::fine_tentative): with them, each refresh smooths the fine
+  /// prolongation's rows at the active contact nodes with the Newton matrix
+  /// (contact_prolongation.hpp). Null, or contact_prolongation false: A's prolongation alone.
+  const SparseMatrix* fine_tentative = nullptr;
+  double fine_omega = 0.0;
+  bool contact_prolongation = true;
 };
 
 class MultigridPreconditioner final : public Preconditioner {
@@ -74,11 +85,18 @@ class MultigridPreconditioner final : public Preconditioner {
   /// The V-cycle as last recorded by apply() (null before the first apply() after a refresh()):
   /// on a GPU, is_graph() tells whether it replays as one CUDA graph.
   [[nodiscard]] const RecordedWork* recorded_cycle() const { return recorded_.get(); }
+  /// P_H - P of the last refresh (contact_prolongation.hpp): the fine prolongation's change for
+  /// the active set; no nonzeros without contact, or where it is off.
+  [[nodiscard]] const SparseMatrix& fine_prolongation_change() const;
+  /// The contact rows of level `level` as the V-cycle uses them (N P_H P_1 ... on the coarse
+  /// levels), on the host.
+  [[nodiscard]] SparseMatrix contact_rows(std::size_t level) const;
 
  private:
   struct Level;
   void cycle(std::size_t l, const DeviceVector& b, DeviceVector& x);
   void factor_coarsest();
+  void update_contact_prolongation(const Vector& c);
   void coarse_solve(const DeviceVector& b, DeviceVector& x);
 
   Backend& backend_;
@@ -99,6 +117,11 @@ class MultigridPreconditioner final : public Preconditioner {
   double block_unknowns_bound(Index block);
   Index block_bound_size_ = 0;
   double block_bound_ = 0.0;
+  // The fine prolongation smoothed with H at the active contact nodes (null where off), the
+  // fine contact rows, and whether the levels now hold a change.
+  std::unique_ptr<ContactProlongation> contact_prolongation_;
+  SparseMatrix fine_N_;
+  bool prolongation_changed_ = false;
   // The coarsest level's solve: on a GPU its explicit inverse, applied by one dense product; on
   // the CPU its Cholesky factor, applied by two triangular solves (as fast for one vector, and
   // the inverse cost twice the factorisation again at every refresh).

@@ -16,11 +16,7 @@ PenalizedOperator::PenalizedOperator(Backend& backend, const SparseMatrix& A, co
   if (A.cols() != n_ || N.cols() != n_)
     throw NumericalError("penalized operator: sizes of A and N do not match");
   A_ = backend.upload_symmetric(A, arrays);
-  N_ = backend.upload(N);
-  Nt_host_ = N.transpose();
-  const SparseMatrix& Nt = Nt_host_;
-  Nt_ = backend.upload(Nt);
-  N2t_ = backend.upload(SparseMatrix(Nt.cwiseAbs2()));
+  set_contact_matrix(N);
   diag_a_ = to_device(backend, Vector(A.diagonal()));
   c_host_ = Vector::Zero(nc_);
   c_ = DeviceVector(backend, nc_);
@@ -55,6 +51,15 @@ void PenalizedOperator::apply_contact(const DeviceVector& x, DeviceVector& y) {
 void PenalizedOperator::apply_contact_transpose(const DeviceVector& w, DeviceVector& y,
                                                 double beta) {
   backend_.spmv(*Nt_, w, y, 1.0, beta);
+}
+
+void PenalizedOperator::set_contact_matrix(const SparseMatrix& N) {
+  if (N.rows() != nc_ || N.cols() != n_)
+    throw NumericalError("penalized operator: contact rows of the wrong size");
+  N_ = backend_.upload(N);
+  Nt_host_ = N.transpose();
+  Nt_ = backend_.upload(Nt_host_);
+  N2t_ = backend_.upload(SparseMatrix(Nt_host_.cwiseAbs2()));
 }
 
 void PenalizedOperator::set_weights(const Vector& c) {

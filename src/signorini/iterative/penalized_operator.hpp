@@ -37,6 +37,9 @@ class PenalizedOperator final : public LinearOperator {
   void apply_contact(const DeviceVector& x, DeviceVector& y);
   void apply_contact_transpose(const DeviceVector& w, DeviceVector& y, double beta = 0.0);
 
+  /// Replaces N by another matrix of the same shape (a coarse level's contact rows carried down
+  /// by another fine prolongation, contact_prolongation.hpp); the weights stay.
+  void set_contact_matrix(const SparseMatrix& N);
   /// Sets c (n_c values, host), and drops block weights.
   void set_weights(const Vector& c);
   /// Friction in 3D (docs/method.md, "Friction"): H = A + N^T W N with W block diagonal, the

@@ -424,7 +424,12 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
     // P = (I - omega D^{-1} A) P_tent, omega = 4 / (3 rho(D^{-1} A)) (Vanek et al., eq. 4.4).
     const double radius = jacobi_spectral_radius(Al);
     h.jacobi_radii.push_back(radius);
-    SparseMatrix P = smoothed_prolongation(Al, t.tentative, 4.0 / (3.0 * radius));
+    const double omega = 4.0 / (3.0 * radius);
+    SparseMatrix P = smoothed_prolongation(Al, t.tentative, omega);
+    if (h.prolongations.empty()) {  // (for the contact prolongation, contact_prolongation.hpp)
+      h.fine_tentative = std::move(t.tentative);
+      h.fine_omega = omega;
+    }
     h.coarse_operators.push_back(galerkin_product(Al, P));
     h.prolongations.push_back(std::move(P));
     current = &h.coarse_operators.back();

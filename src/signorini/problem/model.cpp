@@ -14,6 +14,7 @@
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/node_ordering.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/iterative/contact_prolongation.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/parallel/distributed_engine.hpp"
@@ -611,6 +612,8 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
     // (The plan changes neither the coarsening nor the smoother, which the hierarchy reads from
     // the spec.)
     multigrid = make_model_hierarchy(spec, mesh, dofs, problem.A);
+    // (Of the tentative prolongation, the rows of the contact nodes' unknowns.)
+    keep_contact_rows(multigrid, problem.contact.N, free_dof_nodes(dofs));
   }
   std::vector<ClampedPart> clamps = clamped_parts(spec.clamps, spec.displacements, owner);
   auto gap_shifts = contact_gap_shift(problem.contact, dofs, groups);

@@ -1,0 +1,180 @@
+// The fine prolongation smoothed with the Newton matrix at the active contact nodes
+// (iterative/contact_prolongation.hpp) against the smoothing done again from scratch, and its
+// use by the multigrid preconditioner.
+
+#include "signorini/iterative/contact_prolongation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "signorini/backend/host_backend.hpp"
+#include "signorini/core/error.hpp"
+#include "signorini/iterative/multigrid_preconditioner.hpp"
+#include "signorini/iterative/pcg.hpp"
+#include "signorini/iterative/penalized_operator.hpp"
+#include "signorini/iterative/smoothed_aggregation.hpp"
+#include "test_problems.hpp"
+
+namespace signorini {
+namespace {
+
+// A clamped block of 8 x 8 x 6 hexahedra, its smoothed-aggregation hierarchy, and contact rows
+// on the nodes of its top face with an oblique unit normal (all three components), the first
+// half of them active with a stiff weight (ten times the diagonal).
+struct Case {
+  testing::ClampedBlock block = testing::clamped_block(8, 8, 6);
+  MultigridHierarchy h;
+  SparseMatrix N;
+  Vector c;
+  Case() {
+    h = smoothed_aggregation_hierarchy(block.A, block.modes, free_dof_nodes(block.dofs));
+    const std::vector<Index> node_of = free_dof_nodes(block.dofs);
+    const double top = block.mesh.coordinates().row(2).maxCoeff();
+    const Eigen::Vector3d normal(0.3, -0.4, std::sqrt(1.0 - 0.25));
+    std::vector<Eigen::Triplet<double, int>> t;
+    int rows = 0;
+    for (Index i = 0; i + 2 < static_cast<Index>(node_of.size()); ++i) {
+      const Index node = node_of[static_cast<std::size_t>(i)];
+      if (block.mesh.node(node)(2) < top ||
+          (i > 0 && node_of[static_cast<std::size_t>(i - 1)] == node))
+        continue;  // the first unknown of each top node (its three are consecutive)
+      for (int k = 0; k < 3; ++k) t.emplace_back(rows, static_cast<int>(i + k), normal(k));
+      ++rows;
+    }
+    N = SparseMatrix(rows, block.A.cols());
+    N.setFromTriplets(t.begin(), t.end());
+    c = Vector::Zero(rows);
+    for (Index j = 0; j < rows / 2; ++j) c(j) = 10.0 * block.A.diagonal().maxCoeff();
+  }
+  [[nodiscard]] SparseMatrix newton_matrix() const {
+    return SparseMatrix(block.A + SparseMatrix(N.transpose() * c.asDiagonal() * N));
+  }
+};
+
+double max_abs(const SparseMatrix& M) {
+  double m = 0.0;
+  for (Index k = 0; k < M.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(M, k); it; ++it) m = std::max(m, std::abs(it.value()));
+  return m;
+}
+
+TEST(ContactProlongation, IsTheTentativeProlongationSmoothedWithTheNewtonMatrix) {
+  const Case k;
+  ASSERT_FALSE(k.h.prolongations.empty());
+  ASSERT_GT(k.h.fine_omega, 0.0);
+  ASSERT_GT(k.N.rows(), 20);
+  const SparseMatrix& P = k.h.prolongations.front();
+  const ContactProlongation cp(k.block.A, k.N, P, k.h.fine_tentative, k.h.fine_omega);
+  const SparseMatrix change = cp.change(k.c);
+  // P_H = (I - omega D_H^-1 H) T from scratch, H = A + N^T diag(c) N.
+  const SparseMatrix PH =
+      smoothed_prolongation(k.newton_matrix(), k.h.fine_tentative, k.h.fine_omega);
+  const SparseMatrix error = PH - (P + change);
+  EXPECT_LT(max_abs(error), 1e-13 * max_abs(PH));
+  EXPECT_GT(max_abs(change), 0.01 * max_abs(P));  // (a real change)
+  // Only the rows of the active rows' unknowns change.
+  std::vector<char> active_unknown(static_cast<std::size_t>(P.rows()), 0);
+  for (Index j = 0; j < k.N.rows(); ++j)
+    if (k.c(j) > 0.0)
+      for (Index i = 0; i < k.N.cols(); ++i)
+        if (k.N.coeff(j, i) != 0.0) active_unknown[static_cast<std::size_t>(i)] = 1;
+  for (Index col = 0; col < change.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(change, col); it; ++it)
+      EXPECT_TRUE(active_unknown[static_cast<std::size_t>(it.row())]) << it.row();
+  // No active row, no change.
+  EXPECT_EQ(cp.change(Vector::Zero(k.N.rows())).nonZeros(), 0);
+}
+
+TEST(ContactProlongation, NeedsOnlyTheContactRowsOfTheTentativeProlongation) {
+  const Case k;
+  MultigridHierarchy kept = k.h;
+  const std::vector<Index> node_of = free_dof_nodes(k.block.dofs);
+  keep_contact_rows(kept, k.N, node_of);
+  EXPECT_LT(kept.fine_tentative.nonZeros(), k.h.fine_tentative.nonZeros() / 4);
+  // All of a touched node's unknowns are kept, also those that its rows leave out: rows of N
+  // with their first component alone keep the same rows.
+  SparseMatrix first_component = k.N;
+  first_component.prune([](Index, Index col, double) { return col % 3 == 0; });
+  ASSERT_GT(first_component.nonZeros(), 0);
+  MultigridHierarchy by_nodes = k.h;
+  keep_contact_rows(by_nodes, first_component, node_of);
+  EXPECT_EQ(by_nodes.fine_tentative.nonZeros(), kept.fine_tentative.nonZeros());
+  const SparseMatrix& P = k.h.prolongations.front();
+  const SparseMatrix whole =
+      ContactProlongation(k.block.A, k.N, P, k.h.fine_tentative, k.h.fine_omega).change(k.c);
+  const SparseMatrix part =
+      ContactProlongation(k.block.A, k.N, P, kept.fine_tentative, k.h.fine_omega).change(k.c);
+  EXPECT_EQ(max_abs(SparseMatrix(whole - part)), 0.0);
+  // A tentative prolongation without the rows that N touches is refused.
+  MultigridHierarchy none = k.h;
+  keep_contact_rows(none, SparseMatrix(k.N.rows(), k.N.cols()), free_dof_nodes(k.block.dofs));
+  EXPECT_THROW(ContactProlongation(k.block.A, k.N, P, none.fine_tentative, k.h.fine_omega),
+               NumericalError);
+}
+
+TEST(ContactProlongation, TheMultigridCarriesTheContactRowsDownWithIt) {
+  const Case k;
+  HostBackend be;
+  PenalizedOperator H(be, k.block.A, k.N);
+  MultigridOptions o;
+  o.lambda_max = k.h.jacobi_radii;
+  o.fine_tentative = &k.h.fine_tentative;
+  o.fine_omega = k.h.fine_omega;
+  MultigridPreconditioner M(H, k.block.A, k.N, k.h.prolongations, o, k.h.coarse_operators);
+  EXPECT_EQ(M.fine_prolongation_change().nonZeros(), 0);  // set up for c = 0
+  H.set_weights(k.c);
+  M.refresh();
+  const SparseMatrix& P = k.h.prolongations.front();
+  const SparseMatrix change =
+      ContactProlongation(k.block.A, k.N, P, k.h.fine_tentative, k.h.fine_omega).change(k.c);
+  EXPECT_EQ(max_abs(SparseMatrix(M.fine_prolongation_change() - change)), 0.0);
+  // Level l's contact rows are N P_H P_1 ... P_(l-1), of the active rows (the others, whose
+  // c_j = 0, are left out).
+  Vector is_active = Vector::Zero(k.N.rows());
+  for (Index j = 0; j < k.N.rows(); ++j) is_active(j) = k.c(j) > 0.0 ? 1.0 : 0.0;
+  SparseMatrix expected = is_active.asDiagonal() * (k.N * SparseMatrix(P + change));
+  for (std::size_t l = 1; l <= k.h.prolongations.size(); ++l) {
+    const SparseMatrix rows = M.contact_rows(l);
+    EXPECT_LT(max_abs(SparseMatrix(rows - expected)), 1e-12 * max_abs(expected)) << l;
+    if (l < k.h.prolongations.size()) expected = expected * k.h.prolongations[l];
+  }
+  // The V-cycle stays symmetric positive definite (restriction and prolongation transposes).
+  const Index n = k.block.A.rows();
+  const Vector x = Vector::LinSpaced(n, 0.0, 1.0).array().sin();
+  const Vector y = Vector::LinSpaced(n, -2.0, 3.0).array().cos();
+  DeviceVector mx(be, n), my(be, n);
+  M.apply(to_device(be, x), mx);
+  M.apply(to_device(be, y), my);
+  const double xMy = x.dot(to_host(my)), yMx = y.dot(to_host(mx));
+  EXPECT_NEAR(xMy, yMx, 1e-10 * std::abs(xMy));
+  EXPECT_GT(x.dot(to_host(mx)), 0.0);
+  EXPECT_GT(y.dot(to_host(my)), 0.0);
+  // Back to no contact: A's prolongation and contact rows again.
+  H.set_weights(Vector::Zero(k.N.rows()));
+  M.refresh();
+  EXPECT_EQ(M.fine_prolongation_change().nonZeros(), 0);
+  EXPECT_EQ(max_abs(SparseMatrix(M.contact_rows(1) - k.N * P)), 0.0);
+}
+
+TEST(ContactProlongation, AMultigridWithoutTheTentativesContactRowsKeepsTheStiffnessProlongation) {
+  const Case k;
+  MultigridHierarchy none = k.h;
+  keep_contact_rows(none, SparseMatrix(k.N.rows(), k.N.cols()),
+                    free_dof_nodes(k.block.dofs));  // (rows of no unknown kept)
+  none.fine_tentative.coeffRef(0, 0) = 1.0;         // (not empty, but not N's rows)
+  HostBackend be;
+  PenalizedOperator H(be, k.block.A, k.N);
+  MultigridOptions o;
+  o.fine_tentative = &none.fine_tentative;
+  o.fine_omega = none.fine_omega;
+  MultigridPreconditioner M(H, k.block.A, k.N, k.h.prolongations, o, k.h.coarse_operators);
+  H.set_weights(k.c);
+  M.refresh();
+  EXPECT_EQ(M.fine_prolongation_change().nonZeros(), 0);
+  EXPECT_EQ(max_abs(SparseMatrix(M.contact_rows(1) - k.N * k.h.prolongations.front())), 0.0);
+}
+
+}  // namespace
+}  // namespace signorini
