@@ -15,6 +15,7 @@
 #include "signorini/iterative/pcg.hpp"
 #include "signorini/iterative/penalized_operator.hpp"
 #include "signorini/iterative/smoothed_aggregation.hpp"
+#include "symmetric_preconditioner.hpp"
 #include "test_problems.hpp"
 
 namespace signorini {
@@ -141,16 +142,7 @@ TEST(ContactProlongation, TheMultigridCarriesTheContactRowsDownWithIt) {
     if (l < k.h.prolongations.size()) expected = expected * k.h.prolongations[l];
   }
   // The V-cycle stays symmetric positive definite (restriction and prolongation transposes).
-  const Index n = k.block.A.rows();
-  const Vector x = Vector::LinSpaced(n, 0.0, 1.0).array().sin();
-  const Vector y = Vector::LinSpaced(n, -2.0, 3.0).array().cos();
-  DeviceVector mx(be, n), my(be, n);
-  M.apply(to_device(be, x), mx);
-  M.apply(to_device(be, y), my);
-  const double xMy = x.dot(to_host(my)), yMx = y.dot(to_host(mx));
-  EXPECT_NEAR(xMy, yMx, 1e-10 * std::abs(xMy));
-  EXPECT_GT(x.dot(to_host(mx)), 0.0);
-  EXPECT_GT(y.dot(to_host(my)), 0.0);
+  testing::expect_symmetric_positive(be, M, k.block.A.rows());
   // Back to no contact: A's prolongation and contact rows again.
   H.set_weights(Vector::Zero(k.N.rows()));
   M.refresh();

@@ -16,6 +16,7 @@
 #include "signorini/iterative/pcg.hpp"
 #include "signorini/linalg/cholmod_solver.hpp"
 #include "signorini/problem/rectangle_hierarchy.hpp"
+#include "symmetric_preconditioner.hpp"
 #include "test_problems.hpp"
 
 namespace signorini {
@@ -224,16 +225,7 @@ TEST(MultigridPreconditioner, IsSymmetricPositiveDefinite) {
   Cycle cycle(f);
   auto& [be, op, mg] = cycle;
   EXPECT_EQ(mg.level_sizes().size(), 3U);  // 60x20, 30x10, 15x5
-  const Index n = op.size();
-  const Vector x = Vector::LinSpaced(n, 0.0, 1.0).array().sin();
-  const Vector y = Vector::LinSpaced(n, -2.0, 3.0).array().cos();
-  DeviceVector mx(be, n), my(be, n);
-  mg.apply(to_device(be, x), mx);
-  mg.apply(to_device(be, y), my);
-  const double xMy = x.dot(to_host(my)), yMx = y.dot(to_host(mx));
-  EXPECT_NEAR(xMy, yMx, 1e-10 * std::abs(xMy));
-  EXPECT_GT(x.dot(to_host(mx)), 0.0);
-  EXPECT_GT(y.dot(to_host(my)), 0.0);
+  testing::expect_symmetric_positive(be, mg, op.size());
 }
 
 // A level small enough to be the dense coarsest one, alone: the preconditioner is then the exact
