@@ -120,9 +120,8 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   }
   for (std::size_t l = 0; l < levels_.size() && l < options_.lambda_max.size(); ++l)
     if (levels_[l]->smoother) levels_[l]->lambda_without_contact = options_.lambda_max[l];
-  if (options_.contact_prolongation && options_.fine_tentative != nullptr &&
-      options_.fine_tentative->nonZeros() > 0 && options_.fine_omega > 0.0 &&
-      !prolongations.empty() && N.rows() > 0) {
+  if (options_.fine_tentative != nullptr && options_.fine_tentative->nonZeros() > 0 &&
+      options_.fine_omega > 0.0 && !prolongations.empty() && N.rows() > 0) {
     try {
       contact_prolongation_ = std::make_unique<ContactProlongation>(
           A, N, prolongations.front(), *options_.fine_tentative, options_.fine_omega);
@@ -181,30 +180,21 @@ void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
   // Scalar weights only: friction's block weights keep A's prolongation.
   SparseMatrix change;
   if (levels_.front()->op->block_size() == 1) change = contact_prolongation_->change(c);
+  const bool changed = change.nonZeros() > 0;
+  if (!changed && !prolongation_changed_) return;  // (A's prolongation, and it is in place)
   Level& fine = *levels_.front();
-  const bool dense_coarsest = !levels_.back()->smoother;
   fine.dP.reset();
   fine.dPt.reset();
-  fine.dP_host = SparseMatrix();
-  if (change.nonZeros() == 0) {
-    if (!prolongation_changed_) return;
-    for (std::size_t l = 1; l < levels_.size(); ++l) {
-      Level& lev = *levels_[l];
-      lev.op->set_contact_matrix(lev.N);
-      if (lev.on_host) lev.on_host->set_contact_matrix(lev.N);
-    }
-    if (dense_coarsest) coarse_Nt_ = levels_.back()->N.transpose();
-    prolongation_changed_ = false;
-    return;
-  }
-  // The transfers P + (P_H - P): the restriction by (P_H - P)^T's rows (P's CSC arrays shared on
-  // the CPU, as P^T's), the prolongation by P_H - P's own rows.
   fine.dP_host = std::move(change);
-  fine.dPt = backend_.upload_transpose(fine.dP_host, HostArrays::Share);
-  fine.dP = backend_.upload(fine.dP_host);
+  if (changed) {
+    // The transfers P + (P_H - P): the restriction by (P_H - P)^T's rows (its CSC arrays shared
+    // on the CPU, as P's are for P^T), the prolongation by P_H - P's own rows.
+    fine.dPt = backend_.upload_transpose(fine.dP_host, HostArrays::Share);
+    fine.dP = backend_.upload(fine.dP_host);
+  }
   // The contact rows on the coarse levels: N P_H P_1 ... P_l = N_l + (N (P_H - P)) P_1 ... P_l,
-  // so that the coarse contact terms are those of P_H (the coarse A_l stay A's).
-  // Only the active rows count (c_j = 0 elsewhere), so the others are left out: at 434,235
+  // so that the coarse contact terms are those of P_H (the coarse A_l stay A's); without a change
+  // N_l again. With a change only the active rows are kept (c_j = 0 elsewhere): at 434,235
   // unknowns on Hertz's ball about 1,000 of 7,366 rows, each a few hundred coarse columns, whose
   // copies and uploads per refresh are then a seventh (and so are the products per V-cycle).
   SparseMatrix D = fine_N_ * fine.dP_host;
@@ -212,16 +202,17 @@ void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
   for (std::size_t l = 1; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];
     SparseMatrix Nl = lev.N;
-    Nl.prune(active_row);
-    Nl += D;
+    if (changed) {
+      Nl.prune(active_row);
+      Nl += D;
+    }
     lev.op->set_contact_matrix(Nl);
-    if (lev.on_host) lev.on_host->set_contact_matrix(Nl);
     if (l + 1 < levels_.size())
       D = D * *lev.P_host;
-    else if (dense_coarsest)
+    else if (!lev.smoother)  // (the dense coarsest level's factor reads N_L^T)
       coarse_Nt_ = Nl.transpose();
   }
-  prolongation_changed_ = true;
+  prolongation_changed_ = changed;
 }
 
 void MultigridPreconditioner::refresh() {
@@ -240,6 +231,8 @@ void MultigridPreconditioner::refresh() {
     }
     if (lev.host_smoother) {  // (the host copy is read by its estimate alone)
       lev.on_host->set_weights(c);
+      if (contact_prolongation_)  // (the level's contact rows as the V-cycle has them)
+        lev.on_host->set_contact_matrix(SparseMatrix(lev.op->contact_transpose().transpose()));
       lev.host_smoother->refresh();
       lev.smoother->refresh(lev.host_smoother->lambda_max());
     } else {

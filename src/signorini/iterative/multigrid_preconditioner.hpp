@@ -47,10 +47,9 @@ struct MultigridOptions {
   /// Smoothed aggregation's fine tentative prolongation and its omega
   /// (MultigridHierarchy::fine_tentative): with them, each refresh smooths the fine
   /// prolongation's rows at the active contact nodes with the Newton matrix
-  /// (contact_prolongation.hpp). Null, or contact_prolongation false: A's prolongation alone.
+  /// (contact_prolongation.hpp). Null: A's prolongation alone.
   const SparseMatrix* fine_tentative = nullptr;
   double fine_omega = 0.0;
-  bool contact_prolongation = true;
 };
 
 class MultigridPreconditioner final : public Preconditioner {
