@@ -1,4 +1,4 @@
-// The fine prolongation smoothed with the Newton matrix at the active contact nodes
+// The prolongations smoothed with the Newton matrix at the active contact unknowns
 // (iterative/contact_prolongation.hpp) against the smoothing done again from scratch, and its
 // use by the multigrid preconditioner.
 
@@ -29,8 +29,11 @@ struct Case {
   MultigridHierarchy h;
   SparseMatrix N;
   Vector c;
-  Case() {
-    h = smoothed_aggregation_hierarchy(block.A, block.modes, free_dof_nodes(block.dofs));
+  // max_coarse: the coarsest level's size (the default leaves one prolongation; 60 three).
+  explicit Case(Index max_coarse = SmoothedAggregationOptions{}.max_coarse_unknowns) {
+    SmoothedAggregationOptions options;
+    options.max_coarse_unknowns = max_coarse;
+    h = smoothed_aggregation_hierarchy(block.A, block.modes, free_dof_nodes(block.dofs), options);
     const std::vector<Index> node_of = free_dof_nodes(block.dofs);
     const double top = block.mesh.coordinates().row(2).maxCoeff();
     const Eigen::Vector3d normal(0.3, -0.4, std::sqrt(1.0 - 0.25));
@@ -64,14 +67,14 @@ double max_abs(const SparseMatrix& M) {
 TEST(ContactProlongation, IsTheTentativeProlongationSmoothedWithTheNewtonMatrix) {
   const Case k;
   ASSERT_FALSE(k.h.prolongations.empty());
-  ASSERT_GT(k.h.fine_omega, 0.0);
+  ASSERT_GT(k.h.omegas[0], 0.0);
   ASSERT_GT(k.N.rows(), 20);
   const SparseMatrix& P = k.h.prolongations.front();
-  const ContactProlongation cp(k.block.A, k.N, P, k.h.fine_tentative, k.h.fine_omega);
+  const ContactProlongation cp(k.block.A, k.N, P, k.h.tentatives[0], k.h.omegas[0]);
   const SparseMatrix change = cp.change(k.c);
   // P_H = (I - omega D_H^-1 H) T from scratch, H = A + N^T diag(c) N.
   const SparseMatrix PH =
-      smoothed_prolongation(k.newton_matrix(), k.h.fine_tentative, k.h.fine_omega);
+      smoothed_prolongation(k.newton_matrix(), k.h.tentatives[0], k.h.omegas[0]);
   const SparseMatrix error = PH - (P + change);
   EXPECT_LT(max_abs(error), 1e-13 * max_abs(PH));
   EXPECT_GT(max_abs(change), 0.01 * max_abs(P));  // (a real change)
@@ -93,7 +96,7 @@ TEST(ContactProlongation, NeedsOnlyTheContactRowsOfTheTentativeProlongation) {
   MultigridHierarchy kept = k.h;
   const std::vector<Index> node_of = free_dof_nodes(k.block.dofs);
   keep_contact_rows(kept, k.N, node_of);
-  EXPECT_LT(kept.fine_tentative.nonZeros(), k.h.fine_tentative.nonZeros() / 4);
+  EXPECT_LT(kept.tentatives[0].nonZeros(), k.h.tentatives[0].nonZeros() / 4);
   // All of a touched node's unknowns are kept, also those that its rows leave out: rows of N
   // with their first component alone keep the same rows.
   SparseMatrix first_component = k.N;
@@ -101,53 +104,65 @@ TEST(ContactProlongation, NeedsOnlyTheContactRowsOfTheTentativeProlongation) {
   ASSERT_GT(first_component.nonZeros(), 0);
   MultigridHierarchy by_nodes = k.h;
   keep_contact_rows(by_nodes, first_component, node_of);
-  EXPECT_EQ(by_nodes.fine_tentative.nonZeros(), kept.fine_tentative.nonZeros());
+  EXPECT_EQ(by_nodes.tentatives[0].nonZeros(), kept.tentatives[0].nonZeros());
   const SparseMatrix& P = k.h.prolongations.front();
   const SparseMatrix whole =
-      ContactProlongation(k.block.A, k.N, P, k.h.fine_tentative, k.h.fine_omega).change(k.c);
+      ContactProlongation(k.block.A, k.N, P, k.h.tentatives[0], k.h.omegas[0]).change(k.c);
   const SparseMatrix part =
-      ContactProlongation(k.block.A, k.N, P, kept.fine_tentative, k.h.fine_omega).change(k.c);
+      ContactProlongation(k.block.A, k.N, P, kept.tentatives[0], k.h.omegas[0]).change(k.c);
   EXPECT_EQ(max_abs(SparseMatrix(whole - part)), 0.0);
   // A tentative prolongation without the rows that N touches is refused.
   MultigridHierarchy none = k.h;
   keep_contact_rows(none, SparseMatrix(k.N.rows(), k.N.cols()), free_dof_nodes(k.block.dofs));
-  EXPECT_THROW(ContactProlongation(k.block.A, k.N, P, none.fine_tentative, k.h.fine_omega),
+  EXPECT_THROW(ContactProlongation(k.block.A, k.N, P, none.tentatives[0], k.h.omegas[0]),
                NumericalError);
 }
 
-TEST(ContactProlongation, TheMultigridCarriesTheContactRowsDownWithIt) {
-  const Case k;
+TEST(ContactProlongation, TheMultigridSmoothsEveryLevelAndCarriesTheContactRowsDown) {
+  const Case k(60);
+  ASSERT_GE(k.h.prolongations.size(), 2U);
   HostBackend be;
   PenalizedOperator H(be, k.block.A, k.N);
   MultigridOptions o;
   o.lambda_max = k.h.jacobi_radii;
-  o.fine_tentative = &k.h.fine_tentative;
-  o.fine_omega = k.h.fine_omega;
+  o.tentatives = &k.h.tentatives;
+  o.omegas = k.h.omegas;
   MultigridPreconditioner M(H, k.block.A, k.N, k.h.prolongations, o, k.h.coarse_operators);
-  EXPECT_EQ(M.fine_prolongation_change().nonZeros(), 0);  // set up for c = 0
+  for (std::size_t l = 0; l < k.h.prolongations.size(); ++l)
+    EXPECT_EQ(M.prolongation_change(l).nonZeros(), 0) << l;  // set up for c = 0
   H.set_weights(k.c);
   M.refresh();
-  const SparseMatrix& P = k.h.prolongations.front();
-  const SparseMatrix change =
-      ContactProlongation(k.block.A, k.N, P, k.h.fine_tentative, k.h.fine_omega).change(k.c);
-  EXPECT_EQ(max_abs(SparseMatrix(M.fine_prolongation_change() - change)), 0.0);
-  // Level l's contact rows are N P_H P_1 ... P_(l-1), of the active rows (the others, whose
-  // c_j = 0, are left out).
+  // Level by level from scratch: the current contact rows N_l (the active rows of N P_H,0 ...
+  // P_H,l-1; the others, whose c_j = 0, are left out), H_l = A_l + N_l^T diag(c) N_l, P_H,l =
+  // (I - omega_l D_H,l^-1 H_l) T_l; the preconditioner's change must be P_H,l - P_l.
   Vector is_active = Vector::Zero(k.N.rows());
   for (Index j = 0; j < k.N.rows(); ++j) is_active(j) = k.c(j) > 0.0 ? 1.0 : 0.0;
-  SparseMatrix expected = is_active.asDiagonal() * (k.N * SparseMatrix(P + change));
-  for (std::size_t l = 1; l <= k.h.prolongations.size(); ++l) {
-    const SparseMatrix rows = M.contact_rows(l);
-    EXPECT_LT(max_abs(SparseMatrix(rows - expected)), 1e-12 * max_abs(expected)) << l;
-    if (l < k.h.prolongations.size()) expected = expected * k.h.prolongations[l];
+  SparseMatrix Nl = is_active.asDiagonal() * k.N;
+  const SparseMatrix* Al = &k.block.A;
+  for (std::size_t l = 0; l < k.h.prolongations.size(); ++l) {
+    const SparseMatrix& P = k.h.prolongations[l];
+    if (l > 0) {
+      const SparseMatrix rows = M.contact_rows(l);
+      EXPECT_LT(max_abs(SparseMatrix(rows - Nl)), 1e-12 * max_abs(Nl)) << l;
+    }
+    const SparseMatrix Hl = *Al + SparseMatrix(Nl.transpose() * k.c.asDiagonal() * Nl);
+    const SparseMatrix PH = smoothed_prolongation(Hl, k.h.tentatives[l], k.h.omegas[l]);
+    const SparseMatrix& change = M.prolongation_change(l);
+    EXPECT_LT(max_abs(SparseMatrix(PH - (P + change))), 1e-12 * max_abs(PH)) << l;
+    EXPECT_GT(max_abs(change), 1e-3 * max_abs(P)) << l;  // (a real change on every level)
+    Nl = Nl * PH;
+    Al = &k.h.coarse_operators[l];
   }
+  EXPECT_LT(max_abs(SparseMatrix(M.contact_rows(k.h.prolongations.size()) - Nl)),
+            1e-12 * max_abs(Nl));
   // The V-cycle stays symmetric positive definite (restriction and prolongation transposes).
   testing::expect_symmetric_positive(be, M, k.block.A.rows());
-  // Back to no contact: A's prolongation and contact rows again.
+  // Back to no contact: A's prolongations and contact rows again.
   H.set_weights(Vector::Zero(k.N.rows()));
   M.refresh();
-  EXPECT_EQ(M.fine_prolongation_change().nonZeros(), 0);
-  EXPECT_EQ(max_abs(SparseMatrix(M.contact_rows(1) - k.N * P)), 0.0);
+  for (std::size_t l = 0; l < k.h.prolongations.size(); ++l)
+    EXPECT_EQ(M.prolongation_change(l).nonZeros(), 0) << l;
+  EXPECT_EQ(max_abs(SparseMatrix(M.contact_rows(1) - k.N * k.h.prolongations.front())), 0.0);
 }
 
 TEST(ContactProlongation, AMultigridWithoutTheTentativesContactRowsKeepsTheStiffnessProlongation) {
@@ -155,16 +170,16 @@ TEST(ContactProlongation, AMultigridWithoutTheTentativesContactRowsKeepsTheStiff
   MultigridHierarchy none = k.h;
   keep_contact_rows(none, SparseMatrix(k.N.rows(), k.N.cols()),
                     free_dof_nodes(k.block.dofs));  // (rows of no unknown kept)
-  none.fine_tentative.coeffRef(0, 0) = 1.0;         // (not empty, but not N's rows)
+  none.tentatives[0].coeffRef(0, 0) = 1.0;          // (not empty, but not N's rows)
   HostBackend be;
   PenalizedOperator H(be, k.block.A, k.N);
   MultigridOptions o;
-  o.fine_tentative = &none.fine_tentative;
-  o.fine_omega = none.fine_omega;
+  o.tentatives = &none.tentatives;
+  o.omegas = none.omegas;
   MultigridPreconditioner M(H, k.block.A, k.N, k.h.prolongations, o, k.h.coarse_operators);
   H.set_weights(k.c);
   M.refresh();
-  EXPECT_EQ(M.fine_prolongation_change().nonZeros(), 0);
+  EXPECT_EQ(M.prolongation_change(0).nonZeros(), 0);
   EXPECT_EQ(max_abs(SparseMatrix(M.contact_rows(1) - k.N * k.h.prolongations.front())), 0.0);
 }
 

@@ -38,13 +38,14 @@ struct MultigridHierarchy {
   /// missing or 0 where unknown. The multigrid preconditioner's smoothers need the same numbers
   /// (MultigridOptions::lambda_max).
   std::vector<double> jacobi_radii;
-  /// Smoothed aggregation's fine tentative prolongation T (prolongations[0] = (I - omega D^-1 A)
-  /// T) and its omega, where kept: the multigrid preconditioner smooths T's rows at the active
-  /// contact nodes again with the Newton matrix (contact_prolongation.hpp). Only the rows of the
-  /// unknowns that the contact rows touch are needed (keep_contact_rows(), there); empty: not
-  /// kept.
-  SparseMatrix fine_tentative;
-  double fine_omega = 0.0;
+  /// Smoothed aggregation's tentative prolongations T_l (prolongations[l] = (I - omega_l
+  /// D_l^-1 A_l) T_l) and their omega_l, where kept (empty: not kept; a geometric level has
+  /// none): the multigrid preconditioner smooths their rows at the active contact unknowns of
+  /// each level again with the Newton matrix (contact_prolongation.hpp). Only the rows that the
+  /// contact rows touch are needed: the model keeps only those of the fine T_0 (6 values per
+  /// unknown in 3D; keep_contact_rows()), the coarse ones whole (a few percent of T_0).
+  std::vector<SparseMatrix> tentatives;
+  std::vector<double> omegas;
 };
 
 }  // namespace signorini

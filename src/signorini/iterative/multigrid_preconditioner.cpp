@@ -27,8 +27,10 @@ struct MultigridPreconditioner::Level {
   double lambda_without_contact = 0.0;               // lambda_max(D^-1 A_l) once estimated (c = 0)
   SparseMatrix N;                        // N_l = N P_1 ... P_l as formed (coarse levels)
   const SparseMatrix* P_host = nullptr;  // the prolongation from the next level, on the host
-  // The fine level's prolongation change P_H - P (contact_prolongation.hpp): its host matrix
-  // (whose arrays dPt may share), P_H - P and its transpose on the backend; null: none.
+  // The change P_H - P of the prolongation from the next level (contact_prolongation.hpp): its
+  // maker (null: none), its host matrix (whose arrays dPt may share), P_H - P and its transpose
+  // on the backend (null: none).
+  std::unique_ptr<ContactProlongation> contact_prolongation;
   SparseMatrix dP_host;
   std::unique_ptr<DeviceSparseMatrix> dP, dPt;
 };
@@ -120,18 +122,12 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   }
   for (std::size_t l = 0; l < levels_.size() && l < options_.lambda_max.size(); ++l)
     if (levels_[l]->smoother) levels_[l]->lambda_without_contact = options_.lambda_max[l];
-  if (options_.fine_tentative != nullptr && options_.fine_tentative->nonZeros() > 0 &&
-      options_.fine_omega > 0.0 && !prolongations.empty() && N.rows() > 0) {
-    try {
-      contact_prolongation_ = std::make_unique<ContactProlongation>(
-          A, N, prolongations.front(), *options_.fine_tentative, options_.fine_omega);
-      fine_N_ = N;
-    } catch (const NumericalError&) {
-      // T kept for other contact rows than these (keep_contact_rows with another N): A's
-      // prolongation alone, as without T.
-      contact_prolongation_.reset();
-    }
-  }
+  // Each level's prolongation smoothed with its H_l at the contact unknowns where smoothed
+  // aggregation kept its tentative prolongation: set up at the first refresh with contact
+  // (make_contact_prolongations), so that a linear solve does not pay for it.
+  contact_prolongation_ = options_.tentatives != nullptr && !options_.tentatives->empty() &&
+                          !prolongations.empty() && N.rows() > 0;
+  if (contact_prolongation_) fine_N_ = N;
   refresh();
   backend_.synchronize();
 }
@@ -166,8 +162,10 @@ double MultigridPreconditioner::block_unknowns_bound(Index block) {
   return block_bound_;
 }
 
-const SparseMatrix& MultigridPreconditioner::fine_prolongation_change() const {
-  return levels_.front()->dP_host;
+const SparseMatrix& MultigridPreconditioner::prolongation_change(std::size_t level) const {
+  if (level >= levels_.size())
+    throw NumericalError(fmt::format("multigrid: no level {} of {}", level, levels_.size()));
+  return levels_[level]->dP_host;
 }
 
 SparseMatrix MultigridPreconditioner::contact_rows(std::size_t level) const {
@@ -176,41 +174,95 @@ SparseMatrix MultigridPreconditioner::contact_rows(std::size_t level) const {
   return levels_[level]->op->contact_transpose().transpose();
 }
 
-void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
-  // Scalar weights only: friction's block weights keep A's prolongation.
-  SparseMatrix change;
-  if (levels_.front()->op->block_size() == 1) change = contact_prolongation_->change(c);
-  const bool changed = change.nonZeros() > 0;
-  if (!changed && !prolongation_changed_) return;  // (A's prolongation, and it is in place)
-  Level& fine = *levels_.front();
-  fine.dP.reset();
-  fine.dPt.reset();
-  fine.dP_host = std::move(change);
-  if (changed) {
-    // The transfers P + (P_H - P): the restriction by (P_H - P)^T's rows (its CSC arrays shared
-    // on the CPU, as P's are for P^T), the prolongation by P_H - P's own rows.
-    fine.dPt = backend_.upload_transpose(fine.dP_host, HostArrays::Share);
-    fine.dP = backend_.upload(fine.dP_host);
-  }
-  // The contact rows on the coarse levels: N P_H P_1 ... P_l = N_l + (N (P_H - P)) P_1 ... P_l,
-  // so that the coarse contact terms are those of P_H (the coarse A_l stay A's); without a change
-  // N_l again. With a change only the active rows are kept (c_j = 0 elsewhere): at 434,235
-  // unknowns on Hertz's ball about 1,000 of 7,366 rows, each a few hundred coarse columns, whose
-  // copies and uploads per refresh are then a seventh (and so are the products per V-cycle).
-  SparseMatrix D = fine_N_ * fine.dP_host;
-  const auto active_row = [&c](Index row, Index, double) { return c(row) != 0.0; };
-  for (std::size_t l = 1; l < levels_.size(); ++l) {
+void MultigridPreconditioner::make_contact_prolongations() {
+  // The pattern of level l's contact rows is that of N P_0 ... P_l-1, which holds that of
+  // N P_H,0 ... P_H,l-1 (contact_prolongation.hpp).
+  const std::vector<SparseMatrix>& tentatives = *options_.tentatives;
+  for (std::size_t l = 0;
+       l + 1 < levels_.size() && l < tentatives.size() && l < options_.omegas.size(); ++l) {
+    const SparseMatrix& T = tentatives[l];
+    if (T.nonZeros() == 0 || !(options_.omegas[l] > 0.0)) break;
     Level& lev = *levels_[l];
-    SparseMatrix Nl = lev.N;
-    if (changed) {
-      Nl.prune(active_row);
-      Nl += D;
+    try {
+      lev.contact_prolongation = std::make_unique<ContactProlongation>(
+          *lev.host_A, l == 0 ? fine_N_ : lev.N, *lev.P_host, T, options_.omegas[l]);
+    } catch (const NumericalError&) {
+      // T kept for other contact rows than these (keep_contact_rows with another N): A's
+      // prolongation from here down, as without T.
+      break;
     }
-    lev.op->set_contact_matrix(Nl);
-    if (l + 1 < levels_.size())
-      D = D * *lev.P_host;
-    else if (!lev.smoother)  // (the dense coarsest level's factor reads N_L^T)
-      coarse_Nt_ = Nl.transpose();
+  }
+  contact_prolongations_made_ = true;
+}
+
+void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
+  // Scalar weights only: friction's block weights keep A's prolongations.
+  const bool scalar = levels_.front()->op->block_size() == 1;
+  const bool any_active = scalar && (c.array() > 0.0).any();
+  if (!any_active && !prolongation_changed_) return;  // (A's prolongations, and they are in place)
+  if (!contact_prolongations_made_) {
+    make_contact_prolongations();
+    // (No level could: A's prolongations, and the levels as they are.)
+    contact_prolongation_ = levels_.front()->contact_prolongation != nullptr;
+    if (!contact_prolongation_) return;
+  }
+  // Level by level, finest first: the current contact rows N_l,cur = N P_H,0 ... P_H,l-1 (the
+  // active rows only: c_j = 0 elsewhere) give level l's change P_H,l - P_l, and then
+  //   N_l+1,cur = N_l,cur (P_l + dP_l) = N_l+1 (pruned to the active rows) + D_l+1,
+  //   D_l+1 = D_l P_l + N_l,cur dP_l,   D_0 = 0,
+  // so that the coarse contact terms are those of the P_H (the coarse A_l stay A's). Without an
+  // active row, N_l again. The pruning keeps, at 434,235 unknowns on Hertz's ball, about 1,000
+  // of 7,366 rows, each a few hundred coarse columns, whose copies and uploads per refresh are
+  // then a seventh (and so are the products per V-cycle).
+  const auto active_row = [&c](Index row, Index, double) { return c(row) != 0.0; };
+  SparseMatrix D;  // D_l (empty on the fine level)
+  bool changed = false;
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    Level& lev = *levels_[l];
+    SparseMatrix Nl;  // N_l,cur on a coarse level
+    if (l > 0) {
+      Nl = lev.N;
+      if (any_active) {
+        Nl.prune(active_row);
+        if (D.nonZeros() > 0) Nl += D;
+      }
+      lev.op->set_contact_matrix(Nl);
+    }
+    if (l + 1 == levels_.size()) {
+      if (!lev.smoother) coarse_Nt_ = Nl.transpose();  // (the dense coarsest level's factor)
+      break;
+    }
+    SparseMatrix change;
+    if (any_active && lev.contact_prolongation) {
+      if (l == 0) {
+        change = lev.contact_prolongation->change(c);
+      } else {
+        const SparseMatrix Nt = Nl.transpose();
+        change = lev.contact_prolongation->change(c, &Nt);
+      }
+    }
+    lev.dP.reset();
+    lev.dPt.reset();
+    lev.dP_host = std::move(change);
+    const bool level_changed = lev.dP_host.nonZeros() > 0;
+    if (level_changed) {
+      // The transfers P + (P_H - P): the restriction by (P_H - P)^T's rows (its CSC arrays
+      // shared on the CPU, as P's are for P^T), the prolongation by P_H - P's own rows.
+      lev.dPt = backend_.upload_transpose(lev.dP_host, HostArrays::Share);
+      lev.dP = backend_.upload(lev.dP_host);
+      changed = true;
+    }
+    // D_l+1 (nonzero only below a level with a change).
+    SparseMatrix next;
+    if (D.nonZeros() > 0) next = D * *lev.P_host;
+    if (level_changed) {
+      SparseMatrix term = (l == 0 ? fine_N_ : Nl) * lev.dP_host;
+      if (next.nonZeros() > 0)
+        next += term;
+      else
+        next = std::move(term);
+    }
+    D = std::move(next);
   }
   prolongation_changed_ = changed;
 }

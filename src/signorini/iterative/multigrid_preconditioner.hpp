@@ -8,9 +8,10 @@
 // A_l = P_l^T A_{l-1} P_l and N_l = N_{l-1} P_l, formed once. Since P^T (N^T diag(c) N) P =
 // N_l^T diag(c) N_l, a new active set only changes c: the hierarchy stays, and refresh() redoes
 // the cheap parts (diagonals, eigenvalue estimates, the small coarsest factorisation). With
-// smoothed aggregation's tentative prolongation at hand, refresh() also smooths the fine
-// prolongation's rows at the active nodes again with H (contact_prolongation.hpp), and the coarse
-// contact rows follow it: N_l = N P_H P_1 ... (the coarse A_l stay). Each
+// smoothed aggregation's tentative prolongations at hand, refresh() also smooths each level's
+// prolongation's rows at its active contact unknowns again with that level's H_l
+// (contact_prolongation.hpp), and the coarse contact rows follow them: N_l = N P_H,0 P_H,1 ...
+// (the coarse A_l stay). Each
 // level's eigenvalue is A_l's, estimated once, or the contact zone's, estimated on the unknowns
 // that the active rows touch (contact_zone_estimate.hpp), whichever is larger: no Lanczos steps
 // on a whole level per active set (refresh()).
@@ -44,12 +45,12 @@ struct MultigridOptions {
   /// (MultigridHierarchy::jacobi_radii): the first refresh then skips those levels' Lanczos
   /// steps (12 products with each). Missing or 0: estimated here.
   std::vector<double> lambda_max;
-  /// Smoothed aggregation's fine tentative prolongation and its omega
-  /// (MultigridHierarchy::fine_tentative): with them, each refresh smooths the fine
-  /// prolongation's rows at the active contact nodes with the Newton matrix
-  /// (contact_prolongation.hpp). Null: A's prolongation alone.
-  const SparseMatrix* fine_tentative = nullptr;
-  double fine_omega = 0.0;
+  /// Smoothed aggregation's tentative prolongations and their omegas
+  /// (MultigridHierarchy::tentatives; [l] for prolongation l): with them, each refresh smooths
+  /// each level's prolongation's rows at its active contact unknowns with that level's Newton
+  /// matrix (contact_prolongation.hpp). Null, or a level without one: A's prolongation there.
+  const std::vector<SparseMatrix>* tentatives = nullptr;
+  std::vector<double> omegas;
 };
 
 class MultigridPreconditioner final : public Preconditioner {
@@ -57,8 +58,9 @@ class MultigridPreconditioner final : public Preconditioner {
   /// `fine` is H on the finest level (it must outlive this object); A and N are its host
   /// matrices, `prolongations[l]` maps level l+1 to level l. `coarse_operators[l]`, if given
   /// (non-empty), is the matrix of level l+1, already formed (smoothed aggregation forms them);
-  /// otherwise the Galerkin products are formed here. A, the prolongations and the coarse
-  /// operators must outlive this object: on the CPU they are multiplied in place, not copied.
+  /// otherwise the Galerkin products are formed here. A, the prolongations, the coarse
+  /// operators and options.tentatives must outlive this object: on the CPU they are multiplied
+  /// in place, not copied, and the tentatives are read at the first refresh with contact.
   MultigridPreconditioner(PenalizedOperator& fine, const SparseMatrix& A, const SparseMatrix& N,
                           const std::vector<SparseMatrix>& prolongations, MultigridOptions options,
                           const std::vector<SparseMatrix>& coarse_operators = {});
@@ -84,11 +86,12 @@ class MultigridPreconditioner final : public Preconditioner {
   /// The V-cycle as last recorded by apply() (null before the first apply() after a refresh()):
   /// on a GPU, is_graph() tells whether it replays as one CUDA graph.
   [[nodiscard]] const RecordedWork* recorded_cycle() const { return recorded_.get(); }
-  /// P_H - P of the last refresh (contact_prolongation.hpp): the fine prolongation's change for
-  /// the active set; no nonzeros without contact, or where it is off.
-  [[nodiscard]] const SparseMatrix& fine_prolongation_change() const;
-  /// The contact rows of level `level` as the V-cycle uses them (N P_H P_1 ... on the coarse
-  /// levels), on the host.
+  /// P_H - P of the last refresh (contact_prolongation.hpp) for the prolongation to level
+  /// `level` (0: the fine one) from the next: its change for the active set; no nonzeros
+  /// without contact, or where it is off.
+  [[nodiscard]] const SparseMatrix& prolongation_change(std::size_t level) const;
+  /// The contact rows of level `level` as the V-cycle uses them (N P_H,0 P_H,1 ... on the
+  /// coarse levels), on the host.
   [[nodiscard]] SparseMatrix contact_rows(std::size_t level) const;
 
  private:
@@ -96,6 +99,7 @@ class MultigridPreconditioner final : public Preconditioner {
   void cycle(std::size_t l, const DeviceVector& b, DeviceVector& x);
   void factor_coarsest();
   void update_contact_prolongation(const Vector& c);
+  void make_contact_prolongations();
   void coarse_solve(const DeviceVector& b, DeviceVector& x);
 
   Backend& backend_;
@@ -116,9 +120,11 @@ class MultigridPreconditioner final : public Preconditioner {
   double block_unknowns_bound(Index block);
   Index block_bound_size_ = 0;
   double block_bound_ = 0.0;
-  // The fine prolongation smoothed with H at the active contact nodes (null where off), the
-  // fine contact rows, and whether the levels now hold a change.
-  std::unique_ptr<ContactProlongation> contact_prolongation_;
+  // Whether the levels' prolongations may be smoothed with H at their active contact unknowns
+  // (each Level holds its ContactProlongation, made at the first refresh with contact), whether
+  // they are made, the fine contact rows, and whether the levels now hold a change.
+  bool contact_prolongation_ = false;
+  bool contact_prolongations_made_ = false;
   SparseMatrix fine_N_;
   bool prolongation_changed_ = false;
   // The coarsest level's solve: on a GPU its explicit inverse, applied by one dense product; on

@@ -426,10 +426,8 @@ MultigridHierarchy smoothed_aggregation_hierarchy(const SparseMatrix& A, Matrix 
     h.jacobi_radii.push_back(radius);
     const double omega = 4.0 / (3.0 * radius);
     SparseMatrix P = smoothed_prolongation(Al, t.tentative, omega);
-    if (h.prolongations.empty()) {  // (for the contact prolongation, contact_prolongation.hpp)
-      h.fine_tentative = std::move(t.tentative);
-      h.fine_omega = omega;
-    }
+    h.tentatives.push_back(std::move(t.tentative));  // (for contact_prolongation.hpp)
+    h.omegas.push_back(omega);
     h.coarse_operators.push_back(galerkin_product(Al, P));
     h.prolongations.push_back(std::move(P));
     current = &h.coarse_operators.back();

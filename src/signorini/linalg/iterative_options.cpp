@@ -25,9 +25,9 @@ std::unique_ptr<Preconditioner> make_preconditioner(PenalizedOperator& H, const 
   const MultigridHierarchy& l = levels != nullptr ? *levels : kSingleLevel;
   MultigridOptions o = multigrid_options(options);
   o.lambda_max = l.jacobi_radii;  // the hierarchy's estimates for the same A_l and D_l
-  if (l.fine_tentative.nonZeros() > 0) {
-    o.fine_tentative = &l.fine_tentative;
-    o.fine_omega = l.fine_omega;
+  if (!l.tentatives.empty()) {
+    o.tentatives = &l.tentatives;
+    o.omegas = l.omegas;
   }
   return std::make_unique<MultigridPreconditioner>(H, A, N, l.prolongations, o, l.coarse_operators);
 }
