@@ -25,7 +25,9 @@ struct MultigridPreconditioner::Level {
   std::unique_ptr<ChebyshevSmoother> host_smoother;  // its smoother: only estimates
   const SparseMatrix* host_A = nullptr;              // A_l on the host (the caller's, or `A` above)
   double lambda_without_contact = 0.0;               // lambda_max(D^-1 A_l) once estimated (c = 0)
-  SparseMatrix N;                        // N_l = N P_1 ... P_l as formed (coarse levels)
+  // N_l = N P_0 ... P_l-1 as formed (coarse levels; on the fine level N itself where the
+  // contact prolongation needs it)
+  SparseMatrix N;
   const SparseMatrix* P_host = nullptr;  // the prolongation from the next level, on the host
   // The change P_H - P of the prolongation from the next level (contact_prolongation.hpp): its
   // maker (null: none), its host matrix (whose arrays dPt may share), P_H - P and its transpose
@@ -127,7 +129,7 @@ MultigridPreconditioner::MultigridPreconditioner(PenalizedOperator& fine, const 
   // (make_contact_prolongations), so that a linear solve does not pay for it.
   contact_prolongation_ = options_.tentatives != nullptr && !options_.tentatives->empty() &&
                           !prolongations.empty() && N.rows() > 0;
-  if (contact_prolongation_) fine_N_ = N;
+  if (contact_prolongation_) levels_.front()->N = N;
   refresh();
   backend_.synchronize();
 }
@@ -185,7 +187,7 @@ void MultigridPreconditioner::make_contact_prolongations() {
     Level& lev = *levels_[l];
     try {
       lev.contact_prolongation = std::make_unique<ContactProlongation>(
-          *lev.host_A, l == 0 ? fine_N_ : lev.N, *lev.P_host, T, options_.omegas[l]);
+          *lev.host_A, lev.N, *lev.P_host, T, options_.omegas[l]);
     } catch (const NumericalError&) {
       // T kept for other contact rows than these (keep_contact_rows with another N): A's
       // prolongation from here down, as without T.
@@ -232,15 +234,10 @@ void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
       if (!lev.smoother) coarse_Nt_ = Nl.transpose();  // (the dense coarsest level's factor)
       break;
     }
+    // (Level l's current rows as set just above, transposed there; the fine level's N.)
     SparseMatrix change;
-    if (any_active && lev.contact_prolongation) {
-      if (l == 0) {
-        change = lev.contact_prolongation->change(c);
-      } else {
-        const SparseMatrix Nt = Nl.transpose();
-        change = lev.contact_prolongation->change(c, &Nt);
-      }
-    }
+    if (any_active && lev.contact_prolongation)
+      change = lev.contact_prolongation->change(c, &lev.op->contact_transpose());
     lev.dP.reset();
     lev.dPt.reset();
     lev.dP_host = std::move(change);
@@ -256,7 +253,7 @@ void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
     SparseMatrix next;
     if (D.nonZeros() > 0) next = D * *lev.P_host;
     if (level_changed) {
-      SparseMatrix term = (l == 0 ? fine_N_ : Nl) * lev.dP_host;
+      SparseMatrix term = (l == 0 ? lev.N : Nl) * lev.dP_host;
       if (next.nonZeros() > 0)
         next += term;
       else

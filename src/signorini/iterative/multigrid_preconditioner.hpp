@@ -122,10 +122,9 @@ class MultigridPreconditioner final : public Preconditioner {
   double block_bound_ = 0.0;
   // Whether the levels' prolongations may be smoothed with H at their active contact unknowns
   // (each Level holds its ContactProlongation, made at the first refresh with contact), whether
-  // they are made, the fine contact rows, and whether the levels now hold a change.
+  // they are made, and whether the levels now hold a change.
   bool contact_prolongation_ = false;
   bool contact_prolongations_made_ = false;
-  SparseMatrix fine_N_;
   bool prolongation_changed_ = false;
   // The coarsest level's solve: on a GPU its explicit inverse, applied by one dense product; on
   // the CPU its Cholesky factor, applied by two triangular solves (as fast for one vector, and
