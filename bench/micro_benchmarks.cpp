@@ -13,6 +13,7 @@
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/iterative/galerkin_product.hpp"
 #include "signorini/iterative/multigrid_preconditioner.hpp"
 #include "signorini/iterative/smoothed_aggregation.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
@@ -245,6 +246,36 @@ void StiffnessProduct3D(benchmark::State& state) {
                          benchmark::Counter::kIsRate);
 }
 BENCHMARK(StiffnessProduct3D)->ArgsProduct({{40, 64}, {0, 1}})->Unit(benchmark::kMillisecond);
+
+// The fine level of the smoothed-aggregation hierarchy of ball_on_block(n) (n = 88: 1,045,572
+// unknowns, the size of bench/peers/compare_3d.py --n 88), one product at a time: 0, the
+// smoothed prolongation P = (I - omega D^-1 A) T; 1, the Galerkin product P^T A P; 2, rho(D^-1 A)
+// by Lanczos steps (omega's). These are most of the multigrid set-up at a million unknowns.
+void FineLevelProducts3D(benchmark::State& state) {
+  const Model model = build_model(ball_on_block(state.range(0)));
+  const SparseMatrix& A = model.problem.A;
+  const SparseMatrix T =
+      aggregate_level(A, rigid_body_modes(model.mesh, model.dofs), free_dof_nodes(model.dofs), {},
+                      SmoothedAggregationOptions{}.strength_threshold)
+          .tentative;
+  const double omega = 4.0 / (3.0 * jacobi_spectral_radius(A));
+  const SparseMatrix P = smoothed_prolongation(A, T, omega);
+  for (auto _ : state) {
+    switch (state.range(1)) {
+      case 0:
+        benchmark::DoNotOptimize(smoothed_prolongation(A, T, omega).nonZeros());
+        break;
+      case 1:
+        benchmark::DoNotOptimize(galerkin_product(A, P).nonZeros());
+        break;
+      default:
+        benchmark::DoNotOptimize(jacobi_spectral_radius(A));
+    }
+  }
+  state.counters["unknowns"] = static_cast<double>(A.rows());
+  state.counters["P_entries"] = static_cast<double>(P.nonZeros());
+}
+BENCHMARK(FineLevelProducts3D)->ArgsProduct({{88}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

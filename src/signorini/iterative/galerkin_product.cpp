@@ -13,17 +13,18 @@ SparseMatrix galerkin_product(const SparseView& A, const SparseMatrix& P) {
   // Columns of A past k (another rank's unknowns) are rows of E that this rank does not hold:
   // (E^T P)(:, J) = sum over i < k of p_iJ A(:, i), and P^T (E^T P) = (P^T E P)^T.
   const Index k_columns = A.cols();
-  // Rows of P (its columns are P's CSC storage).
-  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> Pr(P);
   const int* p_outer = P.outerIndexPtr();
   const int* p_inner = P.innerIndexPtr();
   const double* p_values = P.valuePtr();
+  const std::vector<Index> groups = same_row_groups(P);
+  const GroupRows rows_of_P = group_rows(P, groups);
+  const std::vector<char> repeats = repeats_previous_column(A);
   // A group of columns J of P with the same rows (an aggregate's) in two steps: (A P)(:, J) =
   // sum over the fine i in the group's rows of p_iJ A(:, i), gathered first in a fine
-  // accumulator of the thread's own, then P^T times it, by the rows of P. Done at once, as a
-  // triple loop, the rows of P would be walked again for every pair (i, k): in 3D, with the six
-  // rigid-body modes in P, some twenty times the work (docs/performance.md). Each index of A and
-  // of P is read once for the whole group.
+  // accumulator of the thread's own, then P^T times it, by the rows of P (group_rows). Done at
+  // once, as a triple loop, the rows of P would be walked again for every pair (i, k): in 3D, with
+  // the six rigid-body modes in P, some twenty times the work (docs/performance.md). Each index of
+  // A and of P is read once for the whole group.
   const auto make_group = [&] {
     return [&, fine = GroupAccumulator(A.rows())](Index J0, int width,
                                                   GroupAccumulator& coarse) mutable {
@@ -38,6 +39,10 @@ SparseMatrix galerkin_product(const SparseView& A, const SparseMatrix& P) {
           const Index i = p_inner[p_outer[J0] + k];
           if (i >= k_columns) continue;
           if (counting) {
+            // The rows of A(:, i) are those of A(:, i-1), taken just before: nothing new.
+            if (k > 0 && p_inner[p_outer[J0] + k - 1] == i - 1 &&
+                repeats[static_cast<std::size_t>(i)])
+              continue;
             for (SparseView::InnerIterator a(A, i); a; ++a) fine.row(a.row());
             continue;
           }
@@ -49,22 +54,32 @@ SparseMatrix galerkin_product(const SparseView& A, const SparseMatrix& P) {
           }
         }
         fine.for_each([&](Index k, const double* f) {
-          if (counting) {
-            for (decltype(Pr)::InnerIterator pk(Pr, k); pk; ++pk) coarse.row(pk.col());
+          // Counting: row k of P lies in the groups of row k-1, which is (or will be) taken.
+          if (counting && k > 0 && rows_of_P.repeats[static_cast<std::size_t>(k)] &&
+              fine.has(k - 1))
             return;
-          }
+          const auto first = static_cast<std::size_t>(rows_of_P.start[static_cast<std::size_t>(k)]);
+          const auto last =
+              static_cast<std::size_t>(rows_of_P.start[static_cast<std::size_t>(k) + 1]);
           double fk[kMaxColumnGroup];
           for (int c = 0; c < w; ++c) fk[c] = f[c];
-          for (decltype(Pr)::InnerIterator pk(Pr, k); pk; ++pk) {
-            double* v = coarse.row(pk.col());
-            const double value = pk.value();
-            for (int c = 0; c < w; ++c) v[c] += value * fk[c];
+          for (std::size_t e = first; e < last; ++e) {
+            const auto G = static_cast<std::size_t>(rows_of_P.group[e]);
+            const Index J = groups[G];
+            const auto width_J = static_cast<int>(groups[G + 1] - J);
+            const int at = rows_of_P.position[e];
+            for (int d = 0; d < width_J; ++d) {
+              double* v = coarse.row(J + d);
+              if (counting) continue;
+              const double value = p_values[p_outer[J + d] + at];
+              for (int c = 0; c < w; ++c) v[c] += value * fk[c];
+            }
           }
         });
       });
     };
   };
-  return form_column_groups(P.cols(), P.cols(), same_row_groups(P), make_group);
+  return form_column_groups(P.cols(), P.cols(), groups, make_group);
 }
 
 }  // namespace signorini

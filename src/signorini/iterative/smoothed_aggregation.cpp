@@ -212,9 +212,13 @@ namespace {
 // one leaves its row unsmoothed.)
 Vector smoothing_scale(const SparseView& A, double omega) {
   Vector scale = Vector::Zero(A.cols());
+#pragma omp parallel for schedule(static)
   for (Index j = 0; j < A.cols(); ++j)
     for (SparseView::InnerIterator a(A, j); a; ++a)
-      if (a.row() == j && a.value() != 0.0) scale(j) = -omega / a.value();
+      if (a.row() == j) {
+        if (a.value() != 0.0) scale(j) = -omega / a.value();
+        break;
+      }
   return scale;
 }
 
@@ -225,6 +229,7 @@ Vector smoothing_scale(const SparseView& A, double omega) {
 // so they are formed together, each entry of A read once for all of them.
 SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, double omega) {
   const Vector scale = smoothing_scale(A, omega);
+  const std::vector<char> repeats = repeats_previous_column(A);
   const int* t_outer = T.outerIndexPtr();
   const int* t_inner = T.innerIndexPtr();
   const double* t_values = T.valuePtr();
@@ -240,6 +245,10 @@ SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, d
           const Index i = t_inner[t_outer[J0] + k];
           if (counting) {
             out.row(i);
+            // The rows of A(:, i) are those of A(:, i-1), taken just before: nothing new.
+            if (k > 0 && t_inner[t_outer[J0] + k - 1] == i - 1 &&
+                repeats[static_cast<std::size_t>(i)])
+              continue;
             for (SparseView::InnerIterator a(A, i); a; ++a) out.row(a.row());
             continue;
           }
