@@ -3,6 +3,7 @@
 // For repeatable instruction counts: valgrind --tool=callgrind <binary> --benchmark_filter=...
 
 #include <benchmark/benchmark.h>
+#include <sys/mman.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -276,6 +277,45 @@ void FineLevelProducts3D(benchmark::State& state) {
   state.counters["P_entries"] = static_cast<double>(P.nonZeros());
 }
 BENCHMARK(FineLevelProducts3D)->ArgsProduct({{88}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+
+// The first touch of fresh memory (a 1 GiB anonymous mapping with transparent huge pages, one
+// write per 4 KiB page), which a large solve pays for every array it makes: 0, the first mapping
+// of the run (run this benchmark alone, so that no earlier one freed memory just before); 1, a
+// second mapping right after the first was unmapped (the same pages again). On a virtual machine
+// the first costs what the host pays to back the pages (docs/performance.md, "P's rows by
+// aggregate").
+void FirstTouch(benchmark::State& state) {
+  constexpr std::size_t bytes = std::size_t{1} << 30;
+  const auto touch = [&] {
+    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) return static_cast<char*>(nullptr);
+    madvise(p, bytes, MADV_HUGEPAGE);
+    auto* c = static_cast<char*>(p);
+    for (std::size_t i = 0; i < bytes; i += 4096) c[i] = 1;
+    return c;
+  };
+  for (auto _ : state) {
+    if (state.range(0) == 1) {
+      state.PauseTiming();
+      char* first = touch();
+      if (first != nullptr) munmap(first, bytes);
+      state.ResumeTiming();
+    }
+    char* p = touch();
+    if (p == nullptr) {
+      state.SkipWithError("mmap failed");
+      break;
+    }
+    benchmark::DoNotOptimize(p[bytes / 2]);
+    state.PauseTiming();
+    munmap(p, bytes);
+    state.ResumeTiming();
+  }
+  state.counters["GB/s"] = benchmark::Counter(
+      1e-9 * static_cast<double>(bytes) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate);
+}
+BENCHMARK(FirstTouch)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
