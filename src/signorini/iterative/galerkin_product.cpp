@@ -35,15 +35,32 @@ SparseMatrix galerkin_product(const SparseView& A, const SparseMatrix& P) {
         const int w = W > 0 ? W : width;
         double p[kMaxColumnGroup];
         const int length = p_outer[J0 + 1] - p_outer[J0];
-        for (int k = 0; k < length; ++k) {
-          const Index i = p_inner[p_outer[J0] + k];
-          if (i >= k_columns) continue;
+        const int* rows = p_inner + p_outer[J0];
+        for (int k = 0; k < length;) {
+          const Index i = rows[k];
+          if (i >= k_columns) {
+            ++k;
+            continue;
+          }
           if (counting) {
             // The rows of A(:, i) are those of A(:, i-1), taken just before: nothing new.
-            if (k > 0 && p_inner[p_outer[J0] + k - 1] == i - 1 &&
-                repeats[static_cast<std::size_t>(i)])
-              continue;
-            for (SparseView::InnerIterator a(A, i); a; ++a) fine.row(a.row());
+            if (!(k > 0 && rows[k - 1] == i - 1 && repeats[static_cast<std::size_t>(i)]))
+              for (SparseView::InnerIterator a(A, i); a; ++a) fine.row(a.row());
+            ++k;
+            continue;
+          }
+          if (node_columns(rows, k, length, k_columns, repeats) == 3) {
+            // A node's three columns of A at once: one look-up of each row they share.
+            double p3[3][kMaxColumnGroup];
+            for (int r = 0; r < 3; ++r)
+              for (int c = 0; c < w; ++c) p3[r][c] = p_values[p_outer[J0 + c] + k + r];
+            const ColumnsOfNode a(A, i);
+            for (int e = 0; e < a.length; ++e) {
+              double* f = fine.row(a.rows[e]);
+              const double a0 = a.values[0][e], a1 = a.values[1][e], a2 = a.values[2][e];
+              for (int c = 0; c < w; ++c) f[c] += a0 * p3[0][c] + a1 * p3[1][c] + a2 * p3[2][c];
+            }
+            k += 3;
             continue;
           }
           for (int c = 0; c < w; ++c) p[c] = p_values[p_outer[J0 + c] + k];
@@ -52,6 +69,7 @@ SparseMatrix galerkin_product(const SparseView& A, const SparseMatrix& P) {
             const double value = a.value();
             for (int c = 0; c < w; ++c) f[c] += value * p[c];
           }
+          ++k;
         }
         fine.for_each([&](Index k, const double* f) {
           // Counting: row k of P lies in the groups of row k-1, which is (or will be) taken.

@@ -241,15 +241,34 @@ SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, d
         const int w = W > 0 ? W : width;
         double t[kMaxColumnGroup];
         const int length = t_outer[J0 + 1] - t_outer[J0];
-        for (int k = 0; k < length; ++k) {
-          const Index i = t_inner[t_outer[J0] + k];
+        const int* rows = t_inner + t_outer[J0];
+        for (int k = 0; k < length;) {
+          const Index i = rows[k];
           if (counting) {
             out.row(i);
             // The rows of A(:, i) are those of A(:, i-1), taken just before: nothing new.
-            if (k > 0 && t_inner[t_outer[J0] + k - 1] == i - 1 &&
-                repeats[static_cast<std::size_t>(i)])
-              continue;
-            for (SparseView::InnerIterator a(A, i); a; ++a) out.row(a.row());
+            if (!(k > 0 && rows[k - 1] == i - 1 && repeats[static_cast<std::size_t>(i)]))
+              for (SparseView::InnerIterator a(A, i); a; ++a) out.row(a.row());
+            ++k;
+            continue;
+          }
+          if (node_columns(rows, k, length, A.cols(), repeats) == 3) {
+            // A node's three columns of A at once: one look-up of each row they share.
+            double t3[3][kMaxColumnGroup];
+            for (int r = 0; r < 3; ++r) {
+              for (int c = 0; c < w; ++c) t3[r][c] = t_values[t_outer[J0 + c] + k + r];
+              double* own = out.row(i + r);
+              for (int c = 0; c < w; ++c) own[c] += t3[r][c];
+            }
+            const ColumnsOfNode a(A, i);
+            for (int e = 0; e < a.length; ++e) {
+              const double s = scale[a.rows[e]];
+              const double a0 = s * a.values[0][e], a1 = s * a.values[1][e],
+                           a2 = s * a.values[2][e];
+              double* v = out.row(a.rows[e]);
+              for (int c = 0; c < w; ++c) v[c] += a0 * t3[0][c] + a1 * t3[1][c] + a2 * t3[2][c];
+            }
+            k += 3;
             continue;
           }
           for (int c = 0; c < w; ++c) t[c] = t_values[t_outer[J0 + c] + k];
@@ -260,6 +279,7 @@ SparseMatrix smoothed_prolongation(const SparseView& A, const SparseMatrix& T, d
             double* v = out.row(a.row());
             for (int c = 0; c < w; ++c) v[c] += s * t[c];
           }
+          ++k;
         }
       });
     };

@@ -195,6 +195,35 @@ inline std::vector<char> repeats_previous_column(const SparseView& A) {
   return repeats;
 }
 
+/// How many of the columns list[k], list[k+1], ... (at most three) of A are the consecutive
+/// unknowns i, i+1, ... of one node with the same rows in A (repeats: repeats_previous_column),
+/// all below `limit`: where three, a product reads the node's three columns together
+/// (ColumnsOfNode), one look-up of each row for three entries.
+inline int node_columns(const int* list, int k, int length, Index limit,
+                        const std::vector<char>& repeats) {
+  const Index i = list[k];
+  int run = 1;
+  while (run < 3 && k + run < length && list[k + run] == i + run && i + run < limit &&
+         repeats[static_cast<std::size_t>(i + run)])
+    ++run;
+  return run;
+}
+
+/// Columns i, i+1, i+2 of A with the same rows (node_columns() == 3): the rows once, and the
+/// three columns' values against them.
+struct ColumnsOfNode {
+  ColumnsOfNode(const SparseView& A, Index i) {
+    const int* outer = A.outerIndexPtr();
+    const int* lengths = A.innerNonZeroPtr();
+    rows = A.innerIndexPtr() + outer[i];
+    length = lengths ? lengths[i] : outer[i + 1] - outer[i];
+    for (int r = 0; r < 3; ++r) values[r] = A.valuePtr() + outer[i + r];
+  }
+  const int* rows;
+  int length;
+  const double* values[3];
+};
+
 /// The rows x cols matrix whose columns J0 .. J0 + g - 1 (a group: `groups` holds their starts,
 /// then cols) are what group(J0, g, accumulator) adds to an accumulator started with width g,
 /// where `group = make_group()` is made once per thread (so that it may keep work space of its
