@@ -92,5 +92,37 @@ TEST(RepeatsPreviousColumn, FindsTheColumnsWithTheRowsOfTheOneBefore) {
   EXPECT_GT(repeated, block.A.cols() / 2);
 }
 
+TEST(NodeColumns, FindsThreeConsecutiveColumnsWithTheSameRows) {
+  // Columns 0-2 share their rows, 3 differs from 2, 4-5 repeat 3, 6-8 share theirs again.
+  const std::vector<char> repeats = {0, 1, 1, 0, 1, 1, 0, 1, 1};
+  const std::vector<int> list = {0, 1, 2, 3, 4, 5, 6, 8};
+  const int length = static_cast<int>(list.size());
+  EXPECT_EQ(node_columns(list.data(), 0, length, 9, repeats), 3);
+  EXPECT_EQ(node_columns(list.data(), 1, length, 9, repeats), 2);  // 1, 2: the node's last two
+  EXPECT_EQ(node_columns(list.data(), 3, length, 9, repeats), 3);
+  EXPECT_EQ(node_columns(list.data(), 3, length, 5, repeats), 2);  // 5 is past the limit
+  EXPECT_EQ(node_columns(list.data(), 6, length, 9, repeats), 1);  // 7 is not in the list
+  EXPECT_EQ(node_columns(list.data(), 5, 6, 9, repeats), 1);       // the list ends
+
+  // The three columns read together are A's own.
+  const testing::ClampedBlock block = testing::clamped_block(3, 3, 2);
+  const std::vector<char> of_A = repeats_previous_column(view_of(block.A));
+  Index checked = 0;
+  for (Index i = 0; i + 2 < block.A.cols(); ++i) {
+    if (!of_A[static_cast<std::size_t>(i + 1)] || !of_A[static_cast<std::size_t>(i + 2)]) continue;
+    const ColumnsOfNode a(view_of(block.A), i);
+    for (int r = 0; r < 3; ++r) {
+      const SparseMatrix column = block.A.col(i + r);
+      ASSERT_EQ(a.length, column.nonZeros());
+      for (int e = 0; e < a.length; ++e) {
+        EXPECT_EQ(a.rows[e], column.innerIndexPtr()[e]);
+        EXPECT_EQ(a.values[r][e], column.valuePtr()[e]);
+      }
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
+}
+
 }  // namespace
 }  // namespace signorini
