@@ -221,7 +221,9 @@ void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
   bool changed = false;
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Level& lev = *levels_[l];
-    SparseMatrix Nl;  // N_l,cur on a coarse level
+    // N_l,cur: the fine level's N itself, a coarse level's formed here.
+    SparseMatrix Nl;
+    const SparseMatrix* current = &lev.N;
     if (l > 0) {
       Nl = lev.N;
       if (any_active) {
@@ -229,9 +231,10 @@ void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
         if (D.nonZeros() > 0) Nl += D;
       }
       lev.op->set_contact_matrix(Nl);
+      current = &Nl;
     }
     if (l + 1 == levels_.size()) {
-      if (!lev.smoother) coarse_Nt_ = Nl.transpose();  // (the dense coarsest level's factor)
+      if (!lev.smoother) coarse_Nt_ = current->transpose();  // (the dense coarsest level's factor)
       break;
     }
     // (Level l's current rows as set just above, transposed there; the fine level's N.)
@@ -253,7 +256,7 @@ void MultigridPreconditioner::update_contact_prolongation(const Vector& c) {
     SparseMatrix next;
     if (D.nonZeros() > 0) next = D * *lev.P_host;
     if (level_changed) {
-      SparseMatrix term = (l == 0 ? lev.N : Nl) * lev.dP_host;
+      SparseMatrix term = *current * lev.dP_host;
       if (next.nonZeros() > 0)
         next += term;
       else

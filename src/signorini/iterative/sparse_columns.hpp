@@ -116,18 +116,31 @@ void with_group_width(int width, F&& f) {
     f(std::integral_constant<int, 0>{});
 }
 
+/// Per column j of A: whether its rows are those of column j-1 (true of the unknowns of one
+/// node in a matrix of node blocks). A pass that only counts the rows a product touches may
+/// skip such a column right after column j-1, a third of the reads of A in 3D elasticity.
+inline std::vector<char> repeats_previous_column(const SparseView& A) {
+  std::vector<char> repeats(static_cast<std::size_t>(A.cols()), 0);
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  const int* lengths = A.innerNonZeroPtr();
+  const auto end = [&](std::int64_t j) { return lengths ? outer[j] + lengths[j] : outer[j + 1]; };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t j = 1; j < A.cols(); ++j)
+    repeats[static_cast<std::size_t>(j)] =
+        static_cast<char>(end(j) - outer[j] == end(j - 1) - outer[j - 1] &&
+                          std::equal(inner + outer[j], inner + end(j), inner + outer[j - 1]));
+  return repeats;
+}
+
 /// The starts of the runs of consecutive columns of the compressed M with the same rows, each
 /// run cut after kMaxColumnGroup columns; the last entry is M.cols().
 inline std::vector<Index> same_row_groups(const SparseMatrix& M) {
-  const int* outer = M.outerIndexPtr();
-  const int* inner = M.innerIndexPtr();
-  const auto same = [&](Index a, Index b) {
-    return outer[a + 1] - outer[a] == outer[b + 1] - outer[b] &&
-           std::equal(inner + outer[a], inner + outer[a + 1], inner + outer[b]);
-  };
+  const std::vector<char> repeats = repeats_previous_column(view_of(M));
   std::vector<Index> start;
   for (Index J = 0; J < M.cols(); ++J)
-    if (start.empty() || J - start.back() >= kMaxColumnGroup || !same(start.back(), J))
+    if (start.empty() || J - start.back() >= kMaxColumnGroup ||
+        !repeats[static_cast<std::size_t>(J)])
       start.push_back(J);
   start.push_back(M.cols());
   return start;
@@ -176,23 +189,6 @@ inline GroupRows group_rows(const SparseMatrix& M, const std::vector<Index>& gro
                           std::equal(r.group.begin() + r.start[k], r.group.begin() + r.start[k + 1],
                                      r.group.begin() + r.start[k - 1]));
   return r;
-}
-
-/// Per column j of A: whether its rows are those of column j-1 (true of the unknowns of one
-/// node in a matrix of node blocks). A pass that only counts the rows a product touches may
-/// skip such a column right after column j-1, a third of the reads of A in 3D elasticity.
-inline std::vector<char> repeats_previous_column(const SparseView& A) {
-  std::vector<char> repeats(static_cast<std::size_t>(A.cols()), 0);
-  const int* outer = A.outerIndexPtr();
-  const int* inner = A.innerIndexPtr();
-  const int* lengths = A.innerNonZeroPtr();
-  const auto end = [&](std::int64_t j) { return lengths ? outer[j] + lengths[j] : outer[j + 1]; };
-#pragma omp parallel for schedule(static)
-  for (std::int64_t j = 1; j < A.cols(); ++j)
-    repeats[static_cast<std::size_t>(j)] =
-        static_cast<char>(end(j) - outer[j] == end(j - 1) - outer[j - 1] &&
-                          std::equal(inner + outer[j], inner + end(j), inner + outer[j - 1]));
-  return repeats;
 }
 
 /// How many of the columns list[k], list[k+1], ... (at most three) of A are the consecutive
