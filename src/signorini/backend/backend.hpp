@@ -120,10 +120,11 @@ class Backend {
   /// unchanged. A GPU copies them either way.
   [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload_transpose(
       const SparseMatrix& A, HostArrays arrays = HostArrays::Copy);
-  /// upload(A) for a symmetric A, as upload_transpose(A): the result multiplies by A^T, which for
-  /// a matrix symmetric only up to rounding (a Galerkin product P^T A P summed in another order)
-  /// differs from A x by rounding only.
-  [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
+  /// upload(A) for a symmetric A, by default as upload_transpose(A): the result multiplies by
+  /// A^T, which for a matrix symmetric only up to rounding (a Galerkin product P^T A P summed in
+  /// another order) differs from A x by rounding only. The CPU backend's copy of a large one
+  /// keeps the blocks on and above the diagonal only (NodeBlockMatrix::from_symmetric_csr).
+  [[nodiscard]] virtual std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
       const SparseMatrix& A, HostArrays arrays = HostArrays::Copy) {
     return upload_transpose(A, arrays);
   }

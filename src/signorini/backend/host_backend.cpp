@@ -48,8 +48,10 @@ class HostSparseMatrix final : public DeviceSparseMatrix {
     point_at_owned();
     count(peak);
   }
-  /// A^T, from the compressed A's column-major arrays: shared, or copied as they are.
-  HostSparseMatrix(const SparseMatrix& A, HostArrays arrays, std::size_t& in_use, std::size_t& peak)
+  /// A^T, from the compressed A's column-major arrays: shared, or copied as they are; a large
+  /// copy in node blocks, of the upper blocks only where A is `symmetric`.
+  HostSparseMatrix(const SparseMatrix& A, HostArrays arrays, bool symmetric, std::size_t& in_use,
+                   std::size_t& peak)
       : DeviceSparseMatrix(A.cols(), A.rows(), A.nonZeros()), in_use_(in_use) {
     const CsrView transpose(A.cols(), A.rows(), A.nonZeros(), A.outerIndexPtr(), A.innerIndexPtr(),
                             A.valuePtr());
@@ -59,8 +61,10 @@ class HostSparseMatrix final : public DeviceSparseMatrix {
       values = A.valuePtr();
     } else {
       if (A.rows() == A.cols() && A.nonZeros() >= kParallelProductFrom)
-        blocks =
-            NodeBlockMatrix::from_csr(A.cols(), A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr());
+        blocks = symmetric ? NodeBlockMatrix::from_symmetric_csr(A.cols(), A.outerIndexPtr(),
+                                                                 A.innerIndexPtr(), A.valuePtr())
+                           : NodeBlockMatrix::from_csr(A.cols(), A.outerIndexPtr(),
+                                                       A.innerIndexPtr(), A.valuePtr());
       if (!blocks) {
         owned = transpose;
         point_at_owned();
@@ -171,7 +175,13 @@ std::unique_ptr<DeviceSparseMatrix> HostBackend::upload(const SparseMatrix& A) {
 std::unique_ptr<DeviceSparseMatrix> HostBackend::upload_transpose(const SparseMatrix& A,
                                                                   HostArrays arrays) {
   if (!A.isCompressed()) return upload(SparseMatrix(A.transpose()));
-  return std::make_unique<HostSparseMatrix>(A, arrays, in_use_, peak_);
+  return std::make_unique<HostSparseMatrix>(A, arrays, false, in_use_, peak_);
+}
+
+std::unique_ptr<DeviceSparseMatrix> HostBackend::upload_symmetric(const SparseMatrix& A,
+                                                                  HostArrays arrays) {
+  if (!A.isCompressed()) return upload(A);
+  return std::make_unique<HostSparseMatrix>(A, arrays, true, in_use_, peak_);
 }
 
 std::unique_ptr<DeviceDenseMatrix> HostBackend::upload(const Matrix& A) {

@@ -26,6 +26,8 @@ class HostBackend final : public Backend {
   [[nodiscard]] std::unique_ptr<DeviceDenseMatrix> upload(const Matrix& A) override;
   [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_transpose(const SparseMatrix& A,
                                                                      HostArrays arrays) override;
+  [[nodiscard]] std::unique_ptr<DeviceSparseMatrix> upload_symmetric(
+      const SparseMatrix& A, HostArrays arrays = HostArrays::Copy) override;
 
   void spmv(const DeviceSparseMatrix& A, const DeviceVector& x, DeviceVector& y, double alpha = 1.0,
             double beta = 0.0) override;
