@@ -311,11 +311,10 @@ void NodeBlockMatrix::multiply_full(const double* x, double* y, double alpha, do
 // brick of 88 x 88 x 44 nodes), which the threads owning those rows add after a barrier.
 void NodeBlockMatrix::multiply_upper(const double* x, double* y, double alpha, double beta,
                                      bool parallel) const {
-  const int* gs = group_start_.data();
-  const int* bs = block_start_.data();
-  const int* bg = block_group_.data();
-  const std::int64_t* vs = value_start_.data();
-  const double* values = values_.get();
+  const UpperArrays arrays{group_start_.data(), block_start_.data(), block_group_.data(),
+                           value_start_.data(), values_.get()};
+  const int* gs = arrays.gs;
+  const int* bs = arrays.bs;
   const int groups = static_cast<int>(num_groups());
   int threads = 1;
 #ifdef _OPENMP
@@ -340,7 +339,7 @@ void NodeBlockMatrix::multiply_upper(const double* x, double* y, double alpha, d
     auto& own_spill = spill[static_cast<std::size_t>(t)];
     if (g1 > g0)
       own_spill.assign(static_cast<std::size_t>(std::max(0, reach_[g1 - 1] - row1)), 0.0);
-    upper_rows(UpperArrays{gs, bs, bg, vs, values}, g0, g1, x, y, own_spill.data(), alpha);
+    upper_rows(arrays, g0, g1, x, y, own_spill.data(), alpha);
   };
   // Adds the buffers of the runs before t that reach into t's rows.
   const auto gather = [&](int t) {
