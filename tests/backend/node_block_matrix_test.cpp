@@ -18,27 +18,11 @@ namespace {
 using Csr = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
 // A matrix with the pattern of a node graph: node a has `width[a]` consecutive unknowns (as
-// free dofs do, some components clamped), nodes a and b couple when |a - b| <= 2; values
-// arbitrary (not symmetric), the pattern symmetric.
-Csr node_matrix(const std::vector<int>& width) {
-  std::vector<int> start(width.size() + 1, 0);
-  for (std::size_t a = 0; a < width.size(); ++a) start[a + 1] = start[a] + width[a];
-  std::vector<Eigen::Triplet<double>> t;
-  const auto nodes = static_cast<int>(width.size());
-  for (int a = 0; a < nodes; ++a)
-    for (int b = std::max(0, a - 2); b <= std::min(nodes - 1, a + 2); ++b)
-      for (int i = start[a]; i < start[a + 1]; ++i)
-        for (int j = start[b]; j < start[b + 1]; ++j)
-          t.emplace_back(i, j, 1.0 + 0.01 * i - 0.003 * j + (i == j ? 10.0 : 0.0));
-  Csr A(start.back(), start.back());
-  A.setFromTriplets(t.begin(), t.end());
-  A.makeCompressed();
-  return A;
-}
-
-// The same node graph with symmetric values; with `far`, node 0 couples with the last node too
-// (a band as wide as the matrix: the upper blocks of the first rows reach every thread's rows).
-Csr symmetric_node_matrix(const std::vector<int>& width, bool far = false) {
+// free dofs do, some components clamped), nodes a and b couple when |a - b| <= 2, and with
+// `far` node 0 with the last node too (a band as wide as the matrix: the upper blocks of the
+// first rows reach every thread's rows); entry (i, j) is value(i, j).
+template <class Value>
+Csr node_graph_matrix(const std::vector<int>& width, Value value, bool far) {
   std::vector<int> start(width.size() + 1, 0);
   for (std::size_t a = 0; a < width.size(); ++a) start[a + 1] = start[a] + width[a];
   std::vector<Eigen::Triplet<double>> t;
@@ -46,7 +30,7 @@ Csr symmetric_node_matrix(const std::vector<int>& width, bool far = false) {
   const auto couple = [&](int a, int b) {
     for (int i = start[a]; i < start[a + 1]; ++i)
       for (int j = start[b]; j < start[b + 1]; ++j)
-        t.emplace_back(i, j, 1.0 + 0.01 * (i + j) + 1e-4 * i * j + (i == j ? 10.0 : 0.0));
+        t.emplace_back(i, j, value(i, j) + (i == j ? 10.0 : 0.0));
   };
   for (int a = 0; a < nodes; ++a)
     for (int b = std::max(0, a - 2); b <= std::min(nodes - 1, a + 2); ++b) couple(a, b);
@@ -58,6 +42,18 @@ Csr symmetric_node_matrix(const std::vector<int>& width, bool far = false) {
   A.setFromTriplets(t.begin(), t.end());
   A.makeCompressed();
   return A;
+}
+
+// Values arbitrary (not symmetric), the pattern symmetric.
+Csr node_matrix(const std::vector<int>& width) {
+  return node_graph_matrix(
+      width, [](int i, int j) { return 1.0 + 0.01 * i - 0.003 * j; }, false);
+}
+
+// Symmetric values.
+Csr symmetric_node_matrix(const std::vector<int>& width, bool far = false) {
+  return node_graph_matrix(
+      width, [](int i, int j) { return 1.0 + 0.01 * (i + j) + 1e-4 * i * j; }, far);
 }
 
 std::vector<int> widths(int nodes) {

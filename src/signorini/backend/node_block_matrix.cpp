@@ -158,11 +158,16 @@ std::optional<NodeBlockMatrix> NodeBlockMatrix::build(Index n, const int* outer,
 
   // Blocks: each row group's pattern (that of its first row) cut into whole column groups; with
   // `upper`, those of column group >= the row group only.
+  // reach_ (multiply_upper): the end of the last column group of each row group's blocks, at
+  // least the row group's own end, as a running maximum.
   m.block_start_.assign(static_cast<std::size_t>(groups + 1), 0);
   m.value_start_.assign(static_cast<std::size_t>(groups + 1), 0);
+  if (upper) m.reach_.reserve(static_cast<std::size_t>(groups));
+  int reach = 0;
   for (Index g = 0; g < groups; ++g) {
     const int r0 = m.group_start_[static_cast<std::size_t>(g)];
     const int height = m.group_start_[static_cast<std::size_t>(g) + 1] - r0;
+    reach = std::max(reach, r0 + height);
     std::int64_t entries = 0;
     for (int k = outer[r0]; k < outer[r0 + 1];) {
       const int c = inner[k];
@@ -176,9 +181,11 @@ std::optional<NodeBlockMatrix> NodeBlockMatrix::build(Index n, const int* outer,
       if (!upper || cg >= g) {
         m.block_group_.push_back(cg);
         entries += static_cast<std::int64_t>(height) * width;
+        reach = std::max(reach, c0 + width);
       }
       k += width;
     }
+    if (upper) m.reach_.push_back(reach);
     m.block_start_[static_cast<std::size_t>(g) + 1] = static_cast<int>(m.block_group_.size());
     m.value_start_[static_cast<std::size_t>(g) + 1] =
         m.value_start_[static_cast<std::size_t>(g)] + entries;
@@ -211,22 +218,6 @@ std::optional<NodeBlockMatrix> NodeBlockMatrix::build(Index n, const int* outer,
                 values[outer[r0 + std::min(r, w)] + position + std::max(r, w)];
       }
       k += width;
-    }
-  }
-  if (upper) {
-    // reach_ (multiply_upper): the end of the last column group of each row group's blocks,
-    // at least the row group's own end, as a running maximum.
-    m.reach_.assign(static_cast<std::size_t>(groups), 0);
-    int reach = 0;
-    for (Index g = 0; g < groups; ++g) {
-      reach = std::max(reach, m.group_start_[static_cast<std::size_t>(g) + 1]);
-      const int b1 = m.block_start_[static_cast<std::size_t>(g) + 1];
-      if (b1 > m.block_start_[static_cast<std::size_t>(g)])
-        reach =
-            std::max(reach, m.group_start_[static_cast<std::size_t>(
-                                               m.block_group_[static_cast<std::size_t>(b1) - 1]) +
-                                           1]);
-      m.reach_[static_cast<std::size_t>(g)] = reach;
     }
   }
   return m;
