@@ -54,12 +54,27 @@ void keep_contact_rows(MultigridHierarchy& hierarchy, const SparseMatrix& N,
 
 ContactProlongation::ContactProlongation(const SparseMatrix& A, const SparseMatrix& N,
                                          const SparseMatrix& P, const SparseMatrix& T, double omega)
+    : ContactProlongation(
+          [&] {
+            if (A.rows() != P.rows() || A.cols() != P.rows())
+              throw NumericalError(fmt::format("contact prolongation: A {}x{}, P {}x{}", A.rows(),
+                                               A.cols(), P.rows(), P.cols()));
+            // (Only the diagonal at N's unknowns is read: the others stay 0.)
+            Vector d = Vector::Zero(A.rows());
+            for (Index k = 0; k < N.outerSize(); ++k)
+              if (N.col(k).nonZeros() > 0) d(k) = A.coeff(k, k);
+            return d;
+          }(),
+          N, P, T, omega) {}
+
+ContactProlongation::ContactProlongation(const Vector& diagonal_of_A, const SparseMatrix& N,
+                                         const SparseMatrix& P, const SparseMatrix& T, double omega)
     : n_(P.rows()), m_(P.cols()), omega_(omega), Nt_(N.transpose()) {
-  if (A.rows() != n_ || A.cols() != n_ || N.cols() != n_ || T.rows() != n_ || T.cols() != m_ ||
+  if (diagonal_of_A.size() != n_ || N.cols() != n_ || T.rows() != n_ || T.cols() != m_ ||
       !(omega > 0.0))
-    throw NumericalError(
-        fmt::format("contact prolongation: A {}x{}, N {}x{}, P {}x{}, T {}x{}, omega {}", A.rows(),
-                    A.cols(), N.rows(), N.cols(), P.rows(), P.cols(), T.rows(), T.cols(), omega));
+    throw NumericalError(fmt::format(
+        "contact prolongation: {} diagonal entries, N {}x{}, P {}x{}, T {}x{}, omega {}",
+        diagonal_of_A.size(), N.rows(), N.cols(), P.rows(), P.cols(), T.rows(), T.cols(), omega));
   slot_.assign(static_cast<std::size_t>(n_), -1);
   for (Index k = 0; k < N.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(N, k); it; ++it)
@@ -71,7 +86,7 @@ ContactProlongation::ContactProlongation(const SparseMatrix& A, const SparseMatr
   diag_a_.resize(count);
   for (Index s = 0; s < count; ++s) {
     const Index k = unknown_[static_cast<std::size_t>(s)];
-    diag_a_(s) = A.coeff(k, k);
+    diag_a_(s) = diagonal_of_A(k);
   }
   P_rows_ = rows_of(P, slot_, count);
   T_rows_ = rows_of(T, slot_, count);
@@ -127,6 +142,24 @@ SparseMatrix ContactProlongation::change(const Vector& c, const SparseMatrix* cu
   SparseMatrix change(n_, m_);
   change.setFromTriplets(d.begin(), d.end());
   return change;
+}
+
+SparseMatrix ContactProlongation::carry(const SparseMatrix& D) const {
+  if (D.cols() != n_)
+    throw NumericalError(
+        fmt::format("contact prolongation: rows of {} columns for {} unknowns", D.cols(), n_));
+  // D's columns at the kept unknowns, as slots, times the kept rows of P.
+  Triplets t;
+  t.reserve(static_cast<std::size_t>(D.nonZeros()));
+  for (Index k = 0; k < D.outerSize(); ++k) {
+    const Index s = slot_[static_cast<std::size_t>(k)];
+    if (s < 0) continue;
+    for (SparseMatrix::InnerIterator it(D, k); it; ++it)
+      t.emplace_back(static_cast<int>(it.row()), static_cast<int>(s), it.value());
+  }
+  Rows DZ(D.rows(), static_cast<Index>(unknown_.size()));
+  DZ.setFromTriplets(t.begin(), t.end());
+  return SparseMatrix(Rows(DZ * P_rows_));
 }
 
 }  // namespace signorini

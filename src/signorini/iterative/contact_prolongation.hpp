@@ -42,6 +42,10 @@ class ContactProlongation {
   /// that N touches is empty (T not kept there).
   ContactProlongation(const SparseMatrix& A, const SparseMatrix& N, const SparseMatrix& P,
                       const SparseMatrix& T, double omega);
+  /// The same with A's diagonal given (n values; only those at N's unknowns are read): for a
+  /// level held elsewhere (the distributed path's, petsc/level_contact_prolongation.hpp).
+  ContactProlongation(const Vector& diagonal_of_A, const SparseMatrix& N, const SparseMatrix& P,
+                      const SparseMatrix& T, double omega);
 
   /// P_H - P for the weights c (n_c values; c_j > 0 on the active rows) and the contact rows N
   /// of the constructor, or the current ones given as their transpose Nt (n x n_c; a coarse
@@ -49,6 +53,11 @@ class ContactProlongation {
   /// rows of the active rows' unknowns; empty (no nonzeros) where no c_j > 0. An entry of Nt
   /// outside the constructor's pattern is left out (the preconditioner stays symmetric).
   [[nodiscard]] SparseMatrix change(const Vector& c, const SparseMatrix* Nt = nullptr) const;
+
+  /// D P for rows D (r x n) whose columns lie among the kept rows' unknowns (those where the
+  /// constructor's N has a nonzero; entries elsewhere are left out): r x m, from the kept rows
+  /// of P alone. N P itself, or the next level's contact rows carried down.
+  [[nodiscard]] SparseMatrix carry(const SparseMatrix& D) const;
 
  private:
   Index n_ = 0, m_ = 0;

@@ -11,41 +11,14 @@
 #include "signorini/core/types.hpp"
 #include "signorini/iterative/galerkin_product.hpp"
 #include "signorini/iterative/smoothed_aggregation.hpp"
+#include "signorini/petsc/level_contact_prolongation.hpp"
+#include "signorini/petsc/level_numbering.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
 namespace signorini::petsc {
 
 namespace {
-
-using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-
-// A level's numbering on one rank: the rank's own unknowns (global first .. first + count - 1)
-// first, then the others' it needs (`foreign`, ascending).
-struct ExtNumbering {
-  PetscInt first = 0;
-  PetscInt count = 0;
-  std::vector<PetscInt> foreign;
-
-  [[nodiscard]] Index size() const { return count + static_cast<Index>(foreign.size()); }
-  [[nodiscard]] bool own(PetscInt g) const { return g >= first && g < first + count; }
-  [[nodiscard]] Index local(PetscInt g) const {
-    if (own(g)) return g - first;
-    return count + static_cast<Index>(std::lower_bound(foreign.begin(), foreign.end(), g) -
-                                      foreign.begin());
-  }
-  [[nodiscard]] PetscInt global(Index i) const {
-    return i < count ? first + static_cast<PetscInt>(i)
-                     : foreign[static_cast<std::size_t>(i - count)];
-  }
-  // Adds the global numbers in `seen` that are not own to `foreign` (sorted, unique).
-  void add_foreign(const std::vector<PetscInt>& seen) {
-    for (const PetscInt g : seen)
-      if (!own(g)) foreign.push_back(g);
-    std::sort(foreign.begin(), foreign.end());
-    foreign.erase(std::unique(foreign.begin(), foreign.end()), foreign.end());
-  }
-};
 
 // Rows read from PETSc with global column numbers: CSR arrays.
 struct GlobalRows {
@@ -114,59 +87,6 @@ GlobalRows fetch_rows(Mat M, const std::vector<PetscInt>& rows) {
   ISDestroy(&row_set);
   ISDestroy(&column_set);
   return out;
-}
-
-// Fills M (type AIJ, sized) with this rank's rows in CSR (global column numbers, each row's
-// ascending); PETSc copies them. (Each call is a no-op on the other type.)
-template <class O, class C>
-void set_rows(Mat M, Index rows, const O* outer, const C* columns, const double* values) {
-  if constexpr (std::is_same_v<O, PetscInt> && std::is_same_v<C, PetscInt>) {
-    // (Whole rows, sorted, the preallocation exact: PETSc copies each row in one go.)
-    check(MatSetOption(M, MAT_SORTED_FULL, PETSC_TRUE), "a multigrid level");
-    check(MatSeqAIJSetPreallocationCSR(M, outer, columns, values), "a multigrid level");
-    check(MatMPIAIJSetPreallocationCSR(M, outer, columns, values), "a multigrid level");
-  } else {
-    const std::vector<PetscInt> o(outer, outer + rows + 1);
-    const std::vector<PetscInt> c(columns, columns + outer[rows]);
-    set_rows(M, rows, o.data(), c.data(), values);
-  }
-}
-
-// This rank's rows of a distributed matrix from their local form (rows: the rank's own;
-// columns: `numbering`), `local_columns` of its columns owned here.
-Mat distributed_matrix(MPI_Comm comm, const RowMatrix& R, const ExtNumbering& numbering,
-                       PetscInt local_columns) {
-  const auto rows = static_cast<PetscInt>(R.rows());
-  Mat M = nullptr;
-  check(MatCreate(comm, &M), "a prolongation");
-  check(MatSetSizes(M, rows, local_columns, PETSC_DETERMINE, PETSC_DETERMINE), "a prolongation");
-  check(MatSetType(M, MATAIJ), "a prolongation");
-  if (numbering.first == 0 && numbering.foreign.empty()) {  // (no ghosts: local is global)
-    set_rows(M, rows, R.outerIndexPtr(), R.innerIndexPtr(), R.valuePtr());
-    return M;
-  }
-  std::vector<PetscInt> columns(static_cast<std::size_t>(R.nonZeros()));
-  std::vector<double> values(R.valuePtr(), R.valuePtr() + R.nonZeros());
-  std::vector<std::pair<PetscInt, double>> row;
-  for (PetscInt r = 0; r < rows; ++r) {
-    const auto b = static_cast<std::size_t>(R.outerIndexPtr()[r]);
-    const auto e = static_cast<std::size_t>(R.outerIndexPtr()[r + 1]);
-    bool sorted = true;
-    for (std::size_t k = b; k < e; ++k) {
-      columns[k] = numbering.global(R.innerIndexPtr()[k]);
-      sorted = sorted && (k == b || columns[k - 1] < columns[k]);
-    }
-    if (sorted) continue;  // (only rows that reach a neighbour's columns need it)
-    row.clear();
-    for (std::size_t k = b; k < e; ++k) row.emplace_back(columns[k], values[k]);
-    std::sort(row.begin(), row.end());
-    for (std::size_t k = b; k < e; ++k) {
-      columns[k] = row[k - b].first;
-      values[k] = row[k - b].second;
-    }
-  }
-  set_rows(M, rows, R.outerIndexPtr(), columns.data(), values.data());
-  return M;
 }
 
 // A prolongation's rows on this rank: its own (R, columns in `numbering`), then those of the
@@ -288,7 +208,7 @@ class LevelColumns {
 
 }  // namespace
 
-CoarseLevels aggregation_levels(Mat A) {
+CoarseLevels aggregation_levels(Mat A, LevelContactProlongations* contact) {
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(A));
   int size = 1;
   MPI_Comm_size(comm, &size);
@@ -380,6 +300,22 @@ CoarseLevels aggregation_levels(Mat A) {
       T_ghosts = SparseMatrix();
       P = distributed_matrix(comm, P_own, coarse_numbering, own_coarse);
       P_ext = extended_rows(P, P_own, fine.foreign, coarse_numbering);
+    }
+
+    // The contact prolongation's rows of this level (level_contact_prolongation.hpp): A's
+    // diagonal, and P's and T's rows, at the unknowns the contact rows touch.
+    if (contact != nullptr && contact->open()) {
+      Vector diagonal = Vector::Zero(fine.size());
+      for (Index k = 0; k < fine.count; ++k) diagonal(k) = Al.coeff(k, k);
+      const SparseMatrix* T = &t.tentative;
+      SparseMatrix T_wider;  // (on several ranks: T's own rows in P's sizes)
+      if (T->rows() != P_ext.rows() || T->cols() != P_ext.cols()) {
+        T_wider = t.tentative;
+        T_wider.conservativeResize(P_ext.rows(), P_ext.cols());
+        T_wider.makeCompressed();
+        T = &T_wider;
+      }
+      contact->add_level(comm, diagonal, P_ext, *T, omega, fine, coarse_numbering);
     }
 
     // This rank's share of P^T A P (coarse numbering local), summed into the coarse level by

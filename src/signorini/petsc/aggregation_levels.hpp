@@ -41,9 +41,13 @@ struct CoarseLevels {
   std::vector<double> jacobi_radii;
 };
 
+class LevelContactProlongations;
+
 /// The levels of A (AIJ, symmetric positive definite, its block size the unknowns of a node and
 /// its near-null space attached, as for GAMG; without one, the translations of the nodes'
-/// unknowns). Collective on A's communicator.
-[[nodiscard]] CoarseLevels aggregation_levels(Mat A);
+/// unknowns). With `contact`, each level's rows that its contact prolongation needs are given
+/// to it, finest first, while it takes them (level_contact_prolongation.hpp). Collective on A's
+/// communicator.
+[[nodiscard]] CoarseLevels aggregation_levels(Mat A, LevelContactProlongations* contact = nullptr);
 
 }  // namespace signorini::petsc

@@ -189,11 +189,27 @@ void move_row_values(Mat M, const std::vector<PetscInt>& rows, std::vector<Petsc
 }  // namespace
 
 ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows,
-                                   MPI_Comm comm, Levels levels)
+                                   MPI_Comm comm, Levels levels, bool contact_prolongation)
     : pc_(pc), comm_(comm) {
+  // On our own levels, the contact prolongation's rows come with them (of this rank's contact
+  // rows, in the rank's own unknowns of the fine level).
+  if (levels == Levels::Aggregation && contact_prolongation) {
+    PetscInt lo = 0, hi = 0;
+    check(MatGetOwnershipRange(A_setup, &lo, &hi), "the contact matrix");
+    std::vector<Eigen::Triplet<double, int>> entries;
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      for (std::size_t q = 0; q < rows[k].dofs.size(); ++q)
+        if (rows[k].normal[q] != 0.0)
+          entries.emplace_back(static_cast<int>(k), static_cast<int>(rows[k].dofs[q] - lo),
+                               rows[k].normal[q]);
+    RowMatrix N(static_cast<Index>(rows.size()), hi - lo);
+    N.setFromTriplets(entries.begin(), entries.end());
+    contact_ = std::make_unique<LevelContactProlongations>(std::move(N));
+  }
   // The levels, fine first; PCMG numbers them coarsest first.
-  CoarseLevels made =
-      levels == Levels::Aggregation ? aggregation_levels(A_setup) : gamg_levels(A_setup);
+  CoarseLevels made = levels == Levels::Aggregation ? aggregation_levels(A_setup, contact_.get())
+                                                    : gamg_levels(A_setup);
+  if (contact_ && contact_->levels() == 0) contact_.reset();
   P_.assign(made.prolongations.rbegin(), made.prolongations.rend());
   levels_.resize(made.operators.size());
   const auto radius = [&made](std::size_t depth) {  // (fine first, where the maker has it)
@@ -208,6 +224,7 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
   // N on the finest level: this rank's contact rows, numbered after the lower ranks' ones.
   const auto m = static_cast<PetscInt>(rows.size());
   const PetscInt first = count_before(m, comm_);
+  first_row_ = first;
   PetscInt local_cols = 0, cols = 0;
   check(MatGetLocalSize(A_setup, &local_cols, nullptr), "the contact matrix");
   check(MatGetSize(A_setup, &cols, nullptr), "the contact matrix");
@@ -313,9 +330,21 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
   check(PCSetType(pc_, PCMG), "multigrid");
   check(PCMGSetLevels(pc_, L, nullptr), "multigrid");
   check(PCMGSetGalerkin(pc_, PC_MG_GALERKIN_NONE), "multigrid");
+  // (The contact prolongation's levels, finest first: depth d is PCMG's level L - 1 - d.)
+  const std::size_t corrected = contact_ ? contact_->levels() : 0;
+  corrected_.resize(corrected);
+  changes_.assign(corrected, nullptr);
   for (PetscInt l = 1; l < L; ++l) {
     const Transfer& t = transfers_[static_cast<std::size_t>(l) - 1];
-    if (t.prolongation) {
+    const auto depth = static_cast<std::size_t>(L - 1 - l);
+    if (depth < corrected) {
+      auto& c = corrected_[depth];
+      c = t.prolongation
+              ? std::make_unique<CorrectedTransfer>(t.prolongation->shell(), t.restriction->shell())
+              : std::make_unique<CorrectedTransfer>(P_[static_cast<std::size_t>(l) - 1], nullptr);
+      check(PCMGSetInterpolation(pc_, l, c->interpolation()), "multigrid");
+      check(PCMGSetRestriction(pc_, l, c->restriction()), "multigrid");
+    } else if (t.prolongation) {
       check(PCMGSetInterpolation(pc_, l, t.prolongation->shell()), "multigrid");
       check(PCMGSetRestriction(pc_, l, t.restriction->shell()), "multigrid");
     } else {
@@ -342,6 +371,8 @@ ContactMultigrid::ContactMultigrid(PC pc, Mat A_setup, const std::vector<Contact
 
 ContactMultigrid::~ContactMultigrid() {
   // (The PC, the shells' user, is gone: the KSP that holds it is destroyed first.)
+  corrected_.clear();
+  for (Mat& dP : changes_) MatDestroy(&dP);
   for (Transfer& t : transfers_) {
     t.prolongation.reset();
     t.restriction.reset();
@@ -362,6 +393,17 @@ void ContactMultigrid::set_weights(const Vector& c, int block_unknowns) {
   for (std::size_t k = 0; k < row_j_.size(); ++k) a[k] = c(row_j_[k]);
   check(VecRestoreArray(c_, &a), "diag(c)");
   check(MatDiagonalSet(C_, c_, INSERT_VALUES), "diag(c)");
+  if (contact_) {
+    // The transfers P_l + dP_l and the coarse contact rows they carry, for this c (scalar
+    // weights only: with friction's blocks, A's prolongations, as serially).
+    Vector own(static_cast<Index>(row_j_.size()));
+    for (std::size_t k = 0; k < row_j_.size(); ++k)
+      own(static_cast<Index>(k)) = block_unknowns == 0 ? c(row_j_[k]) : 0.0;
+    std::vector<Mat> rows(contact_->levels() + 1, nullptr);
+    for (std::size_t d = 1; d < rows.size(); ++d) rows[d] = levels_[levels_.size() - d].N;
+    contact_->update(comm_, own, first_row_, rows, changes_);
+    for (std::size_t d = 0; d < corrected_.size(); ++d) corrected_[d]->set_change(changes_[d]);
+  }
   for (std::size_t l = 0; l < levels_.size(); ++l) {
     Coarse& lev = levels_[l];
     check(MatPtAP(C_, lev.N, MAT_REUSE_MATRIX, PETSC_DEFAULT, &lev.Q),

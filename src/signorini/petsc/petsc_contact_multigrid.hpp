@@ -22,6 +22,8 @@
 #include <vector>
 
 #include "signorini/core/types.hpp"
+#include "signorini/petsc/corrected_transfer.hpp"
+#include "signorini/petsc/level_contact_prolongation.hpp"
 #include "signorini/petsc/threaded_product.hpp"
 
 namespace signorini::petsc {
@@ -41,9 +43,12 @@ class ContactMultigrid {
   /// level's unknowns).
   /// Where the levels come from: GAMG's set-up, or signorini's smoothed aggregation on each
   /// rank's nodes (aggregation_levels.hpp; A_setup then needs its block size set too).
+  /// On our own levels, `contact_prolongation` (the default) smooths the finest prolongations
+  /// with the Newton matrix at the active contact unknowns (level_contact_prolongation.hpp);
+  /// false keeps A's prolongations (for comparison: more CG iterations).
   enum class Levels { Gamg, Aggregation };
   ContactMultigrid(PC pc, Mat A_setup, const std::vector<ContactRow>& rows, MPI_Comm comm,
-                   Levels levels = Levels::Gamg);
+                   Levels levels = Levels::Gamg, bool contact_prolongation = true);
   ~ContactMultigrid();
   ContactMultigrid(const ContactMultigrid&) = delete;
   ContactMultigrid& operator=(const ContactMultigrid&) = delete;
@@ -54,6 +59,19 @@ class ContactMultigrid {
   /// diagonal), the most unknowns that one node's rows touch on this rank, which bounds the
   /// fine smoother's eigenvalue in place of the rows' own counts; 0 without.
   void set_weights(const Vector& c, int block_unknowns = 0);
+
+  /// The levels whose transfers carry the contact prolongation (the finest ones; 0 on GAMG's).
+  [[nodiscard]] std::size_t contact_prolongation_levels() const { return corrected_.size(); }
+
+  /// Level `depth`'s change P_H - P of its prolongation (0: the fine level's) for the last
+  /// weights, or null (no change, or no contact prolongation there); and the contact rows of
+  /// level `depth` >= 1 as the coarse levels have them. For the tests.
+  [[nodiscard]] Mat prolongation_change(std::size_t depth) const {
+    return depth < changes_.size() ? changes_[depth] : nullptr;
+  }
+  [[nodiscard]] Mat contact_rows(std::size_t depth) const {
+    return depth >= 1 && depth <= levels_.size() ? levels_[levels_.size() - depth].N : nullptr;
+  }
 
   /// Unknowns per level, finest first.
   [[nodiscard]] const std::vector<PetscInt>& level_sizes() const { return sizes_; }
@@ -90,6 +108,13 @@ class ContactMultigrid {
   std::vector<Mat> P_;               // P_[l]: level l to level l + 1
   std::vector<Transfer> transfers_;  // transfers_[l] for P_[l], where threaded
   std::vector<PetscInt> sizes_;
+  // On our own levels: each level's prolongation smoothed with its Newton matrix at the active
+  // contact unknowns (level_contact_prolongation.hpp), finest first: the changes dP_l and the
+  // transfers P_l + dP_l that PCMG is given. Null / empty on GAMG's levels.
+  std::unique_ptr<LevelContactProlongations> contact_;
+  PetscInt first_row_ = 0;  // this rank's first row of the contact matrices
+  std::vector<Mat> changes_;
+  std::vector<std::unique_ptr<CorrectedTransfer>> corrected_;
   // lambda_max(D_ZZ^-1 H_ZZ) on the level's contact zone Z (the unknowns where Q's diagonal is
   // not 0): PETSc's CG estimate on the submatrix; 0 where Z is empty. Collective.
   [[nodiscard]] double zone_lambda_max(const Coarse& level) const;

@@ -186,7 +186,12 @@ void PetscNewtonSpace::set_up_solver(Mat A_aij, bool keeps_levels) {
       std::string sizes;
       for (const PetscInt n : multigrid_->level_sizes())
         sizes += fmt::format("{}{}", sizes.empty() ? "" : ", ", n);
-      return fmt::format("{}; levels of {} unknowns", what, sizes);
+      std::string contact;
+      if (const std::size_t k = multigrid_->contact_prolongation_levels(); k > 0)
+        contact =
+            fmt::format("; the finest {} smoothed with the Newton matrix at the contact",
+                        k == 1 ? std::string("prolongation") : fmt::format("{} prolongations", k));
+      return fmt::format("{}; levels of {} unknowns{}", what, sizes, contact);
     };
   const petsc::KspChoice choice =
       petsc::configure_ksp(ksp_, keeps_levels ? nullptr : H_, o_, modes(), true, keep_levels);
