@@ -170,6 +170,25 @@ assert cells == sum(len(c.data) for c in whole.cells), cells
 print(f"ok: solution.pvtu, {len(pieces)} pieces, {cells} cells, as the serial solution.vtu")
 PY
 
+# One rank on the distributed path: its one piece is solution.vtu itself, which solution.pvtu
+# names (no copy of it as solution_0.vtu), and the serial file's values.
+"$mpirun" --allow-run-as-root -n 1 "$tool" solve "$examples/box_on_sphere.toml" -q \
+  --set 'solver.distributed="petsc"' -o "$tmp/box_one_rank" > /dev/null
+/usr/bin/python3 - "$tmp/box_one_rank" "$tmp/box_serial" <<'PY'
+import json, os, re, sys
+import meshio
+out, serial = sys.argv[1:3]
+assert json.load(open(f"{out}/summary.json"))["path"] == "distributed"
+pieces = re.findall(r'<Piece Source="([^"]+)"/>', open(f"{out}/solution.pvtu").read())
+assert pieces == ["solution.vtu"], pieces
+assert not os.path.exists(f"{out}/solution_0.vtu"), "a copy of solution.vtu"
+one, whole = meshio.read(f"{out}/solution.vtu"), meshio.read(f"{serial}/solution.vtu")
+assert len(one.points) == len(whole.points)
+scale = abs(whole.point_data["displacement"]).max()
+assert abs(one.point_data["displacement"] - whole.point_data["displacement"]).max() <= 1e-8 * scale
+print("ok: one rank's solution.pvtu names solution.vtu")
+PY
+
 # Bad input: one message from rank 0, status 2, the earlier results untouched.
 before=$(md5sum "$tmp/paper_mpi/summary.json")
 expect_stop "bad input" 2 "material.E" solve "$examples/paper.toml" -q -o "$tmp/paper_mpi" \
