@@ -161,8 +161,9 @@ int solve(const SolveArguments& args, LogFormat format) {
     files.emplace_back("steps");
   }
   if (summary.path == SolvePath::Distributed) {
-    files.emplace_back("solution.pvtu");  // and its pieces solution_<rank>.vtu (one rank's:
-    if (summary.ranks > 1)                 // solution.vtu itself)
+    // solution.pvtu, and its pieces solution_<rank>.vtu (one rank's: solution.vtu itself).
+    files.emplace_back("solution.pvtu");
+    if (summary.ranks > 1)
       for (int r = 0; r < summary.ranks; ++r) files.push_back(fmt::format("solution_{}.vtu", r));
   }
   progress.report(fmt::format("results: {}\n", listed(args.output_dir, files)),

@@ -154,9 +154,9 @@ class Cg {
     multigrid_.emplace(pc, problem.setup(), problem.rows(), PETSC_COMM_WORLD,
                        ContactMultigrid::Levels::Aggregation, contact_prolongation);
   }
-  ~Cg() {
-    multigrid_.reset();
+  ~Cg() {  // (the KSP, the shells' user, first: as the Newton space does)
     KSPDestroy(&ksp_);
+    multigrid_.reset();
   }
   Cg(const Cg&) = delete;
   Cg& operator=(const Cg&) = delete;
