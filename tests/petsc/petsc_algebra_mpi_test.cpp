@@ -1,7 +1,7 @@
 // petsc_algebra.hpp's sequential_matrix: S^T as a PETSc SeqAIJ matrix on S's own arrays, its
 // columns sorted where S's were not, with the block size asked for, and S's arrays freed with
-// the matrix (run under the sanitizers' leak checks too), which held_matrix finds again. On
-// PETSC_COMM_SELF on each rank.
+// the matrix (run under the sanitizers' leak checks too), which held_matrix finds again; and
+// sequential_view, on the caller's arrays without taking them. On PETSC_COMM_SELF on each rank.
 
 #include <gtest/gtest.h>
 #include <petscmat.h>
@@ -111,6 +111,34 @@ TEST(SequentialMatrix, RefusesACommunicatorOfSeveralProcesses) {
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   if (size == 1) GTEST_SKIP() << "one process: PETSC_COMM_WORLD is a one-process communicator";
   EXPECT_THROW((void)sequential_matrix(SparseMatrix(2, 2), PETSC_COMM_WORLD), std::logic_error);
+  EXPECT_THROW((void)sequential_view(SparseMatrix(2, 2), PETSC_COMM_WORLD), std::logic_error);
+}
+
+// sequential_view: S^T on the caller's arrays, not taken (S intact after the matrix is gone),
+// and a sorted copy where S's columns are not sorted or S not compressed.
+TEST(SequentialMatrix, AViewReadsTheCallersArraysOrSortsACopy) {
+  SparseMatrix S(4, 3);
+  const std::vector<Eigen::Triplet<double>> t{{0, 0, 2.0}, {2, 0, -1.0}, {1, 1, 3.0},
+                                              {3, 1, 0.5}, {0, 2, 4.0},  {3, 2, -1.5}};
+  S.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix copy = S;
+  const Vector x = Vector::LinSpaced(4, 1.0, 4.0);
+  const Vector expected = copy.transpose() * x;
+  Mat M = sequential_view(S, PETSC_COMM_SELF, 1);
+  EXPECT_LT((product(M, x) - expected).norm(), 1e-15 * expected.norm());
+  if constexpr (std::is_same_v<PetscInt, int>) {
+    EXPECT_EQ(held_matrix(M), &S);  // (in place)
+  }
+  MatDestroy(&M);
+  EXPECT_EQ((S - copy).norm(), 0.0);  // (not freed, not changed)
+  // Column 0's entries out of order: a sorted copy, S left as it is.
+  std::swap(S.innerIndexPtr()[0], S.innerIndexPtr()[1]);
+  std::swap(S.valuePtr()[0], S.valuePtr()[1]);
+  Mat C = sequential_view(S, PETSC_COMM_SELF, 1);
+  EXPECT_NE(held_matrix(C), &S);
+  EXPECT_LT((product(C, x) - expected).norm(), 1e-15 * expected.norm());
+  EXPECT_EQ(S.innerIndexPtr()[0], 2);
+  MatDestroy(&C);
 }
 
 }  // namespace

@@ -112,6 +112,45 @@ PetscErrorCode free_held_matrix(void* held) {
 }
 }  // namespace
 
+namespace {
+
+// M made on S's arrays in place (PETSc's indices 32-bit; S compressed, each column's entries
+// ascending), with S composed on it for held_matrix(); `destroy` frees S with M, or null where
+// S is the caller's.
+Mat matrix_on_arrays(const SparseMatrix& S, MPI_Comm comm, PetscInt block,
+                     PetscErrorCode (*destroy)(void*)) {
+  const char* what = "a matrix";
+  const auto rows = static_cast<PetscInt>(S.cols());
+  const auto cols = static_cast<PetscInt>(S.rows());
+  // (PETSc reads them through non-const pointers; no value of M is ever set.)
+  auto* outer = const_cast<PetscInt*>(reinterpret_cast<const PetscInt*>(S.outerIndexPtr()));
+  auto* inner = const_cast<PetscInt*>(reinterpret_cast<const PetscInt*>(S.innerIndexPtr()));
+  auto* values = const_cast<double*>(S.valuePtr());
+  Mat M = nullptr;
+  check(MatCreateSeqAIJWithArrays(comm, rows, cols, outer, inner, values, &M), what);
+  PetscContainer container = nullptr;
+  check(PetscContainerCreate(comm, &container), what);
+  check(PetscContainerSetPointer(container, const_cast<SparseMatrix*>(&S)), what);
+  if (destroy != nullptr) check(PetscContainerSetUserDestroy(container, destroy), what);
+  check(PetscObjectCompose(reinterpret_cast<PetscObject>(M), "signorini_arrays",
+                           reinterpret_cast<PetscObject>(container)),
+        what);
+  check(PetscContainerDestroy(&container), what);  // (M holds it)
+  if (block > 1) check(MatSetBlockSize(M, block), what);
+  return M;
+}
+
+bool columns_sorted(const SparseMatrix& S) {
+  if (!S.isCompressed()) return false;
+  for (Index c = 0; c < S.cols(); ++c)
+    if (!std::is_sorted(S.innerIndexPtr() + S.outerIndexPtr()[c],
+                        S.innerIndexPtr() + S.outerIndexPtr()[c + 1]))
+      return false;
+  return true;
+}
+
+}  // namespace
+
 Mat sequential_matrix(SparseMatrix&& S, MPI_Comm comm, PetscInt block) {
   const char* what = "a matrix";
   int size = 1;
@@ -134,31 +173,33 @@ Mat sequential_matrix(SparseMatrix&& S, MPI_Comm comm, PetscInt block) {
     for (int k = b; k < e; ++k)
       std::tie(inner[k], values[k]) = column[static_cast<std::size_t>(k - b)];
   }
+  if constexpr (std::is_same_v<PetscInt, int>) {
+    // The arrays go with M: the container composed on it frees them when M goes.
+    Mat M = matrix_on_arrays(*held, comm, block, &free_held_matrix);
+    held.release();
+    return M;
+  }
   const auto rows = static_cast<PetscInt>(m);
   const auto cols = static_cast<PetscInt>(held->rows());
+  const std::vector<PetscInt> o(outer, outer + m + 1), i(inner, inner + outer[m]);
   Mat M = nullptr;
-  if constexpr (std::is_same_v<PetscInt, int>) {
-    check(MatCreateSeqAIJWithArrays(comm, rows, cols, outer, inner, values, &M), what);
-    // The arrays go with M: a container composed on it frees them when M goes.
-    PetscContainer container = nullptr;
-    check(PetscContainerCreate(comm, &container), what);
-    check(PetscContainerSetPointer(container, held.get()), what);
-    check(PetscContainerSetUserDestroy(container, &free_held_matrix), what);
-    held.release();
-    check(PetscObjectCompose(reinterpret_cast<PetscObject>(M), "signorini_arrays",
-                             reinterpret_cast<PetscObject>(container)),
-          what);
-    check(PetscContainerDestroy(&container), what);  // (M holds it)
-  } else {
-    const std::vector<PetscInt> o(outer, outer + m + 1), i(inner, inner + outer[m]);
-    check(MatCreate(comm, &M), what);
-    check(MatSetSizes(M, rows, cols, rows, cols), what);
-    check(MatSetType(M, MATSEQAIJ), what);
-    check(MatSetOption(M, MAT_SORTED_FULL, PETSC_TRUE), what);
-    check(MatSeqAIJSetPreallocationCSR(M, o.data(), i.data(), values), what);
-  }
+  check(MatCreate(comm, &M), what);
+  check(MatSetSizes(M, rows, cols, rows, cols), what);
+  check(MatSetType(M, MATSEQAIJ), what);
+  check(MatSetOption(M, MAT_SORTED_FULL, PETSC_TRUE), what);
+  check(MatSeqAIJSetPreallocationCSR(M, o.data(), i.data(), values), what);
   if (block > 1) check(MatSetBlockSize(M, block), what);
   return M;
+}
+
+Mat sequential_view(const SparseMatrix& S, MPI_Comm comm, PetscInt block) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  if (size != 1) throw std::logic_error("sequential_view: a communicator of several processes");
+  if constexpr (std::is_same_v<PetscInt, int>) {
+    if (columns_sorted(S)) return matrix_on_arrays(S, comm, block, nullptr);
+  }
+  return sequential_matrix(SparseMatrix(S), comm, block);
 }
 
 const SparseMatrix* held_matrix(Mat M) {

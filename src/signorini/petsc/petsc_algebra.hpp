@@ -40,6 +40,12 @@ void mark_spd(Mat M, const char* what);
 /// indices are not 32-bit.)
 [[nodiscard]] Mat sequential_matrix(SparseMatrix&& S, MPI_Comm comm, PetscInt block = 1);
 
+/// The same on S's arrays without taking them: S must outlive M and keep its values (PETSc never
+/// writes them). A copy, as sequential_matrix, where S is not compressed with each column's
+/// entries ascending (or PETSc's indices are not 32-bit). One rank's A for the set-up, which
+/// the model holds through the solve (instead of a copy of 1 GB at a million hex8 unknowns).
+[[nodiscard]] Mat sequential_view(const SparseMatrix& S, MPI_Comm comm, PetscInt block = 1);
+
 /// The matrix S that sequential_matrix made M from (read-only, alive as long as M), or null
 /// where M was made otherwise.
 [[nodiscard]] const SparseMatrix* held_matrix(Mat M);
