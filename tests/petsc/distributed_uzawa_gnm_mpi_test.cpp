@@ -334,6 +334,10 @@ TEST(DistributedUzawaGnm, DefaultMultigridIsTheSerialLevelsOnOneRankAndGamgOnSev
                              : "PC mg (GAMG's levels, kept";
   EXPECT_NE(distributed.summary.device.find(expected), std::string::npos)
       << distributed.summary.device;
+  // On one rank A and H are products on the serial tool's upper node blocks.
+  EXPECT_EQ(distributed.summary.device.find("A and H in upper node blocks") != std::string::npos,
+            distributed_engine()->size() == 1)
+      << distributed.summary.device;
 }
 
 // signorini's own smoothed aggregation on each rank's nodes (solver.petsc_multigrid =

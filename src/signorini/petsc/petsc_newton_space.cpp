@@ -141,11 +141,27 @@ PetscNewtonSpace::PetscNewtonSpace(const ContactProblem& problem,
   petsc::give_back_freed_memory();
   if (keeps_levels) {
     const ScopedTimer blocks(timings_, "distributed: matrices");
-    A_ = from_slots(&petsc::block_rows);
-    make_newton_matrix();
-    if (petsc::ThreadedProduct::worthwhile(H_)) {
-      threaded_A_ = std::make_unique<petsc::ThreadedProduct>(A_);
-      threaded_H_ = std::make_unique<petsc::ThreadedProduct>(H_);
+    // On one rank, A and H as shells on the serial tool's upper node blocks of A
+    // (upper_block_operator.hpp); else, or where A is not in whole node blocks, PETSc's node
+    // blocks, their products on the rank's threads.
+    // (Two calls, not one with a conditional: that would copy A where it has no padding.)
+    if (ranks == 1 && padding_.active())
+      upper_ = petsc::UpperBlockOperator::make(padding_.matrix(problem.A, first, last), comm_);
+    else if (ranks == 1)
+      upper_ = petsc::UpperBlockOperator::make(problem.A, comm_);
+    if (upper_) {
+      description_ += "; A and H in upper node blocks";
+      A_ = upper_->stiffness();
+      H_ = upper_->newton();
+      for (Mat M : {A_, H_})
+        check(PetscObjectReference(reinterpret_cast<PetscObject>(M)), "the one-rank products");
+    } else {
+      A_ = from_slots(&petsc::block_rows);
+      make_newton_matrix();
+      if (petsc::ThreadedProduct::worthwhile(H_)) {
+        threaded_A_ = std::make_unique<petsc::ThreadedProduct>(A_);
+        threaded_H_ = std::make_unique<petsc::ThreadedProduct>(H_);
+      }
     }
     check(KSPSetOperators(ksp_, newton_operator(), newton_operator()), "KSP");
   }
@@ -244,10 +260,16 @@ void PetscNewtonSpace::set_linearization(const Linearization& lin, double r) {
 
 // H = A + sum_j B_j^T W_j B_j over the contact nodes whose unknowns this rank owns, B_j the
 // node's rows of N (its normal, and with friction its tangents, all on its own dofs), then the
-// preconditioner: the coarse levels with W's diagonal.
+// preconditioner: the coarse levels with W's diagonal. H differs from A in those nodes' blocks
+// alone: each is written whole, A's block (read once) plus its terms, and a block that had terms
+// and has none now gets A's back. (Copying all of A into H for each new active set moved 680 MB
+// each time at a million hex8 unknowns.)
 void PetscNewtonSpace::form_newton_matrix(const std::function<double(Index, Index)>& weight,
                                           bool coupled_rows) {
-  check(MatCopy(A_, H_, SAME_NONZERO_PATTERN), "the Newton matrix");
+  const bool read_a = !upper_ && a_blocks_.empty() && !rows_.empty();
+  std::vector<std::vector<PetscInt>> block_dofs;  // (on the one-rank shells: H's terms)
+  std::vector<std::vector<double>> block_values;
+  std::size_t group = 0, offset = 0;
   Vector diagonal = Vector::Zero(nc_);  // W's diagonal, for the coarse levels (this rank's rows)
   int widest = 0;  // the most unknowns that one node's rows touch, for the fine smoother's bound
   std::vector<PetscInt> dofs;
@@ -277,16 +299,36 @@ void PetscNewtonSpace::form_newton_matrix(const std::function<double(Index, Inde
             block[at(rows_[a].dofs[p]) * k + at(rows_[b].dofs[q])] +=
                 w * rows_[a].normal[p] * rows_[b].normal[q];
       }
-    if (any) {
-      widest = std::max(widest, static_cast<int>(k));
+    if (read_a) {
+      a_blocks_.resize(offset + k * k);
+      check(MatGetValues(A_, static_cast<PetscInt>(k), dofs.data(), static_cast<PetscInt>(k),
+                         dofs.data(), a_blocks_.data() + offset),
+            "the Newton matrix");
+      with_terms_.push_back(0);
+    }
+    if (any) widest = std::max(widest, static_cast<int>(k));
+    if (upper_) {
+      if (any) {
+        block_dofs.push_back(dofs);
+        block_values.push_back(block);
+      }
+    } else if (any || with_terms_[group] != 0) {
+      for (std::size_t i = 0; i < k * k; ++i) block[i] += a_blocks_[offset + i];
       check(MatSetValues(H_, static_cast<PetscInt>(k), dofs.data(), static_cast<PetscInt>(k),
-                         dofs.data(), block.data(), ADD_VALUES),
+                         dofs.data(), block.data(), INSERT_VALUES),
             "the Newton matrix");
     }
+    if (!upper_) with_terms_[group] = any ? 1 : 0;
+    offset += k * k;
+    ++group;
     first = last;
   }
-  check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
-  check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
+  if (upper_) {
+    upper_->set_contact_blocks(std::move(block_dofs), std::move(block_values));
+  } else {
+    check(MatAssemblyBegin(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
+    check(MatAssemblyEnd(H_, MAT_FINAL_ASSEMBLY), "the Newton matrix");
+  }
   if (multigrid_) multigrid_->set_weights(diagonal, coupled_rows ? widest : 0);
   if (threaded_H_) threaded_H_->refresh();  // (so that the KSP sees a new operator)
   // The preconditioner is set up again.
