@@ -1,38 +1,24 @@
 #include "signorini/petsc/corrected_transfer.hpp"
 
-#include <exception>
 #include <utility>
 
 #include "signorini/petsc/petsc_check.hpp"
+#include "signorini/petsc/shell_call.hpp"
 
 namespace signorini::petsc {
 
 namespace {
 
-template <bool Interpolation, bool Add>
-PetscErrorCode shell_product(Mat shell, Vec x, Vec y, Vec w) {
-  CorrectedTransfer* transfer = nullptr;
-  PetscCall(MatShellGetContext(shell, &transfer));
-  try {
-    if constexpr (Interpolation)
-      transfer->interpolate(x, y, w, Add);
-    else
-      transfer->restrict_residual(x, y, w, Add);
-  } catch (const std::exception& e) {
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
-  }
-  return 0;
+void interpolate(const CorrectedTransfer& t, Vec x, Vec y, Vec w, bool add) {
+  t.interpolate(x, y, w, add);
 }
 
-template <bool Interpolation>
-PetscErrorCode shell_multiply(Mat shell, Vec x, Vec y) {
-  return shell_product<Interpolation, false>(shell, x, y, y);
+void restrict_residual(const CorrectedTransfer& t, Vec x, Vec y, Vec w, bool add) {
+  t.restrict_residual(x, y, w, add);
 }
 
-template <bool Interpolation>
-PetscErrorCode shell_multiply_add(Mat shell, Vec x, Vec y, Vec w) {
-  return shell_product<Interpolation, true>(shell, x, y, w);
-}
+using Interpolation = ShellProducts<CorrectedTransfer, &interpolate>;
+using Restriction = ShellProducts<CorrectedTransfer, &restrict_residual>;
 
 Mat make_shell(Mat like, bool transposed, CorrectedTransfer* context) {
   PetscInt m = 0, n = 0, rows = 0, columns = 0;
@@ -46,8 +32,8 @@ Mat make_shell(Mat like, bool transposed, CorrectedTransfer* context) {
   check(MatCreateShell(PetscObjectComm(reinterpret_cast<PetscObject>(like)), m, n, rows, columns,
                        context, &shell),
         "a multigrid transfer");
-  const auto multiply = transposed ? &shell_multiply<false> : &shell_multiply<true>;
-  const auto multiply_add = transposed ? &shell_multiply_add<false> : &shell_multiply_add<true>;
+  const auto multiply = transposed ? &Restriction::multiply : &Interpolation::multiply;
+  const auto multiply_add = transposed ? &Restriction::multiply_add : &Interpolation::multiply_add;
   check(MatShellSetOperation(shell, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiply)),
         "a multigrid transfer");
   check(MatShellSetOperation(shell, MATOP_MULT_ADD, reinterpret_cast<void (*)(void)>(multiply_add)),

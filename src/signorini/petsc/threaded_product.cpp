@@ -7,33 +7,22 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/petsc/petsc_check.hpp"
+#include "signorini/petsc/shell_call.hpp"
 
 namespace signorini::petsc {
 
 namespace {
 
 PetscErrorCode shell_multiply(Mat shell, Vec x, Vec y) {
-  ThreadedProduct* product = nullptr;
-  PetscCall(MatShellGetContext(shell, &product));
-  try {
-    product->multiply(x, y, false);
-  } catch (const std::exception& e) {
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
-  }
-  return 0;
+  return shell_call<ThreadedProduct>(
+      shell, [&](const ThreadedProduct& product) { product.multiply(x, y, false); });
 }
 
 // z = y + M x
 PetscErrorCode shell_multiply_add(Mat shell, Vec x, Vec y, Vec z) {
-  ThreadedProduct* product = nullptr;
-  PetscCall(MatShellGetContext(shell, &product));
   if (z != y) PetscCall(VecCopy(y, z));
-  try {
-    product->multiply(x, z, true);
-  } catch (const std::exception& e) {
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
-  }
-  return 0;
+  return shell_call<ThreadedProduct>(
+      shell, [&](const ThreadedProduct& product) { product.multiply(x, z, true); });
 }
 
 PetscErrorCode shell_diagonal(Mat shell, Vec d) {

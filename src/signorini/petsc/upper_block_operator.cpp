@@ -1,48 +1,23 @@
 #include "signorini/petsc/upper_block_operator.hpp"
 
-#include <exception>
 #include <utility>
 
 #include "signorini/petsc/petsc_check.hpp"
+#include "signorini/petsc/shell_call.hpp"
 
 namespace signorini::petsc {
 
 namespace {
 
 template <bool Newton>
-PetscErrorCode shell_multiply(Mat shell, Vec x, Vec y) {
-  UpperBlockOperator* op = nullptr;
-  PetscCall(MatShellGetContext(shell, &op));
-  try {
-    op->multiply(x, y, y, false, Newton);
-  } catch (const std::exception& e) {
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
-  }
-  return 0;
-}
-
-template <bool Newton>
-PetscErrorCode shell_multiply_add(Mat shell, Vec x, Vec y, Vec w) {
-  UpperBlockOperator* op = nullptr;
-  PetscCall(MatShellGetContext(shell, &op));
-  try {
-    op->multiply(x, y, w, true, Newton);
-  } catch (const std::exception& e) {
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
-  }
-  return 0;
+void apply(const UpperBlockOperator& op, Vec x, Vec y, Vec w, bool add) {
+  op.multiply(x, y, w, add, Newton);
 }
 
 template <bool Newton>
 PetscErrorCode shell_diagonal(Mat shell, Vec d) {
-  UpperBlockOperator* op = nullptr;
-  PetscCall(MatShellGetContext(shell, &op));
-  try {
-    op->diagonal(d, Newton);
-  } catch (const std::exception& e) {
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
-  }
-  return 0;
+  return shell_call<UpperBlockOperator>(
+      shell, [&](const UpperBlockOperator& op) { op.diagonal(d, Newton); });
 }
 
 template <bool Newton>
@@ -50,11 +25,12 @@ Mat make_shell(MPI_Comm comm, PetscInt n, UpperBlockOperator* op) {
   const char* what = "the one-rank products";
   Mat shell = nullptr;
   check(MatCreateShell(comm, n, n, n, n, op, &shell), what);
+  using Products = ShellProducts<UpperBlockOperator, &apply<Newton>>;
   check(MatShellSetOperation(shell, MATOP_MULT,
-                             reinterpret_cast<void (*)(void)>(&shell_multiply<Newton>)),
+                             reinterpret_cast<void (*)(void)>(&Products::multiply)),
         what);
   check(MatShellSetOperation(shell, MATOP_MULT_ADD,
-                             reinterpret_cast<void (*)(void)>(&shell_multiply_add<Newton>)),
+                             reinterpret_cast<void (*)(void)>(&Products::multiply_add)),
         what);
   check(MatShellSetOperation(shell, MATOP_GET_DIAGONAL,
                              reinterpret_cast<void (*)(void)>(&shell_diagonal<Newton>)),
