@@ -55,7 +55,7 @@ void stage_pieces(StagedFiles& staged, const std::filesystem::path& folder, cons
   std::vector<std::string> pieces;
   for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("{}_{}.vtu", stem, r));
   // One rank: its piece is the whole solution, `<stem>.vtu`, which the .pvtu names (a copy as
-  // `<stem>_0.vtu` cost another 70 MB and half a second at a million unknowns).
+  // `<stem>_0.vtu` cost another 70 MB at a million unknowns).
   if (ranks == 1) pieces = {stem + ".vtu"};
   std::string pvtu;
   staged.add(folder / pieces[static_cast<std::size_t>(rank)],
