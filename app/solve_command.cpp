@@ -161,10 +161,9 @@ int solve(const SolveArguments& args, LogFormat format) {
     files.emplace_back("steps");
   }
   if (summary.path == SolvePath::Distributed) {
-    // solution.pvtu, and its pieces solution_<rank>.vtu (one rank's: solution.vtu itself).
-    files.emplace_back("solution.pvtu");
-    if (summary.ranks > 1)
-      for (int r = 0; r < summary.ranks; ++r) files.push_back(fmt::format("solution_{}.vtu", r));
+    files.emplace_back("solution.pvtu");  // and its pieces, unless listed (one rank's)
+    for (const std::string& piece : solution_pieces("solution", summary.ranks))
+      if (std::find(files.begin(), files.end(), piece) == files.end()) files.push_back(piece);
   }
   progress.report(fmt::format("results: {}\n", listed(args.output_dir, files)),
                   {{"event", "results"}, {"files", paths(args.output_dir, files)}});

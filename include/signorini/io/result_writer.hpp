@@ -4,6 +4,8 @@
 // (io/atomic_file.hpp), so that a failed run leaves the results of an earlier one intact.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"
@@ -30,6 +32,10 @@ void write_load_step(const std::filesystem::path& outdir, int step, const Contac
 
 /// The file names of step `step` relative to the output folder ("steps/solution_0003.vtu").
 std::string load_step_file(const std::string& stem, int step, const std::string& extension);
+
+/// The pieces that a distributed run's `<stem>.pvtu` names (docs/distributed.md, "Results"):
+/// `<stem>_<rank>.vtu` for each of `ranks` ranks, or on one rank `<stem>.vtu` itself.
+std::vector<std::string> solution_pieces(const std::string& stem, int ranks);
 
 /// Creates a folder and its parents; throws InputError "cannot create output folder ...". Called
 /// by write_results; the tool also calls it before the solve, so that a bad -o fails fast.

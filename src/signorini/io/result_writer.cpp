@@ -52,11 +52,7 @@ void stage_pieces(StagedFiles& staged, const std::filesystem::path& folder, cons
   std::vector<Index> cells;
   for (Index c = 0; c < model.mesh.num_cells(); ++c)
     if (model.cell_rank(c, starts) == rank) cells.push_back(c);
-  std::vector<std::string> pieces;
-  for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("{}_{}.vtu", stem, r));
-  // One rank: its piece is the whole solution, `<stem>.vtu`, which the .pvtu names (a copy as
-  // `<stem>_0.vtu` cost another 70 MB at a million unknowns).
-  if (ranks == 1) pieces = {stem + ".vtu"};
+  const std::vector<std::string> pieces = solution_pieces(stem, ranks);
   std::string pvtu;
   staged.add(folder / pieces[static_cast<std::size_t>(rank)],
              solution_vtu_piece(result, model, cells, pieces, rank == 0 ? &pvtu : nullptr));
@@ -86,6 +82,15 @@ void write_on_every_rank(const std::filesystem::path& outdir, const DistributedE
 }
 
 }  // namespace
+
+std::vector<std::string> solution_pieces(const std::string& stem, int ranks) {
+  // One rank: its piece is the whole solution, `<stem>.vtu` (a copy as `<stem>_0.vtu` cost
+  // another 70 MB at a million unknowns).
+  if (ranks == 1) return {stem + ".vtu"};
+  std::vector<std::string> pieces;
+  for (int r = 0; r < ranks; ++r) pieces.push_back(fmt::format("{}_{}.vtu", stem, r));
+  return pieces;
+}
 
 void write_load_step(const std::filesystem::path& outdir, int step, const ContactResult& result,
                      const Model& model) {

@@ -35,7 +35,7 @@ RowMatrix rows_with(const RowMatrix& full, const RowMatrix* D, const std::vector
         inner[at] = full.innerIndexPtr()[k];
         values[at] = full.valuePtr()[k];
       }
-      if (D != nullptr && add[static_cast<std::size_t>(r)] != 0 && r < D->rows()) {
+      if (D != nullptr && add[static_cast<std::size_t>(r)] != 0) {
         // (Both rows' columns ascending: one merge.)
         int q = at - (e - b);
         for (int k = D->outerIndexPtr()[r]; k < D->outerIndexPtr()[r + 1]; ++k) {
@@ -89,7 +89,6 @@ void LevelContactProlongations::add_level(MPI_Comm comm, const Vector& diagonal,
   }
   levels_.push_back(Level{std::move(prolongation), fine.count, fine.size(), coarse});
   coarse_N_.push_back(std::move(next));
-  coarse_numbering_.push_back(coarse);
   open_ = local != 0;
 }
 
@@ -135,7 +134,7 @@ void LevelContactProlongations::update(MPI_Comm comm, const Vector& c, PetscInt 
     if (l > 0) {
       // Active rows with D, rows no longer active back to A's prolongations' (N_l).
       current = rows_with(coarse_N_[l - 1], D.nonZeros() > 0 ? &D : nullptr, write, active);
-      write_rows(rows[l], current, coarse_numbering_[l - 1], first_row, write);
+      write_rows(rows[l], current, levels_[l - 1].coarse, first_row, write);
     }
     if (l == levels_.size()) break;
     const Level& lev = levels_[l];

@@ -67,11 +67,12 @@ class LevelContactProlongations {
   static void write_rows(Mat M, const RowMatrix& current, const ExtNumbering& numbering,
                          PetscInt first_row, const std::vector<char>& write);
 
-  RowMatrix N_;                                 // the fine level's rows
-  std::vector<Level> levels_;                   // finest first
-  std::vector<RowMatrix> coarse_N_;             // coarse_N_[l - 1]: level l's rows N P_0 ... P_l-1
-  std::vector<ExtNumbering> coarse_numbering_;  // their columns' numbering
-  std::vector<char> was_active_;                // the rows written with the P_H's last time
+  RowMatrix N_;                // the fine level's rows
+  std::vector<Level> levels_;  // finest first
+  // coarse_N_[l - 1]: level l's rows N P_0 ... P_l-1, its columns numbered as levels_[l - 1]'s
+  // coarse.
+  std::vector<RowMatrix> coarse_N_;
+  std::vector<char> was_active_;  // the rows written with the P_H's last time
   bool open_ = true;
 };
 

@@ -110,9 +110,6 @@ PetscErrorCode free_held_matrix(void* held) {
   delete static_cast<SparseMatrix*>(held);
   return 0;
 }
-}  // namespace
-
-namespace {
 
 // M made on S's arrays in place (PETSc's indices 32-bit; S compressed, each column's entries
 // ascending), with S composed on it for held_matrix(); `destroy` frees S with M, or null where

@@ -71,10 +71,6 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   // preconditioner set up for it; `coupled_rows`: the fine smoother's bound counts the unknowns
   // that a node's rows touch together (friction's blocks) rather than each row's own.
   void form_newton_matrix(const std::function<double(Index, Index)>& weight, bool coupled_rows);
-  // A's values in the blocks of this rank's contact nodes (rows_ grouped by node, in order), and
-  // per node whether H's block holds contact terms now (form_newton_matrix).
-  std::vector<PetscScalar> a_blocks_;
-  std::vector<char> with_terms_;
   void set_up_solver(Mat A_aij, bool keeps_levels);
 
   // The rigid-body modes of this rank's slots (a partitioned problem's own rows, unpadded, need
@@ -99,6 +95,10 @@ class PetscNewtonSpace final : public DistributedNewtonSpace {
   std::unique_ptr<petsc::ThreadedProduct> threaded_A_, threaded_H_;
   // One rank with the levels kept: A_ and H_ are its shells (upper_block_operator.hpp).
   std::unique_ptr<petsc::UpperBlockOperator> upper_;
+  // Else: A's values in the blocks of this rank's contact nodes (rows_ grouped by node, in
+  // order), and per node whether H's block holds contact terms now (form_newton_matrix).
+  std::vector<PetscScalar> a_blocks_;
+  std::vector<char> with_terms_;
   [[nodiscard]] Mat newton_operator() const { return threaded_H_ ? threaded_H_->shell() : H_; }
   Vec b_ = nullptr, x_ = nullptr, x_new_ = nullptr, residual_ = nullptr, d_ = nullptr,
       Ad_ = nullptr, work_ = nullptr;
