@@ -15,6 +15,7 @@ int run_check(const CheckArguments& args) {
   const LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
   print_warnings(loaded);
   const Model model = build_model_for(loaded);
+  print_warnings(model_warnings(loaded, model));
   // A solve on the GPU would stop at its first step without one: say so now (docs/gpu.md).
   if (loaded.spec.solver.device == DeviceKind::Cuda) {
     const auto backend = make_backend(DeviceKind::Cuda);  // throws InputError, with the reason

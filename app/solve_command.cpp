@@ -91,6 +91,12 @@ int solve(const SolveArguments& args, LogFormat format) {
 
   progress.phase("building the model");
   const Model model = build_model_for(loaded);
+  if (root) {
+    const std::vector<std::string> more = model_warnings(loaded, model);
+    print_warnings(more);
+    if (format == LogFormat::Json)
+      for (const std::string& w : more) progress.report("", {{"event", "warning"}, {"message", w}});
+  }
   progress.report(fmt::format("model: {} dofs ({} free), {} contact nodes\n", model.num_dofs(),
                               model.dofs.num_free(), model.problem.contact.size()),
                   {{"event", "model"},

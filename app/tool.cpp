@@ -67,8 +67,9 @@ namespace signorini::app {
 
 int run_tool(int argc, char** argv) {
   CLI::App app{
-      "Frictionless contact of a linear elastic body with a rigid foundation (Signorini "
-      "problem), by the modified-Lagrangian Uzawa method with generalised Newton steps.\n"
+      "Contact of a linear elastic body with rigid obstacles (the Signorini problem, "
+      "frictionless or with Tresca or Coulomb friction), in 2D and 3D, by the "
+      "modified-Lagrangian Uzawa method with generalised Newton steps.\n"
       "Exit status: 0 ok, 2 bad input, 3 not converged (results still written), "
       "4 numerical failure, 1 other errors.",
       "signorini"};

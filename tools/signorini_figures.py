@@ -10,8 +10,8 @@ can take the module compiled in advance (__pycache__, written by the build and t
 instead of compiling its 1,300 lines on every run.
 
 `signorini plot OUTDIR` and `signorini solve ... --plot` run this script. It reads
-OUTDIR/summary.json, contact.csv and solution.vtu and writes, as PNG (and SVG or PDF with
---format):
+OUTDIR/summary.json, contact.csv and solution.vtu (in 3D contact.vtu) and writes, as PNG (and SVG
+or PDF with --format):
 
     contact_displacement   normal and tangential displacement along the contact boundary
     contact_pressure       the contact pressure along the contact boundary, where the body touches
@@ -23,10 +23,14 @@ OUTDIR/summary.json, contact.csv and solution.vtu and writes, as PNG (and SVG or
 
 and for a 3D problem (contact.csv with a z column):
 
-    contact_pressure_map   the pressure over the contact surface, seen along its mean normal
-    contact_pressure       the pressure along a line through the centre of the contact zone, every
-                           node at its distance from the centre, and Hertz's profile where it
-                           applies (a rigid sphere, or --hertz-radius R for a body of radius R)
+    contact_pressure_map   the pressure over the faces of the contact surface (contact.vtu's)
+                           that face the obstacle, seen along the normal where the body presses;
+                           the title gives the contact resultant (summary.json's resultants)
+    contact_pressure       the pressure along a line through the centre of the contact zone (on
+                           the symmetry planes of a part of a body), every node at its distance
+                           from the centre, and Hertz's profile where it applies (a rigid sphere,
+                           or --hertz-radius R for a body of radius R); for a line contact, across
+                           the line, against the distance from its axis
     convergence            as in 2D
     contact_friction_map   with friction: each node's state over the contact surface, and the
                            tangential traction as arrows
@@ -256,8 +260,13 @@ def read_contact_csv(outdir, name="contact.csv"):
         if "z" in header:  # 3D: the tangential displacement is a vector
             columns = {k: body[:, header.index(k)]
                        for k in ("x", "y", "z", "u_n", "pressure", "gap", "n_x", "n_y", "n_z")}
-            columns["u_t"] = np.sqrt(sum(body[:, header.index(k)] ** 2
-                                         for k in ("u_tx", "u_ty", "u_tz")))
+            tangential = np.stack([body[:, header.index(k)] for k in ("u_tx", "u_ty", "u_tz")],
+                                  axis=1)
+            columns["u_t"] = np.linalg.norm(tangential, axis=1)
+            # The displacement u_n nu + u_t (for the symmetry planes, where contact.vtu's is
+            # not there)
+            normal = np.stack([columns[k] for k in ("n_x", "n_y", "n_z")], axis=1)
+            columns["u"] = columns["u_n"][:, None] * normal + tangential
         else:
             columns = {k: body[:, header.index(k)]
                        for k in ("x", "y", "u_n", "u_t", "pressure", "gap")}
@@ -571,6 +580,9 @@ def step_view(summary, k):
     view = dict(summary)
     step = steps[k - 1]
     view["contact_force"] = step.get("contact_force")
+    # The resultants are the last step's: a step's map gives its contact_force instead.
+    view.pop("resultants", None)
+    view.pop("contact_force_vector", None)
     view["converged"] = step.get("converged", True)
     view["termination"] = "at this step"
     view["_step"] = k
@@ -1133,6 +1145,13 @@ def figure_deformed(summary, vtu, contact, scale, units, measure):
     obstacles = summary.get("problem", {}).get("contact", {})
     obstacles = obstacles if isinstance(obstacles, list) else [obstacles]
     shapes = [o.get("obstacle", "gap") for o in obstacles]
+    # The magnified body may reach into a plane or disc that the true one only touches: the
+    # legend says so where it does (deeper than 0.1 % of the body's size), so that the overlap
+    # is not read as penetration.
+    def crossing(depth):
+        return bool(s != 1.0 and np.nanmax(depth) > 1e-3 * size)
+
+    magnified_note = f" (the body, its displacement magnified {s:g} times, crosses it)"
     for i, obstacle in enumerate(obstacles):
         shape = shapes[i]
         first = i == shapes.index(shape)  # one legend entry per kind
@@ -1141,14 +1160,18 @@ def figure_deformed(summary, vtu, contact, scale, units, measure):
             t = np.array([n[1], -n[0]]) / np.hypot(*n)
             reach = 2.0 * float(np.hypot(*(hi - lo)))
             line = np.array([p - reach * t, p + reach * t])
+            depth = -((deformed - p[:2]) @ (n[:2] / np.hypot(*n[:2])))
+            label = "rigid plane (not moved)" + (magnified_note if crossing(depth) else "")
             ax.plot(line[:, 0], line[:, 1], color="tab:brown", lw=3, alpha=0.8,
-                    solid_capstyle="butt", label="rigid plane (not moved)" if first else None,
-                    zorder=0)
+                    solid_capstyle="butt", label=label if first else None, zorder=0)
         elif shape == "disc":
             c, r = np.array(obstacle["centre"], float), float(obstacle["radius"])
             a = np.linspace(0.0, 2.0 * np.pi, 721)
+            distance = np.hypot(*(deformed - c[:2]).T)
+            depth = distance - r if obstacle.get("inside", False) else r - distance
+            label = "rigid disc (not moved)" + (magnified_note if crossing(depth) else "")
             ax.plot(c[0] + r * np.cos(a), c[1] + r * np.sin(a), color="tab:brown", lw=3,
-                    alpha=0.8, label="rigid disc (not moved)" if first else None, zorder=0)
+                    alpha=0.8, label=label if first else None, zorder=0)
         else:
             if not has_gap:
                 label = "rigid foundation"
@@ -1308,30 +1331,157 @@ def figure_convergence(summary, measure):
 # 3D: the contact surface -------------------------------------------------------------------
 
 AXIS_NAMES = "xyz"
+NBSP = "\u00a0"  # a space that textwrap does not break
+
+# The linear pieces of contact.vtu's faces (VTK cell type: the pieces as positions in the cell's
+# node list, counterclockwise as the face). A quadratic face is drawn as the pieces between its
+# corner and middle nodes, so that the middle nodes' pressures show as well.
+FACE_PIECES = {
+    5: [(0, 1, 2)],  # VTK_TRIANGLE
+    9: [(0, 1, 2, 3)],  # VTK_QUAD
+    22: [(0, 3, 5), (3, 1, 4), (5, 4, 2), (3, 4, 5)],  # VTK_QUADRATIC_TRIANGLE
+    23: [(0, 4, 7), (4, 1, 5), (5, 2, 6), (6, 3, 7), (4, 5, 6, 7)],  # VTK_QUADRATIC_QUAD
+    28: [(0, 4, 8, 7), (4, 1, 5, 8), (8, 5, 2, 6), (7, 8, 6, 3)],  # VTK_BIQUADRATIC_QUAD
+}
+
+SurfaceView = namedtuple("SurfaceView", "i j k side a b seen pieces spacing")
+SurfaceView.__doc__ = """The contact surface as the 3D figures show it: seen along axis k from
+the side `side` (+1: from k = +infinity, -1: from -infinity, 0: no side), (i, j) the other two
+axes and (a, b) every node's coordinates along them; `seen` marks the nodes of the faces drawn,
+`pieces` those faces as rows of four node numbers (a triangle's last repeated), the farthest
+first (None where contact.vtu gave no faces: then every node is seen), `spacing` a typical
+distance between neighbouring nodes in the plane (i, j)."""
+
+
+def read_contact_faces(outdir, contact):
+    """contact.vtu's faces cut into linear pieces (FACE_PIECES), as rows of four numbers of
+    contact.csv's nodes (a triangle's last repeated), with the nodes' displacement: {"pieces",
+    "displacement"}. contact.vtu holds the contact nodes in contact.csv's order; None where it
+    is missing (results of an older signorini), unreadable, or not of these nodes (raises
+    UsageError then, for the caller to say)."""
+    import numpy as np
+
+    path = os.path.join(outdir, "contact.vtu")
+    if not os.path.exists(path):
+        return None
+    vtu = read_vtu(path)
+    points = np.asarray(vtu["points"], dtype=float)
+    nodes = np.stack([contact[name] for name in AXIS_NAMES], axis=1)
+    size = float(np.max(np.ptp(nodes, axis=0))) if len(nodes) else 0.0
+    if points.shape != nodes.shape or not np.allclose(points, nodes, rtol=0.0,
+                                                      atol=1e-9 * max(size, 1e-300)):
+        raise UsageError(f"'{path}' does not hold the nodes of contact.csv")
+    offsets = np.asarray(vtu["offsets"], dtype=np.int64)
+    starts = np.concatenate([[0], offsets[:-1]])
+    connectivity = np.asarray(vtu["connectivity"], dtype=np.int64)
+    types = np.asarray(vtu["types"])
+    pieces = []
+    for kind in np.unique(types):
+        if int(kind) not in FACE_PIECES:
+            raise UsageError(f"'{path}': cells of VTK type {int(kind)} are not faces")
+        cells = np.flatnonzero(types == kind)
+        for piece in FACE_PIECES[int(kind)]:
+            columns = list(piece) + [piece[-1]] * (4 - len(piece))
+            pieces.append(connectivity[starts[cells][:, None] + np.array(columns)[None, :]])
+    pieces = np.concatenate(pieces) if pieces else np.zeros((0, 4), np.int64)
+    if pieces.size and (pieces.min() < 0 or pieces.max() >= len(nodes)):
+        raise UsageError(f"'{path}': a face names a node that is not there")
+    displacement = vtu["point_data"].get("displacement")
+    if displacement is not None and np.shape(displacement) != nodes.shape:
+        displacement = None
+    return {"pieces": pieces, "displacement": displacement}
+
+
+def contact_faces(outdir, contact, warnings=True):
+    """read_contact_faces, or None with a warning where contact.vtu cannot serve (the figures
+    then triangulate the nodes, as for results without it)."""
+    try:
+        return read_contact_faces(outdir, contact)
+    except UsageError as e:
+        if warnings:
+            warn(f"{e}; the contact surface is drawn from contact.csv's nodes alone")
+        return None
+
+
+def view_axis(contact):
+    """(k, side): the axis the contact surface is seen along and from which side. The axis
+    closest to the outward normal where the body presses (the normals weighted by the pressure,
+    which leaves out the side walls of a contact part that do not touch), or, without contact,
+    to the mean normal; seen from the side it faces, the obstacle's (a box face from below, a
+    sphere's cap from outside)."""
+    import numpy as np
+
+    normals = np.stack([contact["n_x"], contact["n_y"], contact["n_z"]], axis=1)
+    p = np.maximum(contact["pressure"], 0.0)
+    n = (p @ normals) / np.sum(p) if np.any(p > 0) else np.mean(normals, axis=0)
+    if not np.any(n != 0):
+        return 2, 0
+    k = int(np.argmax(np.abs(n)))
+    # A surface pressed all round (a body inside a ring) faces no side: its faces are all drawn.
+    typical = float(np.mean(np.linalg.norm(normals, axis=1)))
+    return k, (0 if abs(n[k]) < 0.05 * typical else int(np.sign(n[k])))
+
+
+def facing_pieces(contact, pieces, k, side):
+    """The pieces that face the viewer on the side `side` of axis k (their outward normal, which
+    the nodes' normals orient, within about 87 degrees of the direction towards him), the
+    farthest first: the faces of the contact surface that press on the obstacle, without the
+    side walls (seen edge on, their nodes would fall on the patch) and the faces turned away."""
+    import numpy as np
+
+    if side == 0 or len(pieces) == 0:
+        return pieces
+    points = np.stack([contact[name] for name in AXIS_NAMES], axis=1)
+    normals = np.stack([contact["n_x"], contact["n_y"], contact["n_z"]], axis=1)
+    corners = points[pieces]
+    # The cross product of the diagonals: twice the area along the normal (a triangle's too,
+    # its last corner repeated).
+    normal = np.cross(corners[:, 2] - corners[:, 0], corners[:, 3] - corners[:, 1])
+    outward = np.einsum("fd,fd->f", normal, normals[pieces].sum(axis=1))
+    normal *= np.where(outward < 0, -1.0, 1.0)[:, None]
+    length = np.linalg.norm(normal, axis=1)
+    facing = side * normal[:, k] > 0.05 * length
+    kept = pieces[facing & (length > 0)]
+    depth = side * points[kept].mean(axis=1)[:, k]
+    return kept[np.argsort(depth, kind="stable")]
+
+
+def surface_view(contact):
+    """The SurfaceView of `contact` (its faces, where contact.vtu gave them, in
+    contact["faces"])."""
+    import numpy as np
+
+    k, side = view_axis(contact)
+    i, j = [m for m in range(3) if m != k]
+    a, b = contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]
+    faces = contact.get("faces")
+    pieces = facing_pieces(contact, faces["pieces"], k, side) if faces else None
+    if pieces is None or len(pieces) == 0:
+        return SurfaceView(i, j, k, side, a, b, np.ones(len(a), dtype=bool), None,
+                           node_spacing(a, b))
+    seen = np.zeros(len(a), dtype=bool)
+    seen[pieces.ravel()] = True
+    # The spacing where the body touches: a mesh is often finer there than elsewhere.
+    touching = np.any(contact["pressure"][pieces] > 0, axis=1)
+    near = pieces[touching] if np.any(touching) else pieces
+    ends = np.roll(near, -1, axis=1)
+    edges = np.hypot(a[near] - a[ends], b[near] - b[ends]).ravel()
+    edges = edges[edges > 0]  # not a triangle's repeated corner
+    spacing = float(np.median(edges)) if edges.size else 0.0
+    return SurfaceView(i, j, k, side, a, b, seen, pieces, spacing)
 
 
 def surface_plane(contact):
-    """(i, j): the two coordinates that show the contact surface best, seen along its mean
-    normal: the coordinate plane most nearly perpendicular to it (the surface of a box face, or a
-    cap of a sphere, seen from outside)."""
-    import numpy as np
-
-    n = np.array([np.mean(contact["n_x"]), np.mean(contact["n_y"]), np.mean(contact["n_z"])])
-    dropped = int(np.argmax(np.abs(n))) if np.any(n != 0) else 2
-    i, j = [k for k in range(3) if k != dropped]
+    """(i, j): the two coordinates that show the contact surface best (view_axis)."""
+    k, _ = view_axis(contact)
+    i, j = [m for m in range(3) if m != k]
     return i, j
-
-
-def surface_coordinates(contact):
-    """(i, j, a, b): the plane of surface_plane() and the nodes' coordinates in it."""
-    i, j = surface_plane(contact)
-    return i, j, contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]
 
 
 def surface_triangulation(a, b):
     """A Delaunay triangulation of the projected nodes without the triangles that bridge gaps
     (between two contact surfaces, or across a hole): those with an edge over three times the
-    median edge length."""
+    median edge length. For results without contact.vtu, whose faces are drawn otherwise."""
     import numpy as np
     from matplotlib.tri import Triangulation
 
@@ -1347,14 +1497,70 @@ def surface_triangulation(a, b):
     return tri
 
 
-def contact_zone(contact, i, j):
+def subdivision_weights(m, triangle):
+    """(weights at the corners of each sub-piece, weights at its centre): a piece cut into m x m
+    sub-pieces (quadrilaterals, or triangles as quadrilaterals with the last corner repeated),
+    as weights of the piece's four corners (linear on a triangle, bilinear on a
+    quadrilateral)."""
+    import numpy as np
+
+    def weights(s, t):
+        if triangle:  # s, t barycentric towards corners 1 and 2; corner 3 is corner 2
+            return [1.0 - s - t, s, t, 0.0]
+        return [(1 - s) * (1 - t), s * (1 - t), s * t, (1 - s) * t]
+
+    corners = []
+    for u in range(m):
+        for v in range(m):
+            if triangle:
+                if u + v < m:
+                    corners.append([(u, v), (u + 1, v), (u, v + 1), (u, v + 1)])
+                if u + v < m - 1:
+                    corners.append([(u + 1, v), (u + 1, v + 1), (u, v + 1), (u, v + 1)])
+            else:
+                corners.append([(u, v), (u + 1, v), (u + 1, v + 1), (u, v + 1)])
+    at = np.array([[weights(s / m, t / m) for s, t in c] for c in corners])
+    distinct = [sorted(set(c), key=c.index) for c in corners]
+    centre = np.array([np.mean([weights(s / m, t / m) for s, t in d], axis=0) for d in distinct])
+    return at, centre
+
+
+def pieces_coloured(view, values, most=30000):
+    """(polygons, colours): the pieces of `view` in the plane (i, j), each cut into up to 10 x 10
+    sub-pieces (as many as keep their number below `most`), each coloured by `values`
+    interpolated to its centre: a flat picture of the nodal values, smooth where the mesh is
+    coarse, in the pieces' order (the farthest first)."""
+    import numpy as np
+
+    pieces = view.pieces
+    m = int(max(1, min(10, math.sqrt(most / max(len(pieces), 1)))))
+    xy = np.stack([view.a, view.b], axis=1)
+    polygons, colours, order = [], [], []
+    triangle = pieces[:, 3] == pieces[:, 2]
+    for kind in (True, False):
+        rows = np.flatnonzero(triangle == kind)
+        if len(rows) == 0:
+            continue
+        at, centre = subdivision_weights(m, kind)
+        chosen = pieces[rows]
+        polygons.append(np.einsum("sck,fkd->fscd", at, xy[chosen]).reshape(-1, 4, 2))
+        colours.append(np.einsum("sk,fk->fs", centre, values[chosen]).ravel())
+        order.append(np.repeat(rows, len(at)))
+    order = np.concatenate(order)
+    keep = np.argsort(order, kind="stable")  # back to the pieces' order, farthest first
+    return np.concatenate(polygons)[keep], np.concatenate(colours)[keep]
+
+
+def contact_zone(contact, i, j, seen=None):
     """The centre of the contact zone (the pressure-weighted mean of the touching nodes) and its
-    extent, in the plane (i, j); None without contact."""
+    extent, in the plane (i, j); None without contact. `seen`: the nodes to count (all)."""
     import numpy as np
 
     coords = [contact[AXIS_NAMES[i]], contact[AXIS_NAMES[j]]]
     p = contact["pressure"]
     touching = p > 0
+    if seen is not None:
+        touching &= seen
     if not np.any(touching):
         return None
     w = p[touching]
@@ -1376,7 +1582,7 @@ def node_spacing(a, b):
                                     b[edges[:, 0]] - b[edges[:, 1]])))
 
 
-def zoom_onto_zone(ax, zone, a, b):
+def zoom_onto_zone(ax, zone, view):
     """A small contact zone (contact_zone) on a large surface: the axes zoomed onto it. Returns
     whether they were."""
     import numpy as np
@@ -1385,8 +1591,8 @@ def zoom_onto_zone(ax, zone, a, b):
         return False
     _, ((a0, a1), (b0, b1)) = zone
     c0, c1 = 0.5 * (a0 + a1), 0.5 * (b0 + b1)  # the middle of the zone's extent
-    size = max(a1 - a0, b1 - b0, node_spacing(a, b) * 4)
-    whole = max(np.ptp(a), np.ptp(b))
+    size = max(a1 - a0, b1 - b0, view.spacing * 4)
+    whole = max(np.ptp(view.a[view.seen]), np.ptp(view.b[view.seen]))
     if size >= 0.4 * whole:
         return False
     half = 0.8 * size
@@ -1397,17 +1603,27 @@ def zoom_onto_zone(ax, zone, a, b):
 
 def place_map(fig, ax, measure, title, cax=None):
     """A map (equal axes) under its title, as large as the figure allows: with a colour bar
-    `cax` to its right, without one centred."""
+    `cax` to its right, without one centred. The figure loses the height that a map wider than
+    tall leaves empty, and the colour bar is as tall as the map."""
     w, h = fig.get_size_inches() * 72.0
     top_margin = BORDER + measure.height(title) + TITLE_PAD
     bar = 12.0 + 14.0 + 46.0 + 2 * TEXT_SIZE if cax else 0.0  # the bar, its ticks and label
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    ratio = abs(y1 - y0) / abs(x1 - x0) if x1 != x0 and y1 != y0 else 1.0
     for _ in range(2):
         left, offset = measure.left(ax)
         bottom, _ = measure.bottom(ax)
         left += BORDER
         bottom += BORDER
+        width = w - left - bar - BORDER
         height = h - bottom - top_margin - offset
-        size = min(w - left - bar - BORDER, height)
+        size = min(width, height)
+        if ratio < 1.0:  # wider than tall: as wide as the room allows, the figure lower
+            size = min(width, height / ratio)
+            height = max(size * ratio, 0.4 * size)
+            h = bottom + height + top_margin + offset
+            fig.set_size_inches(w / 72.0, h / 72.0)
         if cax:
             place(fig, ax, left, bottom, size, height)
             place(fig, cax, left + size + 12.0, bottom, 14.0, height)
@@ -1416,35 +1632,37 @@ def place_map(fig, ax, measure, title, cax=None):
 
 
 def figure_friction_map(summary, contact, units, measure):
-    """3D friction: the contact surface seen along its mean normal, each node coloured by its
-    state (sticking, sliding, separated), the tangential traction as arrows in that plane."""
+    """3D friction: the contact surface seen as in the pressure map, each node of the faces seen
+    coloured by its state (sticking, sliding, separated), the tangential traction as arrows in
+    that plane."""
     import numpy as np
 
-    i, j, a, b = surface_coordinates(contact)
+    view = surface_view(contact)
+    i, j, a, b, seen = view.i, view.j, view.a, view.b, view.seen
     states = contact["state"]
     q = contact["tangential"]
     fig = new_figure(7.5, 7.0)
     ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
     for state, color in (("separated", "0.75"), ("sticking", "tab:green"),
                          ("sliding", "tab:purple")):
-        rows = np.array([s == state for s in states], dtype=bool)
+        rows = np.array([s == state for s in states], dtype=bool) & seen
         if np.any(rows):
             ax.plot(a[rows], b[rows], "o", color=color, ms=2.5 if len(a) > 2000 else 4,
                     label=f"{state}: {int(np.count_nonzero(rows))}", zorder=2)
-    moving = np.hypot(q[:, i], q[:, j]) > 0
+    moving = (np.hypot(q[:, i], q[:, j]) > 0) & seen
     if np.any(moving):
         arrows = ax.quiver(a[moving], b[moving], q[moving, i], q[moving, j], color="black",
                            angles="xy", zorder=3, width=0.003)
-        reference = float(np.max(np.hypot(q[:, i], q[:, j])))
+        reference = float(np.max(np.hypot(q[moving, i], q[moving, j])))
         ax.quiverkey(arrows, 0.82, 1.0, reference, with_unit(f"{reference:.3g}", units.stress)
                      if units.stress else f"{reference:.3g}", labelpos="W", coordinates="axes",
                      fontproperties={"size": LEGEND_SIZE})
     ax.set_aspect("equal")
     ax.set_xlabel(axis_label(AXIS_NAMES[i], units.length))
     ax.set_ylabel(axis_label(AXIS_NAMES[j], units.length))
-    zoomed = zoom_onto_zone(ax, contact_zone(contact, i, j), a, b)
+    zoomed = zoom_onto_zone(ax, contact_zone(contact, i, j, seen), view)
     subtitle = (f"Friction ({friction_law(summary)}) over the contact surface, seen along "
-                f"{AXIS_NAMES[3 - i - j]}; arrows: the tangential traction")
+                f"{AXIS_NAMES[view.k]}; arrows: the tangential traction")
     subtitle += " (zoomed onto the contact zone)" if zoomed else ""
     title = wrapped(title_of(summary) + "\n" + subtitle, 7.5)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
@@ -1453,43 +1671,97 @@ def figure_friction_map(summary, contact, units, measure):
     return fig, describe_limits(ax)
 
 
+def contact_resultant(summary, k):
+    """(R_k, |R|): the force of the obstacle on the body that the reactions balance
+    (summary.json's resultants.contact, -sum_j h_j l_j nu_j with friction's tangential forces),
+    its component along axis k and its length; None where the summary has none (results of an
+    older signorini, a load step's view). Not contact_force, sum_j h_j l_j, which adds up the
+    normal forces whatever their directions: on a curved or faceted surface the two differ."""
+    vector = summary.get("resultants", {}).get("contact") \
+        if isinstance(summary.get("resultants"), dict) else None
+    if vector is None:
+        vector = summary.get("contact_force_vector")
+    if not (isinstance(vector, list) and len(vector) == 3 and
+            all(isinstance(v, (int, float)) for v in vector)):
+        return None
+    return float(vector[k]), math.sqrt(sum(v * v for v in vector))
+
+
+def resultant_text(summary, k, unit):
+    """The map's words for the contact force (contact_resultant; a load step's contact_force,
+    where the summary has no resultant). Its spaces do not break (NBSP): the title's wrapping
+    keeps "R_z = 0.25 MN" on one line."""
+    def value(number):
+        return with_unit(f"{number:.4g}", unit).replace(" ", NBSP)
+
+    resultant = contact_resultant(summary, k)
+    if resultant is not None:
+        along, length = resultant
+        text = f", contact resultant R_{AXIS_NAMES[k]}{NBSP}={NBSP}{value(along)}"
+        if abs(length - abs(along)) > 1e-3 * length:  # tangential forces too
+            text += f" (|R|{NBSP}={NBSP}{value(length)})"
+        return text
+    force = summary.get("contact_force")
+    if isinstance(force, (int, float)):
+        return ", contact force " + value(force)
+    return ""
+
+
 def figure_pressure_map(summary, contact, units, measure):
+    """The contact surface seen along view_axis, its faces that face the obstacle coloured by
+    the pressure (the farthest drawn first, so that the nearest show)."""
     import numpy as np
 
-    i, j, a, b = surface_coordinates(contact)
+    view = surface_view(contact)
+    i, j, a, b = view.i, view.j, view.a, view.b
     p = contact["pressure"]
     k = power_of_ten(p)
     scale = 10.0 ** k
     fig = new_figure(7.5, 6.5)
     ax = fig.add_axes([0.1, 0.1, 0.7, 0.8])
     cax = fig.add_axes([0.85, 0.1, 0.03, 0.8])
-    tri = surface_triangulation(a, b)
     top = max(float(np.nanmax(p)), 0.0) / scale
-    image = ax.tripcolor(tri, p / scale, shading="gouraud", cmap="viridis", vmin=0.0,
-                         vmax=top if top > 0 else 1.0, rasterized=True)
-    zone = contact_zone(contact, i, j)
-    touching = p > 0
-    if zone is not None and np.count_nonzero(touching) <= 5000:
-        ax.plot(a[touching], b[touching], ".", color="white", ms=1.5, alpha=0.6,
-                label=f"nodes in contact: {int(np.count_nonzero(touching))} of {len(p)}")
+    limits = {"cmap": "viridis", "vmin": 0.0, "vmax": top if top > 0 else 1.0}
+    if view.pieces is not None:
+        from matplotlib.collections import PolyCollection
+
+        polygons, colours = pieces_coloured(view, p / scale)
+        # Not antialiased: neighbouring pieces meet without a seam.
+        image = PolyCollection(polygons, array=colours, cmap=limits["cmap"],
+                               antialiased=False, linewidths=0.0, rasterized=True)
+        image.set_clim(limits["vmin"], limits["vmax"])
+        ax.add_collection(image)
+        ax.set_xlim(*padded(float(a[view.seen].min()), float(a[view.seen].max()), 0.03))
+        ax.set_ylim(*padded(float(b[view.seen].min()), float(b[view.seen].max()), 0.03))
+    else:  # older results without contact.vtu: the nodes' triangulation
+        image = ax.tripcolor(surface_triangulation(a, b), p / scale, shading="gouraud",
+                             rasterized=True, **limits)
+    zone = contact_zone(contact, i, j, view.seen)
+    touching = (p > 0) & view.seen
+    marked = zone is not None and np.count_nonzero(touching) <= 5000
+    if marked:
+        ax.plot(a[touching], b[touching], ".", color="white", ms=1.5, alpha=0.6)
     ax.set_aspect("equal")
     ax.set_xlabel(axis_label(AXIS_NAMES[i], units.length))
     ax.set_ylabel(axis_label(AXIS_NAMES[j], units.length))
-    zoomed = zoom_onto_zone(ax, zone, a, b)
+    zoomed = zoom_onto_zone(ax, zone, view)
     colorbar = fig.colorbar(image, cax=cax)
     colorbar.set_label(axis_label("contact pressure", units.stress, k), fontsize=TEXT_SIZE)
-    subtitle = f"Contact pressure over the contact surface, seen along {AXIS_NAMES[3 - i - j]}"
+    subtitle = f"Contact pressure over the contact surface, seen along {AXIS_NAMES[view.k]}"
     subtitle += " (zoomed onto the contact zone)" if zoomed else ""
     if zone is None:
         subtitle += " (no contact)"
-    force = summary.get("contact_force")
-    if isinstance(force, (int, float)):
-        subtitle += ", contact force " + with_unit(f"{force:.4g}", force_unit(summary))
+    subtitle += resultant_text(summary, view.k, force_unit(summary))
+    if marked:  # said here, not in a legend over the map
+        subtitle += (f"; white dots: the {int(np.count_nonzero(touching))} nodes in contact, of "
+                     f"{int(np.count_nonzero(view.seen))}")
     title = wrapped(title_of(summary) + "\n" + subtitle, 7.5)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=LEGEND_SIZE, loc="upper right", facecolor="0.3", labelcolor="white")
     place_map(fig, ax, measure, title, cax)
+    # Centred over the figure, not over the map beside the colour bar: its lines, wrapped to
+    # the figure's width, would stick out on the left.
+    box = ax.get_position()
+    ax.title.set_x((0.5 - box.x0) / box.width)
     return fig, describe_limits(ax)
 
 
@@ -1521,36 +1793,193 @@ def hertz_parameters(summary, radius=None, symmetry=1):
     return radius, e_star, a, p0
 
 
-def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None, symmetry=1):
+def held_planes(summary):
+    """[axis]: the axes along which a clamp (or a prescribed displacement of 0) holds one
+    component alone: a roller, as on a symmetry plane x = const (components = ["x"])."""
+    problem = summary.get("problem", {})
+    axes = []
+    for clamp in problem.get("clamp", []) if isinstance(problem.get("clamp"), list) else []:
+        held = clamp.get("components") if isinstance(clamp, dict) else None
+        if isinstance(held, list) and len(held) == 1 and held[0] in AXIS_NAMES:
+            axes.append(AXIS_NAMES.index(held[0]))
+    displacements = problem.get("displacement")
+    for entry in displacements if isinstance(displacements, list) else []:
+        given = [c for c in AXIS_NAMES if isinstance(entry, dict) and c in entry]
+        if len(given) == 1:
+            try:
+                if float(entry[given[0]]) == 0.0:
+                    axes.append(AXIS_NAMES.index(given[0]))
+            except (TypeError, ValueError):  # an expression: not a symmetry plane
+                pass
+    return sorted(set(axes))
+
+
+def symmetry_planes(summary, contact, view):
+    """[(m, c)]: the symmetry planes that cut the contact zone, as the in-plane coordinate m
+    (0: a, 1: b) and its value c. A model of a part of a body cut by its symmetry planes holds
+    each by a roller (held_planes); such a plane is a flat end of the contact part, where every
+    node keeps its coordinate (its displacement along the axis 0: contact.vtu's, else
+    contact.csv's) and which the contact zone reaches. Where both ends qualify, neither is
+    taken."""
     import numpy as np
 
-    i, j, a, b = surface_coordinates(contact)
-    p = contact["pressure"]
+    faces = contact.get("faces")
+    u = faces.get("displacement") if faces else None
+    if u is None:  # contact.csv's, to rounding
+        u = contact.get("u")
+    touching = (contact["pressure"] > 0) & view.seen
+    if u is None or not np.any(touching):
+        return []
+    points = np.stack([contact[name] for name in AXIS_NAMES], axis=1)
+    size = float(np.max(np.ptp(points, axis=0)))
+    largest = float(np.max(np.abs(u))) if u.size else 0.0
+    planes = []
+    for axis in held_planes(summary):
+        if axis == view.k:
+            continue
+        x = points[:, axis]
+        found = []
+        for c in (float(x.min()), float(x.max())):
+            on = np.abs(x - c) <= 1e-9 * size
+            if (np.count_nonzero(on) >= 2 and np.all(np.abs(u[on, axis]) <= 1e-12 * largest)
+                    and np.any(on & touching)):
+                found.append(0.0 if abs(c) <= 1e-9 * size else c)  # a mesh's 4.5e-33: 0
+        if len(found) == 1:
+            planes.append((0 if axis == view.i else 1, found[0]))
+    return planes
+
+
+def mirrored(a, b, p, planes):
+    """(a, b, p, copies): the nodes with their mirror images across the symmetry planes
+    [(m, c)], the images of nodes on a plane left out; copies: how many images each row is
+    (0: the node itself)."""
+    import numpy as np
+
+    copies = np.zeros(len(a), dtype=int)
+    size = max(float(np.ptp(a)), float(np.ptp(b)), 1e-300) if len(a) else 1.0
+    for m, c in planes:
+        coordinate = a if m == 0 else b
+        off = np.abs(coordinate - c) > 1e-9 * size
+        image = 2.0 * c - coordinate[off]
+        a = np.concatenate([a, image if m == 0 else a[off]])
+        b = np.concatenate([b, b[off] if m == 0 else image])
+        p = np.concatenate([p, p[off]])
+        copies = np.concatenate([copies, copies[off] + 1])
+    return a, b, p, copies
+
+
+def zone_shape(a, b, p, spacing):
+    """(centre, direction, line): the pressure-weighted centre of the touching nodes, and
+    whether they lie along a line (a cylinder on a plane), three times longer than wide (the
+    width at least a node spacing), and its direction (a unit vector in the plane, along an
+    axis when within about 6 degrees of one); None without contact."""
+    import numpy as np
+
+    touching = p > 0
+    if not np.any(touching):
+        return None
+    w = p[touching]
+    xy = np.stack([a[touching], b[touching]], axis=1)
+    centre = (w @ xy) / np.sum(w)
+    d = xy - centre
+    spread = (d * w[:, None]).T @ d / np.sum(w)
+    _, vectors = np.linalg.eigh(spread)
+    direction = vectors[:, 1]  # the largest eigenvalue's
+    if np.max(np.abs(direction)) > 0.995:
+        direction = np.where(np.abs(direction) == np.max(np.abs(direction)), 1.0, 0.0)
+    across = np.array([-direction[1], direction[0]])
+    length = float(np.ptp(d @ direction))
+    width = max(float(np.ptp(d @ across)), spacing)
+    line = np.count_nonzero(touching) >= 3 and length >= 3.0 * width
+    return centre, direction, bool(line)
+
+
+def offset_text(name, value):
+    """"x − 0.5" (or "x" for 0, "x + 0.5" for -0.5)."""
+    if value == 0:
+        return name
+    return f"{name} − {value:.4g}" if value > 0 else f"{name} + {-value:.4g}"
+
+
+def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None, symmetry=1):
+    """The pressure through the centre of the contact zone: across the line of a line contact,
+    else along the first in-plane axis, with every node at its distance from the line or the
+    centre. A part of a body cut by symmetry planes (symmetry_planes) is seen whole, its nodes
+    mirrored across them: the centre lies on them."""
+    import numpy as np
+
+    view = surface_view(contact)
+    i, j = view.i, view.j
+    planes = symmetry_planes(summary, contact, view)
+    # The faces seen: the nodes of side walls would stand at the patch's rim with no pressure.
+    seen = view.seen
+    a, b, p, copies = mirrored(view.a[seen], view.b[seen], contact["pressure"][seen], planes)
     k = power_of_ten(p)
     scale = 10.0 ** k
+    h = view.spacing
     fig = new_figure(8, 4.5)
     ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
-    zone = contact_zone(contact, i, j)
-    centre = zone[0] if zone is not None else [float(np.mean(a)), float(np.mean(b))]
-    if zone is not None and symmetry > 1:
-        # A part of the body cut by symmetry planes: the centre of the whole contact zone lies
-        # on them, where the pressure peaks, not at the part's pressure-weighted mean.
+    shape = zone_shape(a, b, p, h)
+    line_contact = shape is not None and shape[2]
+    if shape is None:
+        centre, direction = np.array([float(np.mean(a)), float(np.mean(b))]), np.array([1., 0.])
+    else:
+        centre, direction = shape[0], (shape[1] if line_contact else np.array([1.0, 0.0]))
+    if shape is not None and symmetry > 1 and not planes:
+        # --symmetry without the rollers' planes found (results of an older signorini): the
+        # centre of the whole zone, where the pressure peaks, not at the part's mean.
         top = int(np.argmax(p))
-        centre = [float(a[top]), float(b[top])]
-    h = node_spacing(a, b)
-    # Every node at its distance from the centre, on the side of its first in-plane coordinate
-    # (for a round contact zone, the profile folded onto one line).
-    da, db = a - centre[0], b - centre[1]
-    r = np.hypot(da, db)
-    signed = np.where(da < 0, -r, r)
-    ax.plot(signed, p / scale, ".", color="0.65", ms=2.5,
-            label=f"every contact node at ± its distance from the centre ({len(p)})")
-    # The nodes on the line through the centre along the first in-plane axis.
-    line = np.abs(db) <= 0.51 * h if h > 0 else np.ones(len(p), dtype=bool)
-    order = np.argsort(da[line])
-    ax.plot(da[line][order], p[line][order] / scale, "o-", color="tab:red", ms=3, lw=1.4,
-            label=f"nodes within half a spacing of the line {AXIS_NAMES[j]} = {centre[1]:.4g}")
-    hertz = hertz_parameters(summary, hertz_radius, symmetry)
+        centre = np.array([float(a[top]), float(b[top])])
+    for m, c in planes:  # exactly on the planes
+        centre[m] = c
+    across = np.array([-direction[1], direction[0]]) if line_contact else direction
+    if line_contact and np.min(across) < 0 and np.max(np.abs(across)) == 1.0:
+        across = -across  # along an axis, that axis's way
+    d = np.stack([a - centre[0], b - centre[1]], axis=1)
+    mirror_note = (", and mirrored across " + " and ".join(
+        f"{AXIS_NAMES[(i, j)[m]]} = {c:.4g}" for m, c in planes) if planes else "")
+    count = int(np.count_nonzero(copies == 0))
+    names = (AXIS_NAMES[i], AXIS_NAMES[j])
+    if line_contact:
+        # A line contact: the pressure across the line, every node at its distance from the
+        # line's axis (a radial distance from a point would spread the line's points over its
+        # whole length).
+        signed = d @ across
+        along = d @ direction
+        ax.plot(signed, p / scale, ".", color="0.65", ms=2.5,
+                label=f"every contact node at its distance from the line ({count}"
+                      f"{mirror_note})")
+        section = np.abs(along) <= 0.51 * h if h > 0 else np.ones(len(p), dtype=bool)
+        order = np.argsort(signed[section])
+        ruled = [m for m in range(2) if direction[m] == 1.0]  # the line along an axis
+        if ruled:
+            m = ruled[0]
+            where = f"the section {names[m]} = {centre[m]:.4g}"
+            xlabel = (f"{offset_text(names[1 - m], centre[1 - m])} (distance from the line of "
+                      f"contact, which runs along {names[m]})")
+        else:
+            where = "the section through the middle"
+            xlabel = "distance from the line of contact, across it"
+        ax.plot(signed[section][order], p[section][order] / scale, "o-", color="tab:red", ms=3,
+                lw=1.4, label=f"nodes within half a spacing of {where} across the line")
+    else:
+        r = np.hypot(d[:, 0], d[:, 1])
+        signed = np.where(d[:, 0] < 0, -r, r)
+        # Every node at its distance from the centre, on the side of its first in-plane
+        # coordinate (for a round contact zone, the profile folded onto one line).
+        ax.plot(signed, p / scale, ".", color="0.65", ms=2.5,
+                label=f"every contact node at ± its distance from the centre ({count}"
+                      f"{mirror_note})")
+        # The nodes on the line through the centre along the first in-plane axis.
+        section = np.abs(d[:, 1]) <= 0.51 * h if h > 0 else np.ones(len(p), dtype=bool)
+        order = np.argsort(d[section, 0])
+        ax.plot(d[section, 0][order], p[section][order] / scale, "o-", color="tab:red", ms=3,
+                lw=1.4, label=f"nodes within half a spacing of the line {names[1]} = "
+                              f"{centre[1]:.4g}")
+        xlabel = (f"{offset_text(names[0], centre[0])} (distance from the centre of the contact "
+                  "zone)")
+    # Hertz's profile is a sphere's, not a line contact's.
+    hertz = None if line_contact else hertz_parameters(summary, hertz_radius, symmetry)
     description = ""
     if hertz is not None:
         radius, e_star, ra, p0 = hertz
@@ -1562,18 +1991,22 @@ def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None,
                        f"a = {ra:.4g}, p0 = {p0:.4g}"))
         description = f"; hertz: a {ra:.6g}, p0 {p0:.6g}"
     ax.axhline(0.0, color="0.6", lw=0.8)
-    ax.set_xlabel(axis_label(f"{AXIS_NAMES[i]} − {centre[0]:.4g} (distance from the centre of "
-                             "the contact zone)", units.length))
+    ax.set_xlabel(axis_label(xlabel, units.length))
     ax.set_ylabel(axis_label("contact pressure", units.stress, k))
-    if zone is not None:
+    if shape is not None:
         extent = max(np.max(np.abs(signed[p > 0])), h)
         if hertz is not None:
             extent = max(extent, hertz[2])
         ax.set_xlim(-1.6 * extent, 1.6 * extent)
     top = max(float(np.nanmax(p)), hertz[3] if hertz else 0.0, 0.0) / scale
-    ax.set_ylim(-0.02 * max(top, 1e-300), 1.1 * top if top > 0 else 1.0)
-    subtitle = "Contact pressure through the centre of the contact zone"
-    if zone is None:
+    # Room above the curves for the legend (a line a row).
+    rows = len(ax.get_legend_handles_labels()[1])
+    ax.set_ylim(-0.02 * max(top, 1e-300), (1.12 + 0.09 * rows) * top if top > 0 else 1.0)
+    subtitle = ("Contact pressure across the line of contact, through its middle" if line_contact
+                else "Contact pressure through the centre of the contact zone")
+    if planes:
+        subtitle += " (on the symmetry plane" + ("s" if len(planes) > 1 else "") + ")"
+    if shape is None:
         subtitle += " (no contact)"
     title = wrapped(title_of(summary) + "\n" + subtitle, 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
@@ -1581,7 +2014,6 @@ def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None,
     ax.legend(fontsize=LEGEND_SIZE, loc="upper right")
     place_single(fig, ax, measure, title)
     return fig, describe_limits(ax, scale) + description
-
 
 
 # Drawing and writing -----------------------------------------------------------------------
@@ -1672,6 +2104,7 @@ def draw(outdir, next_figure, scale, written, formats, warnings=True, hertz=(Non
     contact = read_contact_csv(outdir)
     measure = Measure()
     if "z" in contact:  # 3D: the contact surface
+        contact["faces"] = contact_faces(outdir, contact, warnings)
         makers = {
             "contact_pressure_map": lambda: figure_pressure_map(summary, contact, units, measure),
             "contact_pressure": lambda: figure_pressure_profile(summary, contact, units, measure,
@@ -1717,7 +2150,8 @@ def figure_of_step(outdir, summary, k, three, units, measure):
     contact = read_contact_csv(outdir, step_csv(k))
     view = step_view(summary, k)
     friction = "state" in contact
-    if three:
+    if three:  # the faces of contact.vtu, the last step's, join the same nodes
+        contact["faces"] = contact_faces(outdir, contact, warnings=False)
         return (figure_friction_map if friction else figure_pressure_map)(view, contact, units,
                                                                            measure)
     along_boundary(contact, units)

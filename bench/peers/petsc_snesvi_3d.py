@@ -6,10 +6,14 @@ Poses the discrete problem that `signorini solve examples/box_on_sphere.toml --s
 it in full): the block (0,1) x (0,1) x (0,0.5) of N x N x N/2 trilinear (Q1) cubes, E = 1000,
 nu = 0.3, 2 x 2 x 2 Gauss points; the top face z = 0.5 moved by (0, 0, -0.005) (its unknowns
 eliminated, A_fD u_D taken to the right-hand side); the bottom face z = 0 against the rigid ball
-of centre (0.5, 0.5, -4) and radius 4, the gap of each bottom node measured along its outward
-normal (0, 0, -1): u_z >= -4 + sqrt(16 - (x - 0.5)^2 - (y - 0.5)^2) there. SNESVI's
-reduced-space active-set Newton method (vinewtonrsls) minimises J(u) = 1/2 u.Au - b.u under
-these bounds; each iteration solves A restricted to the inactive unknowns.
+of centre c = (0.5, 0.5, -4) and radius 4, each bottom node's constraint along the ball's normal
+at its closest point, as the tool poses it against a rigid obstacle: u . nu <= |x - c| - 4 with
+nu = (c - x) / |x - c|. SNESVI bounds single unknowns, so each bottom node's displacement is
+written in an orthonormal frame whose first axis is nu (u = Q v, a reflection per node): the
+constraint is the bound v_0 <= |x - c| - 4, the matrix Q^T A Q and the load Q^T b, the energy
+unchanged. SNESVI's reduced-space active-set Newton method (vinewtonrsls) minimises
+J = 1/2 v.(Q^T A Q)v - (Q^T b).v under these bounds; each iteration solves the matrix restricted
+to the inactive unknowns.
 
     /usr/bin/python3 bench/peers/petsc_snesvi_3d.py --n 24
     /usr/bin/python3 bench/peers/petsc_snesvi_3d.py --n 40 --config gamg-reduced --json out.json
@@ -180,14 +184,37 @@ def main(argv):
     b.setArray(-lifted.getArray(readonly=True)[:n_free])
     del full, indptr, indices, values
 
-    # The bounds: u_z >= -(gap) at the bottom nodes k = 0, gap measured down to the ball.
+    # The bottom nodes k = 0 (the first m * m nodes): nu towards the ball's centre, the gap their
+    # distance from the sphere, and the reflection Q_k = I - 2 w w^T / (w.w), w = nu - e_1, that
+    # maps e_1 to nu; Q is the identity at the other nodes, and symmetric, so Q^T A Q = PtAP.
     jj, ii = np.meshgrid(np.arange(m), np.arange(m), indexing="ij")
-    rho2 = ((ii * h - CENTRE[0]) ** 2 + (jj * h - CENTRE[1]) ** 2).ravel()
+    to_node = np.stack([(ii * h - CENTRE[0]).ravel(), (jj * h - CENTRE[1]).ravel(),
+                        np.full(m * m, -CENTRE[2])], axis=1)
+    distance = np.linalg.norm(to_node, axis=1)
+    nu = -to_node / distance[:, None]
+    w = nu - np.array([1.0, 0.0, 0.0])
+    blocks = np.eye(3)[None] - 2.0 * w[:, :, None] * w[:, None, :] / (w * w).sum(axis=1)[:, None,
+                                                                                           None]
+    q = PETSc.Mat().createAIJ(size=(n_free, n_free), nnz=3, comm=PETSc.COMM_SELF)
+    for k in range(m * m):
+        rows = np.arange(3 * k, 3 * k + 3, dtype=PETSc.IntType)
+        q.setValues(rows, rows, blocks[k].ravel())
+    for i in range(3 * m * m, n_free):
+        q.setValue(i, i, 1.0)
+    q.assemble()
+    rotated = a.PtAP(q)
+    rotated.setBlockSize(3)
+    rotated.setOption(PETSc.Mat.Option.SYMMETRIC, True)
+    rotated.setOption(PETSc.Mat.Option.SPD, True)
+    b_rotated = rotated.createVecLeft()
+    q.multTranspose(b, b_rotated)
+    a, b = rotated, b_rotated
+    # The bounds: v_0 <= gap at the bottom nodes.
     lower = a.createVecLeft()
     lower.set(PETSc.NINFINITY)
-    lower.getArray()[2:3 * m * m:3] = CENTRE[2] + np.sqrt(RADIUS ** 2 - rho2)
     upper = a.createVecLeft()
     upper.set(PETSc.INFINITY)
+    upper.getArray()[0:3 * m * m:3] = distance - RADIUS
     t_assembly = time.perf_counter()
 
     snes = make_snes(PETSc, a, b, lower, upper)
@@ -200,15 +227,15 @@ def main(argv):
                                           lambda: GamgReduced3d(np, PETSc, snes, a, xyz))
 
     energy = energy_of(a, b, u)
-    bottom = u.getArray(readonly=True)[2:3 * m * m:3]
-    active = int(np.count_nonzero(bottom <= lower.getArray(readonly=True)[2:3 * m * m:3]))
+    bottom = u.getArray(readonly=True)[0:3 * m * m:3]
+    active = int(np.count_nonzero(bottom >= upper.getArray(readonly=True)[0:3 * m * m:3]))
     snes_outcome = outcome(PETSc, snes)
     reason, reason_name, its, lits = snes_outcome
     converged = reason > 0
     seconds = phase_seconds(T_START, t_import, t_assembly, t_setup, t_solve, time.perf_counter())
     if not args.quiet:
         print(f"petsc_snesvi_3d: mesh {n}x{n}x{nz}, {n_free} unknowns (top face eliminated), "
-              f"{m * m} bounded (bottom u_z >= -gap); PETSc "
+              f"{m * m} bounded (bottom u . nu <= gap); PETSc "
               f"{'.'.join(map(str, PETSc.Sys.getVersion()))}")
         print_outcome(config, effective, description, energy, active, m * m, snes_outcome,
                       seconds)

@@ -92,7 +92,8 @@ void bind_mesh(py::module_& m) {
   py::class_<PyMesh>(m, "Mesh", R"(A mesh: points, cells and named boundary parts.
 
 Mesh(points, cells, boundaries=None)
-  points      (n, 2) or (n, 3) array of coordinates
+  points      (n, 2) or (n, 3) array of coordinates (2D cells on (n, 3) points
+              whose z is one constant make a 2D mesh, as from_meshio does)
   cells       {"quad4": (k, 4) int array, ...} or [(type, array[, region]), ...];
               types tri3 tri6 quad4 quad8 quad9 (2D), tet4 tet10 hex8 hex27 (3D),
               node orders as Gmsh's; a region names the cells of a [[region]] material
@@ -100,7 +101,8 @@ Mesh(points, cells, boundaries=None)
               part (lines in 2D, triangles or quadrilaterals in 3D), corners first
 
 2D cells given clockwise are turned counterclockwise. Every point must belong to a
-cell. Mesh.read(path) reads a Gmsh .msh (or meshes a .geo); Mesh.from_meshio(mesh)
+cell; a cell that names a node twice, two cells with the same nodes, and two cells on
+the same side of a facet they share are refused (InputError). Mesh.read(path) reads a Gmsh .msh (or meshes a .geo); Mesh.from_meshio(mesh)
 converts a meshio.Mesh.)")
       .def(py::init(&make_mesh), py::arg("points"), py::arg("cells"),
            py::arg("boundaries") = py::none())

@@ -165,6 +165,16 @@ of convergence raises signorini.ConvergenceError (its .result holds the iterate)
           [](PySolver& s, double factor, int step) {
             if (!std::isfinite(factor))
               throw InputError("Solver.set_load_factor: factor must be finite");
+            // A step picks the factors of the entries with their own: it must be one of the
+            // history's (0: none, every load times `factor`).
+            const auto steps = static_cast<int>(s.data->loaded->spec.load_factors.size());
+            if (step < 0 || step > steps)
+              throw InputError(fmt::format(
+                  "Solver.set_load_factor: step = {} is not a step of the problem's loading "
+                  "history: expected {}",
+                  step,
+                  steps == 0 ? "0 (the problem has no [loading])"
+                             : fmt::format("0 to {} ([loading] has {} steps)", steps, steps)));
             const Model& md = s.data->model;
             s.solver->set_loads(md.free_loads(factor, step));
             if (md.dofs.has_prescribed_values()) s.solver->set_gaps(md.contact_gaps(factor, step));

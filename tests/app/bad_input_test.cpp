@@ -139,6 +139,28 @@ TEST(BadInput, NearlyIncompressibleMaterialIsAWarning) {
   EXPECT_TRUE(fs::exists(dir / "out" / "summary.json"));
 }
 
+// A Gmsh mesh's cells are known once it is read: the warning names them and says how to mesh
+// the geometry with second-order cells (mesh.cell does not apply to a Gmsh mesh); second-order
+// cells get no warning.
+TEST(BadInput, NearlyIncompressibleMaterialOnAGmshMesh) {
+  const testing::TemporaryFolder dir;
+  const std::string linear = SIGNORINI_EXAMPLES_DIR "/hertz.toml";
+  const ToolRun r = run_tool(dir, "check " + quoted(linear) + " --set material.nu=0.495");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+  EXPECT_CONTAINS(r.err, "signorini: warning: " + linear +
+                             ": material.nu = 0.495 >= 0.45: nearly "
+                             "incompressible, and the first-order cells of '");
+  EXPECT_CONTAINS(r.err, "hertz.msh' (tri3) lock");
+  EXPECT_CONTAINS(r.err, "Mesh.ElementOrder = 2");
+  EXPECT_EQ(r.err.find("quad4"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("mesh.cell"), std::string::npos) << r.err;
+  const ToolRun q = run_tool(
+      dir, "check " + quoted(SIGNORINI_EXAMPLES_DIR "/hertz_p2.toml") + " --set material.nu=0.495");
+  EXPECT_EQ(q.status, 0) << q.err;
+  EXPECT_EQ(q.err, "");
+}
+
 TEST(BadInput, MeshSizeBelowOne) {
   const testing::TemporaryFolder dir;
   EXPECT_EQ(bad_input_line(check(dir, {"mesh.nx=0"})),
@@ -201,9 +223,9 @@ TEST(BadInput, ContactBoundaryOnTheClampedBoundary) {
   const testing::TemporaryFolder dir;
   EXPECT_EQ(bad_input_line(check(dir, {"contact.boundary=left"})),
             kError + kFile +
-                ": contact.boundary = 'left': every contact node is clamped in its normal "
-                "direction, so no contact can occur (does it coincide with the clamped "
-                "boundary?)\n");
+                ": contact.boundary = 'left': no contact node can move towards the obstacle "
+                "(each is clamped in its normal direction or faces away from the obstacle): "
+                "expected a part that faces the obstacle and is not wholly clamped\n");
 }
 
 TEST(BadInput, NoClampedBoundary) {

@@ -217,7 +217,9 @@ TEST(FrictionTool, ThreeMethodsAgreeOnEveryFrictionExample) {
   const std::vector<std::pair<std::string, std::string>> examples = {
       {"paper_coulomb.toml", "--set mesh.nx=60 --set mesh.ny=20" + tight},
       {"ssnv128.toml", tight},
-      {"cattaneo_mindlin.toml", tight},
+      // (classical Uzawa's change of l at 1e-12 leaves its pressures 1.2e-8 of the peak off
+      // here; at 1e-13, closer)
+      {"cattaneo_mindlin.toml", " --set solver.uzawa_tolerance=1e-13"},
       {"box_on_sphere.toml", "--set " + quoted("contact.friction=\"coulomb\"") +
                                  " --set contact.mu=0.2 --set mesh.nx=6 --set mesh.ny=6" + tight}};
   for (const auto& [example, extra] : examples) {

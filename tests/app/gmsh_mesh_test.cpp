@@ -126,6 +126,62 @@ TEST(GmshMesh, GeoFileIsMeshedByTheGmshProgram) {
   const ToolRun b = run_tool(dir, "check " + quoted((dir / "broken.toml").string()));
   EXPECT_EQ(b.status, 2);
   EXPECT_CONTAINS(b.err, "broken.geo: gmsh could not mesh it");
+  // gmsh's own message, with its line number.
+  EXPECT_CONTAINS(b.err, "gmsh says: ");
+  EXPECT_CONTAINS(b.err, "broken.geo', line 1: syntax error");
+  EXPECT_EQ(testing::count_lines(b.err), 1U) << b.err;
+  // A square with a physical curve but no physical surface: Gmsh saves the lines alone.
+  const std::string square =
+      "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
+      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+      "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n";
+  std::ofstream(dir / "broken.geo") << square << "Physical Curve(\"bottom\") = {1};\n";
+  const ToolRun lines = run_tool(dir, "check " + quoted((dir / "broken.toml").string()));
+  EXPECT_EQ(lines.status, 2);
+  EXPECT_CONTAINS(lines.err,
+                  "only lines: where a geometry has physical groups, Gmsh saves only "
+                  "their elements, so the body's surfaces need one too (e.g. Physical "
+                  "Surface(\"body\") = {1};)");
+  // No physical group at all: every element saved, no boundary part named.
+  std::ofstream(dir / "broken.geo") << square;
+  const ToolRun none = run_tool(dir, "check " + quoted((dir / "broken.toml").string()));
+  EXPECT_EQ(none.status, 2);
+  EXPECT_CONTAINS(none.err,
+                  "mesh has no boundary part 'left': it has no named boundary parts at "
+                  "all; a Gmsh geometry names them with physical groups (e.g. Physical "
+                  "Curve(\"left\") = {1}; in 2D, Physical Surface in 3D)");
+}
+
+// The report's second-order case: a quarter of a hemisphere meshed by gmsh with tet10 cells, its
+// curved part against a plane, contact.surface_normal = (0, 0, -1). At the rim, where the sphere
+// meets the flat top, that direction is at right angles to the exact normal and the facets'
+// normal of tri6 faces leans a little above it: accepted (a tolerance of 10 degrees past the
+// right angle); a normal given the wrong way round is still refused.
+TEST(GmshMesh, SecondOrderTetrahedraTakeANormalAtRightAnglesAtTheRim) {
+  if (std::system("command -v gmsh > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "the gmsh program is not installed (apt-get install gmsh)";
+  const testing::TemporaryFolder dir;
+  std::ofstream(dir / "ball.geo") << testing::read_text(SIGNORINI_EXAMPLES_DIR
+                                                        "/gmsh/hertz_sphere.geo")
+                                  << "Mesh.ElementOrder = 2;\nMesh.MeshSizeFactor = 10;\n";
+  std::string problem = testing::read_text(SIGNORINI_EXAMPLES_DIR "/hertz_sphere.toml");
+  problem.replace(problem.find("gmsh/hertz_sphere_coarse.msh"),
+                  std::string("gmsh/hertz_sphere_coarse.msh").size(), "ball.geo");
+  const std::string exact = "surface_normal = [\"x\", \"y\", \"z - 1\"]";
+  const auto with_normal = [&](const std::string& normal) {
+    std::string text = problem;
+    text.replace(text.find(exact), exact.size(), "surface_normal = " + normal);
+    std::ofstream(dir / "ball.toml") << text;
+    return run_tool(dir, "check " + quoted((dir / "ball.toml").string()));
+  };
+  const ToolRun down = with_normal("[\"0\", \"0\", \"-1\"]");
+  EXPECT_EQ(down.status, 0) << down.err;
+  EXPECT_CONTAINS(down.out, "tet10");
+  const ToolRun up = with_normal("[\"0\", \"0\", \"1\"]");
+  EXPECT_EQ(up.status, 2);
+  EXPECT_CONTAINS(up.err,
+                  "points into the body (more than 100 degrees from the facets' outward "
+                  "normal)");
 }
 
 // [[region]] from a problem file: by name, refused for a name the mesh does not have.

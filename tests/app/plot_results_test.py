@@ -10,6 +10,7 @@ Needs numpy (python3-numpy); matplotlib is not imported.
 
 import importlib.util
 import json
+import math
 import os
 import sys
 import tempfile
@@ -342,12 +343,308 @@ class TwoProcessesTest(unittest.TestCase):
                 self.assertEqual(os.listdir(d), [])
 
 
+def surface(points, normals, pressure, pieces, displacement=None):
+    """contact.csv's columns of a 3D contact surface, with contact.vtu's faces (as draw() reads
+    them): `pieces` rows of node numbers, three or four (a triangle's last repeated)."""
+    points, normals = np.asarray(points, float), np.asarray(normals, float)
+    rows = [list(r) + [r[-1]] * (4 - len(r)) for r in pieces]
+    contact = {name: points[:, k] for k, name in enumerate("xyz")}
+    contact.update({f"n_{name}": normals[:, k] for k, name in enumerate("xyz")})
+    contact["pressure"] = np.asarray(pressure, float)
+    contact["faces"] = {"pieces": np.array(rows, dtype=np.int64).reshape(-1, 4),
+                        "displacement": displacement}
+    return contact
+
+
+def grid(nx, ny, x1=1.0, y1=1.0):
+    """The nodes (i x1 / nx, j y1 / ny, 0), node i + (nx + 1) j, and the quadrilaterals between
+    them (every other turned the other way, as faces need not agree on their winding)."""
+    xs, ys = np.meshgrid(np.linspace(0.0, x1, nx + 1), np.linspace(0.0, y1, ny + 1))
+    points = np.stack([xs.ravel(), ys.ravel(), 0.0 * xs.ravel()], axis=1)
+    quads = []
+    for j in range(ny):
+        for i in range(nx):
+            q = [i + (nx + 1) * j, i + 1 + (nx + 1) * j, i + 1 + (nx + 1) * (j + 1),
+                 i + (nx + 1) * (j + 1)]
+            quads.append(q if (i + j) % 2 == 0 else q[::-1])
+    return points, quads
+
+
+def bottom_with_wall(n=4, pressure=2.0):
+    """A body's bottom face z = 0 over (0, 1)^2 in n x n quadrilaterals (n even), pressed all
+    over, and, in the same contact part, a wall free of pressure that stands on it along
+    x = 0.5 (the face of a slot cut up into the body, z up to 0.5): seen along z, the wall's
+    nodes fall onto the middle of the patch."""
+    points, quads = grid(n, n)
+    normals = np.tile([0.0, 0.0, -1.0], (len(points), 1))
+    bottom = len(points)
+    foot = [n // 2 + (n + 1) * j for j in range(n + 1)]
+    rows = [foot]
+    for z in (0.25, 0.5):
+        rows.append(list(range(len(points), len(points) + n + 1)))
+        points = np.vstack([points, [[0.5, j / n, z] for j in range(n + 1)]])
+        normals = np.vstack([normals, np.tile([1.0, 0.0, 0.0], (n + 1, 1))])
+    wall = [[r0[j], r0[j + 1], r1[j + 1], r1[j]] for r0, r1 in zip(rows, rows[1:])
+            for j in range(n)]
+    p = np.where(np.arange(len(points)) < bottom, pressure, 0.0)
+    return surface(points, normals, p, quads + wall), quads, bottom
+
+
+def area(polygons):
+    """The total area of polygons (rows of four corners in the plane)."""
+    x, y = polygons[..., 0], polygons[..., 1]
+    return float(np.sum(0.5 * np.abs(np.sum(x * np.roll(y, -1, axis=1)
+                                             - np.roll(x, -1, axis=1) * y, axis=1))))
+
+
+class SurfaceTest(unittest.TestCase):
+    """3D: the faces of the contact surface that the pressure map draws (contact.vtu's, those
+    that face the obstacle), not every node projected along the view."""
+
+    def test_the_side_walls_are_left_out(self):
+        contact, quads, bottom = bottom_with_wall()
+        view = plot.surface_view(contact)
+        self.assertEqual((view.k, view.side), (2, -1))  # seen from below, the obstacle's side
+        self.assertEqual((view.i, view.j), (0, 1))
+        self.assertEqual(sorted(sorted(r) for r in view.pieces.tolist()),
+                         sorted(sorted(q) for q in quads))
+        self.assertTrue(np.all(view.seen[:bottom]))
+        self.assertFalse(np.any(view.seen[bottom:]))
+        self.assertAlmostEqual(view.spacing, 0.25)
+
+    def test_no_zero_pressure_hole_in_the_patch(self):
+        # The wall's nodes, projected, lie on the patch's middle line with no pressure: drawn
+        # from the nodes, the uniformly pressed patch had a zero-pressure stripe there.
+        contact, _, _ = bottom_with_wall()
+        view = plot.surface_view(contact)
+        polygons, colours = plot.pieces_coloured(view, contact["pressure"])
+        np.testing.assert_allclose(colours, 2.0)
+        self.assertAlmostEqual(area(polygons), 1.0)  # the whole square, no gap
+        self.assertEqual(polygons.shape[1:], (4, 2))
+        # Cut finer where the mesh is coarse: 16 faces into 10 x 10.
+        self.assertEqual(len(polygons), 16 * 100)
+
+    def test_the_pieces_interpolate_the_nodal_values(self):
+        points, quads = grid(1, 1)
+        contact = surface(points, np.tile([0.0, 0.0, -1.0], (4, 1)), points[:, 0],
+                          [quads[0], [0, 1, 2]])
+        view = plot.surface_view(contact)
+        polygons, colours = plot.pieces_coloured(view, contact["pressure"], most=4 * 2)
+        self.assertEqual(len(polygons), 8)  # each piece into 2 x 2
+        centres = np.array([np.mean(np.unique(q, axis=0), axis=0) for q in polygons])
+        # p = x on both pieces, the triangle's linear, the quadrilateral's bilinear
+        np.testing.assert_allclose(colours, centres[:, 0], atol=1e-12)
+
+    def test_the_nearest_faces_are_drawn_last_and_those_turned_away_not(self):
+        square = [[0, 0], [1, 0], [1, 1], [0, 1]]
+        points = ([[x, y, 0.2] for x, y in square] + [[x, y, 0.0] for x, y in square]
+                  + [[x, y, 0.1] for x, y in square])
+        normals = [[0.0, 0.0, -1.0]] * 8 + [[0.0, 0.0, 1.0]] * 4  # the last turned upwards
+        contact = surface(points, normals, [1.0] * 12,
+                          [[4, 5, 6, 7], [8, 9, 10, 11], [0, 1, 2, 3]])
+        view = plot.surface_view(contact)
+        self.assertEqual(view.pieces.tolist(), [[0, 1, 2, 3], [4, 5, 6, 7]])  # z = 0 nearest
+
+    def test_the_view_follows_the_pressed_faces(self):
+        # More nodes on a side wall (normal x) than on the pressed base (normal -z): their mean
+        # normal is sideways, the pressure's down.
+        normals = [[0.0, 0.0, -1.0]] * 3 + [[1.0, 0.0, 0.0]] * 10
+        points = np.zeros((13, 3))
+        pressed = surface(points, normals, [1.0] * 3 + [0.0] * 10, [])
+        self.assertEqual(plot.view_axis(pressed), (2, -1))
+        self.assertEqual(plot.surface_plane(pressed), (0, 1))
+        loose = surface(points, normals, [0.0] * 13, [])
+        self.assertEqual(plot.view_axis(loose), (0, 1))
+
+    def test_faces_from_contact_vtu(self):
+        points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0, 0], [2, 1, 0],
+                           [1.5, 0, 0], [2, 0.5, 0], [1.5, 0.5, 0]], float)
+        u = np.tile([0.0, 0.0, -1e-3], (len(points), 1))
+        contact = {name: points[:, k] for k, name in enumerate("xyz")}
+        with tempfile.TemporaryDirectory() as d:
+            self.assertIsNone(plot.read_contact_faces(d, contact))  # older results
+            path = os.path.join(d, "contact.vtu")
+            # A quadrilateral and a quadratic triangle (corners 1, 4, 5, middles 6, 7, 8).
+            write_vtu(path, points, [[0, 1, 2, 3], [1, 4, 5, 6, 7, 8]], [9, 22],
+                      [("displacement", "Float64", 3, u)])
+            faces = plot.read_contact_faces(d, contact)
+            self.assertEqual(faces["pieces"].tolist(),
+                             [[0, 1, 2, 3], [1, 6, 8, 8], [6, 4, 7, 7], [8, 7, 5, 5],
+                              [6, 7, 8, 8]])
+            np.testing.assert_array_equal(faces["displacement"], u)
+            moved = dict(contact, x=contact["x"] + 0.5)
+            with self.assertRaisesRegex(plot.UsageError, "does not hold the nodes of contact.csv"):
+                plot.read_contact_faces(d, moved)
+            self.assertIsNone(plot.contact_faces(d, moved, warnings=False))
+            write_vtu(path, points, [[0, 1]], [3], [])
+            with self.assertRaisesRegex(plot.UsageError, "cells of VTK type 3 are not faces"):
+                plot.read_contact_faces(d, contact)
+
+
+def quarter(n=8, radius=0.6, u_x=lambda x: 1e-3 * x, clamps=(("x",), ("y",))):
+    """A quarter model of a body pressed onto a plane about the origin: its bottom (0, 1)^2,
+    the pressure 1 - r^2 / radius^2, held by rollers on its symmetry planes x = 0 and y = 0
+    (there u_x = 0 and u_y = 0), and the summary that says so."""
+    points, quads = grid(n, n)
+    x, y = points[:, 0], points[:, 1]
+    p = np.maximum(0.0, 1.0 - (x * x + y * y) / radius ** 2)
+    u = np.stack([u_x(x), 1e-3 * y, -1e-3 + 0.0 * x], axis=1)
+    contact = surface(points, np.tile([0.0, 0.0, -1.0], (len(x), 1)), p, quads, u)
+    summary = {"problem": {"clamp": [{"boundary": f"{c[0]}sym", "components": list(c)}
+                                     for c in clamps]}}
+    return contact, summary
+
+
+class SymmetryTest(unittest.TestCase):
+    """The contact_pressure profile of a quarter model: its centre on the symmetry planes."""
+
+    def centre(self, contact, summary):
+        view = plot.surface_view(contact)
+        planes = plot.symmetry_planes(summary, contact, view)
+        a, b, p, copies = plot.mirrored(view.a[view.seen], view.b[view.seen],
+                                        contact["pressure"][view.seen], planes)
+        centre, _, line = plot.zone_shape(a, b, p, view.spacing)
+        self.assertFalse(line)
+        return planes, centre, copies
+
+    def test_the_centre_of_a_quarter_model_lies_on_its_symmetry_planes(self):
+        planes, centre, copies = self.centre(*quarter())
+        self.assertEqual(planes, [(0, 0.0), (1, 0.0)])
+        np.testing.assert_allclose(centre, [0.0, 0.0], atol=1e-12)
+        # 81 nodes, 72 images across x = 0 (not those on it), 72 + 64 across y = 0
+        self.assertEqual(np.bincount(copies).tolist(), [81, 72 + 72, 64])
+
+    def test_without_contact_vtu_the_displacement_of_contact_csv(self):
+        contact, summary = quarter()
+        contact["u"] = contact["faces"]["displacement"]
+        contact["faces"]["displacement"] = None
+        planes, centre, _ = self.centre(contact, summary)
+        self.assertEqual(planes, [(0, 0.0), (1, 0.0)])
+        del contact["u"]
+        self.assertEqual(self.centre(contact, summary)[0], [])  # nothing to tell them by
+
+    def test_without_the_rollers_the_centre_is_the_parts(self):
+        contact, _ = quarter()
+        planes, centre, _ = self.centre(contact, {"problem": {"clamp": []}})
+        self.assertEqual(planes, [])
+        self.assertTrue(np.all(centre > 0.1), centre)  # the old centre, off the planes
+
+    def test_a_plane_whose_nodes_move_is_no_symmetry_plane(self):
+        planes, centre, _ = self.centre(*quarter(u_x=lambda x: 1e-3 * (x + 1.0)))
+        self.assertEqual(planes, [(1, 0.0)])
+        self.assertAlmostEqual(centre[1], 0.0)
+        self.assertGreater(centre[0], 0.1)
+
+    def test_the_planes_held(self):
+        summary = {"problem": {
+            "clamp": [{"boundary": "a", "components": ["x"]},
+                      {"boundary": "b", "components": ["x", "y"]},  # not a roller
+                      {"boundary": "c"}],
+            "displacement": [{"boundary": "d", "z": "0"}, {"boundary": "e", "y": "0.001"},
+                             {"boundary": "f", "x": "t"}]}}
+        self.assertEqual(plot.held_planes(summary), [0, 2])
+        self.assertEqual(plot.held_planes({}), [])
+
+
+class LineContactTest(unittest.TestCase):
+    def test_a_band_of_contact_is_a_line(self):
+        points, quads = grid(20, 10, 1.0, 0.5)
+        p = np.maximum(0.0, 1.0 - ((points[:, 0] - 0.5) / 0.08) ** 2)  # 0.1 wide, 0.5 long
+        centre, direction, line = plot.zone_shape(points[:, 0], points[:, 1], p, 0.05)
+        self.assertTrue(line)
+        np.testing.assert_allclose(centre, [0.5, 0.25], atol=1e-12)
+        self.assertEqual(direction.tolist(), [0.0, 1.0])
+
+    def test_one_row_of_nodes_in_contact_is_a_line(self):
+        # A cylinder on a coarse mesh (examples/box_on_cylinder.toml): the nodes in contact
+        # on the line x = 0.5 alone, the zone's width the node spacing.
+        points, _ = grid(8, 4, 1.0, 0.5)
+        p = np.where(np.abs(points[:, 0] - 0.5) < 1e-9, 4.0, 0.0)
+        _, direction, line = plot.zone_shape(points[:, 0], points[:, 1], p, 0.125)
+        self.assertTrue(line)
+        self.assertEqual(direction.tolist(), [0.0, 1.0])
+
+    def test_a_slanting_line_keeps_its_direction(self):
+        t = np.linspace(-1.0, 1.0, 41)
+        a = np.concatenate([t, t + 0.05, t - 0.05])
+        b = np.concatenate([t, t - 0.05, t + 0.05])
+        _, direction, line = plot.zone_shape(a, b, np.ones_like(a), 0.05)
+        self.assertTrue(line)
+        self.assertAlmostEqual(abs(direction[0]), math.sqrt(0.5))
+        self.assertAlmostEqual(abs(direction[1]), math.sqrt(0.5))
+
+    def test_a_round_zone_is_not(self):
+        contact, _ = quarter()
+        a, b, p, _ = plot.mirrored(contact["x"], contact["y"], contact["pressure"],
+                                   [(0, 0.0), (1, 0.0)])
+        self.assertFalse(plot.zone_shape(a, b, p, 0.125)[2])
+        self.assertIsNone(plot.zone_shape(a, b, 0.0 * p, 0.125))
+
+
+class ResultantTest(unittest.TestCase):
+    """The pressure map's title gives the force the reactions balance (resultants.contact), not
+    the sum of h_j l_j."""
+
+    @staticmethod
+    def text(summary, k, unit):
+        return plot.resultant_text(summary, k, unit).replace(plot.NBSP, " ")
+
+    def test_the_resultant_not_the_sum_of_the_normal_forces(self):
+        summary = {"resultants": {"contact": [0.0, 0.0, 5.0]}, "contact_force": 6.0}
+        self.assertEqual(self.text(summary, 2, "N"), ", contact resultant R_z = 5 N")
+        self.assertEqual(plot.contact_resultant(summary, 2), (5.0, 5.0))
+        tilted = {"resultants": {"contact": [3.0, 0.0, 4.0]}, "contact_force": 6.0}
+        self.assertEqual(self.text(tilted, 2, "N"), ", contact resultant R_z = 4 N (|R| = 5 N)")
+        older = {"contact_force_vector": [0.0, -2.0, 0.0], "contact_force": 6.0}
+        self.assertEqual(self.text(older, 1, ""), ", contact resultant R_y = -2")
+        self.assertEqual(self.text({"contact_force": 6.0}, 2, "N"), ", contact force 6 N")
+        # The number keeps its name and unit when the title is wrapped.
+        self.assertNotIn(" ", plot.resultant_text(tilted, 2, "N")[len(", contact resultant "):]
+                         .split(" (")[0])
+
+    def test_a_load_step_has_its_own_force_only(self):
+        summary = {"resultants": {"contact": [0.0, 0.0, 9.0]}, "contact_force": 9.0,
+                   "contact_force_vector": [0.0, 0.0, 9.0],
+                   "load_steps": [{"factor": 0.5, "contact_force": 4.0}, {"factor": 1.0}]}
+        view = plot.step_view(summary, 1)
+        self.assertIsNone(plot.contact_resultant(view, 2))
+        self.assertEqual(self.text(view, 2, "N"), ", contact force 4 N")
+
+
+def write_vtu(path, points, cells, types, arrays):
+    """A .vtu as signorini writes them (raw appended data, docs/output.md): `cells` lists of
+    node numbers, `types` their VTK types, `arrays` the point data (name, "Float64" or "UInt8",
+    components, values)."""
+    import struct
+
+    offsets = np.cumsum([len(c) for c in cells])
+    geometry = [("Points", "Float64", 3, points),
+                ("connectivity", "Int64", 1, np.concatenate([np.asarray(c) for c in cells])),
+                ("offsets", "Int64", 1, offsets), ("types", "UInt8", 1, np.asarray(types))]
+    tags, blob, offset = {}, b"", 0
+    for name, kind, components, values in arrays + geometry:
+        raw = np.ascontiguousarray(values, "<f8" if kind == "Float64" else
+                                   "<i8" if kind == "Int64" else "u1").tobytes()
+        tags[name] = (f'<DataArray type="{kind}" Name="{name}" NumberOfComponents="{components}" '
+                      f'format="appended" offset="{offset}"/>')
+        blob += struct.pack("<Q", len(raw)) + raw
+        offset += 8 + len(raw)
+    point_data = "".join(tags[name] for name, *_ in arrays)
+    header = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0" '
+              'byte_order="LittleEndian" header_type="UInt64"><UnstructuredGrid>'
+              f'<Piece NumberOfPoints="{len(points)}" NumberOfCells="{len(cells)}">'
+              f'<PointData>{point_data}</PointData><Points>{tags["Points"]}</Points>'
+              f'<Cells>{tags["connectivity"]}{tags["offsets"]}{tags["types"]}</Cells></Piece>'
+              '</UnstructuredGrid><AppendedData encoding="raw">_')
+    with open(path, "wb") as f:
+        f.write(header.encode() + blob + b"</AppendedData></VTKFile>\n")
+
+
 def write_results(folder, gap=lambda x: 0.0 * x, units="m-MPa", normals=True, nx=12, ny=4):
     """A small set of results as signorini writes them (docs/output.md): the strip (0, 3) x (0, 1)
     lifted at its right end, resting on a foundation with the gap `gap(x)` along its bottom
     edge (where the gap is 0, it touches)."""
     import json
-    import struct
 
     xs, ys = np.meshgrid(np.linspace(0.0, 3.0, nx + 1), np.linspace(0.0, 1.0, ny + 1))
     x, y = xs.ravel(), ys.ravel()
@@ -363,28 +660,8 @@ def write_results(folder, gap=lambda x: 0.0 * x, units="m-MPa", normals=True, nx
     active[bottom[touching]] = 1
     arrays = [("displacement", "Float64", 3, u), ("von_mises", "Float64", 1, von_mises),
               ("contact_active", "UInt8", 1, active)]
-    point_data, blob, offset = "", b"", 0
-    geometry = [("Points", "Float64", 3, np.stack([x, y, 0.0 * x], axis=1)),
-                ("connectivity", "Int64", 1, cells.ravel()),
-                ("offsets", "Int64", 1, 4 * np.arange(1, len(cells) + 1)),
-                ("types", "UInt8", 1, np.full(len(cells), 9))]
-    tags = {}
-    for name, kind, components, values in arrays + geometry:
-        raw = np.ascontiguousarray(values, "<f8" if kind == "Float64" else
-                                   "<i8" if kind == "Int64" else "u1").tobytes()
-        tags[name] = (f'<DataArray type="{kind}" Name="{name}" NumberOfComponents="{components}" '
-                      f'format="appended" offset="{offset}"/>')
-        blob += struct.pack("<Q", len(raw)) + raw
-        offset += 8 + len(raw)
-    point_data = "".join(tags[name] for name, *_ in arrays)
-    header = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0" '
-              'byte_order="LittleEndian" header_type="UInt64"><UnstructuredGrid>'
-              f'<Piece NumberOfPoints="{len(x)}" NumberOfCells="{len(cells)}">'
-              f'<PointData>{point_data}</PointData><Points>{tags["Points"]}</Points>'
-              f'<Cells>{tags["connectivity"]}{tags["offsets"]}{tags["types"]}</Cells></Piece>'
-              '</UnstructuredGrid><AppendedData encoding="raw">_')
-    with open(os.path.join(folder, "solution.vtu"), "wb") as f:
-        f.write(header.encode() + blob + b"</AppendedData></VTKFile>\n")
+    write_vtu(os.path.join(folder, "solution.vtu"), np.stack([x, y, 0.0 * x], axis=1),
+              [list(c) for c in cells], [9] * len(cells), arrays)
     with open(os.path.join(folder, "contact.csv"), "w") as f:
         f.write("x,y,u_n,u_t,pressure,gap" + (",n_x,n_y" if normals else "") + "\n")
         for j, node in enumerate(bottom):
@@ -489,6 +766,111 @@ class ScriptTest(unittest.TestCase):
                                             + (["solution.vtu"] if broken else [])))
                     with open(os.path.join(d, "convergence.png")) as f:
                         self.assertEqual(f.read(), "an earlier figure")
+
+
+def write_results_3d(folder, line=False):
+    """Small 3D results as signorini writes them (docs/output.md): a body pressed onto a plane
+    below it. The quarter model of quarter() (rollers on x = 0 and y = 0), its contact part
+    with a side wall at x = 1 that does not touch; or, with `line`, a block on a roller along
+    y, the pressure on a band along x = 0.5. The summary's resultant (the force the reactions
+    balance) is 0.8 times its sum of h_j l_j."""
+    import json
+
+    if line:
+        points, quads = grid(20, 10, 1.0, 0.5)
+        p = np.maximum(0.0, 1.0 - ((points[:, 0] - 0.5) / 0.08) ** 2)
+        u = np.tile([0.0, 0.0, -1e-3], (len(points), 1))
+        contact = surface(points, np.tile([0.0, 0.0, -1.0], (len(points), 1)), p, quads, u)
+        clamps = []
+    else:
+        contact, summary = quarter()
+        clamps = summary["problem"]["clamp"]
+        # The side wall x = 1, up to z = 0.3, free: nodes 81 on.
+        foot = [8 + 9 * j for j in range(9)]
+        top = list(range(81, 90))
+        for name, values in (("x", 1.0), ("y", np.linspace(0.0, 1.0, 9)), ("z", 0.3)):
+            contact[name] = np.concatenate([contact[name], np.broadcast_to(values, 9)])
+        for name, values in (("n_x", 1.0), ("n_y", 0.0), ("n_z", 0.0), ("pressure", 0.0)):
+            contact[name] = np.concatenate([contact[name], np.full(9, values)])
+        wall = [[foot[j], foot[j + 1], top[j + 1], top[j]] for j in range(8)]
+        faces = contact["faces"]
+        faces["pieces"] = np.vstack([faces["pieces"], wall])
+        faces["displacement"] = np.vstack([faces["displacement"],
+                                           [[1e-3, 1e-3 * y, -1e-3] for y in contact["y"][81:]]])
+    points = np.stack([contact[c] for c in "xyz"], axis=1)
+    normals = np.stack([contact[f"n_{c}"] for c in "xyz"], axis=1)
+    u = contact["faces"]["displacement"]
+    cells = [list(r) for r in contact["faces"]["pieces"]]
+    arrays = [("displacement", "Float64", 3, u), ("normal", "Float64", 3, normals),
+              ("contact_pressure", "Float64", 1, contact["pressure"])]
+    for name in ("contact.vtu", "solution.vtu"):  # the 3D figures never read solution.vtu
+        write_vtu(os.path.join(folder, name), points, cells, [9] * len(cells), arrays)
+    with open(os.path.join(folder, "contact.csv"), "w") as f:
+        f.write("x,y,z,u_n,u_tx,u_ty,u_tz,pressure,gap,n_x,n_y,n_z,boundary\n")
+        for k in range(len(points)):
+            u_n = float(u[k] @ normals[k])
+            row = list(points[k]) + [u_n] + list(u[k] - u_n * normals[k]) + \
+                [contact["pressure"][k], 0.0] + list(normals[k])
+            f.write(",".join(repr(float(v)) for v in row) + ",outer\n")
+    force = 0.01 * float(np.sum(contact["pressure"]))
+    summary = {"converged": True, "method": "uzawa_gnm", "n_dofs": 3 * len(points),
+               "message": "converged", "contact_force": force,
+               "resultants": {"contact": [0.0, 0.0, 0.8 * force]},
+               "dual_changes": [1.0, 1e-3, 1e-6, 1e-9], "gnm_iterations": [5, 2, 2, 1],
+               "problem": {"name": "synthetic", "units": "m-MPa",
+                           "mesh": {"type": "gmsh", "file": "body.msh"}, "clamp": clamps,
+                           "contact": {"boundary": "outer", "obstacle": "plane"},
+                           "solver": {"uzawa_tolerance": 1e-8}}}
+    with open(os.path.join(folder, "summary.json"), "w") as f:
+        json.dump(summary, f)
+    return summary
+
+
+@unittest.skipUnless(have_matplotlib(), "no matplotlib")
+class ThreeDimensionalScriptTest(unittest.TestCase):
+    """The whole script on small synthetic 3D results: the profile of a quarter model centred
+    on its symmetry planes, a line contact's across the line, the map's title with the
+    resultant."""
+
+    def run_script(self, folder):
+        import subprocess
+
+        r = subprocess.run([sys.executable, SCRIPT, "--quiet", "--format", "svg", folder],
+                           capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stderr, "")
+
+    def test_a_quarter_model(self):
+        with tempfile.TemporaryDirectory() as d:
+            summary = write_results_3d(d)
+            self.run_script(d)
+            (x0, x1, _, _), svg = ScriptTest.limits(os.path.join(d, "contact_pressure.svg"))
+            self.assertAlmostEqual(x0, -x1)  # the whole zone about its centre, (0, 0)
+            # The farthest node in contact: (0.5, 0.25), r^2 = 0.3125 < 0.6^2.
+            self.assertAlmostEqual(x1, 1.6 * math.sqrt(0.3125), places=5)
+            self.assertIn(">x (distance from the centre of the contact zone) (m)</text>", svg)
+            self.assertIn("mirrored across x = 0 and y = 0)</text>", svg)
+            self.assertIn(">nodes within half a spacing of the line y = 0</text>", svg)
+            (x0, x1, y0, y1), svg = ScriptTest.limits(os.path.join(d,
+                                                                  "contact_pressure_map.svg"))
+            nbsp = plot.NBSP
+            self.assertIn(f"R_z{nbsp}={nbsp}{0.8 * summary['contact_force']:.4g}{nbsp}MN", svg)
+            self.assertNotIn(f"{summary['contact_force']:.4g}", svg)
+            self.assertIn("the 22 nodes in contact, of 81", svg)  # not the wall's 9 more
+            self.assertLess(x0, 0.0)
+            self.assertGreater(x1, 1.0)
+
+    def test_a_line_contact(self):
+        with tempfile.TemporaryDirectory() as d:
+            write_results_3d(d, line=True)
+            self.run_script(d)
+            (x0, x1, _, _), svg = ScriptTest.limits(os.path.join(d, "contact_pressure.svg"))
+            self.assertAlmostEqual(x0, -1.6 * 0.05)  # across the line, not along it
+            self.assertAlmostEqual(x1, 1.6 * 0.05)
+            self.assertIn(">x − 0.5 (distance from the line of contact, which runs along y) (m)"
+                          "</text>", svg)
+            self.assertIn(">nodes within half a spacing of the section y = 0.25 across the "
+                          "line</text>", svg)
 
 
 class FormatsTest(unittest.TestCase):

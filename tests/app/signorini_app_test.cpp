@@ -225,6 +225,21 @@ TEST(SignoriniApp, NotConvergedGivesStatus3AndStillWrites) {
   EXPECT_EQ(count_lines(read(out / "contact.csv")), 62U);
 }
 
+// solver.time_limit: the iterate reached is written, the status is 3, and the summary says why.
+TEST(SignoriniApp, TimeLimitGivesStatus3AndWritesTheIterate) {
+  const testing::TemporaryFolder dir;
+  const fs::path out = dir / "results";
+  const ToolRun r = run_tool(
+      dir, "solve " + kSmall + " -q --set solver.time_limit=1e-9 -o " + quoted(out.string()));
+  EXPECT_EQ(r.status, 3);
+  EXPECT_EQ(count_lines(r.err), 1U) << r.err;
+  EXPECT_CONTAINS(r.err, "not converged (time_limit): stopped at solver.time_limit = 1e-09 s");
+  const nlohmann::json j = nlohmann::json::parse(read(out / "summary.json"));
+  EXPECT_EQ(j["termination"], "time_limit");
+  EXPECT_EQ(j["outer_iterations"], 1);
+  EXPECT_EQ(count_lines(read(out / "contact.csv")), 62U);
+}
+
 TEST(SignoriniApp, FreeRigidMotionIsBadInputBeforeAnySolve) {
   // Clamped in x only: the body can slide along y; it used to reach the factorisation (exit 4).
   const testing::TemporaryFolder dir;

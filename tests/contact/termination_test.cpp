@@ -43,6 +43,42 @@ TEST(Termination, ConjugateGradientLimitIsALinearSolverFailure) {
   EXPECT_EQ(r.summary.termination, Termination::LinearSolverFailure);
 }
 
+// solver.time_limit: every method stops at its first iteration past the limit with termination
+// "time_limit", the iterate it had and its KKT residuals; a user's callback still runs.
+TEST(Termination, TimeLimitStopsEveryMethod) {
+  for (const ContactMethod method :
+       {ContactMethod::UzawaGnm, ContactMethod::SemismoothNewton, ContactMethod::ClassicalUzawa}) {
+    SCOPED_TRACE(std::string(enum_to_string(kContactMethodNames, method)));
+    ContactSolverOptions o;
+    o.method = method;
+    o.time_limit = 1e-9;
+    int calls = 0;
+    o.callback = [&](const IterationEvent&) {
+      ++calls;
+      return CallbackAction::Continue;
+    };
+    const ContactResult r = solve_contact(testing::paper_model(60).problem, o);
+    EXPECT_EQ(r.summary.termination, Termination::TimeLimit);
+    EXPECT_FALSE(r.summary.converged());
+    EXPECT_EQ(calls, 1);
+    EXPECT_NE(r.summary.message.find("stopped at solver.time_limit = 1e-09 s"), std::string::npos)
+        << r.summary.message;
+    EXPECT_NE(r.summary.message.find("KKT residuals: equilibrium"), std::string::npos);
+    EXPECT_NE(r.summary.message.find("raise solver.time_limit"), std::string::npos);
+    EXPECT_EQ(r.u.size(), testing::paper_model(60).problem.A.rows());
+  }
+  // A limit that is not reached changes nothing.
+  ContactSolverOptions o;
+  const ContactResult free = solve_contact(testing::paper_model(60).problem, o);
+  o.time_limit = 1e6;
+  const ContactResult r = solve_contact(testing::paper_model(60).problem, o);
+  EXPECT_TRUE(r.summary.converged()) << r.summary.message;
+  EXPECT_EQ(r.summary.outer_iterations, free.summary.outer_iterations);
+  EXPECT_EQ(r.u, free.u);
+  o.time_limit = -1.0;
+  EXPECT_THROW((void)solve_contact(testing::paper_model(60).problem, o), InputError);
+}
+
 TEST(Termination, InvalidOptionsAreRejectedWithTheFieldName) {
   ContactSolverOptions o;
   o.r = -1.0;

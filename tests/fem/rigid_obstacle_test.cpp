@@ -1,6 +1,7 @@
-// Gaps to rigid obstacles, measured along the body's normal: exact distances for planes and discs
-// (body outside or inside), negative inside the obstacle, `far` where the normal misses it; and
-// the problem file's obstacle keys.
+// Where a point is against a rigid obstacle: the signed distance from its surface (negative
+// inside) and the obstacle's outward normal at the closest point, for planes, discs, balls and
+// cylinders (body outside or inside); descriptions for messages; and the problem file's
+// obstacle keys.
 
 #include "signorini/fem/rigid_obstacle.hpp"
 
@@ -14,73 +15,76 @@
 namespace signorini {
 namespace {
 
-TEST(RigidObstacle, PlaneGapAlongTheNormal) {
+void expect_at(const ObstacleDistance& d, double distance, const Eigen::Vector3d& normal) {
+  EXPECT_NEAR(d.distance, distance, 1e-15);
+  EXPECT_NEAR((d.normal - normal).norm(), 0.0, 1e-15) << d.normal.transpose();
+}
+
+const Eigen::Vector3d kNone = Eigen::Vector3d::Zero();
+
+TEST(RigidObstacle, PlaneDistanceAndNormal) {
   RigidObstacle o;
   o.shape = ObstacleShape::Plane;
   o.point = {0.0, -1.0, 0.0};
   o.normal = {0.0, 2.0, 0.0};  // any length: the obstacle is y <= -1
-  const Eigen::Vector3d down(0.0, -1.0, 0.0);
-  EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.3, 0.5, 0.0), down, 99.0), 1.5);
-  // Along a normal at 60 degrees from the vertical the way is twice as long.
-  const Eigen::Vector3d slanted(std::sqrt(3.0) / 2.0, -0.5, 0.0);
-  EXPECT_NEAR(obstacle_gap(o, Point(0.0, 0.0, 0.0), slanted, 99.0), 2.0, 1e-15);
-  EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.0, -1.25, 0.0), down, 99.0), -0.25);  // inside
-  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0), 99.0), 99.0);
-  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.0, 1.0, 0.0), 99.0), 99.0);
+  const Eigen::Vector3d up(0.0, 1.0, 0.0);
+  expect_at(obstacle_distance(o, Point(0.3, 0.5, 0.0), kNone), 1.5, up);
+  expect_at(obstacle_distance(o, Point(-7.0, 0.5, 0.0), kNone), 1.5, up);     // the same anywhere
+  expect_at(obstacle_distance(o, Point(0.0, -1.25, 0.0), kNone), -0.25, up);  // inside
+  EXPECT_EQ(describe(o, 2), "plane through (0, -1) with normal (0, 2)");
+  EXPECT_EQ(describe(o, 3), "plane through (0, -1, 0) with normal (0, 2, 0)");
 }
 
-TEST(RigidObstacle, DiscGapOutsideAndInside) {
+TEST(RigidObstacle, DiscDistanceOutsideAndInside) {
   RigidObstacle o;
   o.shape = ObstacleShape::Disc;
   o.centre = {0.0, -2.0, 0.0};
   o.radius = 1.0;
-  const Eigen::Vector3d down(0.0, -1.0, 0.0);
-  EXPECT_DOUBLE_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), down, 99.0), 1.0);
-  // Off the axis: x = 0.6 meets the circle at y = -2 + 0.8.
-  EXPECT_NEAR(obstacle_gap(o, Point(0.6, 0.0, 0.0), down, 99.0), 1.2, 1e-15);
-  EXPECT_EQ(obstacle_gap(o, Point(1.5, 0.0, 0.0), down, 99.0), 99.0);   // passes beside it
-  EXPECT_EQ(obstacle_gap(o, Point(0.0, 0.0, 0.0), -down, 99.0), 99.0);  // looks away from it
-  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -1.1, 0.0), down, 99.0), -0.1, 1e-15);  // inside it
-  // A body inside the disc (a shaft in a bore of radius 1): the way out along the normal.
+  expect_at(obstacle_distance(o, Point(0.0, 0.0, 0.0), kNone), 1.0, {0.0, 1.0, 0.0});
+  // Off the axis: along the radius through the point, 5 from the centre.
+  expect_at(obstacle_distance(o, Point(3.0, 2.0, 0.0), kNone), 4.0, {0.6, 0.8, 0.0});
+  expect_at(obstacle_distance(o, Point(0.0, -1.1, 0.0), kNone), -0.1, {0.0, 1.0, 0.0});  // inside
+  // At the centre every point of the circle is closest: the fallback normal.
+  expect_at(obstacle_distance(o, Point(0.0, -2.0, 0.0), {1.0, 0.0, 0.0}), -1.0, {1.0, 0.0, 0.0});
+  EXPECT_EQ(describe(o, 2), "disc of radius 1 about (0, -2)");
+  // A body inside the disc (a shaft in a bore of radius 1): the material lies outside the
+  // circle, its normal points to the centre.
   o.body_inside = true;
-  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -2.5, 0.0), down, 99.0), 0.5, 1e-15);
-  EXPECT_NEAR(obstacle_gap(o, Point(0.0, -2.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0), 99.0), 1.0,
-              1e-15);
+  expect_at(obstacle_distance(o, Point(0.0, -2.5, 0.0), kNone), 0.5, {0.0, 1.0, 0.0});
+  expect_at(obstacle_distance(o, Point(0.6, -2.0, 0.0), kNone), 0.4, {-1.0, 0.0, 0.0});
+  expect_at(obstacle_distance(o, Point(0.0, -3.5, 0.0), kNone), -0.5, {0.0, 1.0, 0.0});
+  EXPECT_EQ(describe(o, 2), "disc of radius 1 about (0, -2), the body inside");
   o.radius = 0.0;
   EXPECT_THROW(validate(o), InputError);
+  RigidObstacle gap;
+  EXPECT_THROW((void)obstacle_distance(gap, Point::Zero(), kNone), std::logic_error);
 }
 
-TEST(RigidObstacle, HalfSpaceAndSphereIn3D) {
+TEST(RigidObstacle, HalfSpaceBallAndCylinderIn3D) {
   RigidObstacle plane;
   plane.shape = ObstacleShape::Plane;
   plane.point = {0.0, 0.0, -1.0};
   plane.normal = {0.0, 0.0, 3.0};  // the obstacle is z <= -1
-  const Eigen::Vector3d down(0.0, 0.0, -1.0);
-  EXPECT_DOUBLE_EQ(obstacle_gap(plane, Point(0.4, -0.7, 0.5), down, 99.0), 1.5);
-  const Eigen::Vector3d slanted(std::sqrt(3.0 / 8.0), std::sqrt(3.0 / 8.0), -0.5);  // 60 degrees
-  EXPECT_NEAR(obstacle_gap(plane, Point(0.0, 0.0, 0.0), slanted, 99.0), 2.0, 1e-15);
-  // A ball of radius 1 centred at (1, 2, -2): the ray down from (1.6, 2.0, 0) meets it at
-  // z = -2 + 0.8, and the ray from (1, 2.6, 0) too.
+  expect_at(obstacle_distance(plane, Point(0.4, -0.7, 0.5), kNone), 1.5, {0.0, 0.0, 1.0});
+  // A ball of radius 1 centred at (1, 2, -2): from (1, 2 + 1.2, -2 + 1.6), 2 from the centre.
   RigidObstacle ball;
   ball.shape = ObstacleShape::Disc;
   ball.centre = {1.0, 2.0, -2.0};
   ball.radius = 1.0;
-  EXPECT_NEAR(obstacle_gap(ball, Point(1.6, 2.0, 0.0), down, 99.0), 1.2, 1e-15);
-  EXPECT_NEAR(obstacle_gap(ball, Point(1.0, 2.6, 0.0), down, 99.0), 1.2, 1e-15);
-  EXPECT_EQ(obstacle_gap(ball, Point(1.8, 2.8, 0.0), down, 99.0), 99.0);  // passes beside it
-  // A roller of radius 1 along the y axis through (1, 0, -2): the same section for every y, and
-  // nothing along the axis.
+  expect_at(obstacle_distance(ball, Point(1.0, 3.2, -0.4), kNone), 1.0, {0.0, 0.6, 0.8});
+  EXPECT_EQ(describe(ball, 3), "ball of radius 1 about (1, 2, -2)");
+  // A roller of radius 1 along the y axis through (1, 0, -2): the same section for every y.
   RigidObstacle roller;
   roller.shape = ObstacleShape::Cylinder;
   roller.centre = {1.0, 0.0, -2.0};
   roller.axis = {0.0, 5.0, 0.0};
-  EXPECT_NEAR(obstacle_gap(roller, Point(1.6, 7.0, 0.0), down, 99.0), 1.2, 1e-15);
-  EXPECT_NEAR(obstacle_gap(roller, Point(1.6, -3.0, 0.0), down, 99.0), 1.2, 1e-15);
-  const Eigen::Vector3d tilted = Eigen::Vector3d(0.0, 1.0, -1.0).normalized();  // 45 degrees
-  EXPECT_NEAR(obstacle_gap(roller, Point(1.0, 0.0, 0.0), tilted, 99.0), std::sqrt(2.0), 1e-14);
-  EXPECT_EQ(obstacle_gap(roller, Point(1.0, 0.0, -2.0), Eigen::Vector3d(0, 1, 0), 99.0), 99.0);
-  roller.body_inside = true;  // a bore of radius 1: out along the normal
-  EXPECT_NEAR(obstacle_gap(roller, Point(1.0, 4.0, -2.5), down, 99.0), 0.5, 1e-15);
+  expect_at(obstacle_distance(roller, Point(1.6, 7.0, -1.2), kNone), 0.0, {0.6, 0.0, 0.8});
+  expect_at(obstacle_distance(roller, Point(1.0, -3.0, 0.0), kNone), 1.0, {0.0, 0.0, 1.0});
+  // On the axis: the fallback.
+  expect_at(obstacle_distance(roller, Point(1.0, 4.0, -2.0), {0.0, 0.0, 1.0}), -1.0,
+            {0.0, 0.0, 1.0});
+  roller.body_inside = true;  // a bore of radius 1
+  expect_at(obstacle_distance(roller, Point(1.0, 4.0, -2.5), kNone), 0.5, {0.0, 0.0, 1.0});
   roller.axis = Eigen::Vector3d::Zero();
   EXPECT_THROW(validate(roller), InputError);
 }

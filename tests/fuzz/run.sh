@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Fuzzes the problem-file reader and the expression evaluator with libFuzzer, under
-# AddressSanitizer and UndefinedBehaviorSanitizer, for a bounded time per target.
+# Fuzzes the problem-file reader, the expression evaluator, the Gmsh reader and meshes from
+# arrays with libFuzzer, under AddressSanitizer and UndefinedBehaviorSanitizer, for a bounded
+# time per target.
 #   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s; targets: problem_file,
-#                                                            expression; default both)
+#                                          expression, gmsh_reader, mesh_arrays; default all)
 # Needs clang (Debian: apt-get install clang, done here when run as root); the normal build and CI
 # do not. The targets are compiled straight from the io sources into $SIGNORINI_FUZZ_BUILD
 # (default build/fuzz). Seeds are tests/fuzz/corpus/<target>/ (read only); what the fuzzer
@@ -13,7 +14,7 @@ cd "$(dirname "$0")/../.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(problem_file expression)
+[ ${#targets[@]} -eq 0 ] && targets=(problem_file expression gmsh_reader mesh_arrays)
 build="${SIGNORINI_FUZZ_BUILD:-build/fuzz}"
 
 if ! command -v clang++ >/dev/null 2>&1; then
@@ -39,11 +40,11 @@ flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer
 # and clang both compile it to "not whitespace", which is right, and tests/io/problem_file_test.cpp
 # checks the outcome; the check would otherwise stop every run at the first such character.
 sanitizers=(-fsanitize=address,undefined -fno-sanitize=unreachable -fno-sanitize-recover=undefined)
-# What the targets exercise, instrumented for coverage: the io module and the validate()
-# functions of the options. The rest of the library is only linked (linear_solver.cpp also makes
+# What the targets exercise, instrumented for coverage: the io and mesh modules and the
+# validate() functions of the options. The rest of the library is only linked (linear_solver.cpp also makes
 # the solvers), so it goes uninstrumented into an archive, from which the link takes what it needs.
 instrumented=(
-  src/signorini/io/*.cpp src/signorini/fem/material.cpp
+  src/signorini/io/*.cpp src/signorini/mesh/*.cpp src/signorini/fem/material.cpp
   src/signorini/contact/contact_solver_options.cpp src/signorini/linalg/linear_solver.cpp
 )
 libraries=(-lcholmod -lmuparser -lfmt)
@@ -91,10 +92,16 @@ for target in "${targets[@]}"; do
     "${objects[@]}" "$build/rest.a" "${libraries[@]}" -o "$exe" || exit 2
   mkdir -p "$build/corpus/$target" "$build/artifacts/$target"
   echo "fuzz: $target for $seconds s"
+  # (Gmsh files are longer than a problem file; the seeds run to a few kilobytes.)
+  max_len=4096
+  [ "$target" = gmsh_reader ] && max_len=16384
+  dict=()
+  [ -f "tests/fuzz/$target.dict" ] && dict=(-dict="tests/fuzz/$target.dict")
+  mkdir -p "tests/fuzz/corpus/$target"
   # New inputs go to the first corpus folder (the build's); the seeds in the repository are read.
   if ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 "$exe" \
-      -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
-      -dict="tests/fuzz/$target.dict" -artifact_prefix="$build/artifacts/$target/" \
+      -max_total_time="$seconds" -max_len="$max_len" -timeout=10 -rss_limit_mb=4096 \
+      -print_final_stats=1 "${dict[@]}" -artifact_prefix="$build/artifacts/$target/" \
       "$build/corpus/$target" "tests/fuzz/corpus/$target" 2>"$build/$target.log"; then
     tail -n 12 "$build/$target.log" | grep -E '^(#|stat::|Done)' || true
     echo "fuzz: $target: nothing found"

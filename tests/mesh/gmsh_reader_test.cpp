@@ -151,11 +151,15 @@ TEST(GmshReader, BadFilesAreNamedWithTheLine) {
                      "$Elements\n2\n5 2 2 0 1 1 2 3\n6 1 2 4 1 2 4\n$EndElements\n"),
             "bad.msh: line element 6 (physical group '4') is not an edge of any 2D element");
   EXPECT_EQ(error_of(head + nodes + "$Elements\n1\n5 1 2 4 1 1 2\n$EndElements\n"),
-            "bad.msh: no 2D elements (triangles or quadrilaterals): is it meshed in 2D (gmsh -2)?");
+            "bad.msh: no 2D elements (triangles or quadrilaterals), only lines: where a geometry "
+            "has physical groups, Gmsh saves only their elements, so the body's surfaces need one "
+            "too (e.g. Physical Surface(\"body\") = {1};)");
   EXPECT_EQ(error_of(head + "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 1\n$EndNodes\n" +
                      "$Elements\n1\n5 2 2 0 1 1 2 3\n$EndElements\n"),
             "bad.msh: the 2D elements do not lie in one plane z = constant (z from 0.000000 to "
-            "1.000000)");
+            "1.000000); if it is a 3D body, its volumes need a physical group too (e.g. Physical "
+            "Volume(\"body\") = {1};): where a geometry has physical groups, Gmsh saves only "
+            "their elements");
   EXPECT_EQ(error_of(head + nodes), "bad.msh:10: the file has no $Elements section");
   // A binary file cut short names the byte.
   const std::string bin = text_of(data("mixed_msh41_bin.msh"));
@@ -329,6 +333,15 @@ TEST(GmshReader, Bad3DFilesAreNamedWithTheElement) {
   EXPECT_EQ(error_of(tet_cube({}, "13 2 2 1 1 1 2 4")),
             "bad.msh: surface element 13 (physical group 'bottom') is not a face of any 3D "
             "element");
+  // A node tag defined twice (one of its points would be dropped), a tetrahedron given twice.
+  std::string twice = tet_cube();
+  twice.replace(twice.find("$Nodes\n8\n"), 9, "$Nodes\n9\n7 0.5 0.5 0.5\n");
+  EXPECT_EQ(error_of(twice),
+            "bad.msh: node 7 is defined twice in $Nodes, at (0.5, 0.5, 0.5) and at (1, 1, 1): "
+            "expected each node tag once");
+  EXPECT_EQ(error_of(tet_cube({}, "13 4 2 3 1 1 2 3 7")),
+            "bad.msh: element 5 and element 13 have the same nodes (a doubled cell, its stiffness "
+            "counted twice): expected each cell once");
   // A second-order triangle on first-order tetrahedra: its middle nodes are not the face's.
   EXPECT_EQ(error_of(tet_cube({}, "13 9 2 2 1 1 2 3 5 6 7")),
             "bad.msh: surface element 13 (physical group 'top') is not a face of any 3D element");
@@ -422,7 +435,9 @@ TEST(GmshReader, SurfacesWithoutVolumesAreA2DMesh) {
       "$EndNodes\n$Elements\n2\n1 2 2 0 1 1 2 3\n2 2 2 0 2 1 2 4\n$EndElements\n";
   EXPECT_EQ(error_of(msh),
             "bad.msh: the 2D elements do not lie in one plane z = constant (z from 0.000000 to "
-            "1.000000)");
+            "1.000000); if it is a 3D body, its volumes need a physical group too (e.g. Physical "
+            "Volume(\"body\") = {1};): where a geometry has physical groups, Gmsh saves only "
+            "their elements");
 }
 
 }  // namespace

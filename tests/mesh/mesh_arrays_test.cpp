@@ -187,6 +187,43 @@ TEST(MeshArrays, BadArraysAreRefusedInOneLine) {
   expect_refused(t, "the points have 1 coordinates each, expected 2");
 }
 
+// Cells that count the same ground twice, or a collapsed one, assemble without complaint: each
+// is refused with the cell it concerns (mesh/cell_overlap.hpp).
+TEST(MeshArrays, CollapsedDoubledAndOverlappingCellsAreRefused) {
+  MeshArrays a = two_squares();
+  a.blocks[0].nodes = {0, 1, 1, 3, 1, 2, 5, 4};  // the report's collapsed quad
+  expect_refused(a, "mesh: cell block 0 (quad4), cell 0 names node 1 twice (a collapsed cell)");
+  a = two_squares();
+  a.blocks[0].nodes.insert(a.blocks[0].nodes.end(), {1, 4, 3, 0});  // cell 0 again, turned
+  expect_refused(a,
+                 "mesh: cell block 0 (quad4), cell 0 and cell block 0 (quad4), cell 2 have the "
+                 "same nodes (a doubled cell");
+  a = two_squares();  // the same cell again in a block of its own (another region)
+  a.blocks.push_back({CellType::Quad4, {1, 2, 5, 4}, "right"});
+  expect_refused(a, "cell block 0 (quad4), cell 1 and cell block 1 (quad4), cell 0 have the same");
+  a = two_squares();  // a triangle laid over half of the first square
+  a.blocks.push_back({CellType::Tri3, {0, 1, 4}, ""});
+  expect_refused(a, "lie on the same side of their common facet (corners 0, 1): the cells overlap");
+  a = two_squares();  // a third square folded back over the second, on its right edge
+  a.points.conservativeResize(2, 8);
+  a.points.col(6) << 1.5, 0;
+  a.points.col(7) << 1.5, 1;
+  a.blocks[0].nodes.insert(a.blocks[0].nodes.end(), {6, 2, 5, 7});
+  expect_refused(a,
+                 "cell 1 and cell block 0 (quad4), cell 2 lie on the same side of their common "
+                 "facet (corners 2, 5)");
+  // In 3D: a tetrahedron of the cube given twice.
+  MeshArrays t;
+  t.points.resize(3, 5);
+  t.points << 0, 1, 0, 0, 1,  //
+      0, 0, 1, 0, 1,          //
+      0, 0, 0, 1, 1;
+  t.blocks.push_back({CellType::Tet4, {0, 1, 2, 3, 1, 2, 3, 4}, ""});
+  EXPECT_NO_THROW((void)mesh_from_arrays(t));
+  t.blocks[0].nodes.insert(t.blocks[0].nodes.end(), {1, 0, 3, 2});
+  expect_refused(t, "cell 0 and cell block 0 (tet4), cell 2 have the same nodes");
+}
+
 TEST(MeshArrays, AProblemGivenAMeshRefusesMeshAndChecksTheDimension) {
   auto mesh = std::make_shared<const Mesh>(mesh_from_arrays(two_squares()));
   const std::string body =

@@ -42,9 +42,9 @@ ContactResult run(const Model& model, const ProblemSpec& spec, ContactMethod met
   return solve_contact(model.problem, o);
 }
 
-// A 2 x 1 block on rollers (left: x held, bottom: y held), its right side moved by `right`
-// (a [[displacement]] entry's keys), and a contact boundary on top far from its obstacle.
-std::string stretched_block(const std::string& right, const std::string& cell = "quad4") {
+// A 2 x 1 block of 8 x 4 `cell`s held by `conditions` ([[clamp]] and [[displacement]] tables),
+// with a contact boundary on top far from its obstacle.
+std::string block(const std::string& conditions, const std::string& cell = "quad4") {
   return R"(
 [mesh]
 type = "rectangle"
@@ -58,7 +58,18 @@ cell = ")" +
 [material]
 E = 1000.0
 nu = 0.3
+)" + conditions +
+         R"(
+[contact]
+boundary = "top"
+gap = "1"
+)";
+}
 
+// The block on rollers (left: x held, bottom: y held), its right side moved by `right`
+// (a [[displacement]] entry's keys).
+std::string stretched_block(const std::string& right, const std::string& cell = "quad4") {
+  return block(R"(
 [[clamp]]
 boundary = "left"
 components = ["x"]
@@ -69,13 +80,8 @@ components = ["y"]
 
 [[displacement]]
 boundary = "right"
-)" + right +
-         R"(
-
-[contact]
-boundary = "top"
-gap = "1"
-)";
+)" + right + "\n",
+               cell);
 }
 
 // Plane strain, sigma_yy = 0, eps_xx = d / L: eps_yy = -nu / (1 - nu) eps_xx and
@@ -106,7 +112,32 @@ TEST(PrescribedDisplacement, UniformStretchIsExact) {
       EXPECT_NEAR(r.reactions[0].force(0), -pull, 1e-10 * pull);
       EXPECT_NEAR(r.reactions[1].force(1), 0.0, 1e-10 * pull);
       EXPECT_LT(r.relative_balance, 1e-12);
+      // The stored energy: 1/2 sigma_xx eps_xx over the 2 x 1 block.
+      const double stored = 0.5 * pull * exx * 2.0;
+      EXPECT_NEAR(r.strain_energy, stored, 1e-10 * stored);
     }
+  }
+}
+
+// A body moved rigidly by a prescribed displacement stores no energy, while J of the free
+// unknowns (which leaves out the energy of u_D) is negative: the summary reports both.
+TEST(PrescribedDisplacement, RigidMotionStoresNoEnergy) {
+  const std::string text = block(R"(
+[[displacement]]
+boundary = "left"
+x = 0.01
+y = 0.02
+)");
+  for (const std::string refine : {"8", "16"}) {
+    const ProblemSpec spec =
+        parse_problem_string(text, "t.toml", {"mesh.nx=" + refine, "mesh.ny=" + refine}).spec;
+    const Model model = build_model(spec);
+    const ContactResult result = run(model, spec, ContactMethod::SemismoothNewton);
+    ASSERT_TRUE(result.summary.converged()) << result.summary.message;
+    const Resultants r = compute_resultants(model, result);
+    EXPECT_LT(result.summary.energy, 0.0);
+    EXPECT_LT(std::abs(r.strain_energy), 1e-12 * std::abs(result.summary.energy))
+        << "J = " << result.summary.energy;
   }
 }
 

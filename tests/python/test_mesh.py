@@ -58,6 +58,14 @@ def test_two_squares_with_a_clockwise_cell_and_a_region():
     assert "6 nodes" in repr(mesh)
 
 
+def test_plane_points_with_a_constant_z_are_a_2d_mesh():
+    # As Mesh.from_meshio takes them: z dropped, the same mesh as from two coordinates.
+    xy = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], float)
+    flat = signorini.Mesh(np.c_[xy, np.full(4, 2.5)], {"quad4": [[0, 1, 2, 3]]})
+    assert flat.dim == 2
+    np.testing.assert_array_equal(flat.points, xy)
+
+
 @pytest.mark.parametrize("kwargs,words", [
     (dict(points=np.zeros((3, 4)), cells={}), "expected an array of shape (count, 2) or (count, 3)"),
     (dict(points=[[0, 0], [1, 0], [0, 1]], cells={"tri3": [[0, 1, 7]]}), "node 7 out of range"),
@@ -67,6 +75,13 @@ def test_two_squares_with_a_clockwise_cell_and_a_region():
     (dict(points=[[0, 0], [1, 0], [0, 1]], cells={"tri3": [[0, 1, 2]]},
           boundaries={"side": [[1, 3]]}), "node 3 out of range"),
     (dict(points=[[0, 0], [1, 0], [0, 1]], cells={"tri3": [[0.5, 1, 2]]}), "expected integers"),
+    # a collapsed quad, a doubled cell, points off one plane z = constant
+    (dict(points=[[0, 0], [1, 0], [1, 1], [0, 1]], cells={"quad4": [[0, 1, 1, 3], [1, 2, 3, 0]]}),
+     "cell 0 names node 1 twice (a collapsed cell)"),
+    (dict(points=[[0, 0], [1, 0], [1, 1], [0, 1]], cells={"quad4": [[0, 1, 2, 3], [1, 2, 3, 0]]}),
+     "have the same nodes (a doubled cell"),
+    (dict(points=[[0, 0, 0], [1, 0, 0], [1, 1, 1], [0, 1, 0]], cells={"quad4": [[0, 1, 2, 3]]}),
+     "2D cells on points whose z ranges from 0 to 1"),
 ])
 def test_bad_arrays_raise_input_error(kwargs, words):
     with pytest.raises(signorini.InputError) as e:

@@ -36,6 +36,9 @@ def test_new_loads_with_a_warm_start_equal_a_cold_solve(model):
     assert warm.load_factor == 1.2 and cold.load_factor == 1.0
     # loads times 1.2 and no gap: the solution scales with them
     np.testing.assert_allclose(cold.u, 1.2 * first.u, rtol=0, atol=1e-9 * np.abs(cold.u).max())
+    # a step of a loading history the problem does not have
+    with pytest.raises(signorini.InputError, match="step = 99 is not a step"):
+        solver.set_load_factor(1.0, step=99)
 
 
 def test_set_gaps_moves_the_foundation(model):

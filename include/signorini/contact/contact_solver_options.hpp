@@ -121,6 +121,10 @@ struct ContactSolverOptions {
   int max_classical_iterations = 200000;
   /// Iteration limit of the semismooth Newton (primal-dual active set) method.
   int max_newton_iterations = 200;
+  /// Seconds a solve may take (each ContactSolver::solve); 0: no limit. Past it the solve stops
+  /// at the next iteration with termination "time_limit" and the current iterate, its KKT
+  /// residuals reported (the tool writes it and exits with status 3).
+  double time_limit = 0.0;
   LinearSolverOptions linear;
   /// Where the solve runs: "cpu" or "cuda" (an NVIDIA GPU, docs/gpu.md). "cuda" runs the whole
   /// Uzawa-GNM loop with its vectors on the GPU and needs linear.type = "cg"; the "cg" solver

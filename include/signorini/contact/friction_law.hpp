@@ -33,9 +33,12 @@ class FrictionLaw final : public ContactLaw {
   FrictionLaw(FrictionKind kind, int dim, Vector bound);
   /// A law per node (contact boundaries with different laws): Tresca's s_j where mu_j = 0,
   /// Coulomb's mu_j where s_j = 0 (a frictionless node has both 0; not both positive).
-  FrictionLaw(int dim, Vector slip_bound, Vector mu);
+  /// `kinds`: the laws the problem states (Tresca with s = 0 is still Tresca), for name();
+  /// empty: read from which of s and mu has a positive value.
+  FrictionLaw(int dim, Vector slip_bound, Vector mu, std::vector<FrictionKind> kinds = {});
 
-  /// "tresca", "coulomb", or "tresca and coulomb" for a mixture.
+  /// "tresca", "coulomb", or "tresca and coulomb" for a mixture: the laws stated (or, where none
+  /// were, those with a positive bound; "coulomb" when neither has).
   [[nodiscard]] std::string_view name() const override;
   [[nodiscard]] int components() const override { return dim_; }
   [[nodiscard]] Index size() const { return s_.size(); }
@@ -57,6 +60,7 @@ class FrictionLaw final : public ContactLaw {
  private:
   int dim_;
   Vector s_, mu_;
+  bool tresca_ = false, coulomb_ = false;  // the laws stated, for name()
 };
 
 /// What a contact node does at a frictional solution.
@@ -69,9 +73,10 @@ inline constexpr EnumNames<FrictionState, 3> kFrictionStateNames{{
 }};
 
 /// Per node from the pressure l_n and the tangential multipliers l_t (ContactResult::l and
-/// ::tangential): separated where l_n = 0 (and l_t = 0), sliding where |l_t| reaches the slip
-/// bound (to 1e-6 relative, above the solver's tolerances; a zero bound slides freely),
-/// sticking otherwise.
+/// ::tangential): separated where l_n = 0 (Tresca's bound holds on the whole contact part, so a
+/// separated node may still carry a tangential traction up to it: method.md, "Friction"); of
+/// the nodes in contact, sliding where |l_t| reaches the slip bound (to 1e-6 relative, above the
+/// solver's tolerances; a zero bound slides freely), sticking otherwise.
 [[nodiscard]] std::vector<FrictionState> friction_states(const FrictionLaw& law,
                                                          const Vector& pressure,
                                                          const Matrix& tangential);

@@ -22,9 +22,11 @@ enum class Termination {
   KktResidualsTooLarge,
   /// ContactSolverOptions::callback asked to stop.
   StoppedByCallback,
+  /// ContactSolverOptions::time_limit was reached: the current iterate, not an answer.
+  TimeLimit,
 };
 
-inline constexpr EnumNames<Termination, 7> kTerminationNames{{
+inline constexpr EnumNames<Termination, 8> kTerminationNames{{
     {Termination::Converged, "converged"},
     {Termination::IterationLimit, "iteration_limit"},
     {Termination::ActiveSetCycling, "active_set_cycling"},
@@ -32,6 +34,7 @@ inline constexpr EnumNames<Termination, 7> kTerminationNames{{
     {Termination::LinearSolverFailure, "linear_solver_failure"},
     {Termination::KktResidualsTooLarge, "kkt_residuals_too_large"},
     {Termination::StoppedByCallback, "stopped_by_callback"},
+    {Termination::TimeLimit, "time_limit"},
 }};
 
 /// One outer step: a Uzawa step k (uzawa_gnm, classical_uzawa) or one Newton iteration

@@ -1,12 +1,14 @@
 #pragma once
-// The rigid partner of a contact boundary, and the gap g_j from each contact node to it measured
-// along the body's outward unit normal nu_j (method.md section 3): a gap formula g(x) as the
-// paper has it, a half-plane (a half-space in 3D), or a disc (a sphere in 3D: a roller, punch or
-// ball outside the body, or a bore the body sits in). For planes and discs the gap is exact: the
-// distance from x_j along nu_j to the obstacle's surface, negative where the node starts inside
-// the obstacle. Points and vectors have three coordinates; 2D problems leave z at 0.
+// The rigid partner of a contact boundary (method.md section 3): a gap formula g(x) as the paper
+// has it, read along the body's outward unit normal, or an obstacle of known shape: a half-plane
+// (a half-space in 3D), a disc (a sphere in 3D: a roller, punch or ball outside the body, or a
+// bore the body sits in) or a cylinder. Against a shape the constraint at a contact node acts
+// along the obstacle's normal at the node's closest point of its surface, and the gap is the
+// signed distance to that surface (negative where the node starts inside the obstacle), as for
+// any rigid master surface. Points and vectors have three coordinates; 2D problems leave z at 0.
 
 #include <Eigen/Core>
+#include <string>
 
 #include "signorini/core/enum_names.hpp"
 #include "signorini/fem/vector_field.hpp"
@@ -44,10 +46,22 @@ struct RigidObstacle {
 /// positive radius, finite coordinates).
 void validate(const RigidObstacle& obstacle);
 
-/// The gap from x along the unit vector nu to the obstacle: the t >= 0 of the first point
-/// x + t nu on its surface, or t < 0 where x is inside it already. Where the ray x + t nu never
-/// meets the obstacle (a node whose normal faces away from it), `far`.
-double obstacle_gap(const RigidObstacle& obstacle, const Point& x, const Eigen::Vector3d& nu,
-                    double far);
+/// Where a point is against an obstacle of known shape (not ObstacleShape::Gap): the signed
+/// distance from the obstacle's surface (negative inside the obstacle) and the obstacle's
+/// outward unit normal at the closest point of its surface (pointing towards the body).
+struct ObstacleDistance {
+  double distance = 0.0;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+};
+
+/// The distance of x from the obstacle's surface and the normal there. On a disc's centre (or a
+/// cylinder's axis), where every point of the surface is closest, the normal is `fallback`.
+/// std::logic_error for ObstacleShape::Gap, which has no shape.
+[[nodiscard]] ObstacleDistance obstacle_distance(const RigidObstacle& obstacle, const Point& x,
+                                                 const Eigen::Vector3d& fallback);
+
+/// "plane through (0, 0) with normal (0, 1)", "disc of radius 1 about (0, 2)": an obstacle in
+/// messages (z left out where dim is 2).
+[[nodiscard]] std::string describe(const RigidObstacle& obstacle, int dim);
 
 }  // namespace signorini

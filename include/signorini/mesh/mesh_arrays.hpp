@@ -30,7 +30,7 @@ struct BoundaryFacets {
 };
 
 struct MeshArrays {
-  /// dim x num_points (dim 2 or 3).
+  /// dim x num_points (dim 2 or 3; 2D cells on three rows with one constant z make a 2D mesh).
   Eigen::MatrixXd points;
   std::vector<CellBlock> blocks;
   std::vector<BoundaryFacets> boundaries;

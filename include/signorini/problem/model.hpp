@@ -164,4 +164,11 @@ DofMap make_dof_map(const Mesh& mesh, const std::vector<ClampSpec>& clamps,
 /// Throws InputError naming the rigid motions that the clamps leave free (fem/free_rigid_motions).
 void require_no_free_rigid_motion(const Mesh& mesh, const DofMap& dofs);
 
+/// Warnings about a Gmsh mesh that only its cells can tell, once it is read (the problem file's
+/// reader warns about the other meshes, whose cells it knows): a nearly incompressible material
+/// (nu >= 0.45) on first-order cells, which lock. Each names the file, the mesh's linear cell
+/// types and what to do (second-order cells: Mesh.ElementOrder = 2 in the .geo). Empty for
+/// other mesh types, or where every cell is of the second order.
+[[nodiscard]] std::vector<std::string> mesh_warnings(const ProblemSpec& spec, const Mesh& mesh);
+
 }  // namespace signorini

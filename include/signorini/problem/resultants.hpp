@@ -31,11 +31,16 @@ struct Resultants {
   /// at least the forces times the body's size, from the reference point, as their scale).
   double relative_balance = 0.0;
   double relative_moment_balance = 0.0;
+  /// 1/2 u . K u over every dof of the whole displacement (prescribed values included): the
+  /// elastic energy stored in the body, 0 for a rigid motion. J(u) of the summary (1/2 x.Ax -
+  /// b.x over the free unknowns) differs from it where displacements are prescribed.
+  double strain_energy = 0.0;
 };
 
 /// The resultants of the displacement u (free dofs) and contact pressure l of `model`. The
 /// reactions are (K u - f - c) at the clamped dofs, f the applied loads and c the contact forces,
-/// with K u formed cell by cell (fem/elasticity_assembly.hpp internal_forces). With friction,
+/// with K u formed cell by cell over every cell (fem/elasticity_assembly.hpp internal_forces),
+/// which gives the strain energy too. With friction,
 /// `tangential` (ContactResult::tangential) adds the tangential contact forces.
 Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l,
                               const Matrix& tangential = {}, double load_factor = 1.0,

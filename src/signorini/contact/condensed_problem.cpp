@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "signorini/contact/normal_rotation.hpp"
+
 namespace signorini {
 
 CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
@@ -9,9 +11,14 @@ CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
   const Index parts = SchurComplement::automatic_parts(full.A.rows(), threads);
   const ContactSet& c = full.contact;
   const Index nc = c.size();
+  // With friction, or where a node has rows in two contact parts (a corner against two
+  // obstacles, whose normals need not be along distinct axes), N's rows are kept as they are on
+  // the contact nodes' dofs; otherwise each node's normal displacement becomes one unknown
+  // (normal_rotation.hpp).
   const bool friction = c.components > 1;
+  const bool general_rows = friction || rows_share_dofs(c);
   Vector b_rotated;
-  if (friction) {
+  if (general_rows) {
     // Every dof that a row of N touches: the contact nodes' free dofs, in their order.
     std::vector<char> touched(static_cast<std::size_t>(full.A.rows()), 0);
     for (Index k = 0; k < c.N.outerSize(); ++k)
@@ -51,7 +58,7 @@ CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
   rc.gaps = c.gaps;
   rc.movable = c.movable;
   std::vector<Eigen::Triplet<double, int>> nt;
-  if (friction) {
+  if (general_rows) {
     // N's rows as they are, on the kept columns.
     rc.components = c.components;
     rc.slip_origin = c.slip_origin;

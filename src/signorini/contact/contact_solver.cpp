@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -78,6 +79,9 @@ std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
       if (o.linear.type == LinearSolverType::ConjugateGradient)
         tips.emplace_back(
             "raise solver.linear.cg_max_iterations or use solver.linear.type = \"cholmod\"");
+      break;
+    case Termination::TimeLimit:
+      tips.emplace_back("raise solver.time_limit (or 0: none)");
       break;
     case Termination::KktResidualsTooLarge:
       if (s.kkt.equilibrium > o.kkt_tolerance &&
@@ -256,7 +260,23 @@ void ContactSolver::cold_start() {
 ContactResult ContactSolver::solve() {
   Impl& m = *impl_;
   const ContactProblem& problem = *m.problem;
-  const ContactSolverOptions& options = m.options;
+  // solver.time_limit: a callback around the user's that stops the run once the time is up,
+  // at the next iteration (each method's loops honour a callback's stop).
+  ContactSolverOptions limited = m.options;
+  const auto started = std::chrono::steady_clock::now();
+  const auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
+  bool out_of_time = false;
+  if (limited.time_limit > 0.0) {
+    limited.callback = [&, user = m.options.callback](const IterationEvent& e) {
+      if (user && user(e) == CallbackAction::Stop) return CallbackAction::Stop;
+      if (elapsed() <= limited.time_limit) return CallbackAction::Continue;
+      out_of_time = true;
+      return CallbackAction::Stop;
+    };
+  }
+  const ContactSolverOptions& options = limited;
   MethodStart start;
   if (m.start) {
     start.l = m.start->l;
@@ -351,6 +371,12 @@ ContactResult ContactSolver::solve() {
   // Converged means the KKT conditions hold, not only that the method's rule was met: a
   // penalty so large that the Newton systems lose their digits, or a tolerance on the change
   // of l that stops early, must not pass for an answer (method.md section 7).
+  if (out_of_time && s.termination == Termination::StoppedByCallback) {
+    s.termination = Termination::TimeLimit;
+    s.message = fmt::format(
+        "stopped at solver.time_limit = {:g} s, after {:.3g} s and {} outer iteration(s)",
+        options.time_limit, elapsed(), s.outer_iterations);
+  }
   const bool kkt_ok = s.kkt.max() <= options.kkt_tolerance;  // false for NaN too
   if (s.termination == Termination::Converged && !kkt_ok) {
     s.termination = Termination::KktResidualsTooLarge;

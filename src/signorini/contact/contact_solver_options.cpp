@@ -60,6 +60,11 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
               "iteration limit of `classical_uzawa`");
     t.integer("max_newton_iterations", &O::max_newton_iterations, at_least(1),
               "iteration limit of `semismooth_newton`");
+    t.number("time_limit", &O::time_limit, at_least(0.0),
+             "seconds a solve may take; past it the solve stops at the next iteration with "
+             "termination `time_limit` and the current iterate, which the tool writes (exit "
+             "status 3). In seconds; 0: no limit")
+        .range_note("(0: none)");
     t.boolean("schur_complement", &O::schur_complement,
               "with the `cholmod` linear solver: condense the problem onto the contact nodes by "
               "one sparse factorisation (a Schur complement) and iterate on that small dense "

@@ -13,10 +13,15 @@ namespace signorini {
 
 FrictionLaw::FrictionLaw(FrictionKind kind, int dim, Vector bound)
     : FrictionLaw(dim, kind == FrictionKind::Tresca ? bound : Vector::Zero(bound.size()),
-                  kind == FrictionKind::Coulomb ? bound : Vector::Zero(bound.size())) {}
+                  kind == FrictionKind::Coulomb ? bound : Vector::Zero(bound.size()), {kind}) {}
 
-FrictionLaw::FrictionLaw(int dim, Vector slip_bound, Vector mu)
+FrictionLaw::FrictionLaw(int dim, Vector slip_bound, Vector mu, std::vector<FrictionKind> kinds)
     : dim_(dim), s_(std::move(slip_bound)), mu_(std::move(mu)) {
+  for (const FrictionKind k : kinds) (k == FrictionKind::Tresca ? tresca_ : coulomb_) = true;
+  if (kinds.empty()) {
+    tresca_ = s_.size() > 0 && s_.maxCoeff() > 0.0;
+    coulomb_ = mu_.size() > 0 && mu_.maxCoeff() > 0.0;
+  }
   if (dim_ != 2 && dim_ != 3) throw std::invalid_argument("FrictionLaw: dim must be 2 or 3");
   if (s_.size() != mu_.size())
     throw std::invalid_argument("FrictionLaw: one slip bound and one mu per node");
@@ -28,10 +33,8 @@ FrictionLaw::FrictionLaw(int dim, Vector slip_bound, Vector mu)
 }
 
 std::string_view FrictionLaw::name() const {
-  const bool tresca = s_.size() > 0 && s_.maxCoeff() > 0.0;
-  const bool coulomb = mu_.size() > 0 && mu_.maxCoeff() > 0.0;
-  if (tresca && coulomb) return "tresca and coulomb";
-  return tresca ? "tresca" : "coulomb";
+  if (tresca_ && coulomb_) return "tresca and coulomb";
+  return tresca_ ? "tresca" : "coulomb";
 }
 
 Vector FrictionLaw::slip_bounds(const Vector& l) const {
@@ -69,7 +72,7 @@ std::vector<FrictionState> friction_states(const FrictionLaw& law, const Vector&
   std::vector<FrictionState> states(static_cast<std::size_t>(nc), FrictionState::Separated);
   for (Index j = 0; j < nc; ++j) {
     const double t = tangential.col(j).norm();
-    if (!(pressure(j) > 0.0) && t == 0.0) continue;
+    if (!(pressure(j) > 0.0)) continue;  // (Tresca's traction there is no contact's)
     states[static_cast<std::size_t>(j)] =
         t >= bound(j) * (1.0 - 1e-6) ? FrictionState::Sliding : FrictionState::Sticking;
   }

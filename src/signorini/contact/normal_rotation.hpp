@@ -25,7 +25,12 @@ struct NormalRotation {
   [[nodiscard]] Vector from_rotated(const Vector& y) const;
 };
 
+/// Throws InputError where two movable rows share a free dof (a node in two contact parts, as a
+/// corner against two obstacles): one unknown per row cannot then be had by a rotation.
 NormalRotation make_normal_rotation(const ContactSet& contact, Index num_free);
+
+/// Whether two movable rows of the contact set touch the same free dof.
+[[nodiscard]] bool rows_share_dofs(const ContactSet& contact);
 
 /// Q^T A Q, computed in place on a copy of A where the node blocks allow it (A itself when Q = I).
 /// A may hold only the columns [first_column, first_column + A.cols()) (a partitioned problem's

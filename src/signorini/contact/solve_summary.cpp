@@ -22,7 +22,8 @@ std::string SolveSummary::brief_report() const {
                               enum_to_string(kContactMethodNames, method),
                               enum_to_string(kTerminationNames, termination), outer_iterations);
   if (!message.empty()) s += "  " + message + "\n";
-  s += fmt::format("  M(u,l) = {:.10e}   J(u) = {:.10e}\n", lagrangian, energy);
+  s += fmt::format("  M(u,l) = {:.10e}   J(u) = {:.10e} (1/2 x.Ax - b.x, free unknowns x)\n",
+                   lagrangian, energy);
   s += fmt::format("  active contact nodes {}, contact force {:.10e}\n", num_active, contact_force);
   s += fmt::format(
       "  KKT (relative): equilibrium {:.2e}, penetration {:.2e}, sign {:.2e}, "

@@ -1,5 +1,7 @@
 #include "signorini/fem/contact_boundary.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -64,6 +66,10 @@ BoundaryNodes surface_nodes(const Mesh& mesh, const BoundaryPart& part) {
   const auto n = static_cast<Index>(out.nodes.size());
   out.normals = Eigen::MatrixXd::Zero(3, n);
   out.weights = Vector::Zero(n);
+  Index shares = 0;
+  for (const Facet& f : part.facets) shares += static_cast<Index>(mesh.facet_nodes(f).size());
+  out.facet_shares = Eigen::MatrixXd::Zero(3, shares);
+  Index share = 0;  // the column of the current facet's first node
   ShapeValues N;
   for (const Facet& f : part.facets) {
     const auto fn = mesh.facet_nodes(f);
@@ -88,19 +94,21 @@ BoundaryNodes surface_nodes(const Mesh& mesh, const BoundaryPart& part) {
         const double h = area * mass(a) / mass.sum();
         const Index j = facet[static_cast<std::size_t>(a)];
         out.weights(j) += h;
-        out.normals.col(j) +=
+        out.facet_shares.col(share + a) =
             h * area_vector(reference_node(type, static_cast<int>(a))).normalized();
       }
     } else {
       for (const QuadraturePoint& q : rule) {
         const Eigen::Vector3d dA = area_vector(q.xi) * q.w;
         for (Index a = 0; a < k; ++a) {
-          const Index j = facet[static_cast<std::size_t>(a)];
-          out.weights(j) += N(a) * dA.norm();
-          out.normals.col(j) += N(a) * dA;
+          out.weights(facet[static_cast<std::size_t>(a)]) += N(a) * dA.norm();
+          out.facet_shares.col(share + a) += N(a) * dA;
         }
       }
     }
+    for (Index a = 0; a < k; ++a)
+      out.normals.col(facet[static_cast<std::size_t>(a)]) += out.facet_shares.col(share + a);
+    share += k;
     out.facets.push_back(std::move(facet));
   }
   return out;
@@ -146,6 +154,10 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
   // straight one: all positive, so every node carries a constraint of its own).
   out.normals = Eigen::MatrixXd::Zero(2, n);
   out.weights = Vector::Zero(n);
+  Index shares = 0;
+  for (const Facet& f : part.facets) shares += static_cast<Index>(mesh.facet_nodes(f).size());
+  out.facet_shares = Eigen::MatrixXd::Zero(2, shares);
+  Index share = 0;  // the column of the current facet's first node
   ShapeValues N;
   ShapeGradients dN;
   const auto rule = gauss_legendre(3);
@@ -157,10 +169,12 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
     if (fn.size() == 2) {
       const Eigen::Vector2d t = mesh.node(fn[1]) - mesh.node(fn[0]);
       const Eigen::Vector2d outward(t(1), -t(0));  // |outward| = facet length
-      for (const Index j : facet) {
-        out.weights(j) += 0.5 * t.norm();
-        out.normals.col(j) += outward;
+      for (std::size_t a = 0; a < 2; ++a) {
+        out.weights(facet[a]) += 0.5 * t.norm();
+        out.normals.col(facet[a]) += outward;  // (the same direction as the half below)
+        out.facet_shares.col(share + static_cast<Index>(a)) = 0.5 * outward;
       }
+      share += 2;
       continue;
     }
     const CellType type = facet_type(mesh.cell_type(f.cell));
@@ -176,8 +190,11 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
         const Index j = facet[a];
         out.weights(j) += N(static_cast<Index>(a)) * dx.norm() * q.w;
         out.normals.col(j) += N(static_cast<Index>(a)) * outward * q.w;
+        out.facet_shares.col(share + static_cast<Index>(a)) +=
+            N(static_cast<Index>(a)) * outward * q.w;
       }
     }
+    share += static_cast<Index>(fn.size());
   }
   normalize_normals(out, part, what);
   return out;
@@ -195,7 +212,13 @@ std::string point_text(const Mesh& mesh, const Point& x) {
 // The exact normals where the geometry is known (method.md section 3): the facets' average
 // approximates a curved surface's normal to O(h) (O(h^2) at best on a regular mesh), which
 // tilts the gap measured along it and the direction of the contact force; the given field is
-// exact at the nodes. It must point out of the body: within 90 degrees of the facets' normal.
+// exact at the nodes. It must point out of the body: within 100 degrees of the facets' normal.
+// Not 90: where a curved part ends at an edge of the body (the rim of a hemisphere against its
+// flat top), the exact normal lies at 90 degrees from the flat face and the facets' normal there
+// leans a little either way, on second-order faces (whose corner normals are the face's own
+// there) more than on first-order ones; a normal given the wrong way round is 180 degrees off.
+constexpr double kLeastNormalCosine = -0.17364817766693033;  // cos(100 degrees)
+
 void set_surface_normals(const Mesh& mesh, const VectorField& field, BoundaryNodes& b) {
   const int dim = mesh.dim();
   for (Index j = 0; j < static_cast<Index>(b.nodes.size()); ++j) {
@@ -205,9 +228,9 @@ void set_surface_normals(const Mesh& mesh, const VectorField& field, BoundaryNod
     if (!(length > 0.0))
       throw InputError("contact.surface_normal is zero at x = " + point_text(mesh, x) +
                        ": expected the body's outward normal there (any length, not zero)");
-    if (!(v.dot(b.normals.col(j)) > 0.0))
+    if (!(v.dot(b.normals.col(j)) > kLeastNormalCosine * length))
       throw InputError("contact.surface_normal at x = " + point_text(mesh, x) +
-                       " points into the body (more than 90 degrees from the facets' outward "
+                       " points into the body (more than 100 degrees from the facets' outward "
                        "normal): expected the outward normal");
     b.normals.col(j) = v / length;
   }
@@ -215,24 +238,60 @@ void set_surface_normals(const Mesh& mesh, const VectorField& field, BoundaryNod
 
 }  // namespace
 
+double interference_limit(const Eigen::VectorXd& extent) {
+  double smallest = 0.0;
+  for (const double e : extent)
+    if (e > 0.0 && (smallest == 0.0 || e < smallest)) smallest = e;
+  return 0.1 * smallest;
+}
+
+void check_body_outside(const Mesh& mesh, const RigidObstacle& obstacle, double limit,
+                        const std::string& what) {
+  if (obstacle.shape == ObstacleShape::Gap) return;  // (make_contact_rows checks its gaps)
+  validate(obstacle);
+  Index deepest = -1;
+  double depth = limit;
+  for (Index v = 0; v < mesh.num_nodes(); ++v) {
+    const double d = -obstacle_distance(obstacle, mesh.point(v), Eigen::Vector3d::Zero()).distance;
+    if (d > depth) {
+      depth = d;
+      deepest = v;
+    }
+  }
+  if (deepest < 0) return;
+  throw InputError(fmt::format(
+      "{}: the body starts inside the obstacle ({}): node {} at x = {} lies {:g} deep, more than "
+      "the {:g} (a tenth of the body's smallest extent) allowed as an initial interference; "
+      "expected the body outside the obstacle (does the obstacle's normal point towards the "
+      "body?)",
+      what, describe(obstacle, mesh.dim()), deepest, point_text(mesh, mesh.point(deepest)), depth,
+      limit));
+}
+
+void check_contact_can_occur(const ContactSet& cs, const std::string& boundary) {
+  if (cs.num_movable() == 0)
+    throw InputError(
+        "contact.boundary = '" + boundary +
+        "': no contact node can move towards the obstacle (each is clamped in its normal "
+        "direction or faces away from the obstacle): expected a part that faces the obstacle and "
+        "is not wholly clamped");
+}
+
 ContactSet make_contact_set(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                             const RigidObstacle& obstacle, const VectorField& surface_normal) {
-  // The gap of a node whose normal never meets the obstacle: far beyond anything the body can
-  // reach.
-  const double far =
-      10.0 * (mesh.coordinates().rowwise().maxCoeff() - mesh.coordinates().rowwise().minCoeff())
-                 .maxCoeff();
-  ContactSet cs = make_contact_rows(mesh, part, dofs, obstacle, surface_normal, far);
-  if (cs.num_movable() == 0)
-    throw InputError("contact.boundary = '" + part.name +
-                     "': every contact node is clamped in its normal direction, so no contact can "
-                     "occur (does it coincide with the clamped boundary?)");
+  const Eigen::VectorXd extent =
+      mesh.coordinates().rowwise().maxCoeff() - mesh.coordinates().rowwise().minCoeff();
+  const double limit = interference_limit(extent);
+  const std::string what = "contact.boundary = '" + part.name + "'";
+  check_body_outside(mesh, obstacle, limit, what);
+  ContactSet cs = make_contact_rows(mesh, part, dofs, obstacle, surface_normal, limit);
+  check_contact_can_occur(cs, part.name);
   return cs;
 }
 
 ContactSet make_contact_rows(const Mesh& mesh, const BoundaryPart& part, const DofMap& dofs,
                              const RigidObstacle& obstacle, const VectorField& surface_normal,
-                             double far) {
+                             double limit) {
   validate(obstacle);
   BoundaryNodes b = boundary_nodes(mesh, part, "contact.boundary");
   if (surface_normal) set_surface_normals(mesh, surface_normal, b);
@@ -242,27 +301,66 @@ ContactSet make_contact_rows(const Mesh& mesh, const BoundaryPart& part, const D
   cs.weights = std::move(b.weights);
   cs.facets = std::move(b.facets);
   const Index n = cs.size();
+  const int dim = mesh.dim();
   cs.gaps.resize(n);
   cs.movable.assign(static_cast<std::size_t>(n), false);
+  // Which facet shares (BoundaryNodes::facet_shares) belong to each node.
+  std::vector<std::vector<Index>> shares_of(static_cast<std::size_t>(n));
+  {
+    Index share = 0;
+    for (const std::vector<Index>& facet : cs.facets)
+      for (const Index j : facet) shares_of[static_cast<std::size_t>(j)].push_back(share++);
+  }
   std::vector<Eigen::Triplet<double, int>> triplets;
   for (Index j = 0; j < n; ++j) {
     const Index node = cs.nodes[static_cast<std::size_t>(j)];
     const Point x = mesh.point(node);
-    Eigen::Vector3d nu = Eigen::Vector3d::Zero();
-    nu.head(mesh.dim()) = cs.normals.col(j);
-    cs.gaps(j) = obstacle_gap(obstacle, x, nu, far);
-    if (!std::isfinite(cs.gaps(j)))
-      throw InputError("contact.gap is not finite at x = " + point_text(mesh, x) +
-                       ": expected finite values on the contact boundary");
+    bool faces = true;
+    if (obstacle.shape == ObstacleShape::Gap) {
+      // The paper's gap formula, read along the body's normal nu_j (method.md section 3).
+      cs.gaps(j) = obstacle.gap(x);
+      if (!std::isfinite(cs.gaps(j)))
+        throw InputError("contact.gap is not finite at x = " + point_text(mesh, x) +
+                         ": expected finite values on the contact boundary");
+      if (cs.gaps(j) < -limit)
+        throw InputError(fmt::format(
+            "contact.gap = {:g} at x = {} (contact.boundary = '{}'): the body starts that deep "
+            "inside the obstacle, more than the {:g} (a tenth of the body's smallest extent) "
+            "allowed as an initial interference; expected a gap >= -{:g}",
+            cs.gaps(j), point_text(mesh, x), part.name, limit, limit));
+    } else {
+      // A rigid obstacle of known shape (method.md section 3): the constraint acts along its
+      // normal at the node's closest point, nu_j = -n(x_j), the gap is the signed distance (the
+      // rigid master surface's normal, not the body's: at a corner of the contact part the
+      // body's averaged normal would push the body sideways off a frictionless plane). A node
+      // whose outward normal points away from the obstacle never touches it.
+      Eigen::Vector3d body = Eigen::Vector3d::Zero();
+      body.head(dim) = cs.normals.col(j);
+      const ObstacleDistance o = obstacle_distance(obstacle, x, -body);
+      cs.gaps(j) = o.distance;
+      cs.normals.col(j) = -o.normal.head(dim);
+      faces = body.dot(-o.normal) > -1e-12;
+      // The weight: the node's share of the obstacle's surface that it presses on, its facets
+      // projected across nu_j. At a corner of the contact part a side at right angles to the
+      // obstacle adds nothing, so that l_j stays the pressure of the face that touches (the
+      // uniform pressure of the square above to round-off, not half of it at the corner).
+      double projected = 0.0;
+      for (const Index k : shares_of[static_cast<std::size_t>(j)])
+        projected += std::max(b.facet_shares.col(k).dot(cs.normals.col(j)), 0.0);
+      // (Not where the facets stand nearly at right angles to nu_j, which would make l_j a
+      // force over almost no area: there the plain share, as with a gap formula.)
+      if (projected > 0.01 * cs.weights(j)) cs.weights(j) = projected;
+    }
     // A prescribed displacement moves the node towards the obstacle by nu . u_D: the constraint
     // (N x)_j <= g_j holds on the free dofs with that part taken off the gap. A node with local
     // axes (DofMap::set_frame, 2D) has its row in them.
     cs.gaps(j) -= cs.normals.col(j).dot(dofs.prescribed_at(node));
+    if (!faces) continue;  // (no row in N, its multiplier kept at 0, like a clamped node's)
     const Eigen::VectorXd normal =
         dofs.has_frame(node) ? Eigen::VectorXd(dofs.frame(node).transpose() * cs.normals.col(j))
                              : Eigen::VectorXd(cs.normals.col(j));
     double free_normal = 0.0;
-    for (int k = 0; k < mesh.dim(); ++k) {
+    for (int k = 0; k < dim; ++k) {
       const Index d = dofs.free_index(node, k);
       if (d < 0) continue;
       triplets.emplace_back(static_cast<int>(j), static_cast<int>(d), normal(k));

@@ -1,6 +1,9 @@
 #include "signorini/fem/rigid_obstacle.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <stdexcept>
 
 #include "signorini/core/error.hpp"
 
@@ -33,46 +36,63 @@ void validate(const RigidObstacle& o) {
   }
 }
 
-double obstacle_gap(const RigidObstacle& o, const Point& x, const Eigen::Vector3d& nu, double far) {
+ObstacleDistance obstacle_distance(const RigidObstacle& o, const Point& x,
+                                   const Eigen::Vector3d& fallback) {
+  ObstacleDistance out;
   switch (o.shape) {
     case ObstacleShape::Gap:
-      return o.gap(x);
-    case ObstacleShape::Plane: {
-      // x + t nu on the line (plane): ((x + t nu) - p) . n = 0.
-      const Eigen::Vector3d n = o.normal.normalized();
-      const double approach = nu.dot(n);  // < 0 where nu points into the obstacle's side
-      if (!(approach < -1e-12)) return far;
-      return (o.point - x).dot(n) / approach;
-    }
+      break;
+    case ObstacleShape::Plane:
+      // The half-space (x - p) . n <= 0: its surface's normal is n everywhere.
+      out.normal = o.normal.normalized();
+      out.distance = (x - o.point).dot(out.normal);
+      return out;
     case ObstacleShape::Disc:
     case ObstacleShape::Cylinder: {
-      // |x + t nu - c| = R: t^2 + 2 b t + q = 0 with b = nu . (x - c), q = |x - c|^2 - R^2; for a
-      // cylinder the same in the plane across its axis (both vectors without their components
-      // along it), a t^2 + 2 b t + q = 0 with a = |nu_perp|^2, divided by a.
+      // The closest point of a circle (sphere) lies on the ray from its centre through x; for a
+      // cylinder the same in the plane across its axis.
       Eigen::Vector3d d = x - o.centre;
-      Eigen::Vector3d n = nu;
-      double a = 1.0;
       if (o.shape == ObstacleShape::Cylinder) {
         const Eigen::Vector3d e = o.axis.normalized();
         d -= d.dot(e) * e;
-        n -= n.dot(e) * e;
-        a = n.squaredNorm();
-        if (!(a > 1e-24)) return far;  // a normal along the axis never meets the surface
       }
-      const double b = n.dot(d) / a;
-      const double q = (d.squaredNorm() - o.radius * o.radius) / a;
-      const double disc = b * b - q;
-      if (o.body_inside) {  // leaves the disc at the larger root (q < 0 inside: always real)
-        if (disc < 0.0) return far;
-        return -b + std::sqrt(disc);
-      }
-      if (disc < 0.0) return far;             // the ray passes the disc
-      const double t = -b - std::sqrt(disc);  // the first point of the circle on the ray
-      if (t < 0.0 && q > 0.0) return far;     // the disc lies behind the node
-      return t;
+      const double r = d.norm();
+      const Eigen::Vector3d radial = r > 0.0 ? Eigen::Vector3d(d / r) : fallback;
+      // Outside a ball the surface's outward normal points away from the centre; a bore's
+      // material lies outside the circle, so its normal points towards the centre.
+      out.distance = o.body_inside ? o.radius - r : r - o.radius;
+      out.normal = o.body_inside ? Eigen::Vector3d(-radial) : radial;
+      if (r == 0.0) out.normal = fallback;
+      return out;
     }
   }
-  return far;
+  throw std::logic_error("obstacle_distance: a gap formula has no shape");
+}
+
+namespace {
+std::string coordinates(const Eigen::Vector3d& v, int dim) {
+  std::string out = "(";
+  for (int k = 0; k < dim; ++k) out += (k > 0 ? ", " : "") + fmt::format("{:g}", v(k));
+  return out + ")";
+}
+}  // namespace
+
+std::string describe(const RigidObstacle& o, int dim) {
+  switch (o.shape) {
+    case ObstacleShape::Gap:
+      return "gap formula";
+    case ObstacleShape::Plane:
+      return fmt::format("plane through {} with normal {}", coordinates(o.point, dim),
+                         coordinates(o.normal, dim));
+    case ObstacleShape::Disc:
+      return fmt::format("{} of radius {:g} about {}{}", dim == 3 ? "ball" : "disc", o.radius,
+                         coordinates(o.centre, dim), o.body_inside ? ", the body inside" : "");
+    case ObstacleShape::Cylinder:
+      return fmt::format("cylinder of radius {:g} about {} along {}{}", o.radius,
+                         coordinates(o.centre, dim), coordinates(o.axis, dim),
+                         o.body_inside ? ", the body inside" : "");
+  }
+  return "obstacle";
 }
 
 }  // namespace signorini

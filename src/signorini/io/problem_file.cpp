@@ -214,8 +214,7 @@ void read_mesh(const Reader& r, const toml::table& root, ProblemSpec& spec,
 }
 
 // The cell type of the mesh, for the warning about locking: a structured mesh's, a given mesh's
-// first linear type (or its first type). A Gmsh mesh's cells are known only when it is read: it is
-// warned about as the rectangle's default, quad4, would be.
+// first linear type (or its first type). (A Gmsh mesh's cells are known only when it is read.)
 CellType structured_cell(const ProblemSpec& spec) {
   if (spec.mesh_type == MeshType::Given && spec.given_mesh) {
     const std::vector<CellType> types = spec.given_mesh->cell_types();
@@ -247,7 +246,8 @@ void read_material(const Reader& r, const Dimension& dim, const toml::table& roo
   // near the contact come out wrong by a factor that grows without bound (at nu = 0.49 the
   // stress under a contact peak overshoots the contact pressure by some 70 %), which the solver
   // cannot detect. Quadratic elements lock far less (the mesh is read before the material).
-  if (m.nu >= 0.45 && cell_order(structured_cell(spec)) == 1)
+  // (A Gmsh mesh's cells are known once it is read: problem/model.hpp, mesh_warnings.)
+  if (m.nu >= 0.45 && spec.mesh_type != MeshType::Gmsh && cell_order(structured_cell(spec)) == 1)
     warnings.push_back(
         r.file() + ": material.nu = " + as_text(m.nu) +
         " >= 0.45: nearly incompressible, and linear elements (" +
@@ -286,7 +286,8 @@ void read_regions(const Reader& r, const toml::table& root, ProblemSpec& spec,
     for (const RegionMaterialSpec& other : spec.region_materials)
       if (other.region == m.region)
         r.fail(path + ": region '" + m.region + "' has a material already");
-    if (m.material.nu >= 0.45 && cell_order(structured_cell(spec)) == 1)
+    if (m.material.nu >= 0.45 && spec.mesh_type != MeshType::Gmsh &&
+        cell_order(structured_cell(spec)) == 1)
       warnings.push_back(r.file() + ": " + path + ".nu = " + as_text(m.material.nu) +
                          " >= 0.45: nearly incompressible; linear elements lock (see material.nu)");
     spec.region_materials.push_back(std::move(m));

@@ -205,11 +205,11 @@ const OptionTable<P>& material_options() {
         .required()
         .synonyms({"*young", "*modulus", "emod"});
     t.number("nu", poisson_ratio, open_interval(-1.0, 0.5),
-             "Poisson's ratio; from 0.45 on a warning is printed (the run goes on): bilinear "
-             "elements lock as nu approaches 0.5, so displacements come out too small and "
-             "stresses near the contact oscillate (at 0.49 the stress under a contact peak "
-             "overshoots the pressure by some 70 %). Quadratic elements (`mesh.cell`) lock far "
-             "less")
+             "Poisson's ratio; from 0.45 on a warning is printed where the mesh has "
+             "first-order cells (the run goes on): they lock as nu approaches 0.5, so "
+             "displacements come out too small and stresses near the contact oscillate (at 0.49 "
+             "the stress under a contact peak overshoots the pressure by some 70 %). Quadratic "
+             "cells lock far less (`mesh.cell`; a Gmsh mesh: `Mesh.ElementOrder = 2`)")
         .required()
         .synonyms({"*poisson", "v", "mu_poisson"});
     // A plane model means nothing in 3D: refused with a box rather than ignored. A Gmsh mesh's
@@ -403,9 +403,11 @@ const OptionTable<P>& contact_options() {
              "the rigid partner: the foundation of `gap` (the paper's), a half-plane (a "
              "half-space in 3D: `point`, `normal`), a disc (a ball in 3D: `centre`, `radius`, "
              "`inside`) or, in 3D, a cylinder (`centre` a point of its axis, `axis`, `radius`, "
-             "`inside`). For these the gap of each contact node is measured exactly, along the "
-             "body's outward normal there; a node whose normal never meets the obstacle gets 10 "
-             "times the mesh's size")
+             "`inside`). Against these the constraint at each contact node acts along the "
+             "obstacle's normal at the node's closest point of its surface and the gap is the "
+             "exact distance to it; a node whose outward normal points away from the obstacle "
+             "never touches it. A body that starts more than a tenth of its smallest extent "
+             "inside the obstacle is refused")
         .default_text("`\"gap\"`");
     t.custom("point", "array of 2 (3 in 3D) numbers", "plane: a point of the plane's surface")
         .unit("L")
@@ -426,8 +428,10 @@ const OptionTable<P>& contact_options() {
              "the body's outward normal on this boundary where its geometry is known, e.g. "
              "`[\"x\", \"y\", \"z - 1\"]` on a ball of centre (0, 0, 1): its value at each "
              "contact node (any length) replaces the normal averaged from the facets, which is "
-             "exact on flat faces only. It must point out of the body (within 90 degrees of the "
-             "facets' normal) and not vanish; the gap to an obstacle is measured along it")
+             "exact on flat faces only. With a gap formula the constraint acts along it; an "
+             "obstacle of known shape sets the direction itself (its own normal), and this "
+             "normal then tells which nodes face it. It must point out of the body (within 100 "
+             "degrees of the facets' normal) and not vanish")
         .default_text("the facets' average");
     t.custom("inside", "boolean",
              "disc, cylinder: true when the body lies inside it (a shaft in a bore), false when "

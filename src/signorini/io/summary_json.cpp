@@ -107,6 +107,7 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
   j["warm_started"] = summary.warm_started;
   j["M"] = summary.lagrangian;
   j["energy"] = summary.energy;
+  j["strain_energy"] = resultants.strain_energy;
   // The method's own words (outer and inner steps: Uzawa and GNM, semismooth Newton steps and
   // the one linear solve of each, classical Uzawa steps), and the paper's names for the same.
   j["outer_iterations"] = summary.outer_iterations;

@@ -1,6 +1,7 @@
 #include "signorini/mesh/gmsh_reader.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,6 +20,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/mesh/cell_orientation.hpp"
+#include "signorini/mesh/cell_overlap.hpp"
 #include "signorini/mesh/facet_matching.hpp"
 
 namespace signorini {
@@ -487,6 +489,13 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   const int dim = p.volumes.types.empty() ? 2 : 3;
   const RawElements& raw = dim == 3 ? p.volumes : p.surfaces;
   const RawElements& bounds = dim == 3 ? p.surfaces : p.lines;
+  // Gmsh saves only the elements of physical groups where a geometry defines any: a .geo with
+  // physical curves but no physical surface gives lines alone.
+  if (raw.types.empty() && !bounds.types.empty())
+    throw InputError(name +
+                     ": no 2D elements (triangles or quadrilaterals), only lines: where a "
+                     "geometry has physical groups, Gmsh saves only their elements, so the "
+                     "body's surfaces need one too (e.g. Physical Surface(\"body\") = {1};)");
   if (raw.types.empty())
     throw InputError(name +
                      ": no 2D elements (triangles or quadrilaterals): is it meshed in 2D "
@@ -501,13 +510,27 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   const bool compact = max_tag <= 4 * static_cast<Index>(p.node_tags.size()) + 1024;
   std::vector<Index> slot;
   std::unordered_map<Index, Index> sparse_slot;
+  // A tag defined twice would leave one of its points unused, silently: refused.
+  const auto defined_twice = [&](std::size_t first, std::size_t second) {
+    const auto at = [&](std::size_t k) {
+      return fmt::format("({:g}, {:g}, {:g})", p.xyz[3 * k], p.xyz[3 * k + 1], p.xyz[3 * k + 2]);
+    };
+    return InputError(fmt::format(
+        "{}: node {} is defined twice in $Nodes, at {} and at {}: expected each node tag once",
+        name, p.node_tags[second], at(first), at(second)));
+  };
   if (compact) {
     slot.assign(static_cast<std::size_t>(max_tag + 1), -1);
-    for (std::size_t k = 0; k < p.node_tags.size(); ++k)
-      slot[static_cast<std::size_t>(p.node_tags[k])] = static_cast<Index>(k);
+    for (std::size_t k = 0; k < p.node_tags.size(); ++k) {
+      Index& s = slot[static_cast<std::size_t>(p.node_tags[k])];
+      if (s >= 0) throw defined_twice(static_cast<std::size_t>(s), k);
+      s = static_cast<Index>(k);
+    }
   } else {
     for (std::size_t k = 0; k < p.node_tags.size(); ++k)
-      sparse_slot[p.node_tags[k]] = static_cast<Index>(k);
+      if (const auto [it, added] = sparse_slot.try_emplace(p.node_tags[k], static_cast<Index>(k));
+          !added)
+        throw defined_twice(static_cast<std::size_t>(it->second), k);
   }
   const auto node_slot = [&](const RawElements& e, std::size_t i, Index tag) {
     Index k = -1;
@@ -545,7 +568,10 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   size = (xy.rowwise().maxCoeff() - xy.rowwise().minCoeff()).maxCoeff();
   if (dim == 2 && zmax - zmin > 1e-9 * std::max(size, 1e-300))
     throw InputError(name + ": the 2D elements do not lie in one plane z = constant (z from " +
-                     std::to_string(zmin) + " to " + std::to_string(zmax) + ")");
+                     std::to_string(zmin) + " to " + std::to_string(zmax) +
+                     "); if it is a 3D body, its volumes need a physical group too (e.g. "
+                     "Physical Volume(\"body\") = {1};): where a geometry has physical groups, "
+                     "Gmsh saves only their elements");
 
   // Cells, counterclockwise in 2D, positively oriented in 3D.
   std::vector<CellType> types;
@@ -619,6 +645,8 @@ Mesh parse_gmsh_mesh(const std::string& content, const std::string& name) {
   }
   Mesh mesh(std::move(types), std::move(xy), std::move(cells));
   mesh.set_cell_source_tags(std::move(tags));
+  check_cells_do_not_overlap(
+      mesh, name, [&](Index c) { return "element " + std::to_string(mesh.cell_source_tag(c)); });
 
   // Regions: "" for cells in no physical surface (volume in 3D), then the groups in the order of
   // their tags.
@@ -703,10 +731,12 @@ Mesh read_mesh_file(const std::filesystem::path& file) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  // gmsh's messages into a file of their own: its first error line goes into ours.
+  const std::string log = msh + ".log";
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
   pid_t pid = 0;
   const int spawned = posix_spawnp(&pid, "gmsh", &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -718,11 +748,24 @@ Mesh read_mesh_file(const std::filesystem::path& file) {
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(out);
+  // gmsh's first "Error : ..." line (it names the file and the line of a syntax error).
+  std::string error;
+  {
+    std::ifstream messages(log);
+    for (std::string line; error.empty() && std::getline(messages, line);)
+      if (const auto at = line.find("Error"); at != std::string::npos) {
+        error = line.substr(at);
+        if (const auto colon = error.find(':'); colon != std::string::npos)
+          error = error.substr(colon + 1);
+        error.erase(0, error.find_first_not_of(' '));
+      }
+  }
+  std::filesystem::remove(log);
   if (!ok) {
     std::filesystem::remove(out);
     throw InputError(geo + ": gmsh could not mesh it (exit status " +
-                     std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
-                     "); run gmsh -3 on it to see why");
+                     std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")" +
+                     (error.empty() ? "; run gmsh -3 on it to see why" : ": gmsh says: " + error));
   }
   try {
     Mesh mesh = read_gmsh_mesh(out);

@@ -101,6 +101,11 @@ const BoundaryPart& Mesh::boundary_part(std::string_view name) const {
   if (it == parts_.end()) {
     std::string known;
     for (const auto& [n, p] : parts_) known += (known.empty() ? "" : ", ") + n;
+    if (known.empty())  // (a Gmsh geometry without physical groups one dimension down)
+      throw InputError("mesh has no boundary part '" + std::string(name) +
+                       "': it has no named boundary parts at all; a Gmsh geometry names them "
+                       "with physical groups (e.g. Physical Curve(\"" +
+                       std::string(name) + "\") = {1}; in 2D, Physical Surface in 3D)");
     throw InputError("mesh has no boundary part '" + std::string(name) + "' (it has: " + known +
                      ")");
   }

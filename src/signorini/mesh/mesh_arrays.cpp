@@ -7,6 +7,7 @@
 
 #include "signorini/core/error.hpp"
 #include "signorini/mesh/cell_orientation.hpp"
+#include "signorini/mesh/cell_overlap.hpp"
 #include "signorini/mesh/facet_matching.hpp"
 
 namespace signorini {
@@ -20,11 +21,29 @@ std::string type_name(CellType t) {
 }  // namespace
 
 Mesh mesh_from_arrays(const MeshArrays& a) {
-  const Eigen::MatrixXd& x = a.points;
-  const auto dim = static_cast<int>(x.rows());
-  if (dim != 2 && dim != 3)
+  if (a.points.rows() != 2 && a.points.rows() != 3)
     throw InputError(fmt::format(
-        "mesh: the points have {} coordinates each, expected 2 (a 2D mesh) or 3 (a 3D mesh)", dim));
+        "mesh: the points have {} coordinates each, expected 2 (a 2D mesh) or 3 (a 3D mesh)",
+        a.points.rows()));
+  // 2D cells on points with three coordinates (as meshio and Gmsh give a plane mesh): a 2D mesh
+  // where z is one constant, its z dropped.
+  bool plane = a.points.rows() == 3 && !a.blocks.empty();
+  for (const CellBlock& block : a.blocks) plane = plane && cell_dimension(block.type) == 2;
+  Eigen::MatrixXd flat;
+  if (plane && a.points.cols() > 0) {
+    const double zmin = a.points.row(2).minCoeff(), zmax = a.points.row(2).maxCoeff();
+    const double size =
+        (a.points.topRows(2).rowwise().maxCoeff() - a.points.topRows(2).rowwise().minCoeff())
+            .maxCoeff();
+    if (!(zmax - zmin <= 1e-9 * std::max(size, 1e-300)))
+      throw InputError(fmt::format(
+          "mesh: 2D cells on points whose z ranges from {:g} to {:g}: expected a plane mesh, z "
+          "one constant (or two coordinates per point)",
+          zmin, zmax));
+    flat = a.points.topRows(2);
+  }
+  const Eigen::MatrixXd& x = plane ? flat : a.points;
+  const auto dim = static_cast<int>(x.rows());
   const Index n = x.cols();
   if (n == 0) throw InputError("mesh: no points");
   for (Index i = 0; i < n; ++i)
@@ -36,6 +55,7 @@ Mesh mesh_from_arrays(const MeshArrays& a) {
   std::vector<std::string> region_names{""};
   std::vector<int> regions;
   std::vector<char> used(static_cast<std::size_t>(n), 0);
+  std::vector<std::pair<std::size_t, std::size_t>> origin;  // (block, cell in it) of each cell
   for (std::size_t b = 0; b < a.blocks.size(); ++b) {
     const CellBlock& block = a.blocks[b];
     const std::string what = fmt::format("mesh: cell block {} ({})", b, type_name(block.type));
@@ -74,6 +94,7 @@ Mesh mesh_from_arrays(const MeshArrays& a) {
       }
       types.push_back(block.type);
       regions.push_back(region);
+      origin.emplace_back(b, c);
     }
   }
   if (types.empty()) throw InputError("mesh: no cells");
@@ -85,6 +106,10 @@ Mesh mesh_from_arrays(const MeshArrays& a) {
           i));
   Mesh mesh(std::move(types), x, std::move(cells));
   mesh.set_cell_regions(std::move(region_names), std::move(regions));
+  check_cells_do_not_overlap(mesh, "mesh", [&](Index c) {
+    const auto [b, k] = origin[static_cast<std::size_t>(c)];
+    return fmt::format("cell block {} ({}), cell {}", b, type_name(a.blocks[b].type), k);
+  });
 
   std::set<std::string> names;
   for (const BoundaryFacets& part : a.boundaries) {

@@ -262,8 +262,12 @@ std::shared_ptr<const FrictionLaw> contact_friction_law(
         "without mpirun");
   const Index size = starts.back();
   Vector s = Vector::Zero(size), mu = Vector::Zero(size);
+  std::vector<FrictionKind> kinds;
   for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
     const ContactSpec& c = spec.contacts[part];
+    if (c.friction != FrictionModel::None)
+      kinds.push_back(c.friction == FrictionModel::Tresca ? FrictionKind::Tresca
+                                                          : FrictionKind::Coulomb);
     const std::string where =
         spec.contacts.size() == 1 ? "contact" : fmt::format("contact[{}]", part);
     for (Index j = starts[part]; j < starts[part + 1]; ++j) {
@@ -277,7 +281,7 @@ std::shared_ptr<const FrictionLaw> contact_friction_law(
             where, c.slip_bound_text, s(j), x(0), x(1), x(2)));
     }
   }
-  return std::make_shared<const FrictionLaw>(dim, std::move(s), std::move(mu));
+  return std::make_shared<const FrictionLaw>(dim, std::move(s), std::move(mu), std::move(kinds));
 }
 
 Vector free_loads(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& elasticity,

@@ -315,10 +315,10 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   // The contact rows of the rank's nodes, in the order in which the side's facets first name
   // them (fem/contact_boundary.cpp): each rank has every facet around its nodes.
   ScopedTimer contact_timer(timings, "contact set");
-  // The gap where a node's normal never meets the obstacle: 10 times the whole mesh's extent,
-  // as make_contact_set measures it.
+  // The initial interference allowed, from the whole mesh's extent as make_contact_set
+  // measures it.
   const auto [lo, hi] = whole_extent(mesh, node_ranks, rank, engine);
-  const double far = 10.0 * (hi - lo).maxCoeff();
+  const double limit = interference_limit(hi - lo);
   bool with_friction = false;
   for (const ContactSpec& c : spec.contacts)
     with_friction = with_friction || c.friction != FrictionModel::None;
@@ -326,6 +326,8 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   on_every_rank(engine, [&] {
     for (const ContactSpec& c : spec.contacts) {
       const BoundaryPart& side = mesh.boundary_part(c.boundary);  // InputError on other names
+      // (each rank its part's nodes: together the whole body)
+      check_body_outside(mesh, c.obstacle, limit, "contact.boundary = '" + c.boundary + "'");
       std::vector<ContactRow> rows;
       std::vector<ContactFacet> facets;
       if (!side.facets.empty()) {
@@ -334,7 +336,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
           throw std::logic_error("model in parts: a side's facets and their places differ");
         RigidObstacle o = c.obstacle;
         if (o.shape == ObstacleShape::Gap) o.gap = c.gap;
-        const ContactSet cs = make_contact_rows(mesh, side, dofs, o, c.surface_normal, far);
+        const ContactSet cs = make_contact_rows(mesh, side, dofs, o, c.surface_normal, limit);
         // The key of each node: its first facet's place in the whole side, and its place there
         // (or, where given, its place in the whole side's order).
         std::vector<Index> key(static_cast<std::size_t>(nodes), -1);
@@ -466,10 +468,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
     }
     if (rows.empty())  // (every rank alike: no part has a facet of the side)
       throw InputError("contact.boundary = '" + c.boundary + "': the boundary part has no facets");
-    if (cs.num_movable() == 0)  // (every rank alike: the set is whole)
-      throw InputError("contact.boundary = '" + c.boundary +
-                       "': every contact node is clamped in its normal direction, so no contact "
-                       "can occur (does it coincide with the clamped boundary?)");
+    check_contact_can_occur(cs, c.boundary);  // (every rank alike: the set is whole)
     append_contact_set(problem.contact, cs);
     contact_boundaries.push_back(c.boundary);
     contact_starts.push_back(problem.contact.size());

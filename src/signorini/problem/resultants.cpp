@@ -77,17 +77,13 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
     if (contact(i) != 0.0) foundation.add(mesh, r.reference, i, contact(i));
   }
 
-  // K u only where it is needed: in the cells that touch a clamped dof (on a part those that
-  // the rank accounts for).
+  // K u cell by cell over every cell (on a part those that the rank accounts for): the
+  // reactions at the clamped dofs, and the strain energy 1/2 u . K u of the whole displacement,
+  // prescribed values included (J of the free unknowns leaves out the energy of u_D).
   const Vector full_u = model.full_displacement(u, load_factor, load_step);
-  const auto touches_clamp = [&](Index cell) {
-    if (part && model.cell_rank(cell) != rank) return false;
-    for (const Index node : mesh.cell(cell))
-      for (int k = 0; k < dim; ++k)
-        if (model.dofs.is_clamped(node, k)) return true;
-    return false;
-  };
-  const Vector Ku = internal_forces(mesh, model.elasticity, full_u, touches_clamp);
+  const auto counted_cell = [&](Index cell) { return !part || model.cell_rank(cell) == rank; };
+  const Vector Ku = internal_forces(mesh, model.elasticity, full_u, counted_cell);
+  double energy = 0.5 * full_u.dot(Ku);
   std::vector<Sum> reactions;
   for (const ClampedPart& clamped : model.clamped_parts) {
     Sum reaction;
@@ -107,7 +103,9 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
     put(applied);
     put(foundation);
     for (const Sum& s : reactions) put(s);
+    sums.push_back(energy);
     sum_over_ranks(model.problem, sums.data(), static_cast<Index>(sums.size()));
+    energy = sums.back();
     std::size_t at = 0;
     const auto take = [&](Sum& s) {
       s.force = Eigen::Vector3d(sums[at], sums[at + 1], sums[at + 2]);
@@ -118,6 +116,7 @@ Resultants compute_resultants(const Model& model, const Vector& u, const Vector&
     take(foundation);
     for (Sum& s : reactions) take(s);
   }
+  r.strain_energy = energy;
   r.applied = applied.force;
   r.applied_moment = applied.moment;
   r.contact = foundation.force;
@@ -158,6 +157,10 @@ std::string resultants_report(const Resultants& r, int dim) {
   s += fmt::format("  contact (foundation)  {}\n", vector_text(r.contact, dim));
   s += fmt::format("  balance               {}   relative {:.1e} (moments {:.1e})\n",
                    vector_text(r.balance, dim), r.relative_balance, r.relative_moment_balance);
+  s += fmt::format(
+      "strain energy 1/2 u.Ku {:.10e} (the whole displacement's, prescribed values "
+      "included)\n",
+      r.strain_energy);
   return s;
 }
 
