@@ -39,8 +39,7 @@ struct Resultants {
 
 /// The resultants of the displacement u (free dofs) and contact pressure l of `model`. The
 /// reactions are (K u - f - c) at the clamped dofs, f the applied loads and c the contact forces,
-/// with K u formed cell by cell over every cell (fem/elasticity_assembly.hpp internal_forces),
-/// which gives the strain energy too. With friction,
+/// with K u formed cell by cell (fem/elasticity_assembly.hpp internal_forces). With friction,
 /// `tangential` (ContactResult::tangential) adds the tangential contact forces.
 Resultants compute_resultants(const Model& model, const Vector& u, const Vector& l,
                               const Matrix& tangential = {}, double load_factor = 1.0,
