@@ -33,7 +33,8 @@ flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer
        # NDEBUG): toml++ 3.3.0 asserts in parse_key() on input its caller lets through ("[[" and a
        # line break), which it then reports as a syntax error (tests/io/problem_file_test.cpp).
        "-DTOML_ASSERT(expr)=((void)0)"
-       -DSIGNORINI_VERSION=\"fuzz\" -Isrc -I/usr/include/eigen3 -I/usr/include/suitesparse)
+       -DEIGEN_SPARSEMATRIX_PLUGIN='"signorini/core/eigen_sparse_move.hpp"'
+       -Iinclude -I"$build/include" -Isrc -I/usr/include/eigen3 -I/usr/include/suitesparse)
 # Every UBSan check but "unreachable": toml++ 3.3.0 reaches __builtin_unreachable() in
 # is_non_ascii_horizontal_whitespace() for code points U+00A1-U+0499 and U+FB07-U+FEFE where it
 # tests for whitespace (marzer/tomlplusplus#190, #295; fixed upstream by #305, after 3.4.0). g++
@@ -47,13 +48,20 @@ instrumented=(
   src/signorini/io/*.cpp src/signorini/mesh/*.cpp src/signorini/fem/material.cpp
   src/signorini/contact/contact_solver_options.cpp src/signorini/linalg/linear_solver.cpp
 )
-libraries=(-lcholmod -lmuparser -lfmt)
+libraries=(-lcholmod -lumfpack -lsuitesparseconfig -lmuparser -lfmt -lopenblas)
 
 # Objects built with other flags (an earlier version of this script) are built again.
 if [ "$(cat "$build/flags" 2>/dev/null)" != "${flags[*]} ${sanitizers[*]}" ]; then
   rm -rf "$build/obj" "$build/rest"
 fi
-mkdir -p "$build/obj" "$build/rest"
+mkdir -p "$build/obj" "$build/rest" "$build/include/signorini"
+# The library's generated header (src/CMakeLists.txt makes it from cmake/config.hpp.in), without
+# CUDA: the fuzz build has no GPU backend.
+sed -e 's/@PROJECT_VERSION@/fuzz/' -e 's/@PROJECT_VERSION_[A-Z]*@/0/' \
+    -e 's|#cmakedefine SIGNORINI_HAVE_CUDA 1|/* no CUDA */|' cmake/config.hpp.in \
+    > "$build/include/signorini/config.hpp.new"
+cmp -s "$build/include/signorini/config.hpp.new" "$build/include/signorini/config.hpp" ||
+  mv "$build/include/signorini/config.hpp.new" "$build/include/signorini/config.hpp"
 echo "${flags[*]} ${sanitizers[*]}" > "$build/flags"
 # A source is compiled again when it, or any header of the library, is newer than its object.
 newest_header=$(find src/signorini -name '*.hpp' -printf '%T@ %p\n' | sort -n | tail -1 | cut -d' ' -f2)
@@ -72,8 +80,9 @@ for src in "${instrumented[@]}"; do
   objects+=("$obj")
 done
 rest=()
-for src in src/signorini/*/*.cpp; do
+for src in src/signorini/*/*.cpp src/signorini/*/detail/*.cpp; do
   case " ${instrumented[*]} " in *" $src "*) continue ;; esac
+  case "$src" in src/signorini/petsc/*) continue ;; esac  # (a library of its own, with PETSc)
   obj="$build/rest/$(basename "${src%.cpp}").o"
   compile "$src" "$obj" || exit 2
   rest+=("$obj")
