@@ -24,16 +24,7 @@
 namespace signorini {
 namespace {
 
-// The message of the InputError that `f` throws ("no InputError" if it throws none).
-template <class F>
-std::string input_error_of(const F& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
-}
+using testing::input_error_of;
 
 ContactResult run(const Model& model, const ProblemSpec& spec, ContactMethod method) {
   ContactSolverOptions o = spec.solver;

@@ -27,16 +27,7 @@
 namespace signorini {
 namespace {
 
-// The message of the InputError that `f` throws ("no InputError" if it throws none).
-template <class F>
-std::string input_error_of(const F& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
-}
+using testing::input_error_of;
 
 // A mesh with an extra boundary part `name` made of the facets of the parts `sides`.
 std::shared_ptr<const Mesh> with_part(Mesh mesh, const std::string& name,
