@@ -16,8 +16,11 @@ Vector NormalRotation::from_rotated(const Vector& y) const {
   return identity() ? y : Vector(Q * y);
 }
 
-bool rows_share_dofs(const ContactSet& c) {
-  // (The rows of one node, with friction its normal and tangents, share its dofs by design.)
+namespace {
+
+// The node of the first movable row that touches a free dof of an earlier row of another node,
+// or -1. (The rows of one node, with friction its normal and tangents, share its dofs by design.)
+Index node_of_a_shared_dof(const ContactSet& c) {
   std::vector<Index> owner(static_cast<std::size_t>(c.N.cols()), -1);
   const SparseMatrix Nt = c.N.transpose();
   for (Index row = 0; row < Nt.outerSize(); ++row) {
@@ -26,33 +29,26 @@ bool rows_share_dofs(const ContactSet& c) {
     for (SparseMatrix::InnerIterator it(Nt, row); it; ++it) {
       if (it.value() == 0.0) continue;
       Index& o = owner[static_cast<std::size_t>(it.row())];
-      if (o >= 0 && o != j) return true;
+      if (o >= 0 && o != j) return c.nodes[static_cast<std::size_t>(j)];
       o = j;
     }
   }
-  return false;
+  return -1;
+}
+
+}  // namespace
+
+bool rows_share_dofs(const ContactSet& c) {
+  return node_of_a_shared_dof(c) >= 0;
 }
 
 NormalRotation make_normal_rotation(const ContactSet& c, Index num_free) {
-  if (rows_share_dofs(c)) {
-    Index node = -1;
-    std::vector<Index> rows_of(static_cast<std::size_t>(num_free), -1);
-    const SparseMatrix Nt = c.N.transpose();
-    for (Index j = 0; j < c.size() && node < 0; ++j) {
-      if (!c.movable[static_cast<std::size_t>(j)]) continue;
-      for (SparseMatrix::InnerIterator it(Nt, j); it; ++it)
-        if (it.value() != 0.0) {
-          Index& first = rows_of[static_cast<std::size_t>(it.row())];
-          if (first >= 0 && first != j) node = c.nodes[static_cast<std::size_t>(j)];
-          first = j;
-        }
-    }
+  if (const Index node = node_of_a_shared_dof(c); node >= 0)
     throw InputError(fmt::format(
         "contact node {} is in two contact boundaries, each with its own normal: this method "
         "needs one normal displacement per node; use solver.method = \"uzawa_gnm\" (or "
         "\"classical_uzawa\"), which take any constraint rows",
         node));
-  }
   NormalRotation r;
   const Index nc = c.size();
   r.normal_dof.assign(static_cast<std::size_t>(nc), -1);

@@ -171,7 +171,7 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
       const Eigen::Vector2d outward(t(1), -t(0));  // |outward| = facet length
       for (std::size_t a = 0; a < 2; ++a) {
         out.weights(facet[a]) += 0.5 * t.norm();
-        out.normals.col(facet[a]) += outward;  // (the same direction as the half below)
+        out.normals.col(facet[a]) += 0.5 * outward;
         out.facet_shares.col(share + static_cast<Index>(a)) = 0.5 * outward;
       }
       share += 2;
@@ -189,11 +189,12 @@ BoundaryNodes boundary_nodes(const Mesh& mesh, const BoundaryPart& part, const s
       for (std::size_t a = 0; a < fn.size(); ++a) {
         const Index j = facet[a];
         out.weights(j) += N(static_cast<Index>(a)) * dx.norm() * q.w;
-        out.normals.col(j) += N(static_cast<Index>(a)) * outward * q.w;
         out.facet_shares.col(share + static_cast<Index>(a)) +=
             N(static_cast<Index>(a)) * outward * q.w;
       }
     }
+    for (std::size_t a = 0; a < fn.size(); ++a)
+      out.normals.col(facet[a]) += out.facet_shares.col(share + static_cast<Index>(a));
     share += static_cast<Index>(fn.size());
   }
   normalize_normals(out, part, what);
@@ -304,13 +305,6 @@ ContactSet make_contact_rows(const Mesh& mesh, const BoundaryPart& part, const D
   const int dim = mesh.dim();
   cs.gaps.resize(n);
   cs.movable.assign(static_cast<std::size_t>(n), false);
-  // Which facet shares (BoundaryNodes::facet_shares) belong to each node.
-  std::vector<std::vector<Index>> shares_of(static_cast<std::size_t>(n));
-  {
-    Index share = 0;
-    for (const std::vector<Index>& facet : cs.facets)
-      for (const Index j : facet) shares_of[static_cast<std::size_t>(j)].push_back(share++);
-  }
   std::vector<Eigen::Triplet<double, int>> triplets;
   for (Index j = 0; j < n; ++j) {
     const Index node = cs.nodes[static_cast<std::size_t>(j)];
@@ -340,16 +334,6 @@ ContactSet make_contact_rows(const Mesh& mesh, const BoundaryPart& part, const D
       cs.gaps(j) = o.distance;
       cs.normals.col(j) = -o.normal.head(dim);
       faces = body.dot(-o.normal) > -1e-12;
-      // The weight: the node's share of the obstacle's surface that it presses on, its facets
-      // projected across nu_j. At a corner of the contact part a side at right angles to the
-      // obstacle adds nothing, so that l_j stays the pressure of the face that touches (the
-      // uniform pressure of the square above to round-off, not half of it at the corner).
-      double projected = 0.0;
-      for (const Index k : shares_of[static_cast<std::size_t>(j)])
-        projected += std::max(b.facet_shares.col(k).dot(cs.normals.col(j)), 0.0);
-      // (Not where the facets stand nearly at right angles to nu_j, which would make l_j a
-      // force over almost no area: there the plain share, as with a gap formula.)
-      if (projected > 0.01 * cs.weights(j)) cs.weights(j) = projected;
     }
     // A prescribed displacement moves the node towards the obstacle by nu . u_D: the constraint
     // (N x)_j <= g_j holds on the free dofs with that part taken off the gap. A node with local
@@ -371,6 +355,22 @@ ContactSet make_contact_rows(const Mesh& mesh, const BoundaryPart& part, const D
   cs.N.resize(n, dofs.num_free());
   cs.N.setFromTriplets(triplets.begin(), triplets.end());
   cs.N.makeCompressed();
+  if (obstacle.shape != ObstacleShape::Gap) {
+    // The weight against a shape: the node's share of the obstacle's surface that it presses
+    // on, its facets projected across nu_j. At a corner of the contact part a side at right
+    // angles to the obstacle adds nothing, so that l_j stays the pressure of the face that
+    // touches (the uniform pressure of a square's bottom to round-off, not half of it at the
+    // corner).
+    Vector projected = Vector::Zero(n);
+    Index share = 0;
+    for (const std::vector<Index>& facet : cs.facets)
+      for (const Index j : facet)
+        projected(j) += std::max(b.facet_shares.col(share++).dot(cs.normals.col(j)), 0.0);
+    // (Not where the facets stand nearly at right angles to nu_j, which would make l_j a force
+    // over almost no area: there the plain share, as with a gap formula.)
+    for (Index j = 0; j < n; ++j)
+      if (projected(j) > 0.01 * cs.weights(j)) cs.weights(j) = projected(j);
+  }
   return cs;
 }
 
