@@ -74,7 +74,7 @@ void check_cells_do_not_overlap(const Mesh& mesh, const std::string& what,
   // bucket of its smallest corner by a counting sort: 20 bytes a facet (165 MB for the two
   // million tetrahedra of a million-unknown mesh, freed before the assembly). A walk over the
   // cells around each node instead read the connectivity out of order and took 1.8 s there
-  // (this, 1.1 s: a third of reading the file).
+  // (this, 1.0 s: a quarter of reading the file).
   const auto facet_of = [&](Index c, int f, FacetSeen& s) {
     const TypeFacets& tf = facets_of[static_cast<std::size_t>(mesh.cell_type(c))];
     const auto nodes = mesh.cell(c);
