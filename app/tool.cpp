@@ -29,21 +29,26 @@ namespace {
 
 using namespace signorini::app;
 
-// On several MPI ranks (docs/distributed.md), bad input is found by every rank alike (each reads
-// the whole problem): rank 0 says it and each rank returns the status. Any other failure may be
-// one rank's alone while the others wait for it in a collective call: that rank says it, naming
+// On several MPI ranks (docs/distributed.md) a failure may be every rank's alike (bad input,
+// which each rank finds in the same problem file or agrees on; a solver that fails in a
+// collective call) or one rank's alone while the others wait for it in a collective call (its
+// part of the mesh, its memory). The failing rank waits a while for the others to fail too: if
+// all do, rank 0 says it and each rank returns the status; if not, this rank says it, naming
 // itself, and ends them all.
-int fail(int status, const std::string& message, bool every_rank_alike = true) {
+constexpr double kSecondsToMeet = 10.0;
+
+int fail(int status, const std::string& message) {
   std::fflush(stdout);  // keep the order of what was printed when both go to one terminal
   std::string line = message;
   for (char& c : line)
     if (c == '\n' || c == '\r') c = ' ';
   const signorini::DistributedEngine* engine = signorini::distributed_engine();
   const bool several = engine != nullptr && engine->size() > 1;
-  if (!several || !every_rank_alike || engine->rank() == 0)
+  const bool alone = several && !engine->meet_within(kSecondsToMeet);
+  if (!several || alone || engine->rank() == 0)
     fmt::print(stderr, "signorini: error: {}{}\n",
-               several && !every_rank_alike ? fmt::format("rank {}: ", engine->rank()) : "", line);
-  if (several && !every_rank_alike) {
+               alone ? fmt::format("rank {}: ", engine->rank()) : "", line);
+  if (alone) {
     std::fflush(stderr);
     engine->abort(status);
   }
@@ -248,11 +253,11 @@ int run_tool(int argc, char** argv) {
   } catch (const signorini::InputError& e) {
     return fail(kBadInput, e.what());
   } catch (const signorini::NumericalError& e) {
-    return fail(kNumericalError, std::string("numerical failure: ") + e.what(), false);
+    return fail(kNumericalError, std::string("numerical failure: ") + e.what());
   } catch (const std::bad_alloc&) {
-    return fail(kInternalError, "out of memory", false);
+    return fail(kInternalError, "out of memory");
   } catch (const std::exception& e) {
-    return fail(kInternalError, std::string("internal error: ") + e.what(), false);
+    return fail(kInternalError, std::string("internal error: ") + e.what());
   }
 }
 

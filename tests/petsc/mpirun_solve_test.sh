@@ -221,6 +221,34 @@ status=0
 [ "$before" = "$(md5sum "$tmp/box_mpi/summary.json")" ] || { echo "a killed rank: results changed"; exit 1; }
 echo "ok: a killed rank stops the run (status $status), earlier results kept"
 
+# A rank that fails alone, on 2 and 4 ranks: rank 1 runs out of memory (ulimit -v, in PETSc's
+# set-up; a cap of 300 MB is below what a rank needs here and above what MPI needs to start)
+# while the others wait for it in a collective call. It says so in one line naming itself, ends
+# every rank (status 4, a numerical failure), and the earlier results stay as they were. The
+# same run whole on 4 ranks fails alike on every rank for bad input: one line, status 2.
+for ranks in 2 4; do
+  status=0
+  "$mpirun" --allow-run-as-root --oversubscribe -n "$ranks" bash -c \
+    'if [ "${OMPI_COMM_WORLD_RANK:-0}" = 1 ]; then ulimit -v 300000; fi; exec "$0" "$@"' \
+    "$tool" solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi" --set mesh.nx=40 \
+    --set mesh.ny=40 --set mesh.nz=20 --set 'mesh.cell="hex8"' > "$tmp/stdout" 2> "$tmp/stderr" ||
+    status=$?
+  [ "$status" -eq 4 ] &&
+    [ "$(grep -c "signorini: error:" "$tmp/stderr")" -eq 1 ] &&
+    grep -q "signorini: error: rank 1: numerical failure: PETSc: .*out of memory" "$tmp/stderr" ||
+    { echo "rank 1 out of memory on $ranks ranks: status $status"; cat "$tmp/stderr"; exit 1; }
+  [ "$before" = "$(md5sum "$tmp/box_mpi/summary.json")" ] ||
+    { echo "rank 1 out of memory on $ranks ranks: results changed"; exit 1; }
+  echo "ok: rank 1 out of memory alone on $ranks ranks stops them all (status 4), one message"
+done
+status=0
+"$mpirun" --allow-run-as-root --oversubscribe -n 4 "$tool" solve "$examples/box_on_sphere.toml" \
+  -q -o "$tmp/box_mpi" --set material.nu=0.5 2> "$tmp/stderr" || status=$?
+[ "$status" -eq 2 ] && [ "$(grep -c "signorini: error:" "$tmp/stderr")" -eq 1 ] &&
+  grep -q "material.nu = 0.5" "$tmp/stderr" ||
+  { echo "bad input on 4 ranks: status $status"; cat "$tmp/stderr"; exit 1; }
+echo "ok: bad input on 4 ranks, one message from rank 0"
+
 # An output folder that rank 0 cannot make: every rank stops before the solve, one message.
 # A cell whose mid-edge node makes it inverted, which the reader's corner check passes and the
 # assembly finds (det J at the cell's nodes): rank 0, which assembles no cell itself, finds it

@@ -85,6 +85,12 @@ class DistributedEngine {
   /// to_each has one entry per rank, empty where nothing goes).
   [[nodiscard]] virtual std::vector<std::vector<char>> exchange(
       const std::vector<std::vector<char>>& to_each) const = 0;
+  /// Waits up to `seconds` for every rank to call meet_within too, and says whether all did. It
+  /// meets on a communicator of its own, so that a rank may call it while the others wait in
+  /// another collective call: a failing rank learns whether the others failed with it (then all
+  /// may end alike) or it failed alone (then it must abort them). A call that timed out leaves
+  /// its meeting open: this rank's next call waits for that same meeting.
+  [[nodiscard]] virtual bool meet_within(double seconds) const = 0;
   /// Ends every rank's process with this exit status (a collective abort: a rank that fails
   /// alone stops the others).
   [[noreturn]] virtual void abort(int status) const = 0;

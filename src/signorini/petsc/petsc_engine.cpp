@@ -5,9 +5,11 @@
 #include <petscsys.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <stdexcept>
+#include <thread>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -29,8 +31,9 @@ PetscEngine::PetscEngine() {
   petsc::check(PetscInitialize(nullptr, nullptr, nullptr, nullptr), "initialisation");
   // Errors come back as codes that petsc::check turns into one-line exceptions; PETSc's own
   // handler would print a traceback on every rank first.
-  petsc::check(PetscPushErrorHandler(PetscIgnoreErrorHandler, nullptr), "error handler");
+  petsc::check(PetscPushErrorHandler(petsc::recording_error_handler, nullptr), "error handler");
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
+  MPI_Comm_dup(PETSC_COMM_WORLD, &meeting_comm_);
   MPI_Comm_size(PETSC_COMM_WORLD, &size_);
   share_the_cores();
   set_distributed_engine(this);
@@ -56,6 +59,7 @@ void PetscEngine::share_the_cores() const {
 
 PetscEngine::~PetscEngine() {
   set_distributed_engine(nullptr);
+  if (meeting_ == MPI_REQUEST_NULL) MPI_Comm_free(&meeting_comm_);  // else a rank is missing
   PetscPopErrorHandler();
   PetscFinalize();
 }
@@ -252,6 +256,20 @@ std::vector<std::vector<char>> PetscEngine::exchange(
   }
   MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
   return from;
+}
+
+bool PetscEngine::meet_within(double seconds) const {
+  if (meeting_ == MPI_REQUEST_NULL) MPI_Ibarrier(meeting_comm_, &meeting_);
+  // MPI_Test drives the barrier on (Open MPI progresses non-blocking collectives in MPI calls);
+  // a millisecond's sleep between tests keeps a waiting rank off the core.
+  const double end = MPI_Wtime() + seconds;
+  for (;;) {
+    int done = 0;
+    MPI_Test(&meeting_, &done, MPI_STATUS_IGNORE);
+    if (done != 0) return true;
+    if (MPI_Wtime() >= end) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
 }
 
 void PetscEngine::abort(int status) const {

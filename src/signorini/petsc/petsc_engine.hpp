@@ -3,6 +3,8 @@
 // docs/distributed.md): initialises MPI and PETSc, registers itself for the solver, and finalises
 // them when it goes. One per process, made by the main() of signorini-mpi and of the MPI tests.
 
+#include <mpi.h>
+
 #include <string>
 #include <vector>
 
@@ -45,6 +47,7 @@ class PetscEngine final : public DistributedEngine {
       const std::vector<char>& bytes) const override;
   [[nodiscard]] std::vector<std::vector<char>> exchange(
       const std::vector<std::vector<char>>& to_each) const override;
+  [[nodiscard]] bool meet_within(double seconds) const override;
   [[noreturn]] void abort(int status) const override;
 
  private:
@@ -53,7 +56,9 @@ class PetscEngine final : public DistributedEngine {
   void share_the_cores() const;
   int rank_ = 0;
   int size_ = 1;
-  std::string partitioner_;  // the last partition's, for the description
+  std::string partitioner_;                         // the last partition's, for the description
+  MPI_Comm meeting_comm_ = MPI_COMM_NULL;           // meet_within's own (a duplicate)
+  mutable MPI_Request meeting_ = MPI_REQUEST_NULL;  // an open meeting (one that timed out)
 };
 
 }  // namespace signorini
