@@ -29,7 +29,10 @@ std::size_t terminal_width(std::FILE* stream) {
 }  // namespace
 
 Progress::Progress(ContactMethod method, const Options& options)
-    : method_(method), options_(options), start_(std::chrono::steady_clock::now()) {
+    : method_(method),
+      options_(options),
+      start_(std::chrono::steady_clock::now()),
+      next_note_(options.note_after_seconds) {
   if (!options_.quiet && options_.format == LogFormat::Text && options_.terminal)
     ticker_ = std::thread([this] { tick(); });
 }
@@ -57,10 +60,10 @@ double Progress::elapsed_seconds() const {
 }
 
 void Progress::phase(const std::string& name) {
-  if (options_.quiet) return;
   const std::lock_guard lock(mutex_);
-  phase_ = name;
+  phase_ = name;  // also when quiet: the "still solving" lines name it
   last_event_.reset();
+  if (options_.quiet) return;
   suspended_ = false;
   if (options_.format == LogFormat::Json) {
     write_locked(
@@ -78,9 +81,20 @@ void Progress::report(const std::string& text, const nlohmann::json& event) {
 }
 
 void Progress::iteration(const IterationEvent& e) {
-  if (options_.quiet) return;
   const std::lock_guard lock(mutex_);
   last_event_ = e;
+  if (options_.quiet) {
+    // A quiet run that goes on for minutes (classical_uzawa on a hard problem) says now and then
+    // that it still works, and what stops it, so that a script's log does not look hung.
+    const double now = elapsed_seconds();
+    if (options_.note_after_seconds > 0.0 && now >= next_note_) {
+      next_note_ = 2.0 * now;
+      fmt::print(options_.notes, "signorini: still solving: {} (solver.time_limit stops a run)\n",
+                 status_text_locked());
+      std::fflush(options_.notes);
+    }
+    return;
+  }
   if (options_.format == LogFormat::Json) {
     write_locked(iteration_json(e).dump() + "\n");
     return;

@@ -1,6 +1,8 @@
 #pragma once
 // What a run prints while it works (docs/output.md, "Progress"), in one of four forms:
-//   quiet      nothing (errors and warnings still go to stderr, from elsewhere);
+//   quiet      nothing (errors and warnings still go to stderr, from elsewhere), but for a run
+//              that goes on and on: a "still solving" line on `notes` once a minute has passed,
+//              then after each doubling of the time (note_after_seconds);
 //   terminal   text, and once the run is older than a second a status line at the bottom,
 //              redrawn in place, with the phase, the elapsed time and the current iteration;
 //              GNM iterations appear only there, Uzawa steps also as lines of their own;
@@ -40,6 +42,10 @@ class Progress {
     double delay_seconds = 1.0;    ///< no status line for runs shorter than this
     double refresh_seconds = 0.2;  ///< how often the status line is redrawn
     std::FILE* out = stdout;
+    /// Quiet: the first "still solving" line after this long (0: none), the next ones each time
+    /// the elapsed time has doubled; on `notes`.
+    double note_after_seconds = 0.0;
+    std::FILE* notes = stderr;
   };
 
   Progress(ContactMethod method, const Options& options);
@@ -84,6 +90,7 @@ class Progress {
   std::optional<IterationEvent> last_event_;  // the latest, for the status line
   std::optional<IterationEvent> held_back_;   // an Uzawa line not printed yet (terminal)
   double last_outer_line_ = -1e300;           // elapsed seconds at the last one printed
+  double next_note_ = 0.0;                    // quiet: when the next "still solving" line is due
   std::thread ticker_;
 };
 

@@ -54,6 +54,9 @@ int failed_plot(Progress& progress, const PlotRun& run) {
   return status;
 }
 
+// -q: a run still solving after a minute says so on stderr (then after 2, 4, 8, ... minutes).
+constexpr double kQuietNoteSeconds = 60.0;
+
 int solve(const SolveArguments& args, LogFormat format) {
   // On several MPI ranks (docs/distributed.md) every rank reads the problem and builds the model
   // and takes part in the solve; rank 0 alone reports and writes (the others' stdout goes
@@ -66,6 +69,7 @@ int solve(const SolveArguments& args, LogFormat format) {
 
   Progress::Options options;
   options.quiet = args.quiet || !root;
+  if (args.quiet && root) options.note_after_seconds = kQuietNoteSeconds;
   options.format = format;
   options.terminal = format == LogFormat::Text && Progress::is_terminal(stdout);
   Progress progress(spec.solver.method, options);

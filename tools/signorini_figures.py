@@ -759,6 +759,59 @@ def legend_columns(measure, labels, width, most=4):
     return columns, rows, height
 
 
+def covered_curves(legend, axes):
+    """The labels of the curves drawn on `axes` that `legend` covers: a line whose path crosses
+    the legend's box, or a marker inside it (the zero lines, gid "reference", do not count)."""
+    import numpy as np
+
+    box = legend.get_window_extent(legend.figure.canvas.get_renderer())
+    covered = []
+    for a in axes:
+        for line in a.get_lines():
+            if not line.get_visible() or line.get_gid() == "reference":
+                continue
+            path = line.get_transform().transform_path(line.get_path())
+            v = path.vertices
+            if len(v) == 0:
+                continue
+            inside = np.any((v[:, 0] >= box.x0) & (v[:, 0] <= box.x1) &
+                            (v[:, 1] >= box.y0) & (v[:, 1] <= box.y1))
+            drawn = line.get_linestyle() not in ("None", "none", "", " ")
+            if inside or (drawn and len(v) > 1 and path.intersects_bbox(box, filled=False)):
+                covered.append(line.get_label())
+    return covered
+
+
+LEGEND_PLACES = ("upper right", "upper left", "lower left", "lower right", "center right",
+                 "center left", "lower center", "upper center", "center")
+
+
+def legend_off_the_curves(ax, axes=None, relayout=None, **kwargs):
+    """ax.legend(**kwargs) where it covers no curve of `axes` (default [ax]; every y axis of a
+    figure with a twin axis, which loc="best" does not weigh): "best", else the first free one of
+    matplotlib's places; where each covers a curve, the y axis grows at the top by the legend's
+    height and the legend goes to the upper right, above the curves. Call it once the axes are
+    placed (`relayout()` places them again after the y axis grew). Returns the legend."""
+    axes = [ax] if axes is None else axes
+    for loc in ("best",) + LEGEND_PLACES:
+        legend = ax.legend(loc=loc, **kwargs)
+        if not covered_curves(legend, axes):
+            return legend
+    legend = ax.legend(loc="upper right", **kwargs)
+    box = legend.get_window_extent(legend.figure.canvas.get_renderer())
+    frame = ax.get_window_extent()
+    share = min((box.height + 6.0) / max(frame.height, 1.0), 0.6)  # of the axes' height
+    for a in axes:
+        lo, hi = a.get_ylim()
+        if a.get_yscale() == "log" and lo > 0 and hi > 0:
+            a.set_ylim(lo, lo * (hi / lo) ** (1.0 / (1.0 - share)))
+        else:
+            a.set_ylim(lo, lo + (hi - lo) / (1.0 - share))
+    if relayout is not None:
+        relayout()
+    return legend
+
+
 def describe_limits(ax, yscale=1.0):
     """The axis limits in the units of the data, for the files' description (tests read it)."""
     x0, x1 = ax.get_xlim()
@@ -798,7 +851,7 @@ def figure_displacement(summary, contact, units, measure):
     fig = new_figure(8, 4.5)
     ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
     shade_contact(ax, contact["intervals"])
-    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.axhline(0.0, color="0.6", lw=0.8, gid="reference")
     for i, (name, rows) in enumerate(contact["parts"]):
         on = f" on '{name}'" if len(contact["parts"]) > 1 else ""
         style = STYLES[i % len(STYLES)]
@@ -820,8 +873,10 @@ def figure_displacement(summary, contact, units, measure):
                     ("ies" if len(contact["parts"]) > 1 else "y"), 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=LEGEND_SIZE, loc="best")
+    ax.legend(fontsize=LEGEND_SIZE)
     place_single(fig, ax, measure, title)
+    legend_off_the_curves(ax, relayout=lambda: place_single(fig, ax, measure, title),
+                          fontsize=LEGEND_SIZE)
     return fig, describe_limits(ax, scale)
 
 
@@ -844,7 +899,7 @@ def figure_pressure(summary, contact, units, measure):
     if np.any(touching):
         ax.plot(t[touching], p[touching] / scale, "o", color="tab:red", ms=2.5,
                 label=f"nodes in contact: {int(np.count_nonzero(touching))} of {len(p)}")
-    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.axhline(0.0, color="0.6", lw=0.8, gid="reference")
     ax.set_xlabel(xlabel)
     ax.set_ylabel(axis_label("contact pressure", units.stress, k))
     ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
@@ -865,8 +920,10 @@ def figure_pressure(summary, contact, units, measure):
         ax.plot([], [], " ",
                 label="total contact force " + with_unit(f"{force:.4g}", units.force_per_thickness))
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=LEGEND_SIZE, loc="best")
+    ax.legend(fontsize=LEGEND_SIZE)
     place_single(fig, ax, measure, title)
+    legend_off_the_curves(ax, relayout=lambda: place_single(fig, ax, measure, title),
+                          fontsize=LEGEND_SIZE)
     return fig, describe_limits(ax, scale)
 
 
@@ -911,7 +968,7 @@ def figure_friction(summary, contact, units, measure):
         ax.plot(t[rows], q[rows] / scale, color="tab:blue", lw=1.4, ls=style,
                 label="tangential traction (along the slip where sliding)" + on
                 if i == 0 or on else None)
-    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.axhline(0.0, color="0.6", lw=0.8, gid="reference")
     ax.set_xlabel(xlabel)
     ax.set_ylabel(axis_label("traction", units.stress, k))
     ax.set_xlim(*padded(float(t.min()), float(t.max()), 0.05) if len(t) > 1 else (-1, 1))
@@ -940,8 +997,12 @@ def figure_friction(summary, contact, units, measure):
     ax.grid(True, alpha=0.3)
     handles, labels = ax.get_legend_handles_labels()
     more, more_labels = right.get_legend_handles_labels()
-    ax.legend(handles + more, labels + more_labels, fontsize=LEGEND_SIZE, loc="best")
+    ax.legend(handles + more, labels + more_labels, fontsize=LEGEND_SIZE)
     place_with_right_axis(fig, ax, right, measure, title)
+    legend_off_the_curves(ax, [ax, right],
+                          lambda: place_with_right_axis(fig, ax, right, measure, title),
+                          handles=handles + more, labels=labels + more_labels,
+                          fontsize=LEGEND_SIZE)
     return fig, describe_limits(ax, scale)
 
 
@@ -1315,16 +1376,22 @@ def figure_convergence(summary, measure):
     w, h = 11 * 72.0, 4.2 * 72.0
     top = (BORDER + measure.height(title) + 8.0
            + max(measure.height(left_title), measure.height(right_title)) + TITLE_PAD)
-    for _ in range(2):  # the number of ticks depends on the size of the axes
-        l1, o1 = measure.left(left)
-        l2, o2 = measure.left(right)
-        b1, _ = measure.bottom(left)
-        b2, beyond = measure.bottom(right)
-        bottom = BORDER + max(b1, b2)
-        gap = 24.0 + l2
-        width = (w - BORDER - l1 - gap - BORDER - max(beyond, 2.0)) / 2
-        place(fig, left, BORDER + l1, bottom, width, h - bottom - top - o1)
-        place(fig, right, BORDER + l1 + width + gap, bottom, width, h - bottom - top - o2)
+
+    def layout():
+        for _ in range(2):  # the number of ticks depends on the size of the axes
+            l1, o1 = measure.left(left)
+            l2, o2 = measure.left(right)
+            b1, _ = measure.bottom(left)
+            b2, beyond = measure.bottom(right)
+            bottom = BORDER + max(b1, b2)
+            gap = 24.0 + l2
+            width = (w - BORDER - l1 - gap - BORDER - max(beyond, 2.0)) / 2
+            place(fig, left, BORDER + l1, bottom, width, h - bottom - top - o1)
+            place(fig, right, BORDER + l1 + width + gap, bottom, width, h - bottom - top - o2)
+
+    layout()
+    if left.get_legend_handles_labels()[0]:
+        legend_off_the_curves(left, relayout=layout, fontsize=LEGEND_SIZE)
     return fig, describe_limits(left)
 
 
@@ -1990,7 +2057,7 @@ def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None,
                        + (f", the model {symmetry} times" if symmetry != 1 else "") + "): "
                        f"a = {ra:.4g}, p0 = {p0:.4g}"))
         description = f"; hertz: a {ra:.6g}, p0 {p0:.6g}"
-    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.axhline(0.0, color="0.6", lw=0.8, gid="reference")
     ax.set_xlabel(axis_label(xlabel, units.length))
     ax.set_ylabel(axis_label("contact pressure", units.stress, k))
     if shape is not None:
@@ -2011,8 +2078,10 @@ def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None,
     title = wrapped(title_of(summary) + "\n" + subtitle, 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=LEGEND_SIZE, loc="upper right")
+    ax.legend(fontsize=LEGEND_SIZE)
     place_single(fig, ax, measure, title)
+    legend_off_the_curves(ax, relayout=lambda: place_single(fig, ax, measure, title),
+                          fontsize=LEGEND_SIZE)
     return fig, describe_limits(ax, scale) + description
 
 

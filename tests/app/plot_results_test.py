@@ -921,5 +921,72 @@ class FormatsTest(unittest.TestCase):
             self.assertEqual(kind, b"IEND")
 
 
+class LegendTest(unittest.TestCase):
+    """Legends kept off the curves (legend_off_the_curves), checked by sampling every curve
+    densely in the figure's pixels: no sample inside the legend's box."""
+
+    @staticmethod
+    def samples_inside(legend, axes):
+        box = legend.get_window_extent(legend.figure.canvas.get_renderer())
+        n = 0
+        for a in axes:
+            for line in a.get_lines():
+                if line.get_gid() == "reference":
+                    continue
+                xy = line.get_transform().transform(np.column_stack(line.get_data()))
+                t = np.linspace(0.0, 1.0, 200)[:, None]
+                for p, q in zip(xy[:-1], xy[1:]):
+                    pts = p + t * (q - p)
+                    n += int(np.sum((pts[:, 0] > box.x0) & (pts[:, 0] < box.x1) &
+                                    (pts[:, 1] > box.y0) & (pts[:, 1] < box.y1)))
+        return n
+
+    def setUp(self):
+        if not have_matplotlib():
+            self.skipTest("no matplotlib")
+        plot.import_plotting()
+
+    def test_curves_everywhere_make_room_at_the_top(self):
+        fig = plot.new_figure(6.0, 3.0)
+        ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+        x = np.linspace(0.0, 1.0, 50)
+        for k in range(11):  # level lines through every place a legend could go
+            ax.plot(x, np.full_like(x, k / 10.0), label=f"curve {k}" if k < 3 else None)
+        ax.axhline(0.5, color="0.6", gid="reference")
+        ax.set_ylim(0.0, 1.0)
+        legend = plot.legend_off_the_curves(ax, fontsize=plot.LEGEND_SIZE)
+        self.assertEqual(self.samples_inside(legend, [ax]), 0)
+        self.assertEqual(plot.covered_curves(legend, [ax]), [])
+        self.assertGreater(ax.get_ylim()[1], 1.05)  # room made above the curves
+        self.assertEqual(ax.get_ylim()[0], 0.0)
+
+    def test_a_free_place_is_taken_as_it_is(self):
+        fig = plot.new_figure(6.0, 3.0)
+        ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+        x = np.linspace(0.0, 1.0, 50)
+        ax.plot(x, x, label="rising")
+        ax.set_ylim(0.0, 1.0)
+        legend = plot.legend_off_the_curves(ax, fontsize=plot.LEGEND_SIZE)
+        self.assertEqual(self.samples_inside(legend, [ax]), 0)
+        self.assertEqual(ax.get_ylim(), (0.0, 1.0))
+
+    def test_the_twin_axis_curves_count_too(self):
+        # loc="best" weighs ax's curves only: the right axis's curve lies where it would go.
+        fig = plot.new_figure(6.0, 3.0)
+        ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+        right = ax.twinx()
+        x = np.linspace(0.0, 1.0, 50)
+        ax.plot(x, 0.1 * x, label="low")
+        right.plot(x, np.full_like(x, 0.95), label="high, on the right axis")
+        ax.set_ylim(0.0, 1.0)
+        right.set_ylim(0.0, 1.0)
+        best = ax.legend(loc="best", fontsize=plot.LEGEND_SIZE)
+        fig.canvas.draw()
+        covered_by_best = self.samples_inside(best, [ax, right])
+        legend = plot.legend_off_the_curves(ax, [ax, right], fontsize=plot.LEGEND_SIZE)
+        self.assertGreater(covered_by_best, 0)
+        self.assertEqual(self.samples_inside(legend, [ax, right]), 0)
+
+
 if __name__ == "__main__":
     unittest.main()

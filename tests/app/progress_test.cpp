@@ -190,5 +190,27 @@ TEST(Progress, QuietWritesNothing) {
   EXPECT_EQ(c.text(), "");
 }
 
+TEST(Progress, QuietSaysNowAndThenThatALongRunStillSolves) {
+  const Capture c;
+  const Capture notes;
+  {
+    Progress::Options o = options_for(c, LogFormat::Text, false);
+    o.quiet = true;
+    o.note_after_seconds = 0.05;
+    o.notes = notes.get();
+    Progress p(ContactMethod::ClassicalUzawa, o);
+    p.phase("contact solve");
+    p.iteration(outer(1));  // before the first note is due
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    p.iteration(outer(776));  // the first note
+    p.iteration(outer(777));  // not yet again: the next is due at twice the elapsed time
+  }
+  EXPECT_EQ(c.text(), "");
+  const std::string text = notes.text();
+  EXPECT_EQ(count(text, "signorini: still solving: contact solve"), 1U) << text;
+  EXPECT_CONTAINS(text, "uzawa 776");
+  EXPECT_CONTAINS(text, "solver.time_limit");
+}
+
 }  // namespace
 }  // namespace signorini::app

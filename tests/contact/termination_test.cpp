@@ -25,6 +25,11 @@ TEST(Termination, GnmIterationLimitIsReported) {
   const ContactResult r = solve_contact(testing::paper_model(60).problem, o);
   EXPECT_EQ(r.summary.termination, Termination::IterationLimit);
   EXPECT_NE(r.summary.message.find("GNM did not converge"), std::string::npos);
+  // Only what would help: GNM's limit is no case for semismooth Newton, whose active set moves
+  // the same way.
+  EXPECT_NE(r.summary.message.find("raise solver.max_gnm_iterations (it was 3)"), std::string::npos)
+      << r.summary.message;
+  EXPECT_EQ(r.summary.message.find("semismooth_newton"), std::string::npos) << r.summary.message;
 }
 
 TEST(Termination, SemismoothNewtonIterationLimitIsReported) {
@@ -33,6 +38,12 @@ TEST(Termination, SemismoothNewtonIterationLimitIsReported) {
   o.max_newton_iterations = 2;
   const ContactResult r = solve_contact(testing::paper_model(60).problem, o);
   EXPECT_EQ(r.summary.termination, Termination::IterationLimit);
+  // Its active set never returns to an earlier one, so more steps end it; Uzawa-GNM's would
+  // move the same way, so it is not advised.
+  EXPECT_NE(r.summary.message.find("raise solver.max_newton_iterations (it was 2)"),
+            std::string::npos)
+      << r.summary.message;
+  EXPECT_EQ(r.summary.message.find("uzawa_gnm"), std::string::npos) << r.summary.message;
 }
 
 TEST(Termination, ConjugateGradientLimitIsALinearSolverFailure) {
@@ -65,6 +76,10 @@ TEST(Termination, TimeLimitStopsEveryMethod) {
         << r.summary.message;
     EXPECT_NE(r.summary.message.find("KKT residuals: equilibrium"), std::string::npos);
     EXPECT_NE(r.summary.message.find("raise solver.time_limit"), std::string::npos);
+    // Classical Uzawa's linear steps are what Uzawa-GNM's Newton steps replace.
+    EXPECT_EQ(r.summary.message.find("solver.method = \"uzawa_gnm\"") != std::string::npos,
+              method == ContactMethod::ClassicalUzawa)
+        << r.summary.message;
     EXPECT_EQ(r.u.size(), testing::paper_model(60).problem.A.rows());
   }
   // A limit that is not reached changes nothing.
@@ -77,6 +92,37 @@ TEST(Termination, TimeLimitStopsEveryMethod) {
   EXPECT_EQ(r.u, free.u);
   o.time_limit = -1.0;
   EXPECT_THROW((void)solve_contact(testing::paper_model(60).problem, o), InputError);
+}
+
+// The paper's strip on 1600 x 1 cells (aspect 530, 1,601 contact nodes, automatic r): each
+// active-set step releases a few nodes only, and the first Uzawa step needs 125 GNM steps, more
+// than the fixed limit of 100 that stopped it. The automatic limits (a quarter of the contact
+// nodes: 400 for GNM and semismooth Newton) let both converge, to the same energy.
+TEST(Termination, AutomaticLimitsLetAThinStripConverge) {
+  ProblemSpec spec = paper_benchmark(1600, 1);
+  spec.solver.r.reset();
+  const Model model = build_model(spec);
+  const Index nodes = model.problem.contact.size();
+  ASSERT_EQ(nodes, 1601);
+  ContactSolverOptions o = spec.solver;  // the paper's settings, r automatic
+  EXPECT_EQ(gnm_iteration_limit(o, nodes), 400);
+  EXPECT_EQ(newton_iteration_limit(o, nodes), 400);
+  EXPECT_EQ(gnm_iteration_limit(o, 40), 100);     // at least 100
+  EXPECT_EQ(newton_iteration_limit(o, 40), 200);  // at least 200
+  EXPECT_EQ(gnm_iteration_limit(o, 1'000'000), 2000);
+  ContactSolverOptions given = o;
+  given.max_gnm_iterations = 7;
+  EXPECT_EQ(gnm_iteration_limit(given, nodes), 7);  // given: as given
+
+  const ContactResult gnm = solve_contact(model.problem, o);
+  ASSERT_TRUE(gnm.summary.converged()) << gnm.summary.message;
+  EXPECT_GT(gnm.summary.steps.front().inner_iterations, 100);
+  ContactSolverOptions ssn_options = o;
+  ssn_options.method = ContactMethod::SemismoothNewton;
+  const ContactResult ssn = solve_contact(model.problem, ssn_options);
+  ASSERT_TRUE(ssn.summary.converged()) << ssn.summary.message;
+  EXPECT_GT(ssn.summary.outer_iterations, 100);
+  EXPECT_NEAR(ssn.summary.energy, gnm.summary.energy, 1e-9 * std::abs(gnm.summary.energy));
 }
 
 TEST(Termination, InvalidOptionsAreRejectedWithTheFieldName) {

@@ -80,7 +80,8 @@ TEST(Options, WordsOfKindsAndRanges) {
   const auto& solver = contact_solver_option_table();
   EXPECT_EQ(expected_words(*solver.find("uzawa_tolerance")), "a positive number");
   EXPECT_EQ(expected_words(*solver.find("kkt_tolerance")), "a number in (0, 1)");
-  EXPECT_EQ(expected_words(*solver.find("max_gnm_iterations")), "an integer >= 1");
+  EXPECT_EQ(expected_words(*solver.find("max_uzawa_iterations")), "an integer >= 1");
+  EXPECT_EQ(expected_words(*solver.find("max_gnm_iterations")), "an integer >= 0 (0: automatic)");
   EXPECT_EQ(expected_words(*solver.find("classical_step")), "a number >= 0 (0: automatic)");
   EXPECT_EQ(expected_words(*solver.find("r")), "a positive number or \"auto\"");
   EXPECT_EQ(expected_words(*solver.find("method")),
@@ -110,8 +111,12 @@ TEST(Options, ValidateNamesTheKeyAsTheFileSpellsIt) {
   o.r = -1.0;
   EXPECT_EQ(validate_error(o), "solver.r = -1: expected a positive number or \"auto\"");
   o = {};
-  o.max_newton_iterations = 0;
-  EXPECT_EQ(validate_error(o), "solver.max_newton_iterations = 0: expected an integer >= 1");
+  o.max_newton_iterations = -1;
+  EXPECT_EQ(validate_error(o),
+            "solver.max_newton_iterations = -1: expected an integer >= 0 (0: automatic)");
+  o = {};
+  o.max_uzawa_iterations = 0;
+  EXPECT_EQ(validate_error(o), "solver.max_uzawa_iterations = 0: expected an integer >= 1");
   o = {};
   o.linear.cg_max_iterations = -1;
   EXPECT_EQ(validate_error(o),

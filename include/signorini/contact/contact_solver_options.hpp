@@ -112,15 +112,17 @@ struct ContactSolverOptions {
   /// relative, method.md section 7), or when the active set repeats after a full Newton step (the
   /// minimiser is then exact).
   double gnm_tolerance = 1e-10;
-  int max_gnm_iterations = 100;
+  /// GNM iteration limit per Uzawa step; 0: automatic, gnm_iteration_limit().
+  int max_gnm_iterations = 0;
   /// Armijo rule: Phi(x + a d) <= Phi(x) + armijo_sigma a <G(x), d>, a = 1/2, 1/4, ...
   double armijo_sigma = 1e-4;
   int max_armijo_halvings = 60;
   /// Step rho of the classical Uzawa method; 0 chooses 1.5 / lambda_max of the dual operator.
   double classical_step = 0.0;
   int max_classical_iterations = 200000;
-  /// Iteration limit of the semismooth Newton (primal-dual active set) method.
-  int max_newton_iterations = 200;
+  /// Iteration limit of the semismooth Newton (primal-dual active set) method; 0: automatic,
+  /// newton_iteration_limit().
+  int max_newton_iterations = 0;
   /// Seconds a solve may take (each ContactSolver::solve); 0: no limit. Past it the solve stops
   /// at the next iteration with termination "time_limit" and the current iterate, its KKT
   /// residuals reported (the tool writes it and exits with status 3).
@@ -217,6 +219,18 @@ struct ContactProblem;
 /// The automatic r of a problem: auto_r_factor * median_j (N A N^T)_jj / h_j over the movable
 /// contact nodes (method.md section 7). Units of stress per length, like r.
 [[nodiscard]] double automatic_r(const ContactProblem& problem, double factor);
+
+/// The GNM iteration limit per Uzawa step for a contact set of `contact_nodes` nodes:
+/// max_gnm_iterations where given, else (0) a quarter of the contact nodes, at least 100 and at
+/// most 2000. An active-set step may add or release only a few nodes where the contact zone's
+/// edge moves little per step (a thin strip of cells 500 times longer than high: 3 nodes a
+/// step, 133 steps for 3,001 contact nodes), so a fixed limit would stop large problems that
+/// converge.
+[[nodiscard]] int gnm_iteration_limit(const ContactSolverOptions& options, Index contact_nodes);
+/// The same for semismooth Newton: max_newton_iterations, else a quarter of the contact nodes,
+/// at least 200 and at most 2000. Its active set never returns to an earlier one (that ends the
+/// run as active_set_cycling), so a run stopped by the limit would end if given more steps.
+[[nodiscard]] int newton_iteration_limit(const ContactSolverOptions& options, Index contact_nodes);
 
 /// options.r if given, else automatic_r(problem, options.auto_r_factor).
 [[nodiscard]] double augmentation_parameter(const ContactProblem& problem,

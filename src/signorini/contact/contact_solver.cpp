@@ -51,7 +51,8 @@ std::string residual_list(const KktResiduals& k) {
 }
 
 // What to try when a solve stops short (the message ends with it): the augmentation parameter
-// when it is far from the automatic one, the limits, and the method that needs no r.
+// when it is far from the automatic one, the limits, and another method only where it meets the
+// failure: advice that the next run would find untrue is worse than none.
 std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
   std::vector<std::string> tips;
   const bool uzawa_gnm = s.method == ContactMethod::UzawaGnm;
@@ -63,17 +64,23 @@ std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
           "solver.r to use the automatic choice",
           s.r, ratio, s.automatic_r));
   }
+  // GNM stopped by its limit: its active set still moving, as semismooth Newton's would (the
+  // same steps, with the multipliers fixed), so that method is no way out.
+  const bool gnm_limit = uzawa_gnm && s.termination == Termination::IterationLimit &&
+                         !s.steps.empty() &&
+                         s.steps.back().inner_iterations >= o.max_gnm_iterations;
   switch (s.termination) {
     case Termination::IterationLimit:
-      if (s.method == ContactMethod::UzawaGnm && !s.steps.empty() &&
-          s.steps.back().inner_iterations >= o.max_gnm_iterations)
-        tips.emplace_back("raise solver.max_gnm_iterations");
-      else if (s.method == ContactMethod::UzawaGnm)
+      if (gnm_limit)
+        tips.emplace_back(
+            fmt::format("raise solver.max_gnm_iterations (it was {})", o.max_gnm_iterations));
+      else if (uzawa_gnm)
         tips.emplace_back("raise solver.max_uzawa_iterations");
       else if (s.method == ContactMethod::ClassicalUzawa)
         tips.emplace_back("raise solver.max_classical_iterations");
-      else
-        tips.emplace_back("raise solver.max_newton_iterations");
+      else  // semismooth Newton: no active set comes twice, so more steps end it
+        tips.emplace_back(
+            fmt::format("raise solver.max_newton_iterations (it was {})", o.max_newton_iterations));
       break;
     case Termination::LinearSolverFailure:
       if (o.linear.type == LinearSolverType::ConjugateGradient)
@@ -94,10 +101,22 @@ std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
     default:
       break;
   }
-  if (s.method != ContactMethod::SemismoothNewton)
-    tips.emplace_back("solver.method = \"semismooth_newton\" needs no r");
-  else
-    tips.emplace_back("solver.method = \"uzawa_gnm\" converges for any r");
+  switch (s.method) {
+    case ContactMethod::UzawaGnm:
+      if (!gnm_limit && s.termination != Termination::TimeLimit)
+        tips.emplace_back("solver.method = \"semismooth_newton\" needs no r");
+      break;
+    case ContactMethod::SemismoothNewton:
+      // Its active set may cycle; GNM's Armijo steps decrease a convex function and cannot.
+      if (s.termination == Termination::ActiveSetCycling)
+        tips.emplace_back("solver.method = \"uzawa_gnm\", whose line search cannot cycle");
+      break;
+    case ContactMethod::ClassicalUzawa:
+      // Its steps converge linearly; Uzawa-GNM solves the same problem in Newton steps.
+      if (s.termination == Termination::IterationLimit || s.termination == Termination::TimeLimit)
+        tips.emplace_back("solver.method = \"uzawa_gnm\" (Newton steps: far fewer of them)");
+      break;
+  }
   std::string out;
   for (const std::string& t : tips) out += (out.empty() ? "" : "; ") + t;
   return out;
@@ -109,7 +128,7 @@ struct ContactSolver::Impl {
   const ContactProblem* problem;  // the user's, or `changed` after set_loads/set_gaps
   std::unique_ptr<ContactProblem> changed;
   ContactSolverOptions given;    // as the user gave them (r may be "auto")
-  ContactSolverOptions options;  // r resolved
+  ContactSolverOptions options;  // r and the automatic iteration limits resolved
   double r_auto = 0.0;
   SolvePath path = SolvePath::CondensedDirect;
   std::unique_ptr<CondensedProblem> condensed;
@@ -158,6 +177,9 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   // same value (method.md section 7).
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
+  // The automatic iteration limits too, from the whole contact set (the same on every rank).
+  m.options.max_gnm_iterations = gnm_iteration_limit(given, problem.contact.size());
+  m.options.max_newton_iterations = newton_iteration_limit(given, problem.contact.size());
   m.path = choose_path(m.options);
   const ContactLaw& law = contact_law(given);
   if (problem.contact.components != law.components())
@@ -388,7 +410,8 @@ ContactResult ContactSolver::solve() {
     s.message += "; KKT residuals: " + residual_list(s.kkt);
   }
   if (!s.converged() && s.termination != Termination::StoppedByCallback)
-    s.message += "; to try: " + advice(s, options);
+    if (const std::string tips = advice(s, options); !tips.empty())
+      s.message += "; to try: " + tips;
   return result;
 }
 

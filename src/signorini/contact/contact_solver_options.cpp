@@ -47,8 +47,11 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
              "GNM stops when max(||G(x_m)|| / f, ||x_m - x_(m-1)|| / ||x_m||) is below it, "
              "f = max(||b||, ||A x_m - b||) (the paper's rule, with the gradient made relative "
              "so that it means the same in any units)");
-    t.integer("max_gnm_iterations", &O::max_gnm_iterations, at_least(1),
-              "GNM iteration limit per Uzawa step");
+    t.integer("max_gnm_iterations", &O::max_gnm_iterations, at_least(0),
+              "GNM iteration limit per Uzawa step; 0: a quarter of the contact nodes, at least "
+              "100 and at most 2000 (an active-set step may move the contact zone's edge by a "
+              "few nodes only)")
+        .range_note("(0: automatic)");
     t.number("armijo_sigma", &O::armijo_sigma, open_interval(0.0, 0.5),
              "sufficient-decrease constant of the Armijo rule");
     t.integer("max_armijo_halvings", &O::max_armijo_halvings, at_least(1),
@@ -58,8 +61,10 @@ const OptionTable<ContactSolverOptions>& contact_solver_option_table() {
         .range_note("(0: automatic)");
     t.integer("max_classical_iterations", &O::max_classical_iterations, at_least(1),
               "iteration limit of `classical_uzawa`");
-    t.integer("max_newton_iterations", &O::max_newton_iterations, at_least(1),
-              "iteration limit of `semismooth_newton`");
+    t.integer("max_newton_iterations", &O::max_newton_iterations, at_least(0),
+              "iteration limit of `semismooth_newton`; 0: a quarter of the contact nodes, at "
+              "least 200 and at most 2000")
+        .range_note("(0: automatic)");
     t.number("time_limit", &O::time_limit, at_least(0.0),
              "seconds a solve may take; past it the solve stops at the next iteration with "
              "termination `time_limit` and the current iterate, which the tool writes (exit "
@@ -209,6 +214,22 @@ double automatic_r(const ContactProblem& p, double factor) {
   const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
   std::nth_element(values.begin(), mid, values.end());
   return factor * *mid;
+}
+
+namespace {
+int quarter_of(Index contact_nodes, int floor) {
+  return static_cast<int>(std::clamp<Index>(contact_nodes / 4, floor, 2000));
+}
+}  // namespace
+
+int gnm_iteration_limit(const ContactSolverOptions& options, Index contact_nodes) {
+  return options.max_gnm_iterations > 0 ? options.max_gnm_iterations
+                                        : quarter_of(contact_nodes, 100);
+}
+
+int newton_iteration_limit(const ContactSolverOptions& options, Index contact_nodes) {
+  return options.max_newton_iterations > 0 ? options.max_newton_iterations
+                                           : quarter_of(contact_nodes, 200);
 }
 
 double augmentation_parameter(const ContactProblem& problem, const ContactSolverOptions& options) {

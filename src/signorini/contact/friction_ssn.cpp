@@ -190,7 +190,7 @@ ContactResult solve_friction_semismooth_newton(const ContactProblem& problem,
   const auto* law = dynamic_cast<const FrictionLaw*>(&contact_law(options));
   if (law == nullptr) throw InputError("friction: semismooth Newton needs a FrictionLaw");
   FrictionSsnOptions o;
-  o.max_iterations = options.max_newton_iterations;
+  o.max_iterations = newton_iteration_limit(options, problem.contact.size());
   // The complementarity constant: its own automatic value (FrictionSsnOptions::c), not the
   // Uzawa methods' r, which is chosen for another purpose and is 100 times larger.
   const Index rows = problem.contact.N.rows();

@@ -23,8 +23,11 @@ void stopped_by_callback(GnmResult& res, int m, int outer) {
 }
 }  // namespace
 
-GeneralizedNewton::GeneralizedNewton(const ContactSolverOptions& options, double b_norm)
-    : options_(options), b_norm_(b_norm) {}
+GeneralizedNewton::GeneralizedNewton(const ContactSolverOptions& options, double b_norm,
+                                     Index contact_nodes)
+    : options_(options),
+      b_norm_(b_norm),
+      max_iterations_(gnm_iteration_limit(options, contact_nodes)) {}
 
 GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace& space, int outer,
                                       double tolerance) const {
@@ -49,7 +52,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
   bool previous_full = false;  // previous step was a full Newton step (no Armijo cut)
   double gradient_norm = std::numeric_limits<double>::infinity();
 
-  for (int m = 1; m <= options_.max_gnm_iterations; ++m) {
+  for (int m = 1; m <= max_iterations_; ++m) {
     // The active set (with friction also each node's derivative of P, method.md "Friction").
     Linearization active = phi.linearize(space.contact_values());
     IterationEvent ev{
@@ -126,7 +129,7 @@ GnmResult GeneralizedNewton::minimize(const ModifiedLagrangian& phi, NewtonSpace
   res.termination = Termination::IterationLimit;
   res.message = fmt::format(
       "GNM did not converge in {} iterations at Uzawa step {} (residual {:.3e}, tolerance {:.1e})",
-      options_.max_gnm_iterations, outer, res.residual, tolerance);
+      max_iterations_, outer, res.residual, tolerance);
   return finish();
 }
 

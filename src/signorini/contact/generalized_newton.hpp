@@ -49,8 +49,9 @@ inline constexpr int kFinishSolves = 10;
 
 class GeneralizedNewton {
  public:
-  /// `b_norm` = ||b||, the load part of the force scale of relative_gradient().
-  GeneralizedNewton(const ContactSolverOptions& options, double b_norm);
+  /// `b_norm` = ||b||, the load part of the force scale of relative_gradient();
+  /// `contact_nodes` sizes the automatic iteration limit (gnm_iteration_limit).
+  GeneralizedNewton(const ContactSolverOptions& options, double b_norm, Index contact_nodes = 0);
 
   /// Minimises Phi (set up in `phi`) starting from the point held by `space`, which holds the
   /// minimiser on return. `outer` is the Uzawa step number, passed to the observer.
@@ -63,6 +64,7 @@ class GeneralizedNewton {
  private:
   const ContactSolverOptions& options_;
   double b_norm_;
+  int max_iterations_;
 };
 
 }  // namespace signorini

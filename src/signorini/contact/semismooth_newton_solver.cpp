@@ -273,7 +273,7 @@ void run_semismooth_newton(const ContactProblem& problem, const ContactSolverOpt
     history.clear();
   };
   OuterLoop loop;
-  loop.max_steps = options.max_newton_iterations;
+  loop.max_steps = newton_iteration_limit(options, problem.contact.size());
   loop.step = [&](int it, const Vector& l) {
     OuterStepOutcome o;
     OuterStepRecord& rec = o.record;
@@ -315,8 +315,7 @@ void run_semismooth_newton(const ContactProblem& problem, const ContactSolverOpt
     return o;
   };
   loop.limit_message = [&](const OuterStepRecord&) {
-    return fmt::format("active set still changing after {} Newton iterations",
-                       options.max_newton_iterations);
+    return fmt::format("active set still changing after {} Newton iterations", loop.max_steps);
   };
   run_outer_loop(loop, l0, options, out);
   s.timings.merge(solver.timings());

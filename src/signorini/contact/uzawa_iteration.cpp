@@ -35,7 +35,7 @@ bool contact_conditions_hold(const ContactSet& contact, const ActiveSet& S,
 void run_uzawa_iteration(const ContactProblem& problem, const ContactSolverOptions& options,
                          ModifiedLagrangian& phi, NewtonSpace& space, Vector l0,
                          ContactResult& out) {
-  const GeneralizedNewton gnm(options, load_norm(problem));
+  const GeneralizedNewton gnm(options, load_norm(problem), problem.contact.size());
   OuterLoop loop;
   loop.max_steps = options.max_uzawa_iterations;
   double previous_change = 1.0;     // ||l^k - l^(k-1)|| / ||l^k|| of the previous step
