@@ -390,7 +390,11 @@ void read_elements_22(Reader& r, Parsed& p) {
       const int k = gmsh_nodes(type);
       if (k == 0 || count <= 0 || ntags < 0)
         r.fail("element block of Gmsh type " + std::to_string(type) + " cannot be read");
-      r.check_count(count, 4 * static_cast<std::size_t>(1 + ntags + k), "elements in a block");
+      // (In size_t: 1 + ntags would overflow an int for a header that says 2^31 - 1 tags.)
+      r.check_count(
+          count,
+          4 * (std::size_t{1} + static_cast<std::size_t>(ntags) + static_cast<std::size_t>(k)),
+          "elements in a block");
       nodes.resize(static_cast<std::size_t>(k));
       for (int e = 0; e < count; ++e) {
         const std::size_t where = r.pos();
