@@ -99,7 +99,9 @@ int run_tool(int argc, char** argv) {
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);
   solve_cmd->add_flag("-q,--quiet", solve.quiet,
-                      "Print nothing but errors and warnings (no settings, progress, report)");
+                      "Print nothing but errors and warnings (no settings, progress, report); a "
+                      "solve still running after a minute says so on stderr, then at 2, 4, 8, "
+                      "... minutes");
   solve_cmd
       ->add_option("--log-format", solve.log_format,
                    "text (default; a status line on a terminal) or json (one JSON object per "
