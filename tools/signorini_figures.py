@@ -873,7 +873,6 @@ def figure_displacement(summary, contact, units, measure):
                     ("ies" if len(contact["parts"]) > 1 else "y"), 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=LEGEND_SIZE)
     place_single(fig, ax, measure, title)
     legend_off_the_curves(ax, relayout=lambda: place_single(fig, ax, measure, title),
                           fontsize=LEGEND_SIZE)
@@ -920,7 +919,6 @@ def figure_pressure(summary, contact, units, measure):
         ax.plot([], [], " ",
                 label="total contact force " + with_unit(f"{force:.4g}", units.force_per_thickness))
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=LEGEND_SIZE)
     place_single(fig, ax, measure, title)
     legend_off_the_curves(ax, relayout=lambda: place_single(fig, ax, measure, title),
                           fontsize=LEGEND_SIZE)
@@ -997,7 +995,6 @@ def figure_friction(summary, contact, units, measure):
     ax.grid(True, alpha=0.3)
     handles, labels = ax.get_legend_handles_labels()
     more, more_labels = right.get_legend_handles_labels()
-    ax.legend(handles + more, labels + more_labels, fontsize=LEGEND_SIZE)
     place_with_right_axis(fig, ax, right, measure, title)
     legend_off_the_curves(ax, [ax, right],
                           lambda: place_with_right_axis(fig, ax, right, measure, title),
@@ -1348,8 +1345,6 @@ def figure_convergence(summary, measure):
     left.grid(True, which="both", alpha=0.3)
     if len(steps) <= 30:
         left.set_xticks(steps)
-    if left.get_legend_handles_labels()[0]:
-        left.legend(fontsize=LEGEND_SIZE)
 
     if method == "uzawa_gnm":
         gnm = np.array(summary.get("gnm_iterations", []), dtype=float)
@@ -2078,7 +2073,6 @@ def figure_pressure_profile(summary, contact, units, measure, hertz_radius=None,
     title = wrapped(title_of(summary) + "\n" + subtitle, 8)
     ax.set_title(title, fontsize=TEXT_SIZE, y=1.0)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=LEGEND_SIZE)
     place_single(fig, ax, measure, title)
     legend_off_the_curves(ax, relayout=lambda: place_single(fig, ax, measure, title),
                           fontsize=LEGEND_SIZE)

@@ -53,8 +53,10 @@ std::string residual_list(const KktResiduals& k) {
 // What to try when a solve stops short (the message ends with it): the augmentation parameter
 // when it is far from the automatic one, the limits, and another method only where it meets the
 // failure: advice that the next run would find untrue is worse than none.
-std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
+// `contact_nodes` sizes the automatic iteration limits (gnm_iteration_limit).
+std::string advice(const SolveSummary& s, const ContactSolverOptions& o, Index contact_nodes) {
   std::vector<std::string> tips;
+  const int gnm_limit_value = gnm_iteration_limit(o, contact_nodes);
   const bool uzawa_gnm = s.method == ContactMethod::UzawaGnm;
   if (uzawa_gnm && !s.r_automatic && s.automatic_r > 0.0) {
     const double ratio = s.r / s.automatic_r;
@@ -67,20 +69,19 @@ std::string advice(const SolveSummary& s, const ContactSolverOptions& o) {
   // GNM stopped by its limit: its active set still moving, as semismooth Newton's would (the
   // same steps, with the multipliers fixed), so that method is no way out.
   const bool gnm_limit = uzawa_gnm && s.termination == Termination::IterationLimit &&
-                         !s.steps.empty() &&
-                         s.steps.back().inner_iterations >= o.max_gnm_iterations;
+                         !s.steps.empty() && s.steps.back().inner_iterations >= gnm_limit_value;
   switch (s.termination) {
     case Termination::IterationLimit:
       if (gnm_limit)
         tips.emplace_back(
-            fmt::format("raise solver.max_gnm_iterations (it was {})", o.max_gnm_iterations));
+            fmt::format("raise solver.max_gnm_iterations (it was {})", gnm_limit_value));
       else if (uzawa_gnm)
         tips.emplace_back("raise solver.max_uzawa_iterations");
       else if (s.method == ContactMethod::ClassicalUzawa)
         tips.emplace_back("raise solver.max_classical_iterations");
       else  // semismooth Newton: no active set comes twice, so more steps end it
-        tips.emplace_back(
-            fmt::format("raise solver.max_newton_iterations (it was {})", o.max_newton_iterations));
+        tips.emplace_back(fmt::format("raise solver.max_newton_iterations (it was {})",
+                                      newton_iteration_limit(o, contact_nodes)));
       break;
     case Termination::LinearSolverFailure:
       if (o.linear.type == LinearSolverType::ConjugateGradient)
@@ -128,7 +129,7 @@ struct ContactSolver::Impl {
   const ContactProblem* problem;  // the user's, or `changed` after set_loads/set_gaps
   std::unique_ptr<ContactProblem> changed;
   ContactSolverOptions given;    // as the user gave them (r may be "auto")
-  ContactSolverOptions options;  // r and the automatic iteration limits resolved
+  ContactSolverOptions options;  // r resolved
   double r_auto = 0.0;
   SolvePath path = SolvePath::CondensedDirect;
   std::unique_ptr<CondensedProblem> condensed;
@@ -177,9 +178,6 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   // same value (method.md section 7).
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
-  // The automatic iteration limits too, from the whole contact set (the same on every rank).
-  m.options.max_gnm_iterations = gnm_iteration_limit(given, problem.contact.size());
-  m.options.max_newton_iterations = newton_iteration_limit(given, problem.contact.size());
   m.path = choose_path(m.options);
   const ContactLaw& law = contact_law(given);
   if (problem.contact.components != law.components())
@@ -410,7 +408,7 @@ ContactResult ContactSolver::solve() {
     s.message += "; KKT residuals: " + residual_list(s.kkt);
   }
   if (!s.converged() && s.termination != Termination::StoppedByCallback)
-    if (const std::string tips = advice(s, options); !tips.empty())
+    if (const std::string tips = advice(s, options, problem.contact.size()); !tips.empty())
       s.message += "; to try: " + tips;
   return result;
 }
