@@ -6,8 +6,8 @@
 #include "commands.hpp"
 #include "model_loading.hpp"
 #include "signorini/backend/make_backend.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/mesh/mesh_description.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini::app {
 

@@ -22,8 +22,8 @@
 #include <new>
 
 #include "commands.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 
 namespace {
 

@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -87,15 +88,15 @@ int main(int argc, char** argv) {
       Run run("outside: Tresca solves");
       const auto start = std::chrono::steady_clock::now();
       // The first bound: mu times the frictionless pressure.
-      const FrictionLaw frictionless(FrictionKind::Tresca, dim, Vector::Zero(nc));
-      ContactSolverOptions o = base;
-      o.law = &frictionless;
-      ContactResult r = solve_contact(p, o);
+      ContactProblem tresca = p;  // (the same problem, its law replaced at each solve)
+      tresca.law = std::make_shared<const FrictionLaw>(FrictionKind::Tresca, dim, Vector::Zero(nc));
+      const ContactSolverOptions o = base;
+      ContactResult r = solve_contact(tresca, o);
       add(run, r);
       for (int k = 0; k < 200; ++k) {
-        const FrictionLaw tresca(FrictionKind::Tresca, dim, mu.cwiseProduct(r.l));
-        o.law = &tresca;
-        ContactSolver solver(p, o);
+        tresca.law =
+            std::make_shared<const FrictionLaw>(FrictionKind::Tresca, dim, mu.cwiseProduct(r.l));
+        ContactSolver solver(tresca, o);
         solver.warm_start(r);
         const ContactResult next = solver.solve();
         add(run, next);

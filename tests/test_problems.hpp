@@ -77,6 +77,13 @@ inline ProblemSpec with_friction(ProblemSpec spec, FrictionModel model, double v
 }
 
 /// Relative difference ||a - b|| / ||b||.
+/// `problem` with `law`, not owned (it must outlive the copy): tests that keep their law on the
+/// stack or count its calls.
+inline ContactProblem with_law(ContactProblem problem, const ContactLaw& law) {
+  problem.law = std::shared_ptr<const ContactLaw>(std::shared_ptr<const ContactLaw>(), &law);
+  return problem;
+}
+
 inline double relative_difference(const Vector& a, const Vector& b) {
   return (a - b).norm() / b.norm();
 }

@@ -11,7 +11,7 @@
 #include "signorini/contact/contact_law.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/fem/contact_boundary.hpp"
+#include "signorini/interface/contact_boundary.hpp"
 #include "signorini/io/contact_csv.hpp"
 #include "signorini/io/problem_file.hpp"
 #include "signorini/io/result_writer.hpp"

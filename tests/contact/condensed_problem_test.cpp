@@ -8,7 +8,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "signorini/fem/contact_boundary.hpp"
+#include "signorini/interface/contact_boundary.hpp"
 #include "test_problems.hpp"
 
 namespace signorini {

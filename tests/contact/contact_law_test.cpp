@@ -51,15 +51,14 @@ class CountingLaw final : public ContactLaw {
   mutable int projections = 0, derivatives = 0, penalties = 0;
 };
 
-TEST(ContactLaw, TheLawInTheOptionsIsTheOneTheLoopsUse) {
+TEST(ContactLaw, TheLawOfTheProblemIsTheOneTheLoopsUse) {
   const ContactProblem& p = testing::paper_model(60).problem;
   for (const auto method : {ContactMethod::UzawaGnm, ContactMethod::ClassicalUzawa}) {
     ContactSolverOptions o;
     o.method = method;
     const ContactResult reference = solve_contact(p, o);
     CountingLaw law;
-    o.law = &law;
-    const ContactResult counted = solve_contact(p, o);
+    const ContactResult counted = solve_contact(testing::with_law(p, law), o);
     ASSERT_TRUE(counted.summary.converged()) << counted.summary.message;
     EXPECT_GT(law.projections, 0);
     EXPECT_GT(law.penalties, 0);  // M(u, l) of the summary, at least
@@ -74,9 +73,8 @@ TEST(ContactLaw, TheLawInTheOptionsIsTheOneTheLoopsUse) {
   ContactSolverOptions o;
   o.method = ContactMethod::SemismoothNewton;
   CountingLaw law;
-  o.law = &law;
   try {
-    (void)solve_contact(p, o);
+    (void)solve_contact(testing::with_law(p, law), o);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("unilateral contact law only, not \"counting\""),

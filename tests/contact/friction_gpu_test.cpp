@@ -30,7 +30,7 @@ TEST(GpuFriction, CoulombMatchesTheCpuBackendIn2DAnd3D) {
     spec.solver.uzawa_tolerance = 1e-11;
     const Model model = build_model(spec);
     ContactSolverOptions o = model.solver;
-    ASSERT_NE(o.law, nullptr);
+    ASSERT_NE(model.problem.law, nullptr);
     o.device = DeviceKind::Cpu;
     const ContactResult cpu = solve_contact(model.problem, o, &model.multigrid);
     o.device = DeviceKind::Cuda;

@@ -8,7 +8,7 @@
 
 #include "../problem/ball_on_block.hpp"
 #include "signorini/contact/contact_solver.hpp"
-#include "signorini/fem/contact_tangents.hpp"
+#include "signorini/interface/contact_tangents.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {

@@ -6,11 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "../problem/ball_on_block.hpp"
+#include "../test_problems.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/friction_ssn.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/fem/contact_tangents.hpp"
+#include "signorini/interface/contact_tangents.hpp"
 #include "signorini/io/problem_file.hpp"
 #include "signorini/problem/model.hpp"
 
@@ -39,13 +40,12 @@ struct Frictional {
                                     bool condensed = true) const {
     ContactSolverOptions o;
     o.method = method;
-    o.law = &law;
     o.schur_complement = condensed;
     o.uzawa_tolerance = 1e-12;
     o.linear.type = linear;
     o.linear.cg_tolerance = 1e-14;
     if (method == ContactMethod::ClassicalUzawa) o.max_classical_iterations = 200000;
-    return solve_contact(problem, o);
+    return solve_contact(testing::with_law(problem, law), o);
   }
   [[nodiscard]] FrictionSsnResult reference(FrictionKind kind, const Vector& bound) const {
     return solve_friction_ssn(model.problem, T, {kind, bound});
@@ -220,10 +220,10 @@ TEST(FrictionUzawaGnm, CondensedPathAgreesWithTheSparseDirectOne) {
     Vector steps[2];
     for (const bool condensed : {true, false}) {
       ContactSolverOptions o;
-      o.law = &coulomb;
       o.uzawa_tolerance = 1e-12;
       o.schur_complement = condensed;
-      ContactSolver solver(p.problem, o);
+      const ContactProblem with_coulomb = testing::with_law(p.problem, coulomb);
+      ContactSolver solver(with_coulomb, o);
       const ContactResult first = solver.solve();
       solver.set_loads(1.5 * p.problem.b);
       solver.warm_start(first);
@@ -254,13 +254,13 @@ TEST(FrictionUzawaGnm, MultigridPathAgreesWithTheDirectOne) {
     const ContactResult direct = p.solve(law, ContactMethod::UzawaGnm);
     ASSERT_TRUE(direct.summary.converged()) << direct.summary.message;
     ContactSolverOptions o;
-    o.law = &law;
     // Above the floor that CG's tolerance leaves in the dual change (1.7e-12 in 3D).
     o.uzawa_tolerance = 1e-11;
     o.linear.type = LinearSolverType::ConjugateGradient;
     o.linear.preconditioner = PreconditionerType::Multigrid;
     o.linear.cg_tolerance = 1e-13;
-    const ContactResult mg = solve_contact(p.problem, o, &p.model.multigrid);
+    const ContactResult mg =
+        solve_contact(testing::with_law(p.problem, law), o, &p.model.multigrid);
     ASSERT_TRUE(mg.summary.converged()) << mg.summary.message;
     EXPECT_EQ(mg.summary.path, SolvePath::Backend);
     EXPECT_LT(relative(mg.u, direct.u), 1e-9) << (three_d ? "3D" : "2D");
@@ -273,12 +273,12 @@ TEST(FrictionUzawaGnm, RefusesAMismatchedLawAndTheFrictionlessPaths) {
   const Index nc = p.problem.contact.size();
   const FrictionLaw law(FrictionKind::Tresca, 2, Vector::Constant(nc, 1.0));
   ContactSolverOptions o;
-  o.law = &law;
-  EXPECT_THROW(static_cast<void>(solve_contact(p.model.problem, o)), InputError);  // no T rows
+  EXPECT_THROW(static_cast<void>(solve_contact(testing::with_law(p.model.problem, law), o)),
+               InputError);                    // no T rows
   o.method = ContactMethod::SemismoothNewton;  // friction's SSN factorises: not on multigrid
   o.linear.type = LinearSolverType::ConjugateGradient;
   o.linear.preconditioner = PreconditionerType::Multigrid;
-  EXPECT_THROW(static_cast<void>(solve_contact(p.problem, o)), InputError);
+  EXPECT_THROW(static_cast<void>(solve_contact(testing::with_law(p.problem, law), o)), InputError);
   ContactSolverOptions frictionless;
   EXPECT_THROW(static_cast<void>(solve_contact(p.problem, frictionless)), InputError);
 }

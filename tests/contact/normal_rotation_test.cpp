@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "signorini/contact/contact_set.hpp"
+#include "signorini/interface/contact_set.hpp"
 
 namespace signorini {
 namespace {

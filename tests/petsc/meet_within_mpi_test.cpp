@@ -6,7 +6,7 @@
 
 #include <chrono>
 
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 
 namespace signorini {
 namespace {

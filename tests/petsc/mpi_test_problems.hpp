@@ -13,8 +13,8 @@
 
 #include "../test_problems.hpp"
 #include "signorini/contact/contact_solver.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini::testing {

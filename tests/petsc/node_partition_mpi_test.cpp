@@ -34,7 +34,7 @@ TEST(NodePartition, BalancesTheUnknownsAndCutsLessThanTheNumbering) {
   const int ranks = engine.size();
   const NodeGraph graph = node_graph(serial.mesh, serial.dofs, engine.rank(), ranks);
   ASSERT_GT(graph.vertices, 100);
-  const std::vector<int> owner = engine.partition(graph, spec.solver);
+  const std::vector<int> owner = engine.partition(graph, spec.solver.petsc_options);
   ASSERT_EQ(owner.size(), static_cast<std::size_t>(graph.vertices));
   std::vector<Index> unknowns(static_cast<std::size_t>(ranks), 0);
   for (Index v = 0; v < graph.vertices; ++v) {
@@ -93,7 +93,7 @@ TEST(NodePartition, CurrentKeepsTheNumberingsSplit) {
   const NodeGraph graph = node_graph(serial.mesh, serial.dofs, engine.rank(), engine.size());
   ContactSolverOptions o = spec.solver;
   o.petsc_options = "-mat_partitioning_type current";
-  const std::vector<int> owner = engine.partition(graph, o);
+  const std::vector<int> owner = engine.partition(graph, o.petsc_options);
   ASSERT_EQ(PetscOptionsClearValue(nullptr, "-mat_partitioning_type"), 0);
   for (int r = 0; r < engine.size(); ++r)
     for (Index v = vertex_share_start(graph.vertices, r, engine.size());

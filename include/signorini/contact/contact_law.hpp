@@ -11,7 +11,13 @@
 // Frictionless unilateral contact (the paper's) has P(z) = max(z, 0). Friction laws (Tresca,
 // Coulomb) project a normal-and-tangential z onto their admissible set instead: they are
 // ContactLaw classes with more components per node (friction_law.hpp), not new loops.
+//
+// A law holds all of its behaviour behind these virtual functions, and the problem owns it
+// (ContactProblem::law): the loops never ask which law they have. The geometry the law acts on
+// (which nodes, their constraint rows N, gaps and weights) is the contact interface's
+// (interface/contact_set.hpp).
 
+#include <Eigen/Dense>
 #include <string_view>
 #include <vector>
 
@@ -39,6 +45,22 @@ struct Linearization {
   bool operator==(const Linearization&) const = default;
 };
 
+/// One node's projection: P(z_j) and a generalised derivative D_j = dP/dz (m x m).
+struct NodeProjection {
+  Eigen::VectorXd force;       ///< P(z_j): the normal force, then the tangential ones
+  Eigen::MatrixXd derivative;  ///< D_j
+  bool in_contact = false;     ///< z_n > 0
+  bool sliding = false;        ///< friction: z_t at or beyond the slip bound
+};
+
+/// The largest violations of a law's conditions over the movable nodes, unscaled
+/// (kkt_residuals.hpp scales them into KktResiduals): the gap residual (N u - g)_n > 0, a negative
+/// pressure, |l_n (N u - g)_n|, and with friction a tangential force above its bound and slip
+/// against the tangential force (s |v| - l_t . v).
+struct LawViolations {
+  double penetration = 0.0, sign = 0.0, complementarity = 0.0, friction_bound = 0.0, slip = 0.0;
+};
+
 class ContactLaw {
  public:
   virtual ~ContactLaw() = default;
@@ -54,6 +76,41 @@ class ContactLaw {
   /// P(z0 + dz)^2 - P(z0)^2 for one node, evaluated without cancellation where both are active
   /// (as dz (z0 + z1)).
   [[nodiscard]] virtual double penalty_change(double z0, double dz) const = 0;
+  /// The contact nodes the law has parameters for (bounds, coefficients); -1: any number.
+  [[nodiscard]] virtual Index nodes() const { return -1; }
+  /// Whether some node has friction (a nonzero slip bound or coefficient).
+  [[nodiscard]] virtual bool has_friction() const { return false; }
+
+  // Step (i) of Uzawa minimises Phi (16) with what the law holds fixed at the multipliers l of
+  // the step: Coulomb's slip bound mu (l_n)_+, so that Phi is convex (method.md, "Friction").
+  // A law of z alone holds nothing: its step functions are the law's own.
+
+  /// The per-node parameters step (i) holds fixed at multipliers l; empty for a law of z alone.
+  [[nodiscard]] virtual Vector step_parameters(const Vector& /*l*/) const { return {}; }
+  /// P(z) with those parameters: the projection whose gradient potential is Phi's penalty term.
+  [[nodiscard]] virtual Vector step_project(const Vector& z, const Vector& /*parameters*/) const {
+    return project(z);
+  }
+  /// Its generalised derivative at z (the Newton matrix of (17)); nodes that are not `movable`
+  /// stay inactive with D_j = 0.
+  [[nodiscard]] virtual Linearization step_linearize(const Vector& z, const Vector& /*parameters*/,
+                                                     const std::vector<bool>& /*movable*/) const {
+    return {active_set(z), {}, {}, {}};
+  }
+  /// psi(z0 + dz) - psi(z0) for node j (m values at z0 and dz), psi the potential whose gradient
+  /// is step_project (max(z, 0)^2 / 2 for the unilateral law), without cancellation.
+  [[nodiscard]] virtual double potential_change(Index /*j*/, const double* z0, const double* dz,
+                                                const Vector& /*parameters*/) const {
+    return 0.5 * penalty_change(z0[0], dz[0]);
+  }
+
+  /// Node j's P(z_j) and its generalised derivative with the law's own parameters (semismooth
+  /// Newton's complementarity function).
+  [[nodiscard]] virtual NodeProjection project_node(Index j, const Eigen::VectorXd& zj) const;
+  /// The violations of the law's conditions at multipliers l (m per node) and constraint rows
+  /// N u - g^ (m per node), over the `movable` nodes.
+  [[nodiscard]] virtual LawViolations violations(const Vector& l, const Vector& rows,
+                                                 const std::vector<bool>& movable) const;
 };
 
 /// P(z) = max(z, 0): frictionless unilateral (Signorini) contact.

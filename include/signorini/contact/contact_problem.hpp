@@ -3,9 +3,11 @@
 // (N x)_j <= g_j for the contact nodes j.
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
-#include "signorini/contact/contact_set.hpp"
+#include "signorini/contact/contact_law.hpp"
+#include "signorini/interface/contact_set.hpp"
 
 namespace signorini {
 
@@ -13,6 +15,10 @@ struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
   Vector b;        ///< load vector (a partitioned problem: this rank's rows only)
   ContactSet contact;
+  /// The law on the contact rows (contact_law.hpp: frictionless, Tresca, Coulomb): null for the
+  /// paper's frictionless unilateral law. Shared, as a law holds no state of a solve; its
+  /// components per node must be contact.components.
+  std::shared_ptr<const ContactLaw> law = {};
   /// Optional aids for a distributed solve (docs/distributed.md), empty unless build_model plans
   /// one: the near-null space of A for algebraic multigrid (the rigid-body modes on the free
   /// dofs, n x 3 in 2D, n x 6 in 3D; a partitioned problem: this rank's rows only), and the mesh
@@ -26,7 +32,7 @@ struct ContactProblem {
   /// first_row() + k's (column_of), so that no array of A has all n entries on every rank; b
   /// and the near-null space hold only their rows. The contact set is whole on every rank. Products
   /// with A and the sums over the unknowns (the energy, the KKT residuals) are then sums over the
-  /// ranks (parallel/distributed_engine.hpp). Only the distributed path solves such a problem.
+  /// ranks (contact/distributed_engine.hpp). Only the distributed path solves such a problem.
   std::vector<Index> row_starts = {};
   int rank = 0;
   /// A partitioned problem on the ranks' parts of the mesh (docs/distributed.md): the unknowns
@@ -65,5 +71,10 @@ struct ContactProblem {
     return v.segment(first, end_row() - first_row());
   }
 };
+
+/// The law of `problem`: *problem.law, or the unilateral law.
+[[nodiscard]] inline const ContactLaw& contact_law(const ContactProblem& problem) {
+  return problem.law != nullptr ? *problem.law : unilateral_contact_law();
+}
 
 }  // namespace signorini

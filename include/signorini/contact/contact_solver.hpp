@@ -19,7 +19,7 @@ struct ContactResult {
   Vector u;
   Vector l;  ///< contact pressure l_j >= 0 per contact node (l* = -sigma_nu)
   /// Friction only (empty otherwise): (d - 1) x contact nodes, the tangential traction per node
-  /// in its tangent basis (fem/contact_tangents.hpp), the force per area that the obstacle
+  /// in its tangent basis (interface/contact_tangents.hpp), the force per area that the obstacle
   /// exerts on the body, opposed to its slip where it slides.
   Matrix tangential;
   /// Friction only: per node the length of the slip, |(T u)_j - slip origin|, the path length

@@ -12,7 +12,6 @@
 #include <string>
 
 #include "signorini/backend/device_kind.hpp"
-#include "signorini/contact/contact_law.hpp"
 #include "signorini/core/enum_names.hpp"
 #include "signorini/core/types.hpp"
 #include "signorini/linalg/linear_solver.hpp"
@@ -186,10 +185,6 @@ struct ContactSolverOptions {
   /// (smoothed aggregation on the rigid-body modes), the serial tool's smoothed aggregation on
   /// each rank's nodes, or hypre's BoomerAMG; Auto: resolved_petsc_multigrid().
   PetscMultigrid petsc_multigrid = PetscMultigrid::Auto;
-  /// The contact law (contact_law.hpp): null for the paper's frictionless unilateral law. The
-  /// Uzawa-GNM and classical Uzawa methods take any law; semismooth Newton only the unilateral
-  /// one. Not owned; it must outlive the solve.
-  const ContactLaw* law = nullptr;
   /// Called after every inner and outer iteration; may be empty.
   std::function<void(const IterationEvent&)> observer;
   /// Called after the observer at every event; returning CallbackAction::Stop ends the solve at
@@ -197,11 +192,6 @@ struct ContactSolverOptions {
   /// limit). May be empty.
   std::function<CallbackAction(const IterationEvent&)> callback;
 };
-
-/// The law a solve with these options uses: *options.law, or the unilateral law.
-[[nodiscard]] inline const ContactLaw& contact_law(const ContactSolverOptions& options) {
-  return options.law != nullptr ? *options.law : unilateral_contact_law();
-}
 
 /// Reports `event` to the observer and the callback of `options`; true when the callback asks to
 /// stop.

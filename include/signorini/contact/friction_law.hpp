@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "signorini/contact/contact_law.hpp"
-#include "signorini/contact/contact_set.hpp"
 #include "signorini/core/enum_names.hpp"
+#include "signorini/interface/contact_set.hpp"
 
 namespace signorini {
 
@@ -56,6 +56,28 @@ class FrictionLaw final : public ContactLaw {
   [[nodiscard]] ActiveSet active_set(const Vector& z) const override;
   /// Scalar laws only: throws std::logic_error.
   [[nodiscard]] double penalty_change(double z0, double dz) const override;
+  [[nodiscard]] Index nodes() const override { return size(); }
+  /// Some node has a positive slip bound or coefficient.
+  [[nodiscard]] bool has_friction() const override;
+
+  /// Step (i): the slip bounds slip_bounds(l), Coulomb's from the pressure of l.
+  [[nodiscard]] Vector step_parameters(const Vector& l) const override { return slip_bounds(l); }
+  /// Tresca's projection with the step's bounds, node by node; non-finite nodes give 0.
+  [[nodiscard]] Vector step_project(const Vector& z, const Vector& bounds) const override;
+  /// Tresca's derivative blocks and offsets with the step's bounds; in 2D also the rows of N
+  /// that the blocks select (Linearization::rows).
+  [[nodiscard]] Linearization step_linearize(const Vector& z, const Vector& bounds,
+                                             const std::vector<bool>& movable) const override;
+  /// Tresca's psi with node j's bound: |z_t|^2 / 2 inside the ball, s |z_t| - s^2 / 2 outside,
+  /// plus max(z_n, 0)^2 / 2.
+  [[nodiscard]] double potential_change(Index j, const double* z0, const double* dz,
+                                        const Vector& bounds) const override;
+  /// Coulomb's projection (true radius mu_j max(z_n, 0)) where mu_j > 0, Tresca's elsewhere.
+  [[nodiscard]] NodeProjection project_node(Index j, const Eigen::VectorXd& zj) const override;
+  /// Adds the tangential conditions: |l_t| <= s_j (friction_bound) and s_j |v| - l_t . v = 0
+  /// for the slip v (slip), with s_j = slip_bounds(l).
+  [[nodiscard]] LawViolations violations(const Vector& l, const Vector& rows,
+                                         const std::vector<bool>& movable) const override;
 
  private:
   int dim_;
@@ -81,19 +103,6 @@ inline constexpr EnumNames<FrictionState, 3> kFrictionStateNames{{
                                                          const Vector& pressure,
                                                          const Matrix& tangential);
 
-/// B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. d j + d - 1 the tangential
-/// rows (d - 1) j .. of T (fem/contact_tangents.hpp). Sets contact.components = d. Throws
-/// InputError when T does not have (d - 1) rows per node over N's columns.
-void add_tangential_rows(ContactSet& contact, const SparseMatrix& T);
-
-/// g^ per row of N: g_j on the normal rows, the slip origin (0 by default) on the tangential
-/// rows, so that the constraint rows read N x - g^ (the gaps alone for a frictionless set).
-[[nodiscard]] Vector row_offsets(const ContactSet& contact);
-
-/// h per row of N: node j's weight on each of its rows (the weights alone for a frictionless
-/// set).
-[[nodiscard]] Vector row_weights(const ContactSet& contact);
-
 /// Nodes with a positive normal multiplier in l, `components` values per node (the layout of
 /// the methods: the normal first).
 [[nodiscard]] Index count_in_contact(const Vector& l, Index components);
@@ -101,8 +110,5 @@ void add_tangential_rows(ContactSet& contact, const SparseMatrix& T);
 /// The methods' layout, d values per node (the normal, then the tangents), from a pressure per
 /// node and the tangential multipliers ((d - 1) x nodes, ContactResult::tangential).
 [[nodiscard]] Vector node_multipliers(const Vector& pressure, const Matrix& tangential);
-
-/// The normal rows of a frictional N (rows d j): the frictionless N of the same set.
-[[nodiscard]] SparseMatrix normal_rows(const ContactSet& contact);
 
 }  // namespace signorini

@@ -23,7 +23,7 @@ class DofMap {
   DofMap(Index num_nodes, int dim);
   /// A numbering given whole, finalized: per dof (node * dim + component) its free number or -1,
   /// `num_free` free dofs in all (more than `free` numbers where the nodes are part of a larger
-  /// mesh: parallel/model_part.hpp); per dof the prescribed value (`values`, empty: all 0); the
+  /// mesh: problem/model_part.hpp); per dof the prescribed value (`values`, empty: all 0); the
   /// nodes with local axes and their axes (`frames`).
   DofMap(int dim, std::vector<Index> free, Index num_free, Vector values = {},
          const std::vector<std::pair<Index, Eigen::Matrix2d>>& frames = {});

@@ -139,7 +139,8 @@ struct Model {
   [[nodiscard]] Vector applied_loads(double factor, int step) const;
   /// The loads on the free dofs, b = f - K u_D.
   [[nodiscard]] Vector free_loads(double factor, int step) const;
-  /// The contact set's gaps: g - nu . u_D at the node (fem/contact_boundary.cpp) with u_D scaled.
+  /// The contact set's gaps: g - nu . u_D at the node (interface/contact_boundary.cpp) with u_D
+  /// scaled.
   [[nodiscard]] Vector contact_gaps(double factor, int step) const;
   /// The full displacement of a solution u (free dofs), with the prescribed values scaled.
   [[nodiscard]] Vector full_displacement(const Vector& u, double factor, int step) const;

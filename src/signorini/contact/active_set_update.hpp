@@ -5,8 +5,8 @@
 // semismooth Newton's loop and Uzawa-GNM's active-set finish.
 
 #include "signorini/contact/contact_law.hpp"
-#include "signorini/contact/contact_set.hpp"
 #include "signorini/core/types.hpp"
+#include "signorini/interface/contact_set.hpp"
 
 namespace signorini {
 

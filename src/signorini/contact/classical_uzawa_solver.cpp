@@ -13,11 +13,11 @@
 
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/outer_iteration.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/iterative/eigenvalue_estimate.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -107,7 +107,7 @@ void run_classical_uzawa(const ContactProblem& problem, const ContactSolverOptio
       return o;
     }
     // (ii) l^{k+1} = P(l^k + rho ((N u)_j - g_j)), P(z) = z_+ for the paper's law
-    o.l = contact_law(options).project(l + rho * (solves.contact_values() - g_hat));
+    o.l = contact_law(problem).project(l + rho * (solves.contact_values() - g_hat));
     for (Index j = 0; j < c.size(); ++j)
       if (!c.movable[static_cast<std::size_t>(j)]) o.l.segment(m * j, m).setZero();
     rec.dual_change = relative_change(o.l, l);

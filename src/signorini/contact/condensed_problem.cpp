@@ -48,6 +48,7 @@ CondensedProblem::CondensedProblem(const ContactProblem& full, int threads) {
   const auto nm = static_cast<Index>(kept_.size());
   // S itself, a dense matrix with every entry stored (dense_storage.hpp), so that the generic
   // methods apply to it and the dense Newton systems read it without a copy.
+  reduced_.law = full.law;  // (the law acts on the same rows, in the nodes' frames)
   reduced_.A = schur_->release_matrix();
   reduced_.b = schur_->condensed_load(b_rotated);
 

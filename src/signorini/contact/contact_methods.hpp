@@ -5,7 +5,7 @@
 #include <functional>
 
 #include "signorini/contact/contact_solver.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -48,7 +48,7 @@ ContactResult run_on_distributed_space(
 ContactResult solve_classical_uzawa_distributed(const ContactProblem& problem,
                                                 const ContactSolverOptions& options,
                                                 const MethodStart& start);
-/// Uzawa-GNM on the registered distributed engine (parallel/distributed_engine.hpp): the same
+/// Uzawa-GNM on the registered distributed engine (contact/distributed_engine.hpp): the same
 /// loop, its vectors and Newton systems PETSc's, spread over the MPI ranks; u gathered on every
 /// rank, or on the ranks' parts of the mesh each rank's part (ContactProblem::solution_unknowns).
 ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,

@@ -12,12 +12,12 @@
 
 #include "signorini/contact/condensed_problem.hpp"
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/kkt_residuals.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
-#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/interface/tangent_basis.hpp"
 
 namespace signorini {
 
@@ -179,12 +179,18 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
   m.path = choose_path(m.options);
-  const ContactLaw& law = contact_law(given);
+  const ContactLaw& law = contact_law(problem);
   if (problem.contact.components != law.components())
     throw InputError(fmt::format(
         "the contact law \"{}\" has {} value(s) per contact node, the contact set {} row(s) of "
         "N per node",
         law.name(), law.components(), problem.contact.components));
+  if (m.options.method == ContactMethod::SemismoothNewton && &law != &unilateral_contact_law() &&
+      law.components() == 1)
+    throw InputError(fmt::format(
+        "solver.method = \"semismooth_newton\" solves the unilateral contact law only, not "
+        "\"{}\"; use \"uzawa_gnm\"",
+        law.name()));
   if (law.components() > 1) {
     // Friction (method.md, "Friction"): Uzawa-GNM and classical Uzawa run condensed onto the
     // contact nodes' free dofs (CondensedProblem). The backend's and the distributed Newton
@@ -361,7 +367,7 @@ ContactResult ContactSolver::solve() {
   s.r_automatic = !m.given.r.has_value();
   s.automatic_r = m.r_auto;
   s.kkt_tolerance = options.kkt_tolerance;
-  const ContactLaw& law = contact_law(options);
+  const ContactLaw& law = contact_law(problem);
   s.kkt = kkt_residuals(problem, result.u, result.l, law);
   s.energy = quadratic_energy(problem, result.u);
   s.lagrangian = ModifiedLagrangian::value(problem, *options.r, result.u, result.l, law);

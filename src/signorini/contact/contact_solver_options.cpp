@@ -6,9 +6,9 @@
 
 #include "signorini/contact/contact_problem.hpp"
 #include "signorini/contact/contact_solver_option_table.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/linalg/linear_solver_option_table.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -167,12 +167,6 @@ void validate(const ContactSolverOptions& o) {
         "iterative; set solver.linear.type = \"cg\" (and solver.linear.preconditioner = "
         "\"multigrid\" for speed)",
         enum_to_string(kLinearSolverTypeNames, o.linear.type)));
-  if (o.method == ContactMethod::SemismoothNewton && &contact_law(o) != &unilateral_contact_law() &&
-      contact_law(o).components() == 1)
-    throw InputError(fmt::format(
-        "solver.method = \"semismooth_newton\" solves the unilateral contact law only, not "
-        "\"{}\"; use \"uzawa_gnm\"",
-        contact_law(o).name()));
   // (On the distributed path the multigrid is the KSP's, for classical Uzawa too.)
   if (backend_path && o.method == ContactMethod::ClassicalUzawa && !distributed_path(o))
     throw InputError(

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -65,6 +66,107 @@ double FrictionLaw::penalty_change(double /*z0*/, double /*dz*/) const {
   throw std::logic_error("FrictionLaw::penalty_change: a frictional law has no scalar penalty");
 }
 
+bool FrictionLaw::has_friction() const {
+  return s_.size() > 0 && (s_.maxCoeff() > 0.0 || mu_.maxCoeff() > 0.0);
+}
+
+Vector FrictionLaw::step_project(const Vector& z, const Vector& bounds) const {
+  // With the bound of step (i) (Coulomb's from l^k), node by node; a node that cannot move
+  // (z = -infinity) gets 0.
+  Vector p = Vector::Zero(z.size());
+  for (Index j = 0; j < s_.size(); ++j) {
+    const Eigen::VectorXd zj = z.segment(dim_ * j, dim_);
+    if (zj.allFinite()) p.segment(dim_ * j, dim_) = project_tresca(zj, bounds(j)).force;
+  }
+  return p;
+}
+
+Linearization FrictionLaw::step_linearize(const Vector& z, const Vector& bounds,
+                                          const std::vector<bool>& movable) const {
+  // Step (i) minimises a Tresca Phi: Coulomb's bound is mu (l_n)_+ of the Uzawa step.
+  const Index m = dim_, nc = s_.size();
+  Linearization lin;
+  lin.active.assign(static_cast<std::size_t>(nc), false);
+  lin.blocks.assign(static_cast<std::size_t>(m * m * nc), 0.0);
+  lin.offsets.assign(static_cast<std::size_t>(m * nc), 0.0);
+  for (Index j = 0; j < nc; ++j) {
+    if (!movable[static_cast<std::size_t>(j)]) continue;
+    const Eigen::VectorXd zj = z.segment(m * j, m);
+    const FrictionProjection pj = project_tresca(zj, bounds(j));
+    lin.active[static_cast<std::size_t>(j)] = pj.in_contact;
+    Eigen::Map<Eigen::MatrixXd>(&lin.blocks[static_cast<std::size_t>(m * m * j)], m, m) =
+        pj.derivative;
+    Eigen::Map<Eigen::VectorXd>(&lin.offsets[static_cast<std::size_t>(m * j)], m) =
+        pj.force - pj.derivative * zj;
+  }
+  // In 2D each block is diag(0 or 1, 0 or 1): (s / |z_t|)(1 - t t) with t = +-1 vanishes
+  // exactly. Then the rows of N with a 1 describe H as an active set does.
+  lin.rows.assign(static_cast<std::size_t>(m * nc), false);
+  for (Index j = 0; j < nc; ++j)
+    for (Index a = 0; a < m; ++a)
+      for (Index b = 0; b < m; ++b) {
+        const double v = lin.blocks[static_cast<std::size_t>(m * m * j + a + m * b)];
+        if (a == b && v == 1.0)
+          lin.rows[static_cast<std::size_t>(m * j + a)] = true;
+        else if (v != 0.0) {
+          lin.rows.clear();
+          return lin;
+        }
+      }
+  return lin;
+}
+
+double FrictionLaw::potential_change(Index j, const double* z0, const double* dz,
+                                     const Vector& bounds) const {
+  const double s = bounds(j);
+  // Normal part: (max(z_n, 0)^2) / 2, as the unilateral law's penalty change.
+  double change = 0.5 * unilateral_contact_law().penalty_change(z0[0], dz[0]);
+  // Tangential part: |z_t|^2 / 2 inside the ball of radius s, s |z_t| - s^2 / 2 outside.
+  double n0 = 0.0, n1 = 0.0, dot = 0.0;
+  for (Index a = 1; a < dim_; ++a) {
+    n0 += z0[a] * z0[a];
+    n1 += (z0[a] + dz[a]) * (z0[a] + dz[a]);
+    dot += dz[a] * (2.0 * z0[a] + dz[a]);
+  }
+  n0 = std::sqrt(n0);
+  n1 = std::sqrt(n1);
+  if (n0 < s && n1 < s)
+    change += 0.5 * dot;  // |z1|^2 - |z0|^2 = dz . (z0 + z1)
+  else if (n0 >= s && n1 >= s) {
+    // s (|z1| - |z0|) without cancellation; nothing where s = 0 (no tangential force).
+    if (s > 0.0) change += s * dot / (n0 + n1);
+  } else {
+    const auto psi = [s](double n) { return n < s ? 0.5 * n * n : s * (n - 0.5 * s); };
+    change += psi(n1) - psi(n0);
+  }
+  return change;
+}
+
+NodeProjection FrictionLaw::project_node(Index j, const Eigen::VectorXd& zj) const {
+  const FrictionProjection pj =
+      mu_(j) > 0.0 ? project_coulomb(zj, mu_(j)) : project_tresca(zj, s_(j));
+  return {pj.force, pj.derivative, pj.in_contact, pj.sliding};
+}
+
+LawViolations FrictionLaw::violations(const Vector& l, const Vector& rows,
+                                      const std::vector<bool>& movable) const {
+  // Rows per node: the normal, then the tangents; rows(m j + 1 ..) is the slip v_j.
+  const Index m = dim_, nc = s_.size();
+  const Vector bounds = slip_bounds(l);
+  LawViolations v;
+  for (Index j = 0; j < nc; ++j) {
+    if (!movable[static_cast<std::size_t>(j)]) continue;
+    const double ln = l(m * j), gap = rows(m * j);
+    v.penetration = std::max(v.penetration, gap);
+    v.sign = std::max(v.sign, -ln);
+    v.complementarity = std::max(v.complementarity, std::abs(ln * gap));
+    const Eigen::VectorXd lt = l.segment(m * j + 1, m - 1), vt = rows.segment(m * j + 1, m - 1);
+    v.friction_bound = std::max(v.friction_bound, lt.norm() - bounds(j));
+    v.slip = std::max(v.slip, bounds(j) * vt.norm() - lt.dot(vt));
+  }
+  return v;
+}
+
 std::vector<FrictionState> friction_states(const FrictionLaw& law, const Vector& pressure,
                                            const Matrix& tangential) {
   const Index nc = pressure.size();
@@ -77,50 +179,6 @@ std::vector<FrictionState> friction_states(const FrictionLaw& law, const Vector&
         t >= bound(j) * (1.0 - 1e-6) ? FrictionState::Sliding : FrictionState::Sticking;
   }
   return states;
-}
-
-void add_tangential_rows(ContactSet& contact, const SparseMatrix& T) {
-  const Index nc = contact.size();
-  if (contact.components != 1) throw InputError("friction: the contact set has tangential rows");
-  if (nc == 0 || T.rows() % nc != 0 || T.cols() != contact.N.cols() || T.rows() / nc < 1 ||
-      T.rows() / nc > 2)
-    throw InputError(
-        fmt::format("friction: T must have 1 or 2 rows per contact node ({} nodes) over the {} "
-                    "free dofs, not {} x {}",
-                    nc, contact.N.cols(), T.rows(), T.cols()));
-  const Index d = 1 + T.rows() / nc;
-  std::vector<Eigen::Triplet<double, Index>> entries;
-  entries.reserve(static_cast<std::size_t>(contact.N.nonZeros() + T.nonZeros()));
-  for (Index col = 0; col < T.cols(); ++col) {
-    for (SparseMatrix::InnerIterator it(contact.N, col); it; ++it)
-      entries.emplace_back(d * it.row(), col, it.value());
-    for (SparseMatrix::InnerIterator it(T, col); it; ++it)
-      entries.emplace_back(d * (it.row() / (d - 1)) + 1 + it.row() % (d - 1), col, it.value());
-  }
-  SparseMatrix B(d * nc, T.cols());
-  B.setFromTriplets(entries.begin(), entries.end());
-  contact.N = std::move(B);
-  contact.components = static_cast<int>(d);
-}
-
-Vector row_offsets(const ContactSet& contact) {
-  const Index m = contact.components, nc = contact.size();
-  if (m == 1) return contact.gaps;
-  Vector g = Vector::Zero(m * nc);
-  const bool origin = contact.slip_origin.size() == (m - 1) * nc;
-  for (Index j = 0; j < nc; ++j) {
-    g(m * j) = contact.gaps(j);
-    if (origin) g.segment(m * j + 1, m - 1) = contact.slip_origin.segment((m - 1) * j, m - 1);
-  }
-  return g;
-}
-
-Vector row_weights(const ContactSet& contact) {
-  const Index m = contact.components;
-  if (m == 1) return contact.weights;
-  Vector h(m * contact.size());
-  for (Index j = 0; j < contact.size(); ++j) h.segment(m * j, m).setConstant(contact.weights(j));
-  return h;
 }
 
 Index count_in_contact(const Vector& l, Index components) {
@@ -137,18 +195,6 @@ Vector node_multipliers(const Vector& pressure, const Matrix& tangential) {
     l.segment(m * j + 1, m - 1) = tangential.col(j);
   }
   return l;
-}
-
-SparseMatrix normal_rows(const ContactSet& contact) {
-  const Index m = contact.components;
-  if (m == 1) return contact.N;
-  std::vector<Eigen::Triplet<double, Index>> entries;
-  for (Index col = 0; col < contact.N.cols(); ++col)
-    for (SparseMatrix::InnerIterator it(contact.N, col); it; ++it)
-      if (it.row() % m == 0) entries.emplace_back(it.row() / m, col, it.value());
-  SparseMatrix N(contact.size(), contact.N.cols());
-  N.setFromTriplets(entries.begin(), entries.end());
-  return N;
 }
 
 }  // namespace signorini

@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "signorini/contact/contact_methods.hpp"
-#include "signorini/contact/friction_projection.hpp"
 #include "signorini/core/error.hpp"
 
 namespace signorini {
@@ -29,7 +28,7 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const SparseMatrix
   return solve_friction_ssn(frictional, FrictionLaw(law.kind, static_cast<int>(d), law.bound), o);
 }
 
-FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw& law,
+FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const ContactLaw& law,
                                      const FrictionSsnOptions& o, const Vector& u0,
                                      const Vector& l0) {
   const ContactSet& cs = p.contact;
@@ -37,7 +36,7 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw&
   if (nc == 0) throw InputError("friction: no contact nodes");
   if (p.partitioned())
     throw InputError("friction: a partitioned problem (the distributed path) is not supported");
-  if (d < 2 || law.components() != d || law.size() != nc)
+  if (d < 2 || law.components() != d || law.nodes() != nc)
     throw InputError("friction: a frictional contact set and its law (one bound per node)");
   // B = [N; T] node by node: row d j the normal, rows d j + 1 .. the tangents.
   const SparseMatrix& B = cs.N;
@@ -54,8 +53,7 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw&
 
   FrictionSsnResult r;
   Vector lambda = Vector::Zero(d * nc);
-  const bool frictional = law.slip_bound().size() > 0 &&
-                          (law.slip_bound().maxCoeff() > 0.0 || law.mu().maxCoeff() > 0.0);
+  const bool frictional = law.has_friction();
   if (u0.size() == n && l0.size() == d * nc) {
     r.u = u0;
     lambda = l0;
@@ -91,8 +89,7 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw&
       Eigen::MatrixXd D = Eigen::MatrixXd::Zero(d, d);
       if (cs.movable[static_cast<std::size_t>(j)]) {
         const Eigen::VectorXd zj = z.segment(d * j, d);
-        const FrictionProjection pj = law.mu()(j) > 0.0 ? project_coulomb(zj, law.mu()(j))
-                                                        : project_tresca(zj, law.slip_bound()(j));
+        const NodeProjection pj = law.project_node(j, zj);
         projected.segment(d * j, d) = pj.force;
         D = pj.derivative;
         r.in_contact[static_cast<std::size_t>(j)] = pj.in_contact;
@@ -187,8 +184,7 @@ FrictionSsnResult solve_friction_ssn(const ContactProblem& p, const FrictionLaw&
 ContactResult solve_friction_semismooth_newton(const ContactProblem& problem,
                                                const ContactSolverOptions& options,
                                                const MethodStart& start) {
-  const auto* law = dynamic_cast<const FrictionLaw*>(&contact_law(options));
-  if (law == nullptr) throw InputError("friction: semismooth Newton needs a FrictionLaw");
+  const ContactLaw& law = contact_law(problem);
   FrictionSsnOptions o;
   o.max_iterations = newton_iteration_limit(options, problem.contact.size());
   // The complementarity constant: its own automatic value (FrictionSsnOptions::c), not the
@@ -197,7 +193,7 @@ ContactResult solve_friction_semismooth_newton(const ContactProblem& problem,
   TimingTable timings;
   ScopedTimer timer(timings, "semismooth newton");
   const FrictionSsnResult r =
-      solve_friction_ssn(problem, *law, o, start.displacement(problem.A.rows()),
+      solve_friction_ssn(problem, law, o, start.displacement(problem.A.rows()),
                          start.l.size() == rows ? start.l : Vector());
   timer.stop();
   ContactResult out;

@@ -60,18 +60,19 @@ struct FrictionSsnResult {
   std::vector<double> history;  ///< max(equilibrium, projection) at each iterate, the start first
 };
 
-/// `T`: the tangential rows (fem/contact_tangents.hpp, tangential_operator).
+/// `T`: the tangential rows (interface/contact_tangents.hpp, tangential_operator).
 [[nodiscard]] FrictionSsnResult solve_friction_ssn(const ContactProblem& problem,
                                                    const SparseMatrix& T,
                                                    const FrictionLawSpec& law,
                                                    const FrictionSsnOptions& options = {});
 
 /// The same on a frictional problem (its contact set with the tangential rows in N,
-/// add_tangential_rows) with a law per node (Tresca's s_j or Coulomb's mu_j; the slip origin of
+/// add_tangential_rows) with a law of d components (FrictionLaw: Tresca's s_j or Coulomb's mu_j per
+/// node, ContactLaw::project_node; the slip origin of
 /// the set honoured). `u0`, `l0` (d values per node): a start instead of the frictionless
 /// solution (empty: that).
 [[nodiscard]] FrictionSsnResult solve_friction_ssn(const ContactProblem& frictional,
-                                                   const FrictionLaw& law,
+                                                   const ContactLaw& law,
                                                    const FrictionSsnOptions& options = {},
                                                    const Vector& u0 = {}, const Vector& l0 = {});
 

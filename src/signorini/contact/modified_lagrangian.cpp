@@ -6,9 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "signorini/contact/friction_projection.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -34,11 +33,11 @@ ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r,
     throw InputError(fmt::format(
         "the contact law \"{}\" has {} component(s) per node, the contact set {} row(s) of N",
         law.name(), m_, p_.contact.components));
-  if (m_ > 1) {
-    friction_ = dynamic_cast<const FrictionLaw*>(&law);
-    if (friction_ == nullptr || friction_->size() != p_.contact.size())
-      throw InputError("a frictional contact set needs a FrictionLaw with one bound per node");
-  }
+  if (law.nodes() >= 0 && law.nodes() != p_.contact.size())
+    throw InputError(
+        fmt::format("the contact law \"{}\" has parameters for {} nodes, the contact "
+                    "set {} nodes",
+                    law.name(), law.nodes(), p_.contact.size()));
   g_hat_ = row_offsets(p_.contact);
   h_ = row_weights(p_.contact);
   set_multipliers(Vector::Zero(m_ * p_.contact.size()));
@@ -72,7 +71,7 @@ void ModifiedLagrangian::set_multipliers(const Vector& l) {
   l_ = l;
   for (Index j = 0; j < p_.contact.size(); ++j)
     if (!p_.contact.movable[static_cast<std::size_t>(j)]) l_.segment(m_ * j, m_).setZero();
-  if (friction_ != nullptr) bounds_ = friction_->slip_bounds(l_);  // Coulomb: mu (l_n)_+
+  parameters_ = law_.step_parameters(l_);  // Coulomb: the slip bounds mu (l_n)_+
 }
 
 Vector ModifiedLagrangian::shifted_multipliers(const Vector& Nx) const {
@@ -88,54 +87,12 @@ ActiveSet ModifiedLagrangian::active_set(const Vector& Nx) const {
 }
 
 Linearization ModifiedLagrangian::linearize(const Vector& Nx) const {
-  Linearization lin;
-  if (friction_ == nullptr) {
-    lin.active = active_set(Nx);
-    return lin;
-  }
-  // Step (i) minimises a Tresca Phi: Coulomb's bound is mu (l_n)_+ of the Uzawa step.
-  const Vector z = shifted_multipliers(Nx);
-  const Index nc = p_.contact.size();
-  lin.active.assign(static_cast<std::size_t>(nc), false);
-  lin.blocks.assign(static_cast<std::size_t>(m_ * m_ * nc), 0.0);
-  lin.offsets.assign(static_cast<std::size_t>(m_ * nc), 0.0);
-  for (Index j = 0; j < nc; ++j) {
-    if (!p_.contact.movable[static_cast<std::size_t>(j)]) continue;
-    const Eigen::VectorXd zj = z.segment(m_ * j, m_);
-    const FrictionProjection pj = project_tresca(zj, bounds_(j));
-    lin.active[static_cast<std::size_t>(j)] = pj.in_contact;
-    Eigen::Map<Eigen::MatrixXd>(&lin.blocks[static_cast<std::size_t>(m_ * m_ * j)], m_, m_) =
-        pj.derivative;
-    Eigen::Map<Eigen::VectorXd>(&lin.offsets[static_cast<std::size_t>(m_ * j)], m_) =
-        pj.force - pj.derivative * zj;
-  }
-  // In 2D each block is diag(0 or 1, 0 or 1): (s / |z_t|)(1 - t t) with t = +-1 vanishes
-  // exactly. Then the rows of N with a 1 describe H as an active set does.
-  lin.rows.assign(static_cast<std::size_t>(m_ * nc), false);
-  for (Index j = 0; j < nc; ++j)
-    for (Index a = 0; a < m_; ++a)
-      for (Index b = 0; b < m_; ++b) {
-        const double v = lin.blocks[static_cast<std::size_t>(m_ * m_ * j + a + m_ * b)];
-        if (a == b && v == 1.0)
-          lin.rows[static_cast<std::size_t>(m_ * j + a)] = true;
-        else if (v != 0.0) {
-          lin.rows.clear();
-          return lin;
-        }
-      }
-  return lin;
+  return law_.step_linearize(shifted_multipliers(Nx), parameters_, p_.contact.movable);
 }
 
 Vector ModifiedLagrangian::project(const Vector& z) const {
-  if (friction_ == nullptr) return law_.project(z);
-  // With friction the projection with the bound of step (i) (Coulomb's from l^k), node by node;
-  // a node that cannot move (z = -infinity) gets 0.
-  Vector p = Vector::Zero(z.size());
-  for (Index j = 0; j < p_.contact.size(); ++j) {
-    const Eigen::VectorXd zj = z.segment(m_ * j, m_);
-    if (zj.allFinite()) p.segment(m_ * j, m_) = project_tresca(zj, bounds_(j)).force;
-  }
-  return p;
+  // P(z) with what step (i) holds fixed (friction: Tresca's projection with the bound of l^k).
+  return law_.step_project(z, parameters_);
 }
 
 Vector ModifiedLagrangian::forces_of(const Vector& z) const {
@@ -149,31 +106,6 @@ Vector ModifiedLagrangian::updated_multipliers(const Vector& Nx) const {
 
 Vector ModifiedLagrangian::contact_forces(const Vector& Nx) const {
   return forces_of(shifted_multipliers(Nx));
-}
-
-double ModifiedLagrangian::potential_change(Index j, const double* z0, const double* dz) const {
-  const double s = bounds_(j);
-  // Normal part: (max(z_n, 0)^2) / 2, as the unilateral law's penalty change.
-  double change = 0.5 * unilateral_contact_law().penalty_change(z0[0], dz[0]);
-  // Tangential part: |z_t|^2 / 2 inside the ball of radius s, s |z_t| - s^2 / 2 outside.
-  double n0 = 0.0, n1 = 0.0, dot = 0.0;
-  for (Index a = 1; a < m_; ++a) {
-    n0 += z0[a] * z0[a];
-    n1 += (z0[a] + dz[a]) * (z0[a] + dz[a]);
-    dot += dz[a] * (2.0 * z0[a] + dz[a]);
-  }
-  n0 = std::sqrt(n0);
-  n1 = std::sqrt(n1);
-  if (n0 < s && n1 < s)
-    change += 0.5 * dot;  // |z1|^2 - |z0|^2 = dz . (z0 + z1)
-  else if (n0 >= s && n1 >= s) {
-    // s (|z1| - |z0|) without cancellation; nothing where s = 0 (no tangential force).
-    if (s > 0.0) change += s * dot / (n0 + n1);
-  } else {
-    const auto psi = [s](double n) { return n < s ? 0.5 * n * n : s * (n - 0.5 * s); };
-    change += psi(n1) - psi(n0);
-  }
-  return change;
 }
 
 Vector ModifiedLagrangian::gradient(const Vector& residual, const Vector& Nx) const {
@@ -195,7 +127,7 @@ void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const
 }
 
 void ModifiedLagrangian::hessian(const Linearization& lin, SparseMatrix& H) const {
-  if (friction_ == nullptr) {
+  if (lin.blocks.empty()) {  // a law of one component: the active set says it all
     hessian(lin.active, H);
     return;
   }
@@ -213,7 +145,7 @@ void ModifiedLagrangian::hessian(const Linearization& lin, SparseMatrix& H) cons
 }
 
 Vector ModifiedLagrangian::newton_contact_terms(const Linearization& lin) const {
-  if (friction_ == nullptr) return newton_contact_terms(lin.active);
+  if (lin.blocks.empty()) return newton_contact_terms(lin.active);
   Vector w = Vector::Zero(l_.size());
   for (Index j = 0; j < p_.contact.size(); ++j) {
     const Eigen::Map<const Eigen::MatrixXd> D(&lin.blocks[static_cast<std::size_t>(m_ * m_ * j)],
@@ -250,50 +182,29 @@ ModifiedLagrangian::Direction ModifiedLagrangian::direction(const Vector& residu
 }
 
 double ModifiedLagrangian::phi_change(const Direction& dir, double t) const {
-  double change = t * dir.residual_dot_d + 0.5 * t * t * dir.d_A_d;
+  const double change = t * dir.residual_dot_d + 0.5 * t * t * dir.d_A_d;
+  return change + penalty_change(dir.z, t * r_ * dir.Nd) / (2.0 * r_);
+}
+
+double ModifiedLagrangian::penalty_change(const Vector& z0, const Vector& dz) const {
+  // sum_j h_j (2 psi(z0_j + dz_j) - 2 psi(z0_j)): P(z1)^2 - P(z0)^2 for one component.
   double penalty = 0.0;
-  if (friction_ != nullptr) {
-    std::vector<double> dz(static_cast<std::size_t>(m_));
-    for (Index j = 0; j < p_.contact.size(); ++j) {
-      if (!p_.contact.movable[static_cast<std::size_t>(j)]) continue;
-      for (Index a = 0; a < m_; ++a) dz[static_cast<std::size_t>(a)] = t * r_ * dir.Nd(m_ * j + a);
-      // 2 (psi(z1) - psi(z0)), as P(z1)^2 - P(z0)^2 is for the unilateral law.
-      penalty += 2.0 * p_.contact.weights(j) * potential_change(j, &dir.z(m_ * j), dz.data());
-    }
-    return change + penalty / (2.0 * r_);
+  for (Index j = 0; j < p_.contact.size(); ++j) {
+    if (!p_.contact.movable[static_cast<std::size_t>(j)] || !std::isfinite(z0(m_ * j))) continue;
+    penalty += 2.0 * p_.contact.weights(j) *
+               law_.potential_change(j, &z0(m_ * j), &dz(m_ * j), parameters_);
   }
-  for (Index j = 0; j < dir.z.size(); ++j) {
-    const double z0 = dir.z(j);
-    if (!std::isfinite(z0)) continue;                                 // non-movable node: no term
-    const double diff = law_.penalty_change(z0, t * r_ * dir.Nd(j));  // P(z1)^2 - P(z0)^2
-    penalty += p_.contact.weights(j) * diff;
-  }
-  return change + penalty / (2.0 * r_);
+  return penalty;
 }
 
 double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector& u,
                                  const Vector& l, const ContactLaw& law) {
+  // The penalty term psi(l + r (N u - g^)) - |l|^2 / 2 = psi(z) - psi(l) for admissible l.
   const Vector Nu = contact_rows(p, u);  // (a collective call for a rank's part of the solution)
-  double penalty = 0.0;
-  if (law.components() > 1) {
-    // psi(l + r (N u - g^)) - |l|^2 / 2 = psi(z) - psi(l) for admissible l.
-    ModifiedLagrangian phi(p, r, law);
-    phi.set_multipliers(l);
-    const Vector shift = r * (Nu - phi.g_hat_);
-    for (Index j = 0; j < p.contact.size(); ++j)
-      if (p.contact.movable[static_cast<std::size_t>(j)])
-        penalty += 2.0 * p.contact.weights(j) *
-                   phi.potential_change(j, &phi.l_(phi.m_ * j), &shift(phi.m_ * j));
-    return quadratic_energy(p, u) + penalty / (2.0 * r);
-  }
-  for (Index j = 0; j < l.size(); ++j) {
-    if (!p.contact.movable[static_cast<std::size_t>(j)]) continue;
-    // P(l + shift)^2 - P(l)^2 with P(l) = l (l >= 0): (z_+)^2 - l^2, without cancellation near
-    // the solution.
-    const double diff = law.penalty_change(l(j), r * (Nu(j) - p.contact.gaps(j)));
-    penalty += p.contact.weights(j) * diff;
-  }
-  return quadratic_energy(p, u) + penalty / (2.0 * r);
+  ModifiedLagrangian phi(p, r, law);
+  phi.set_multipliers(l);
+  const Vector shift = r * (Nu - phi.g_hat_);
+  return quadratic_energy(p, u) + phi.penalty_change(phi.l_, shift) / (2.0 * r);
 }
 
 }  // namespace signorini

@@ -14,7 +14,7 @@
 
 #include "signorini/contact/contact_law.hpp"
 #include "signorini/contact/contact_problem.hpp"
-#include "signorini/contact/friction_law.hpp"
+#include "signorini/interface/contact_set.hpp"
 
 namespace signorini {
 
@@ -88,17 +88,16 @@ class ModifiedLagrangian {
   const ContactProblem& p_;
   double r_;
   const ContactLaw& law_;
-  Index m_ = 1;                            // components per node
-  const FrictionLaw* friction_ = nullptr;  // the law, where it is frictional
-  Vector g_hat_;                           // g^ per row of N (row_offsets)
-  Vector h_;                               // h per row of N (row_weights)
-  Vector bounds_;                          // friction: the slip bounds s_j of step (i)
+  Index m_ = 1;        // components per node
+  Vector g_hat_;       // g^ per row of N (row_offsets)
+  Vector h_;           // h per row of N (row_weights)
+  Vector parameters_;  // what the law holds fixed in step (i) (friction: the slip bounds)
   Vector l_;
-  // P(z) node by node: the law's, with friction Tresca's with the bounds of step (i).
+  // P(z) node by node with the parameters of step (i).
   [[nodiscard]] Vector project(const Vector& z) const;
-  // Friction: psi(z0 + dz) - psi(z0) of node j with its bound, without cancellation where both
-  // points are on the same smooth piece.
-  [[nodiscard]] double potential_change(Index j, const double* z0, const double* dz) const;
+  // sum_j h_j 2 (psi(z0_j + dz_j) - psi(z0_j)) over the movable nodes (the law's potential with
+  // the step's parameters), without cancellation where both points are on one smooth piece.
+  [[nodiscard]] double penalty_change(const Vector& z0, const Vector& dz) const;
   // Per contact node j, the positions in A's value array of its node block, which entry (a, b)
   // of D_j (column-major; 0 without friction) they take, and (N_a)_p (N_b)_q there.
   struct BlockEntry {

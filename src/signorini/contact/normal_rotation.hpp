@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "signorini/contact/contact_set.hpp"
+#include "signorini/interface/contact_set.hpp"
 
 namespace signorini {
 

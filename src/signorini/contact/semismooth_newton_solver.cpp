@@ -25,6 +25,7 @@
 #include "signorini/contact/active_set_update.hpp"
 #include "signorini/contact/backend_newton_matrix.hpp"
 #include "signorini/contact/contact_methods.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/contact/normal_rotation.hpp"
@@ -34,7 +35,6 @@
 #include "signorini/linalg/cholmod_solver.hpp"
 #include "signorini/linalg/dense_storage.hpp"
 #include "signorini/linalg/linear_solver.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 

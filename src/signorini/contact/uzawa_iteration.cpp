@@ -8,10 +8,10 @@
 #include <optional>
 
 #include "signorini/contact/active_set_update.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/generalized_newton.hpp"
 #include "signorini/contact/outer_iteration.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 
 namespace signorini {
 

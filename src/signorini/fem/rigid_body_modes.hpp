@@ -14,7 +14,7 @@ namespace signorini {
 /// the free dofs. With a range [first, end) of the free dofs, only its rows (a rank's, on the
 /// distributed path: ContactProblem::near_null_space); end < 0: to the last. The rotations are
 /// about `centre` where given (dim entries: a rank's part of a mesh takes the whole mesh's
-/// centroid, parallel/model_part.hpp), else about the mesh's centroid.
+/// centroid, problem/model_part.hpp), else about the mesh's centroid.
 Matrix rigid_body_modes(const Mesh& mesh, const DofMap& dofs, Index first = 0, Index end = -1,
                         const Eigen::VectorXd* centre = nullptr);
 

@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/interface/tangent_basis.hpp"
 
 namespace signorini {
 
@@ -104,7 +104,7 @@ std::string contact_csv(const ContactResult& result, const Model& model,
       const double nx = c.normals(0, j);
       const double ny = c.normals(1, j);
       // The initial gap: the contact set's g_j has the prescribed components of the node taken
-      // off (fem/contact_boundary.cpp); u_n here is the whole normal displacement.
+      // off (interface/contact_boundary.cpp); u_n here is the whole normal displacement.
       const double gap = c.gaps(j) + c.normals.col(j).dot(values.prescribed.col(j));
       const Eigen::Vector2d x = values.points.col(j);
       out += fmt::format(

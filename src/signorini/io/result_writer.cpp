@@ -4,14 +4,13 @@
 
 #include <algorithm>
 
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
 #include "signorini/io/atomic_file.hpp"
 #include "signorini/io/contact_csv.hpp"
 #include "signorini/io/solution_vtu.hpp"
 #include "signorini/io/summary_json.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
-#include "signorini/parallel/row_partition.hpp"
 
 namespace signorini {
 
@@ -43,9 +42,9 @@ std::string step_collection(int step, const std::string& extension) {
 }
 
 // This rank's piece `<stem>_<rank>.vtu` of a solution in `folder`: the cells that the rank
-// accounts for (Model::cell_rank, by its range of the free dofs: parallel/row_partition.hpp),
-// and on rank 0 the `<stem>.pvtu` that names the pieces. On a rank's part of the mesh
-// (Model::is_part) the cells of the part that the rank writes.
+// accounts for (Model::cell_rank, by its range of the free dofs: contact/distributed_engine.hpp,
+// partition_of), and on rank 0 the `<stem>.pvtu` that names the pieces. On a rank's part of the
+// mesh (Model::is_part) the cells of the part that the rank writes.
 void stage_pieces(StagedFiles& staged, const std::filesystem::path& folder, const std::string& stem,
                   const ContactResult& result, const Model& model, int rank, int ranks) {
   const std::vector<Index> starts = partition_of(model.problem, ranks);

@@ -3,9 +3,9 @@
 #include <map>
 
 #include "signorini/contact/friction_law.hpp"
-#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/nodal_stress.hpp"
+#include "signorini/interface/tangent_basis.hpp"
 #include "signorini/io/vtu_file.hpp"
 
 namespace signorini {

@@ -46,14 +46,4 @@ std::vector<Index> row_partition(Index n, int ranks, const std::vector<Index>& n
   return starts;
 }
 
-std::vector<Index> partition_of(const ContactProblem& problem, int ranks) {
-  if (problem.partitioned()) {
-    if (static_cast<int>(problem.row_starts.size()) != ranks + 1)
-      throw InputError(fmt::format("a problem partitioned for {} ranks, solved on {}",
-                                   problem.row_starts.size() - 1, ranks));
-    return problem.row_starts;
-  }
-  return row_partition(problem.A.rows(), ranks, problem.node_of_unknown, problem.contact.N);
-}
-
 }  // namespace signorini

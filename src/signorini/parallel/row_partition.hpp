@@ -9,7 +9,6 @@
 
 #include <vector>
 
-#include "signorini/contact/contact_problem.hpp"
 #include "signorini/core/types.hpp"
 
 namespace signorini {
@@ -22,10 +21,5 @@ namespace signorini {
 [[nodiscard]] std::vector<Index> row_partition(Index n, int ranks,
                                                const std::vector<Index>& node_of_unknown,
                                                const SparseMatrix& N);
-
-/// The partition of a distributed solve of `problem` over `ranks` ranks: the one it was
-/// assembled for (ContactProblem::row_starts) where it is partitioned, else row_partition of
-/// its unknowns by their nodes and rows of N. The one rule for the solvers and the result files.
-[[nodiscard]] std::vector<Index> partition_of(const ContactProblem& problem, int ranks);
 
 }  // namespace signorini

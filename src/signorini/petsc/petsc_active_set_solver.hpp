@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/contact/normal_rotation.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 
 namespace signorini {

@@ -15,8 +15,8 @@
 #include <malloc.h>  // malloc_trim
 #endif
 
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/parallel/row_partition.hpp"
 #include "signorini/petsc/petsc_check.hpp"
 
 namespace signorini::petsc {

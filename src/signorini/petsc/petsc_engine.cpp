@@ -72,9 +72,11 @@ std::string PetscEngine::description() const {
   return d;
 }
 
-std::vector<int> PetscEngine::partition(const NodeGraph& graph,
-                                        const ContactSolverOptions& options) {
-  petsc::insert_petsc_options(options);  // -mat_partitioning_type may name another partitioner
+std::vector<int> PetscEngine::partition(const NodeGraph& graph, const std::string& engine_options) {
+  // -mat_partitioning_type may name another partitioner.
+  if (!engine_options.empty())
+    petsc::check(PetscOptionsInsertString(nullptr, engine_options.c_str()),
+                 fmt::format("solver.petsc_options = \"{}\"", engine_options).c_str());
   const auto local = static_cast<PetscInt>(graph.last - graph.first);
   // MatCreateMPIAdj and the vertex weights take arrays from PetscMalloc, and free them.
   PetscInt* ia = nullptr;

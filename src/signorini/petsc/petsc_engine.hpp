@@ -1,5 +1,5 @@
 #pragma once
-// The distributed engine of a build with PETSc (parallel/distributed_engine.hpp,
+// The distributed engine of a build with PETSc (contact/distributed_engine.hpp,
 // docs/distributed.md): initialises MPI and PETSc, registers itself for the solver, and finalises
 // them when it goes. One per process, made by the main() of signorini-mpi and of the MPI tests.
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 
 namespace signorini {
 
@@ -35,7 +35,7 @@ class PetscEngine final : public DistributedEngine {
   /// ("average"); -mat_partitioning_type among the PETSc options chooses another ("current":
   /// the even split of the numbering).
   [[nodiscard]] std::vector<int> partition(const NodeGraph& graph,
-                                           const ContactSolverOptions& options) override;
+                                           const std::string& engine_options) override;
   void note_partition(const std::string& how) override { partitioner_ = how; }
   void sum(double* values, Index count) const override;
   [[nodiscard]] double max(double value) const override;

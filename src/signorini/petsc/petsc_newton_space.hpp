@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/petsc/node_padding.hpp"
 #include "signorini/petsc/petsc_algebra.hpp"
 #include "signorini/petsc/petsc_contact_multigrid.hpp"

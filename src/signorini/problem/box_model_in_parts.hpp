@@ -8,7 +8,7 @@
 // (problem/distributed_model.hpp), up to the numbering of the unknowns (rank by rank, each
 // rank's points in the box's order) and to rounding in the sums over the ranks.
 
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {

@@ -1,6 +1,6 @@
 #include "signorini/problem/contact_node_values.hpp"
 
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 
 namespace signorini {
 

@@ -7,12 +7,12 @@
 #include <stdexcept>
 
 #include "signorini/core/error.hpp"
-#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/interface/contact_boundary.hpp"
 #include "signorini/parallel/byte_message.hpp"
-#include "signorini/parallel/model_part.hpp"
 #include "signorini/problem/model_in_parts.hpp"
+#include "signorini/problem/model_part.hpp"
 
 namespace signorini {
 
@@ -376,7 +376,7 @@ Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
     const std::vector<char> bytes = engine.receive_from_root();
     ByteReader in(bytes);
     const NodeGraph graph = unpack_node_graph(in);
-    (void)engine.partition(graph, spec.solver);
+    (void)engine.partition(graph, spec.solver.petsc_options);
   }
   expect_root_went_on(engine);  // rank 0 built the whole model but the stiffness (or, in
                                 // parts, checked the cells)
@@ -462,7 +462,7 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
   {
     ScopedTimer t(timings, "assembly");
     // The columns of the rank's unknowns (by symmetry its rows), from the cells around its
-    // nodes: the part's first layer (parallel/model_part.hpp).
+    // nodes: the part's first layer (problem/model_part.hpp).
     std::vector<bool> owned(static_cast<std::size_t>(mesh.num_nodes()), false);
     for (Index v = 0; v < mesh.num_nodes(); ++v)
       for (int k = 0; k < mesh.dim(); ++k) {
@@ -472,7 +472,8 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
       }
     problem.A = assemble_stiffness(mesh, dofs, elasticity, &owned);
   }
-  const SolverPlan plan = plan_model_solver(spec, size, friction.get(), /*distributed=*/true);
+  problem.law = friction;  // (the problem owns its law: contact_law.hpp)
+  const SolverPlan plan = plan_model_solver(spec, size, /*distributed=*/true);
   if (uses_multigrid(plan.options))
     problem.near_null_space =
         rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &whole.centroid);

@@ -2,7 +2,7 @@
 // The model of a distributed run on more than one rank (docs/distributed.md, "The mesh in
 // parts"). Rank 0 alone reads the mesh and builds the whole model as a serial run does, except
 // the stiffness; it sends each other rank the node graph's rows to partition, then its part of
-// the model (parallel/model_part.hpp), then what every rank holds whole (the contact set, the
+// the model (problem/model_part.hpp), then what every rank holds whole (the contact set, the
 // partition, the whole mesh's facts). Every rank, rank 0 too, then builds its model from its
 // part: the stiffness columns and rigid-body modes of its unknowns; rank 0 lets the whole go.
 // A failure on rank 0 reaches the others as the one message that rank 0 reports.
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/parallel/node_partition.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/solver_plan.hpp"
@@ -65,8 +65,8 @@ class RootAnnouncements {
     const DistributedEngine& engine);
 
 /// In 2D, the nodes of each contact side in the order of its contact rows (the walk along its
-/// edges, fem/contact_boundary.hpp), by side; empty in 3D, where each part orders them itself.
-/// InputError for a side that is not one.
+/// edges, interface/contact_boundary.hpp), by side; empty in 3D, where each part orders them
+/// itself. InputError for a side that is not one.
 [[nodiscard]] std::map<std::string, std::vector<Index>> contact_orders(const ProblemSpec& spec,
                                                                        const Mesh& mesh);
 
@@ -84,10 +84,10 @@ class RootAnnouncements {
 [[nodiscard]] Model model_from_part(const ProblemSpec& spec, std::vector<char> part,
                                     std::vector<char> everyone, int rank, TimingTable timings);
 
-/// The solver plan of a model of this size (solver_plan.hpp), with the friction law and, on the
-/// distributed path, the reason that says so: rank 0's and every other rank's alike.
+/// The solver plan of a model of this size (solver_plan.hpp) and, on the distributed path, the
+/// reason that says so: rank 0's and every other rank's alike.
 [[nodiscard]] SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size,
-                                           const FrictionLaw* friction, bool distributed);
+                                           bool distributed);
 /// Whether the plan's Newton systems are solved by CG with multigrid (the rigid-body modes then
 /// go with the problem on the distributed path).
 [[nodiscard]] bool uses_multigrid(const ContactSolverOptions& options);

@@ -5,19 +5,19 @@
 #include <Eigen/LU>
 #include <algorithm>
 
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/core/peak_memory.hpp"
-#include "signorini/fem/contact_boundary.hpp"
-#include "signorini/fem/contact_tangents.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/free_rigid_motions.hpp"
 #include "signorini/fem/load_assembly.hpp"
 #include "signorini/fem/node_ordering.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/interface/contact_boundary.hpp"
+#include "signorini/interface/contact_tangents.hpp"
 #include "signorini/iterative/contact_prolongation.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/parallel/node_partition.hpp"
 #include "signorini/parallel/row_partition.hpp"
 #include "signorini/problem/box_model_in_parts.hpp"
@@ -322,10 +322,8 @@ bool uses_multigrid(const ContactSolverOptions& options) {
          options.linear.preconditioner == PreconditionerType::Multigrid;
 }
 
-SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size,
-                             const FrictionLaw* friction, bool distributed) {
+SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size, bool distributed) {
   SolverPlan plan = plan_solver(spec.solver, size);
-  if (friction != nullptr) plan.options.law = friction;
   // On the distributed path the plan's choice names how the Newton systems are solved there
   // (docs/distributed.md: a direct choice becomes MUMPS, the multigrid GAMG), not the path.
   if (distributed)
@@ -455,7 +453,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
       NodePartition p;
       {
         const NodeGraph own = send_node_graph_rows(NodeGraphRows(mesh, dofs), engine);
-        const std::vector<int> rank_of = engine.partition(own, spec.solver);
+        const std::vector<int> rank_of = engine.partition(own, spec.solver.petsc_options);
         p = partition_order(own, dofs, rank_of, engine.size());
       }
       parts->owe();
@@ -602,7 +600,8 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                          problem.contact.size(),
                          physical_memory_bytes(),
                          friction != nullptr};
-  const SolverPlan plan = plan_model_solver(spec, size, friction.get(), distributed);
+  problem.law = friction;  // (the problem owns its law: contact_law.hpp)
+  const SolverPlan plan = plan_model_solver(spec, size, distributed);
   MultigridHierarchy multigrid;
   const bool multigrid_cg = uses_multigrid(plan.options);
   if (distributed) {
@@ -713,8 +712,8 @@ Vector Model::free_loads(double factor, int step) const {
 Vector Model::contact_gaps(double factor, int step) const {
   const ContactSet& c = problem.contact;
   if (contact_gap_shift.size() == 0) return c.gaps;
-  // The gaps are g - nu . u_D at the node (fem/contact_boundary.cpp): at scaled u_D they grow by
-  // nu . (u_D - u_D scaled), a sum over the node's components (contact_gap_shift).
+  // The gaps are g - nu . u_D at the node (interface/contact_boundary.cpp): at scaled u_D they grow
+  // by nu . (u_D - u_D scaled), a sum over the node's components (contact_gap_shift).
   Vector gaps = c.gaps;
   const auto dim = contact_gap_shift.rows();
   for (Index j = 0; j < c.size(); ++j)

@@ -9,12 +9,12 @@
 
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/core/peak_memory.hpp"
-#include "signorini/fem/contact_boundary.hpp"
-#include "signorini/fem/contact_tangents.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
-#include "signorini/parallel/model_part.hpp"
+#include "signorini/interface/contact_boundary.hpp"
+#include "signorini/interface/contact_tangents.hpp"
 #include "signorini/problem/distributed_model.hpp"
+#include "signorini/problem/model_part.hpp"
 
 namespace signorini {
 
@@ -62,7 +62,7 @@ struct ContactRow {
   std::vector<std::pair<Index, double>> n;  // N's entries: free dof, value
   std::vector<int> groups;  // the load group of each component's prescribed value, or -1
   Vector shift;             // what prescribed values take off the gap, per component
-  // Friction's tangential rows (fem/contact_tangents.hpp): entries (dof * dim + k, value) of
+  // Friction's tangential rows (interface/contact_tangents.hpp): entries (dof * dim + k, value) of
   // the node's row for tangent k.
   std::vector<std::pair<Index, double>> t;
 };
@@ -313,7 +313,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   const std::vector<int> group_of_dof = load_group_of_dofs(groups, nodes * dim);
 
   // The contact rows of the rank's nodes, in the order in which the side's facets first name
-  // them (fem/contact_boundary.cpp): each rank has every facet around its nodes.
+  // them (interface/contact_boundary.cpp): each rank has every facet around its nodes.
   ScopedTimer contact_timer(timings, "contact set");
   // The initial interference allowed, from the whole mesh's extent as make_contact_set
   // measures it.
@@ -545,7 +545,8 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
                          contact_size,
                          values_of_ranks(engine, physical_memory_bytes()).front(),
                          friction != nullptr};
-  const SolverPlan plan = plan_model_solver(spec, size, friction.get(), /*distributed=*/true);
+  problem.law = friction;  // (the problem owns its law: contact_law.hpp)
+  const SolverPlan plan = plan_model_solver(spec, size, /*distributed=*/true);
   {
     ScopedTimer t(timings, "assembly");
     // The columns of the rank's unknowns (by symmetry its rows), from the cells around its

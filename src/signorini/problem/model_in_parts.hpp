@@ -12,16 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/parallel/byte_message.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {
 
 /// A rank's part of the mesh and its numbering: what the rank builds its model from.
 struct OwnPart {
-  /// The cells of two layers around the rank's nodes (parallel/model_part.hpp), in the whole
+  /// The cells of two layers around the rank's nodes (problem/model_part.hpp), in the whole
   /// mesh's order, with every boundary part of the whole mesh cut to them (empty where none
   /// lies in the part).
   Mesh mesh;

@@ -5,9 +5,9 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
-#include "signorini/contact/tangent_basis.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/interface/tangent_basis.hpp"
 
 namespace signorini {
 

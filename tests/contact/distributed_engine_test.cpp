@@ -1,7 +1,7 @@
-// The seam to a distributed engine (src/signorini/parallel/distributed_engine.hpp) in a program
+// The seam to a distributed engine (src/signorini/contact/distributed_engine.hpp) in a program
 // without one: the serial paths, and clear errors where the options ask for the distributed one.
 
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 
 #include <gtest/gtest.h>
 

@@ -18,7 +18,7 @@
 #include "signorini/contact/newton_space.hpp"
 #include "signorini/contact/solve_summary.hpp"
 #include "signorini/core/timing_table.hpp"
-#include "signorini/parallel/node_partition.hpp"
+#include "signorini/parallel/communicator.hpp"
 
 namespace signorini {
 
@@ -42,13 +42,9 @@ class DistributedActiveSetSolver : public ActiveSetSolver {
   [[nodiscard]] virtual std::string linear_solver_description() const = 0;
 };
 
-class DistributedEngine {
+/// A Communicator (parallel/communicator.hpp) that also makes the solver's distributed objects.
+class DistributedEngine : public Communicator {
  public:
-  virtual ~DistributedEngine() = default;
-  [[nodiscard]] virtual int rank() const = 0;
-  [[nodiscard]] virtual int size() const = 0;
-  /// "PETSc 3.18.5 on 2 MPI ranks".
-  [[nodiscard]] virtual std::string description() const = 0;
   /// The Newton space of `problem` (partitioned, or held whole by every rank), starting at x0,
   /// this rank's rows of the start (ContactProblem::held_rows; timed in `timings`).
   [[nodiscard]] virtual std::unique_ptr<DistributedNewtonSpace> newton_space(
@@ -59,41 +55,6 @@ class DistributedEngine {
   [[nodiscard]] virtual std::unique_ptr<DistributedActiveSetSolver> active_set_solver(
       const ContactProblem& problem, const ContactSolverOptions& options, const Vector& x0,
       TimingTable& timings) = 0;
-  /// The rank of every vertex of the mesh's node graph, from the engine's graph partitioner (a
-  /// collective call: each rank gives its rows of `graph`; `options` may name the partitioner).
-  [[nodiscard]] virtual std::vector<int> partition(const NodeGraph& graph,
-                                                   const ContactSolverOptions& options) = 0;
-  /// Says how the mesh's nodes were shared among the ranks where partition() did not do it
-  /// ("blocks of the box's cubes, 2 x 2 x 1"), for description().
-  virtual void note_partition(const std::string& how) = 0;
-  /// Sums `values` over the ranks, in place on every rank (a collective call).
-  virtual void sum(double* values, Index count) const = 0;
-  /// The largest of the ranks' `value`, on every rank (a collective call).
-  [[nodiscard]] virtual double max(double value) const = 0;
-  /// True on every rank when `flag` is true on any (a collective call).
-  [[nodiscard]] virtual bool any(bool flag) const = 0;
-  /// Rank 0's `bytes` on every rank (a collective call; the others' are replaced).
-  virtual void broadcast(std::vector<char>& bytes) const = 0;
-  /// From rank 0 to rank `to` (> 0), which takes them with receive_from_root(): what rank 0
-  /// alone holds, sent to each rank in turn (its part of the model, parallel/model_part.hpp).
-  virtual void send_from_root(int to, const std::vector<char>& bytes) const = 0;
-  [[nodiscard]] virtual std::vector<char> receive_from_root() const = 0;
-  /// Every rank's `bytes`, in the order of the ranks, on every rank (a collective call).
-  [[nodiscard]] virtual std::vector<std::vector<char>> allgather(
-      const std::vector<char>& bytes) const = 0;
-  /// Sends to_each[r] to rank r and returns what each rank sent to this one (a collective call;
-  /// to_each has one entry per rank, empty where nothing goes).
-  [[nodiscard]] virtual std::vector<std::vector<char>> exchange(
-      const std::vector<std::vector<char>>& to_each) const = 0;
-  /// Waits up to `seconds` for every rank to call meet_within too, and says whether all did. It
-  /// meets on a communicator of its own, so that a rank may call it while the others wait in
-  /// another collective call: a failing rank learns whether the others failed with it (then all
-  /// may end alike) or it failed alone (then it must abort them). A call that timed out leaves
-  /// its meeting open: this rank's next call waits for that same meeting.
-  [[nodiscard]] virtual bool meet_within(double seconds) const = 0;
-  /// Ends every rank's process with this exit status (a collective abort: a rank that fails
-  /// alone stops the others).
-  [[noreturn]] virtual void abort(int status) const = 0;
 };
 
 /// The registered engine, or null (a serial build or tool).
@@ -131,6 +92,12 @@ void set_distributed_engine(DistributedEngine* engine);
 [[nodiscard]] double load_norm(const ContactProblem& problem);
 /// Sums values over the ranks where the problem is partitioned (a collective call then).
 void sum_over_ranks(const ContactProblem& problem, double* values, Index count);
+
+/// The partition of a distributed solve of `problem` over `ranks` ranks: the one it was
+/// assembled for (ContactProblem::row_starts) where it is partitioned, else row_partition
+/// (parallel/row_partition.hpp) of its unknowns by their nodes and rows of N. The one rule for
+/// the solvers and the result files.
+[[nodiscard]] std::vector<Index> partition_of(const ContactProblem& problem, int ranks);
 
 /// Whether a solve with these options takes the distributed path: `distributed` = "petsc", or
 /// "auto" with an engine of more than one rank. Throws InputError for "petsc" without an engine

@@ -1,4 +1,4 @@
-#include "signorini/contact/tangent_basis.hpp"
+#include "signorini/interface/tangent_basis.hpp"
 
 #include <stdexcept>
 

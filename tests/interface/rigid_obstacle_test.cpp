@@ -3,7 +3,7 @@
 // cylinders (body outside or inside); descriptions for messages; and the problem file's
 // obstacle keys.
 
-#include "signorini/fem/rigid_obstacle.hpp"
+#include "signorini/interface/rigid_obstacle.hpp"
 
 #include <gtest/gtest.h>
 

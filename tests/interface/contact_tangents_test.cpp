@@ -1,7 +1,7 @@
 // The contact nodes' tangential directions and the operator T (src/signorini/fem/
 // contact_tangents.hpp), for friction.
 
-#include "signorini/fem/contact_tangents.hpp"
+#include "signorini/interface/contact_tangents.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,15 +1,15 @@
 #pragma once
-// From a mesh to the discrete contact boundary (contact/contact_set.hpp): the nodes of a
+// From a mesh to the discrete contact boundary (interface/contact_set.hpp): the nodes of a
 // boundary part in order, their normals, trapezoid weights and gaps, and N (method.md section 3).
 // The discretisation side of contact; the solvers in contact/ see only the ContactSet.
 
 #include <string>
 #include <vector>
 
-#include "signorini/contact/contact_set.hpp"
 #include "signorini/fem/dof_map.hpp"
-#include "signorini/fem/rigid_obstacle.hpp"
 #include "signorini/fem/vector_field.hpp"
+#include "signorini/interface/contact_set.hpp"
+#include "signorini/interface/rigid_obstacle.hpp"
 #include "signorini/mesh/mesh.hpp"
 
 namespace signorini {

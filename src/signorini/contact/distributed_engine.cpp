@@ -1,10 +1,11 @@
-#include "signorini/parallel/distributed_engine.hpp"
+#include "signorini/contact/distributed_engine.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "signorini/core/error.hpp"
+#include "signorini/parallel/row_partition.hpp"
 
 namespace signorini {
 
@@ -134,6 +135,16 @@ bool distributed_path(const ContactSolverOptions& options) {
       break;
   }
   return engine != nullptr && engine->size() > 1;
+}
+
+std::vector<Index> partition_of(const ContactProblem& problem, int ranks) {
+  if (problem.partitioned()) {
+    if (static_cast<int>(problem.row_starts.size()) != ranks + 1)
+      throw InputError(fmt::format("a problem partitioned for {} ranks, solved on {}",
+                                   problem.row_starts.size() - 1, ranks));
+    return problem.row_starts;
+  }
+  return row_partition(problem.A.rows(), ranks, problem.node_of_unknown, problem.contact.N);
 }
 
 }  // namespace signorini

@@ -1,8 +1,10 @@
 #pragma once
 // The discrete contact boundary (method.md section 3) as the solvers see it: contact nodes P,
 // their outward unit normals nu_j, nodal quadrature weights h_j and gaps g_j, and the sparse
-// operator N with (N x)_j = (x . nu)_j over the free dofs of node j. Pure algebra: it is built
-// from a mesh in fem/ (fem/contact_boundary.hpp), or by hand.
+// operator N with (N x)_j = (x . nu)_j over the free dofs of node j, and, with friction, the
+// tangential rows: the constraint rows of a contact interface. Pure algebra: it is built from a
+// mesh (interface/contact_boundary.hpp), or by hand. The law that acts on these rows (frictionless,
+// Tresca, Coulomb: contact/contact_law.hpp) is kept apart.
 
 #include <vector>
 
@@ -19,7 +21,7 @@ struct ContactSet {
   Vector gaps;     ///< g_j = g(x_j), the initial gap to the foundation
   SparseMatrix N;  ///< size() x num_free; (components size()) x num_free with friction
   /// Rows of N per node: 1 (the normal), or d for frictional contact, where rows d j + 1 ..
-  /// are node j's tangential directions (contact/friction_law.hpp, add_tangential_rows).
+  /// are node j's tangential directions (add_tangential_rows below).
   int components = 1;
   /// Frictional contact only: (d - 1) values per node, the tangential displacement (T x)_j from
   /// which slip is measured (the previous load step's); empty: 0.
@@ -35,5 +37,21 @@ struct ContactSet {
   [[nodiscard]] Index size() const { return static_cast<Index>(nodes.size()); }
   [[nodiscard]] Index num_movable() const;
 };
+
+/// B = [N; T] node by node: row d j is N's row j, rows d j + 1 .. d j + d - 1 the tangential
+/// rows (d - 1) j .. of T (interface/contact_tangents.hpp). Sets contact.components = d. Throws
+/// InputError when T does not have (d - 1) rows per node over N's columns.
+void add_tangential_rows(ContactSet& contact, const SparseMatrix& T);
+
+/// g^ per row of N: g_j on the normal rows, the slip origin (0 by default) on the tangential
+/// rows, so that the constraint rows read N x - g^ (the gaps alone for a frictionless set).
+[[nodiscard]] Vector row_offsets(const ContactSet& contact);
+
+/// h per row of N: node j's weight on each of its rows (the weights alone for a frictionless
+/// set).
+[[nodiscard]] Vector row_weights(const ContactSet& contact);
+
+/// The normal rows of a frictional N (rows d j): the frictionless N of the same set.
+[[nodiscard]] SparseMatrix normal_rows(const ContactSet& contact);
 
 }  // namespace signorini

@@ -1,4 +1,4 @@
-#include "signorini/parallel/model_part.hpp"
+#include "signorini/problem/model_part.hpp"
 
 #include <algorithm>
 

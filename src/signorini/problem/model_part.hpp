@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "signorini/contact/contact_set.hpp"
 #include "signorini/fem/dof_map.hpp"
+#include "signorini/interface/contact_set.hpp"
 #include "signorini/mesh/mesh.hpp"
 #include "signorini/mesh/node_cells.hpp"
 #include "signorini/parallel/byte_message.hpp"

@@ -1,4 +1,4 @@
-#include "signorini/fem/contact_tangents.hpp"
+#include "signorini/interface/contact_tangents.hpp"
 
 #include <Eigen/Geometry>
 #include <stdexcept>

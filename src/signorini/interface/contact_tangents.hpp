@@ -6,11 +6,11 @@
 // (nu_j, t_1, .., t_{d-1}).
 //
 // Used by friction (problem/model.cpp adds T to N: contact/friction_law.hpp); tested in
-// tests/fem/contact_tangents_test.cpp.
+// tests/interface/contact_tangents_test.cpp.
 
-#include "signorini/contact/contact_set.hpp"
-#include "signorini/contact/tangent_basis.hpp"
 #include "signorini/fem/dof_map.hpp"
+#include "signorini/interface/contact_set.hpp"
+#include "signorini/interface/tangent_basis.hpp"
 
 namespace signorini {
 

@@ -1,7 +1,7 @@
-// A rank's part of a mesh (parallel/model_part.hpp): its two layers of cells, its nodes with
+// A rank's part of a mesh (problem/model_part.hpp): its two layers of cells, its nodes with
 // the whole numbering, the stiffness columns it assembles, and the bytes that carry them.
 
-#include "signorini/parallel/model_part.hpp"
+#include "signorini/problem/model_part.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <numeric>
 
 #include "signorini/core/error.hpp"
-#include "signorini/fem/contact_boundary.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
 #include "signorini/fem/rigid_body_modes.hpp"
+#include "signorini/interface/contact_boundary.hpp"
 #include "signorini/mesh/box_mesh.hpp"
 #include "signorini/problem/model.hpp"
 

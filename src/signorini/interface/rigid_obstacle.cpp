@@ -1,4 +1,4 @@
-#include "signorini/fem/rigid_obstacle.hpp"
+#include "signorini/interface/rigid_obstacle.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "signorini/fem/contact_boundary.hpp"
+#include "signorini/interface/contact_boundary.hpp"
 
 #include <gtest/gtest.h>
 
