@@ -14,7 +14,7 @@ namespace signorini::app {
 int run_check(const CheckArguments& args) {
   const LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
   print_warnings(loaded);
-  const Model model = build_model_for(loaded);
+  const Model model = build_model_for(loaded, args.engine);
   print_warnings(model_warnings(loaded, model));
   // A solve on the GPU would stop at its first step without one: say so now (docs/gpu.md).
   if (loaded.spec.solver.device == DeviceKind::Cuda) {
@@ -30,8 +30,8 @@ int run_check(const CheckArguments& args) {
   fmt::print("solver path: {}\n", model.solver_reason);
   // Under mpirun the solve is distributed (docs/distributed.md): the plan above then says which
   // Newton-system solver the ranks share.
-  if (const DistributedEngine* engine = distributed_engine();
-      engine != nullptr && distributed_path(model.solver)) {
+  if (const DistributedEngine* engine = model.problem.engine;
+      engine != nullptr && distributed_path(model.problem, model.solver)) {
     const PetscMultigrid multigrid =
         resolved_petsc_multigrid(model.solver.petsc_multigrid, engine->size());
     fmt::print(

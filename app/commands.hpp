@@ -6,6 +6,10 @@
 
 #include "plotting.hpp"
 
+namespace signorini {
+class DistributedEngine;  // (contact/distributed_engine.hpp)
+}  // namespace signorini
+
 namespace signorini::app {
 
 /// Exit statuses, documented in `signorini --help` and docs/problem-format.md.
@@ -19,6 +23,9 @@ enum ExitStatus : int {
 };
 
 struct SolveArguments {
+  /// The program's distributed engine (signorini-mpi's, docs/distributed.md); null in the serial
+  /// tool.
+  DistributedEngine* engine = nullptr;
   std::string problem_file;
   std::string output_dir;
   std::vector<std::string> overrides;  ///< --set key=value
@@ -34,6 +41,7 @@ struct PlotArguments {
 };
 
 struct CheckArguments {
+  DistributedEngine* engine = nullptr;  ///< as SolveArguments::engine
   std::string problem_file;
   std::vector<std::string> overrides;
 };
@@ -68,8 +76,8 @@ struct BenchArguments {
 int run_bench(const BenchArguments& args);
 
 /// The whole tool: parses the command line, runs the command, returns the exit status (errors
-/// are one line on stderr). main.cpp and mpi_main.cpp call it.
-int run_tool(int argc, char** argv);
+/// are one line on stderr). main.cpp and mpi_main.cpp call it, the latter with its engine.
+int run_tool(int argc, char** argv, DistributedEngine* engine = nullptr);
 
 /// `signorini solve`: returns kSuccess or kNotConverged; throws InputError or NumericalError.
 int run_solve(const SolveArguments& args);

@@ -8,9 +8,9 @@
 
 namespace signorini::app {
 
-Model build_model_for(const LoadedProblem& loaded) {
+Model build_model_for(const LoadedProblem& loaded, DistributedEngine* engine) {
   try {
-    return build_model(loaded.spec);
+    return build_model(loaded.spec, engine);
   } catch (const InputError& e) {
     throw InputError(loaded.path + ": " + e.what());
   }

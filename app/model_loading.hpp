@@ -10,8 +10,8 @@
 
 namespace signorini::app {
 
-/// build_model(loaded.spec); an InputError gets the prefix "<file>: ".
-Model build_model_for(const LoadedProblem& loaded);
+/// build_model(loaded.spec, engine); an InputError gets the prefix "<file>: ".
+Model build_model_for(const LoadedProblem& loaded, DistributedEngine* engine = nullptr);
 
 /// "signorini: warning: <message>" on stderr for each of loaded.warnings (also with --quiet:
 /// stderr is for what needs attention).

@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
     // Only rank 0 prints and writes; the others' standard output goes nowhere, their errors
     // still reach stderr (tool.cpp).
     if (engine.rank() != 0 && std::freopen("/dev/null", "w", stdout) == nullptr) return 1;
-    return signorini::app::run_tool(argc, argv);
+    return signorini::app::run_tool(argc, argv, &engine);
   } catch (const std::exception& e) {
     fmt::print(stderr, "signorini: error: {}\n", e.what());
     return 1;

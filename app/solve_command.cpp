@@ -61,7 +61,7 @@ int solve(const SolveArguments& args, LogFormat format) {
   // On several MPI ranks (docs/distributed.md) every rank reads the problem and builds the model
   // and takes part in the solve; rank 0 alone reports and writes (the others' stdout goes
   // nowhere: mpi_main.cpp).
-  const DistributedEngine* engine = distributed_engine();
+  const DistributedEngine* engine = args.engine;
   const bool root = engine == nullptr || engine->rank() == 0;
   LoadedProblem loaded = read_problem_file(args.problem_file, args.overrides);
   ProblemSpec& spec = loaded.spec;
@@ -94,7 +94,7 @@ int solve(const SolveArguments& args, LogFormat format) {
   }
 
   progress.phase("building the model");
-  const Model model = build_model_for(loaded);
+  const Model model = build_model_for(loaded, args.engine);
   if (root) {
     const std::vector<std::string> more = model_warnings(loaded, model);
     print_warnings(more);

@@ -37,12 +37,11 @@ using namespace signorini::app;
 // itself, and ends them all.
 constexpr double kSecondsToMeet = 10.0;
 
-int fail(int status, const std::string& message) {
+int fail(int status, const std::string& message, const signorini::DistributedEngine* engine) {
   std::fflush(stdout);  // keep the order of what was printed when both go to one terminal
   std::string line = message;
   for (char& c : line)
     if (c == '\n' || c == '\r') c = ' ';
-  const signorini::DistributedEngine* engine = signorini::distributed_engine();
   const bool several = engine != nullptr && engine->size() > 1;
   const bool alone = several && !engine->meet_within(kSecondsToMeet);
   if (!several || alone || engine->rank() == 0)
@@ -70,7 +69,7 @@ const CLI::Validator kPositive(
 
 namespace signorini::app {
 
-int run_tool(int argc, char** argv) {
+int run_tool(int argc, char** argv, DistributedEngine* engine) {
   CLI::App app{
       "Contact of a linear elastic body with rigid obstacles (the Signorini problem, "
       "frictionless or with Tresca or Coulomb friction), in 2D and 3D, by the "
@@ -83,6 +82,7 @@ int run_tool(int argc, char** argv) {
   app.require_subcommand(0, 1);
 
   SolveArguments solve;
+  solve.engine = engine;
   CLI::App* solve_cmd = app.add_subcommand("solve", "Solve a problem file and write the results");
   solve_cmd
       ->add_option("PROBLEM", solve.problem_file,
@@ -128,6 +128,7 @@ int run_tool(int argc, char** argv) {
       ->needs(plot_flag);
 
   CheckArguments check;
+  check.engine = engine;
   CLI::App* check_cmd =
       app.add_subcommand("check", "Validate a problem file and build its model, without solving");
   check_cmd->add_option("PROBLEM", check.problem_file, "Problem file (TOML)")->required();
@@ -230,7 +231,7 @@ int run_tool(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    return fail(kBadInput, e.what());
+    return fail(kBadInput, e.what(), engine);
   }
 
   try {
@@ -242,24 +243,24 @@ int run_tool(int argc, char** argv) {
     if (*check_cmd) return run_check(check);
     // On several MPI ranks only solve and check take part (docs/distributed.md): the figures
     // and the benchmarks are one process's work, and N copies would race for the same files.
-    if (const signorini::DistributedEngine* engine = signorini::distributed_engine();
-        engine != nullptr && engine->size() > 1 && (*plot_cmd || *bench_cmd))
+    if (engine != nullptr && engine->size() > 1 && (*plot_cmd || *bench_cmd))
       return fail(kBadInput,
                   fmt::format("signorini {} runs in one process, not on {} MPI ranks: run it "
                               "without mpirun (solve and check run distributed)",
-                              *plot_cmd ? "plot" : "bench", engine->size()));
+                              *plot_cmd ? "plot" : "bench", engine->size()),
+                  engine);
     if (*plot_cmd) return run_plot(plot);
     if (*bench_cmd) return run_bench(bench);
-    return fail(kBadInput,
-                "expected a command: solve, check, plot or bench (see signorini --help)");
+    return fail(kBadInput, "expected a command: solve, check, plot or bench (see signorini --help)",
+                engine);
   } catch (const signorini::InputError& e) {
-    return fail(kBadInput, e.what());
+    return fail(kBadInput, e.what(), engine);
   } catch (const signorini::NumericalError& e) {
-    return fail(kNumericalError, std::string("numerical failure: ") + e.what());
+    return fail(kNumericalError, std::string("numerical failure: ") + e.what(), engine);
   } catch (const std::bad_alloc&) {
-    return fail(kInternalError, "out of memory");
+    return fail(kInternalError, "out of memory", engine);
   } catch (const std::exception& e) {
-    return fail(kInternalError, std::string("internal error: ") + e.what());
+    return fail(kInternalError, std::string("internal error: ") + e.what(), engine);
   }
 }
 

@@ -21,10 +21,9 @@ ContactResult solve_distributed(const Model& model) {
 }
 
 ContactResult solve_serial(const Model& model) {
-  const testing::WithoutEngine serial;
   ContactSolverOptions o = model.solver;
   o.distributed = DistributedMode::Auto;
-  return solve_contact(model.problem, o, &model.multigrid);
+  return solve_contact(testing::without_engine(model.problem), o, &model.multigrid);
 }
 
 void expect_close(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double scale,
@@ -36,7 +35,7 @@ void expect_close(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double sca
 void expect_serial_results(const ProblemSpec& spec) {
   const Model part = testing::distributed_model(spec);
   const Model whole = testing::serial_model(spec);
-  const DistributedEngine& engine = *distributed_engine();
+  const DistributedEngine& engine = testing::mpi_engine();
   EXPECT_EQ(part.is_part(), engine.size() > 1);
   EXPECT_EQ(part.num_dofs(), whole.dofs.num_dofs());
 

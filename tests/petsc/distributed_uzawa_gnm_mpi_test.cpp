@@ -52,7 +52,7 @@ void expect_own_columns(const ProblemSpec& spec) {
   const Model part = testing::distributed_model(spec);
   const Model whole = testing::serial_model(spec);
   ASSERT_TRUE(part.problem.partitioned());
-  const DistributedEngine& engine = *distributed_engine();
+  const DistributedEngine& engine = testing::mpi_engine();
   ASSERT_EQ(part.problem.row_starts.size(), static_cast<std::size_t>(engine.size()) + 1);
   const Index lo = part.problem.row_starts[static_cast<std::size_t>(engine.rank())];
   const Index hi = part.problem.row_starts[static_cast<std::size_t>(engine.rank()) + 1];
@@ -240,6 +240,7 @@ TEST(DistributedUzawaGnm, AWholeProblemGivesTheSerialAnswersToo) {
   ASSERT_FALSE(whole.problem.partitioned());
   whole.problem.near_null_space = rigid_body_modes(whole.mesh, whole.dofs);
   whole.problem.node_of_unknown = free_dof_nodes(whole.dofs);
+  whole.problem.engine = &testing::mpi_engine();  // (solved on the ranks too)
   expect_same_solve(testing::distributed_solve(whole, whole.solver),
                     testing::serial_solve(whole, whole.solver));
   ContactSolverOptions ssn = whole.solver;
@@ -329,14 +330,14 @@ TEST(DistributedUzawaGnm, DefaultMultigridIsTheSerialLevelsOnOneRankAndGamgOnSev
   const ContactResult distributed = testing::distributed_solve(model, model.solver);
   const Model serial_model = testing::serial_model(spec);
   expect_same_solve(distributed, testing::serial_solve(serial_model, serial_model.solver));
-  const char* expected = distributed_engine()->size() == 1
+  const char* expected = testing::mpi_engine().size() == 1
                              ? "smoothed aggregation on each rank's nodes"
                              : "PC mg (GAMG's levels, kept";
   EXPECT_NE(distributed.summary.device.find(expected), std::string::npos)
       << distributed.summary.device;
   // On one rank A and H are products on the serial tool's upper node blocks.
   EXPECT_EQ(distributed.summary.device.find("A and H in upper node blocks") != std::string::npos,
-            distributed_engine()->size() == 1)
+            testing::mpi_engine().size() == 1)
       << distributed.summary.device;
 }
 

@@ -6,6 +6,7 @@
 
 #include <chrono>
 
+#include "mpi_test_problems.hpp"
 #include "signorini/contact/distributed_engine.hpp"
 
 namespace signorini {
@@ -16,7 +17,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 TEST(MeetWithin, AllRanksMeetAtOnce) {
-  const DistributedEngine& engine = *distributed_engine();
+  const DistributedEngine& engine = testing::mpi_engine();
   const auto start = std::chrono::steady_clock::now();
   EXPECT_TRUE(engine.meet_within(60.0));
   EXPECT_LT(seconds_since(start), 30.0);
@@ -24,7 +25,7 @@ TEST(MeetWithin, AllRanksMeetAtOnce) {
 }
 
 TEST(MeetWithin, ARankAloneTimesOutWhileTheOthersWaitInACollective) {
-  const DistributedEngine& engine = *distributed_engine();
+  const DistributedEngine& engine = testing::mpi_engine();
   if (engine.size() == 1) {
     EXPECT_TRUE(engine.meet_within(0.0));  // alone and all: it meets itself
     return;

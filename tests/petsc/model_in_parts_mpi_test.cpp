@@ -69,7 +69,7 @@ uzawa_tolerance = 1e-10
 }
 
 void expect_whole_model_in_parts(const ProblemSpec& spec, bool smaller = false) {
-  const DistributedEngine& engine = *distributed_engine();
+  const DistributedEngine& engine = testing::mpi_engine();
   const Model part = testing::distributed_model(spec);
   const Model whole = testing::serial_model(spec);
   if (engine.size() == 1) {
@@ -264,7 +264,7 @@ TEST(BoxInParts, GraphPartitionIsKeptOnRequest) {
   spec.solver.partition = PartitionMode::Graph;
   const Model part = testing::distributed_model(spec);
   EXPECT_TRUE(part.node_ranks.empty());
-  EXPECT_EQ(part.is_part(), distributed_engine()->size() > 1);
+  EXPECT_EQ(part.is_part(), testing::mpi_engine().size() > 1);
 }
 
 // A traction that is not finite on part of one side: the ranks whose parts have it find it,

@@ -6,11 +6,21 @@
 
 #include <cstdio>
 
+#include "mpi_test_problems.hpp"
 #include "signorini/petsc/petsc_engine.hpp"
+
+namespace {
+signorini::DistributedEngine* the_engine = nullptr;
+}  // namespace
+
+signorini::DistributedEngine& signorini::testing::mpi_engine() {
+  return *the_engine;
+}
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   signorini::PetscEngine engine;
+  the_engine = &engine;
   if (engine.rank() != 0 && std::freopen("/dev/null", "w", stdout) == nullptr) return 1;
   const int status = RUN_ALL_TESTS();
   // Every rank's verdict: a test that failed on one rank fails the run on all.

@@ -19,39 +19,34 @@
 
 namespace signorini::testing {
 
-/// Unregisters the engine for its lifetime (a serial build or solve), restoring it even when
-/// that throws.
-class WithoutEngine {
- public:
-  WithoutEngine() : engine_(distributed_engine()) { set_distributed_engine(nullptr); }
-  ~WithoutEngine() { set_distributed_engine(engine_); }
-  WithoutEngine(const WithoutEngine&) = delete;
-  WithoutEngine& operator=(const WithoutEngine&) = delete;
-
- private:
-  DistributedEngine* engine_;
-};
+/// The engine of the test program's ranks (mpi_test_main.cpp).
+DistributedEngine& mpi_engine();
 
 /// The model as the distributed path builds it: partitioned over the ranks.
 inline Model distributed_model(ProblemSpec spec) {
   spec.solver.distributed = DistributedMode::Petsc;
+  return build_model(spec, &mpi_engine());
+}
+
+/// The model as a serial run builds it (no engine: this rank alone).
+inline Model serial_model(ProblemSpec spec) {
+  spec.solver.distributed = DistributedMode::Auto;
   return build_model(spec);
 }
 
-/// The model as a serial run builds it.
-inline Model serial_model(ProblemSpec spec) {
-  const WithoutEngine serial;
-  spec.solver.distributed = DistributedMode::Auto;
-  return build_model(spec);
+/// `model`'s problem without its engine: a serial solve on this rank alone.
+inline ContactProblem without_engine(const ContactProblem& problem) {
+  ContactProblem serial = problem;
+  serial.engine = nullptr;
+  return serial;
 }
 
 /// A serial solve on this rank alone. Its u is the mesh's whole displacement
 /// (DofMap::expand): the distributed path numbers the unknowns rank by rank (the partition), the
 /// serial one in another order, and the two compare node by node.
 inline ContactResult serial_solve(const Model& model, ContactSolverOptions o) {
-  const WithoutEngine serial;
   o.distributed = DistributedMode::Auto;
-  ContactResult r = solve_contact(model.problem, o, &model.multigrid);
+  ContactResult r = solve_contact(without_engine(model.problem), o, &model.multigrid);
   r.u = model.dofs.expand(r.u);
   return r;
 }
@@ -79,7 +74,7 @@ inline void expect_distributed_agrees(const ContactResult& distributed,
   ASSERT_TRUE(distributed.summary.converged()) << distributed.summary.message;
   ASSERT_TRUE(serial.summary.converged()) << serial.summary.message;
   EXPECT_EQ(distributed.summary.path, SolvePath::Distributed);
-  EXPECT_EQ(distributed.summary.ranks, distributed_engine()->size());
+  EXPECT_EQ(distributed.summary.ranks, mpi_engine().size());
   EXPECT_LT(relative_difference_where_known(distributed.u, serial.u), 1e-8);
   EXPECT_LT(relative_difference(distributed.l, serial.l), 1e-8);
   EXPECT_LT(distributed.summary.kkt.max(), 1e-8);
@@ -111,7 +106,7 @@ inline ContactResult distributed_solve(const Model& model, ContactSolverOptions 
 /// Every node and every cell of the whole mesh accounted for by exactly one rank (Model::
 /// node_rank, cell_rank), which has it in its part (a collective call).
 inline void expect_every_node_and_cell_once(const Model& part, const Model& whole) {
-  const DistributedEngine& engine = *distributed_engine();
+  const DistributedEngine& engine = mpi_engine();
   double counts[2] = {0.0, 0.0};
   for (Index v = 0; v < part.mesh.num_nodes(); ++v)
     if (part.node_rank(v) == engine.rank()) counts[0] += 1.0;
@@ -134,7 +129,7 @@ inline void expect_one_message_on_every_rank(const ProblemSpec& spec, const std:
   }
   EXPECT_NE(message.find(expected), std::string::npos) << message;
   const std::vector<std::vector<char>> all =
-      distributed_engine()->allgather(std::vector<char>(message.begin(), message.end()));
+      mpi_engine().allgather(std::vector<char>(message.begin(), message.end()));
   for (const std::vector<char>& m : all) EXPECT_EQ(std::string(m.begin(), m.end()), message);
 }
 

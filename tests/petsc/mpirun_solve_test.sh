@@ -233,13 +233,19 @@ if ldd "$tool" | grep -q libasan; then
   memory_ranks=()
   echo "skip: a rank out of memory (ulimit -v), under AddressSanitizer"
 fi
+# On a loaded machine the cap can stop rank 1 already in MPI_Init (PMIx cannot start its
+# thread): that start failure is not what is tested here, and the run is tried again (3 times).
 for ranks in "${memory_ranks[@]}"; do
-  status=0
-  "$mpirun" --allow-run-as-root --oversubscribe -n "$ranks" bash -c \
-    'if [ "${OMPI_COMM_WORLD_RANK:-0}" = 1 ]; then ulimit -v 300000; fi; exec "$0" "$@"' \
-    "$tool" solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi" --set mesh.nx=40 \
-    --set mesh.ny=40 --set mesh.nz=20 --set 'mesh.cell="hex8"' > "$tmp/stdout" 2> "$tmp/stderr" ||
-    status=$?
+  for attempt in 1 2 3; do
+    status=0
+    "$mpirun" --allow-run-as-root --oversubscribe -n "$ranks" bash -c \
+      'if [ "${OMPI_COMM_WORLD_RANK:-0}" = 1 ]; then ulimit -v 300000; fi; exec "$0" "$@"' \
+      "$tool" solve "$examples/box_on_sphere.toml" -q -o "$tmp/box_mpi" --set mesh.nx=40 \
+      --set mesh.ny=40 --set mesh.nz=20 --set 'mesh.cell="hex8"' > "$tmp/stdout" \
+      2> "$tmp/stderr" || status=$?
+    grep -q "pmix_init failed\|before MPI_INIT completed" "$tmp/stderr" || break
+    echo "note: rank 1 could not start MPI under the cap (attempt $attempt)"
+  done
   [ "$status" -eq 4 ] &&
     [ "$(grep -c "signorini: error:" "$tmp/stderr")" -eq 1 ] &&
     grep -q "signorini: error: rank 1: numerical failure: PETSc: .*out of memory" "$tmp/stderr" ||

@@ -30,7 +30,7 @@ Index sum_over_ranks(Index value) {
 TEST(NodePartition, BalancesTheUnknownsAndCutsLessThanTheNumbering) {
   const ProblemSpec spec = hertz_ball();
   const Model serial = testing::serial_model(spec);
-  DistributedEngine& engine = *distributed_engine();
+  DistributedEngine& engine = testing::mpi_engine();
   const int ranks = engine.size();
   const NodeGraph graph = node_graph(serial.mesh, serial.dofs, engine.rank(), ranks);
   ASSERT_GT(graph.vertices, 100);
@@ -89,7 +89,7 @@ TEST(NodePartition, BalancesTheUnknownsAndCutsLessThanTheNumbering) {
 TEST(NodePartition, CurrentKeepsTheNumberingsSplit) {
   const ProblemSpec spec = hertz_ball();
   const Model serial = testing::serial_model(spec);
-  DistributedEngine& engine = *distributed_engine();
+  DistributedEngine& engine = testing::mpi_engine();
   const NodeGraph graph = node_graph(serial.mesh, serial.dofs, engine.rank(), engine.size());
   ContactSolverOptions o = spec.solver;
   o.petsc_options = "-mat_partitioning_type current";

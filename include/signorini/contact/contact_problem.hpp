@@ -11,6 +11,8 @@
 
 namespace signorini {
 
+class DistributedEngine;  // (contact/distributed_engine.hpp, in a build with PETSc)
+
 struct ContactProblem {
   SparseMatrix A;  ///< reduced stiffness, SPD, both triangles stored
   Vector b;        ///< load vector (a partitioned problem: this rank's rows only)
@@ -40,6 +42,10 @@ struct ContactProblem {
   /// [first_row(), end_row()) and the other free dofs of the nodes of its part of the mesh, so
   /// that no rank holds a vector of all n unknowns. Empty: the solution has all n.
   std::vector<Index> solution_unknowns = {};
+  /// The engine of the distributed run this problem belongs to (its ranks and the solver's
+  /// distributed objects, passed along as PETSc passes a communicator): null in a serial
+  /// program. Not owned; build_model sets it from its argument. A partitioned problem needs it.
+  DistributedEngine* engine = nullptr;
 
   [[nodiscard]] bool partitioned() const { return !row_starts.empty(); }
   /// The solution holds solution_unknowns only (the same on every rank: a branch on it is

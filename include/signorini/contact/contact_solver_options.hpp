@@ -169,8 +169,8 @@ struct ContactSolverOptions {
   bool automatic_path = true;
   /// Auto: the PETSc path (docs/distributed.md) where the tool runs on more than one MPI rank
   /// (a build with PETSc, started by mpirun), the serial paths otherwise. Petsc: the PETSc path
-  /// even on one rank (an InputError where no PETSc engine is registered). Off: never (an
-  /// InputError on more than one rank).
+  /// even on one rank (an InputError where the model was built without a PETSc engine). Off:
+  /// never (an InputError on more than one rank).
   DistributedMode distributed = DistributedMode::Auto;
   /// Auto: on more than one rank a generated box is made in blocks, each rank its own
   /// (problem/box_model_in_parts.hpp); any other mesh is read by rank 0, its nodes partitioned

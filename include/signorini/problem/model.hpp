@@ -151,8 +151,10 @@ struct Model {
 
 /// Throws InputError on anything unusable: unknown boundary names, rigid motions that the clamps
 /// leave free (named), bad material, non-finite loads or gaps, an empty contact boundary, a
-/// traction on the contact boundary.
-Model build_model(const ProblemSpec& spec);
+/// traction on the contact boundary. `engine`: the distributed engine of the program's ranks
+/// (docs/distributed.md; null in a serial program), which every rank passes alike; the model's
+/// problem keeps it (ContactProblem::engine), for its solver and its result files.
+Model build_model(const ProblemSpec& spec, DistributedEngine* engine = nullptr);
 
 /// Builds the dof numbering for a mesh, clamps and prescribed displacements (exposed for tests
 /// and other drivers). Clamps win over displacements at a dof both hold; among the displacements

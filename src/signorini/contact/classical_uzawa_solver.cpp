@@ -133,7 +133,8 @@ void run_classical_uzawa(const ContactProblem& problem, const ContactSolverOptio
 }  // namespace
 
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
-                                    const ContactSolverOptions& options, const MethodStart& start) {
+                                    const ContactSolverOptions& options, const MethodStart& start,
+                                    const MultigridHierarchy* /*multigrid*/) {
   ContactResult out;
   const ContactSet& c = problem.contact;
   auto solver = make_linear_solver(options.linear);
@@ -156,7 +157,8 @@ ContactResult solve_classical_uzawa(const ContactProblem& problem,
 
 ContactResult solve_classical_uzawa_distributed(const ContactProblem& problem,
                                                 const ContactSolverOptions& options,
-                                                const MethodStart& start) {
+                                                const MethodStart& start,
+                                                const MultigridHierarchy* /*multigrid*/) {
   return run_on_distributed_space(
       problem, options, start, [&](DistributedNewtonSpace& space, ContactResult& out) {
         // H = A: no row active (a Newton matrix with no contact terms). Each solve starts from

@@ -31,12 +31,16 @@ struct MethodStart {
   }
 };
 
-// The methods themselves; ContactSolver calls one and completes its summary.
+// The methods themselves; ContactSolver calls one through its table (method_table.hpp) and
+// completes its summary. Each takes the multigrid levels of the backend path's preconditioner,
+// which only the backend's methods use, so that all have the table's one shape.
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
-                              const MethodStart& start = {});
+                              const MethodStart& start = {},
+                              const MultigridHierarchy* multigrid = nullptr);
 ContactResult solve_classical_uzawa(const ContactProblem& problem,
                                     const ContactSolverOptions& options,
-                                    const MethodStart& start = {});
+                                    const MethodStart& start = {},
+                                    const MultigridHierarchy* multigrid = nullptr);
 /// A method's loop on the registered distributed engine's Newton space (made from start's rows):
 /// `method` runs it and fills out's summary; then u is the rank's solution and the summary says
 /// where the solve ran.
@@ -47,13 +51,15 @@ ContactResult run_on_distributed_space(
 /// with no node active (its matrix A, its KSP), step (ii) on every rank alike; u as Uzawa-GNM's.
 ContactResult solve_classical_uzawa_distributed(const ContactProblem& problem,
                                                 const ContactSolverOptions& options,
-                                                const MethodStart& start);
+                                                const MethodStart& start,
+                                                const MultigridHierarchy* multigrid = nullptr);
 /// Uzawa-GNM on the registered distributed engine (contact/distributed_engine.hpp): the same
 /// loop, its vectors and Newton systems PETSc's, spread over the MPI ranks; u gathered on every
 /// rank, or on the ranks' parts of the mesh each rank's part (ContactProblem::solution_unknowns).
 ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
                                           const ContactSolverOptions& options,
-                                          const MethodStart& start);
+                                          const MethodStart& start,
+                                          const MultigridHierarchy* multigrid = nullptr);
 /// uzawa_gnm with conjugate gradients on a backend (CPU or GPU, docs/gpu.md), used when
 /// uses_backend_path(options). `multigrid`: the levels when the preconditioner is multigrid
 /// (null otherwise).
@@ -69,12 +75,14 @@ ContactResult solve_friction_semismooth_newton(const ContactProblem& problem,
 /// Starts from the active set {l_j > 0} of start.l (empty: no node active).
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
                                       const ContactSolverOptions& options,
-                                      const MethodStart& start = {});
+                                      const MethodStart& start = {},
+                                      const MultigridHierarchy* multigrid = nullptr);
 /// Semismooth Newton on the registered distributed engine: the same loop, its Newton steps
 /// solved by PETSc with the active normal displacements eliminated; u as Uzawa-GNM's.
 ContactResult solve_semismooth_newton_distributed(const ContactProblem& problem,
                                                   const ContactSolverOptions& options,
-                                                  const MethodStart& start);
+                                                  const MethodStart& start,
+                                                  const MultigridHierarchy* multigrid = nullptr);
 /// semismooth_newton on a backend (projected CG, projected_active_set_solver.hpp), used when
 /// uses_backend_path(options).
 ContactResult solve_semismooth_newton_on_backend(const ContactProblem& problem,

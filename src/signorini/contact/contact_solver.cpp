@@ -15,6 +15,7 @@
 #include "signorini/contact/distributed_engine.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/kkt_residuals.hpp"
+#include "signorini/contact/method_table.hpp"
 #include "signorini/contact/modified_lagrangian.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/interface/tangent_basis.hpp"
@@ -28,20 +29,7 @@ double relative_change(const Vector& l_new, const Vector& l_old) {
   return diff == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
 }
 
-namespace {
-ContactResult run_method(const ContactProblem& problem, const ContactSolverOptions& options,
-                         const MethodStart& start) {
-  switch (options.method) {
-    case ContactMethod::UzawaGnm:
-      return solve_uzawa_gnm(problem, options, start);
-    case ContactMethod::ClassicalUzawa:
-      return solve_classical_uzawa(problem, options, start);
-    case ContactMethod::SemismoothNewton:
-      return solve_semismooth_newton(problem, options, start);
-  }
-  throw InputError("unknown contact method");
-}
-}  // namespace
+namespace {}  // namespace
 
 namespace {
 
@@ -132,6 +120,7 @@ struct ContactSolver::Impl {
   ContactSolverOptions options;  // r resolved
   double r_auto = 0.0;
   SolvePath path = SolvePath::CondensedDirect;
+  const MethodRow* row = nullptr;  // what runs the solves (method_table.hpp)
   std::unique_ptr<CondensedProblem> condensed;
   TimingTable setup_timings;          // "contact solve" of the set-up, condensation phases
   bool setup_reported = false;        // the set-up's time went into a solve's "contact solve"
@@ -151,8 +140,8 @@ struct ContactSolver::Impl {
 
 namespace {
 
-SolvePath choose_path(const ContactSolverOptions& o) {
-  if (distributed_path(o)) return SolvePath::Distributed;
+SolvePath choose_path(const ContactProblem& problem, const ContactSolverOptions& o) {
+  if (distributed_path(problem, o)) return SolvePath::Distributed;
   if (uses_backend_path(o)) return SolvePath::Backend;
   if (o.schur_complement && o.linear.type == LinearSolverType::Cholmod)
     return SolvePath::CondensedDirect;
@@ -178,37 +167,20 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   // same value (method.md section 7).
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
-  m.path = choose_path(m.options);
+  m.path = choose_path(problem, m.options);
   const ContactLaw& law = contact_law(problem);
   if (problem.contact.components != law.components())
     throw InputError(fmt::format(
         "the contact law \"{}\" has {} value(s) per contact node, the contact set {} row(s) of "
         "N per node",
         law.name(), law.components(), problem.contact.components));
-  if (m.options.method == ContactMethod::SemismoothNewton && &law != &unilateral_contact_law() &&
-      law.components() == 1)
-    throw InputError(fmt::format(
-        "solver.method = \"semismooth_newton\" solves the unilateral contact law only, not "
-        "\"{}\"; use \"uzawa_gnm\"",
-        law.name()));
-  if (law.components() > 1) {
-    // Friction (method.md, "Friction"): Uzawa-GNM and classical Uzawa run condensed onto the
-    // contact nodes' free dofs (CondensedProblem). The backend's and the distributed Newton
-    // matrices take the nodes' blocks for Uzawa-GNM; semismooth Newton's friction solver
-    // factorises the whole KKT system (the full problem's, in one process).
-    if (m.path == SolvePath::CondensedDirect && m.options.method == ContactMethod::SemismoothNewton)
-      m.path = SolvePath::SparseDirect;
-    if ((m.path == SolvePath::Distributed && m.options.method == ContactMethod::SemismoothNewton) ||
-        (m.path == SolvePath::Backend && m.options.method != ContactMethod::UzawaGnm))
-      throw InputError(
-          fmt::format("the contact law \"{}\" (friction) with solver.method = \"{}\" runs {}; use "
-                      "\"uzawa_gnm\"{} there (docs/solvers.md)",
-                      law.name(), enum_to_string(kContactMethodNames, m.options.method),
-                      m.path == SolvePath::Distributed
-                          ? "in one process, not on the distributed path (solver.distributed)"
-                          : "on the host's sparse paths, not on the multigrid or GPU path",
-                      m.path == SolvePath::Distributed ? " or \"classical_uzawa\"" : ""));
-  }
+  // Friction (method.md, "Friction"): Uzawa-GNM and classical Uzawa run condensed onto the
+  // contact nodes' free dofs (CondensedProblem); the backend's and the distributed Newton
+  // matrices take the nodes' blocks for Uzawa-GNM; semismooth Newton's friction solver factorises
+  // the whole KKT system (the full problem's, in one process). The table says it all.
+  const LawKind kind = law_kind(law);
+  m.path = table_path(m.path, m.options.method, kind);
+  m.row = &method_row(m.path, m.options.method, kind, law.name(), m.options);
   if (problem.partitioned() && m.path != SolvePath::Distributed)
     throw InputError(
         "a partitioned contact problem (each rank holding its part of A) is solved on the "
@@ -313,30 +285,13 @@ ContactResult ContactSolver::solve() {
   {
     TimingTable solve_time;
     ScopedTimer timer(solve_time, "contact solve");
-    switch (m.path) {
-      case SolvePath::Distributed:
-        result = options.method == ContactMethod::SemismoothNewton
-                     ? solve_semismooth_newton_distributed(problem, options, start)
-                 : options.method == ContactMethod::ClassicalUzawa
-                     ? solve_classical_uzawa_distributed(problem, options, start)
-                     : solve_uzawa_gnm_distributed(problem, options, start);
-        break;
-      case SolvePath::Backend:
-        result = options.method == ContactMethod::SemismoothNewton
-                     ? solve_semismooth_newton_on_backend(problem, options, start, m.multigrid)
-                     : solve_uzawa_gnm_on_backend(problem, options, start, m.multigrid);
-        break;
-      case SolvePath::CondensedDirect: {
-        ContactSolverOptions reduced_options = options;
-        reduced_options.linear.type = LinearSolverType::Dense;
-        result = run_method(m.condensed->reduced(), reduced_options, start);
-        result.u = m.condensed->expand(result.u);
-        break;
-      }
-      case SolvePath::SparseDirect:
-      case SolvePath::Iterative:
-        result = run_method(problem, options, start);
-        break;
+    if (m.path == SolvePath::CondensedDirect) {
+      ContactSolverOptions reduced_options = options;
+      reduced_options.linear.type = LinearSolverType::Dense;
+      result = m.row->run(m.condensed->reduced(), reduced_options, start, m.multigrid);
+      result.u = m.condensed->expand(result.u);
+    } else {
+      result = m.row->run(problem, options, start, m.multigrid);
     }
     timer.stop();
     // The set-up's time goes into the first solve's "contact solve" (the one-shot report is the

@@ -160,21 +160,12 @@ void validate(const ContactSolverOptions& o) {
   check_ranges(linear_solver_option_table(), o.linear);
   validate(o.linear);
   // The backend path (docs/gpu.md) runs the paper's method with conjugate gradients only.
-  const bool backend_path = uses_backend_path(o);
   if (o.device == DeviceKind::Cuda && o.linear.type != LinearSolverType::ConjugateGradient)
     throw InputError(fmt::format(
         "solver.device = \"cuda\" with solver.linear.type = \"{}\": the GPU solver is "
         "iterative; set solver.linear.type = \"cg\" (and solver.linear.preconditioner = "
         "\"multigrid\" for speed)",
         enum_to_string(kLinearSolverTypeNames, o.linear.type)));
-  // (On the distributed path the multigrid is the KSP's, for classical Uzawa too.)
-  if (backend_path && o.method == ContactMethod::ClassicalUzawa && !distributed_path(o))
-    throw InputError(
-        fmt::format("solver.method = \"{}\": the {} runs \"uzawa_gnm\" and "
-                    "\"semismooth_newton\" only",
-                    enum_to_string(kContactMethodNames, o.method),
-                    o.device == DeviceKind::Cuda ? "GPU solver (solver.device = \"cuda\")"
-                                                 : "multigrid preconditioner"));
 }
 
 double automatic_r(const ContactProblem& p, double factor) {

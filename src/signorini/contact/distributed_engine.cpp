@@ -9,21 +9,10 @@
 
 namespace signorini {
 
-namespace {
-DistributedEngine* registered = nullptr;
-}  // namespace
-
-DistributedEngine* distributed_engine() {
-  return registered;
-}
-
-void set_distributed_engine(DistributedEngine* engine) {
-  registered = engine;
-}
-
-DistributedEngine& required_distributed_engine() {
-  if (registered == nullptr) throw InputError("the distributed path needs a PETSc engine");
-  return *registered;
+DistributedEngine& required_engine(const ContactProblem& problem) {
+  if (problem.engine == nullptr)
+    throw InputError("the distributed path needs the PETSc engine of the problem's ranks");
+  return *problem.engine;
 }
 
 void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
@@ -34,9 +23,9 @@ void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
 
 void sum_over_ranks(const ContactProblem& problem, double* values, Index count) {
   if (!problem.partitioned()) return;
-  if (registered == nullptr)
+  if (problem.engine == nullptr)
     throw InputError("a partitioned contact problem needs the distributed engine that made it");
-  registered->sum(values, count);
+  problem.engine->sum(values, count);
 }
 
 Vector held_stiffness_rows(const ContactProblem& problem, const Vector& u) {
@@ -87,7 +76,7 @@ double largest_displacement(const ContactProblem& problem, const Vector& u) {
   if (!problem.part_solution()) return u.size() > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0;
   // The largest of the ranks' own unknowns (each unknown is one rank's).
   const Vector own = problem.held_rows(u);
-  return required_distributed_engine().max(own.size() > 0 ? own.lpNorm<Eigen::Infinity>() : 0.0);
+  return required_engine(problem).max(own.size() > 0 ? own.lpNorm<Eigen::Infinity>() : 0.0);
 }
 
 Vector held_contact_transpose_rows(const ContactProblem& problem, const Vector& v) {
@@ -114,8 +103,11 @@ double load_norm(const ContactProblem& problem) {
   return std::sqrt(squares);
 }
 
-bool distributed_path(const ContactSolverOptions& options) {
-  const DistributedEngine* engine = registered;
+bool distributed_path(const ContactProblem& problem, const ContactSolverOptions& options) {
+  return distributed_path(problem.engine, options);
+}
+
+bool distributed_path(const DistributedEngine* engine, const ContactSolverOptions& options) {
   switch (options.distributed) {
     case DistributedMode::Petsc:
       if (engine == nullptr)

@@ -1,12 +1,13 @@
 #pragma once
 // The seam between the serial library and a distributed one (docs/distributed.md). The library
 // itself passes no messages: a build with PETSc adds the engine of src/signorini/petsc/ (the
-// signorini_petsc library, linked by the signorini-mpi tool and its tests), which registers
-// itself here once MPI and PETSc are initialised. The solver asks distributed_engine() whether
-// to take the distributed path; the one Uzawa-GNM loop (uzawa_iteration.cpp,
-// generalized_newton.cpp) then runs on the engine's NewtonSpace, whose vectors and matrices are
-// PETSc's, spread over the ranks. Every rank runs the loop on the same replicated contact-node
-// values (n_c numbers) and the same global reductions, so every rank takes the same decisions.
+// signorini_petsc library, linked by the signorini-mpi tool and its tests), which a program
+// makes once and passes to build_model; the model's problem carries it (ContactProblem::engine),
+// and the solver asks it whether to take the distributed path; the one Uzawa-GNM loop
+// (uzawa_iteration.cpp, generalized_newton.cpp) then runs on the engine's NewtonSpace, whose
+// vectors and matrices are PETSc's, spread over the ranks. Every rank runs the loop on the same
+// replicated contact-node values (n_c numbers) and the same global reductions, so every rank takes
+// the same decisions.
 
 #include <memory>
 #include <string>
@@ -57,16 +58,13 @@ class DistributedEngine : public Communicator {
       TimingTable& timings) = 0;
 };
 
-/// The registered engine, or null (a serial build or tool).
-[[nodiscard]] DistributedEngine* distributed_engine();
-/// The registered engine; InputError without one (the distributed path's solvers).
-[[nodiscard]] DistributedEngine& required_distributed_engine();
+/// The engine of `problem` (ContactProblem::engine); InputError without one (the distributed
+/// path's solvers).
+[[nodiscard]] DistributedEngine& required_engine(const ContactProblem& problem);
 /// What a distributed solve records in its summary: the ranks, and the engine and the linear
 /// solver (`device`).
 void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
                         const std::string& linear_solver);
-/// Registers (or, with null, removes) the engine; not owned, it must outlive its use.
-void set_distributed_engine(DistributedEngine* engine);
 
 // In these, u is a solution of the problem (ContactResult::u): all n unknowns, or on a rank's
 // part of the mesh the values of ContactProblem::solution_unknowns.
@@ -99,9 +97,13 @@ void sum_over_ranks(const ContactProblem& problem, double* values, Index count);
 /// the solvers and the result files.
 [[nodiscard]] std::vector<Index> partition_of(const ContactProblem& problem, int ranks);
 
-/// Whether a solve with these options takes the distributed path: `distributed` = "petsc", or
-/// "auto" with an engine of more than one rank. Throws InputError for "petsc" without an engine
-/// and for "off" on more than one rank.
-[[nodiscard]] bool distributed_path(const ContactSolverOptions& options);
+/// Whether a solve with these options on `engine` (null: none, a serial program) takes the
+/// distributed path: `distributed` = "petsc", or "auto" with an engine of more than one rank.
+/// Throws InputError for "petsc" without an engine and for "off" on more than one rank.
+[[nodiscard]] bool distributed_path(const DistributedEngine* engine,
+                                    const ContactSolverOptions& options);
+/// The same for a solve of `problem` (on ContactProblem::engine).
+[[nodiscard]] bool distributed_path(const ContactProblem& problem,
+                                    const ContactSolverOptions& options);
 
 }  // namespace signorini

@@ -325,8 +325,8 @@ void run_semismooth_newton(const ContactProblem& problem, const ContactSolverOpt
 }  // namespace
 
 ContactResult solve_semismooth_newton(const ContactProblem& problem,
-                                      const ContactSolverOptions& options,
-                                      const MethodStart& start) {
+                                      const ContactSolverOptions& options, const MethodStart& start,
+                                      const MultigridHierarchy* /*multigrid*/) {
   if (problem.contact.components > 1)
     return solve_friction_semismooth_newton(problem, options, start);
   ContactResult out;
@@ -357,8 +357,9 @@ ContactResult solve_semismooth_newton_on_backend(const ContactProblem& problem,
 
 ContactResult solve_semismooth_newton_distributed(const ContactProblem& problem,
                                                   const ContactSolverOptions& options,
-                                                  const MethodStart& start) {
-  DistributedEngine& engine = required_distributed_engine();
+                                                  const MethodStart& start,
+                                                  const MultigridHierarchy* /*multigrid*/) {
+  DistributedEngine& engine = required_engine(problem);
   ContactResult out;
   TimingTable timings;
   const std::unique_ptr<DistributedActiveSetSolver> solver =

@@ -15,7 +15,7 @@
 namespace signorini {
 
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
-                              const MethodStart& start) {
+                              const MethodStart& start, const MultigridHierarchy* /*multigrid*/) {
   ContactResult out;
   ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(problem));
   const auto system = make_newton_system(problem, phi, options.linear);
@@ -52,7 +52,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
 ContactResult run_on_distributed_space(
     const ContactProblem& problem, const ContactSolverOptions& options, const MethodStart& start,
     const std::function<void(DistributedNewtonSpace&, ContactResult&)>& method) {
-  DistributedEngine& engine = required_distributed_engine();
+  DistributedEngine& engine = required_engine(problem);
   ContactResult out;
   TimingTable timings;
   const std::unique_ptr<DistributedNewtonSpace> space =
@@ -69,7 +69,8 @@ ContactResult run_on_distributed_space(
 
 ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
                                           const ContactSolverOptions& options,
-                                          const MethodStart& start) {
+                                          const MethodStart& start,
+                                          const MultigridHierarchy* /*multigrid: the KSP's*/) {
   return run_on_distributed_space(
       problem, options, start, [&](DistributedNewtonSpace& space, ContactResult& out) {
         ModifiedLagrangian phi(problem, augmentation_parameter(problem, options),

@@ -97,7 +97,7 @@ void write_load_step(const std::filesystem::path& outdir, int step, const Contac
     // A distributed run on the ranks' parts of the mesh (docs/distributed.md): each rank writes
     // its piece of the step's solution, rank 0 the .pvtu that names them, the step's
     // contact.csv and solution.pvd.
-    const DistributedEngine& engine = required_distributed_engine();
+    const DistributedEngine& engine = required_engine(model.problem);
     const ContactNodeValues values = contact_node_values(model, result);
     write_on_every_rank(outdir, engine, [&](StagedFiles& staged) {
       create_output_folder(outdir / "steps");
@@ -150,7 +150,7 @@ void write_distributed(const std::filesystem::path& outdir, const ContactResult&
 void write_results(const std::filesystem::path& outdir, const ContactResult& result,
                    const Model& model, const ProblemSpec& spec, const Resultants& resultants) {
   create_output_folder(outdir);
-  if (const DistributedEngine* engine = distributed_engine();
+  if (const DistributedEngine* engine = model.problem.engine;
       engine != nullptr && result.summary.path == SolvePath::Distributed) {
     write_distributed(outdir, result, model, spec, resultants, *engine);
     return;

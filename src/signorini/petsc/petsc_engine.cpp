@@ -36,7 +36,6 @@ PetscEngine::PetscEngine() {
   MPI_Comm_dup(PETSC_COMM_WORLD, &meeting_comm_);
   MPI_Comm_size(PETSC_COMM_WORLD, &size_);
   share_the_cores();
-  set_distributed_engine(this);
 }
 
 void PetscEngine::share_the_cores() const {
@@ -58,7 +57,6 @@ void PetscEngine::share_the_cores() const {
 }
 
 PetscEngine::~PetscEngine() {
-  set_distributed_engine(nullptr);
   if (meeting_ == MPI_REQUEST_NULL) MPI_Comm_free(&meeting_comm_);  // else a rank is missing
   PetscPopErrorHandler();
   PetscFinalize();

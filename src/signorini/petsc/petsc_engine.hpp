@@ -1,7 +1,8 @@
 #pragma once
 // The distributed engine of a build with PETSc (contact/distributed_engine.hpp,
-// docs/distributed.md): initialises MPI and PETSc, registers itself for the solver, and finalises
-// them when it goes. One per process, made by the main() of signorini-mpi and of the MPI tests.
+// docs/distributed.md): initialises MPI and PETSc, and finalises them when it goes. One per
+// process, made by the main() of signorini-mpi and of the MPI tests, which pass it to
+// build_model (the model's problem then carries it to its solver).
 
 #include <mpi.h>
 
@@ -15,9 +16,9 @@ namespace signorini {
 class PetscEngine final : public DistributedEngine {
  public:
   /// PetscInitialize (MPI_Init through it) without the command line: PETSc's own options come
-  /// from solver.petsc_options or the PETSC_OPTIONS variable. Registers the engine.
+  /// from solver.petsc_options or the PETSC_OPTIONS variable.
   PetscEngine();
-  /// Unregisters and finalises PETSc and MPI.
+  /// Finalises PETSc and MPI.
   ~PetscEngine() override;
   PetscEngine(const PetscEngine&) = delete;
   PetscEngine& operator=(const PetscEngine&) = delete;

@@ -396,17 +396,17 @@ Model receive_model_part(const ProblemSpec& spec, DistributedEngine& engine) {
     std::vector<char> everyone;
     engine.broadcast(everyone);
     receive_timer.stop();
-    return model_from_part(spec, std::move(part), std::move(everyone), engine.rank(),
-                           std::move(timings));
+    return model_from_part(spec, std::move(part), std::move(everyone), engine, std::move(timings));
   } catch (const InputError& e) {
     throw std::runtime_error(fmt::format("building this rank's part of the model: {}", e.what()));
   }
 }
 
 Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vector<char> everyone,
-                      int rank, TimingTable timings) {
+                      DistributedEngine& engine, TimingTable timings) {
   ScopedTimer receive_timer(timings, "mesh");
   ContactProblem problem;
+  problem.engine = &engine;
   ByteReader in(part);
   Mesh mesh = unpack_mesh(in);
   std::vector<Index> global_nodes = in.get_vector<Index>();
@@ -417,7 +417,7 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
   ByteReader all(everyone);
   problem.row_starts = all.get_vector<Index>();
   problem.contact = unpack_contact_set(all);
-  problem.rank = rank;
+  problem.rank = engine.rank();
   std::vector<Index> contact_starts = all.get_vector<Index>();
   std::vector<std::string> contact_boundaries = all.get_strings();
   std::shared_ptr<const FrictionLaw> friction;
@@ -473,7 +473,7 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
     problem.A = assemble_stiffness(mesh, dofs, elasticity, &owned);
   }
   problem.law = friction;  // (the problem owns its law: contact_law.hpp)
-  const SolverPlan plan = plan_model_solver(spec, size, /*distributed=*/true);
+  const SolverPlan plan = plan_model_solver(spec, size, &engine);
   if (uses_multigrid(plan.options))
     problem.near_null_space =
         rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &whole.centroid);

@@ -82,12 +82,13 @@ class RootAnnouncements {
 /// part of the mesh, its stiffness columns (assembled here) and rigid-body modes, the rank's
 /// rows of b. `timings` so far go on.
 [[nodiscard]] Model model_from_part(const ProblemSpec& spec, std::vector<char> part,
-                                    std::vector<char> everyone, int rank, TimingTable timings);
+                                    std::vector<char> everyone, DistributedEngine& engine,
+                                    TimingTable timings);
 
-/// The solver plan of a model of this size (solver_plan.hpp) and, on the distributed path, the
-/// reason that says so: rank 0's and every other rank's alike.
+/// The solver plan of a model of this size (solver_plan.hpp) and, on the distributed path (on
+/// `distributed`; null: serial), the reason that says so: rank 0's and every other rank's alike.
 [[nodiscard]] SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size,
-                                           bool distributed);
+                                           const DistributedEngine* distributed);
 /// Whether the plan's Newton systems are solved by CG with multigrid (the rigid-body modes then
 /// go with the problem on the distributed path).
 [[nodiscard]] bool uses_multigrid(const ContactSolverOptions& options);
@@ -122,10 +123,11 @@ void add_surface_and_body_loads(
 /// The friction law of the contact set, node by node from the sections' laws (Tresca's slip
 /// bound at row j's point, `point(j)`), over the rows that `starts` divides among the sections
 /// (Model::contact_starts); null when no boundary has friction. InputError for a slip bound that
-/// is negative or not finite, and for semismooth Newton with friction on the distributed path.
+/// is negative or not finite, and for semismooth Newton with friction on the distributed path
+/// (`distributed`).
 [[nodiscard]] std::shared_ptr<const FrictionLaw> contact_friction_law(
     const ProblemSpec& spec, int dim, const std::vector<Index>& starts,
-    const std::function<Point(Index j)>& point);
+    const std::function<Point(Index j)>& point, bool distributed);
 
 /// f - K u_D, the loads of the free dofs as a full vector (docs/method.md: a nonzero prescribed
 /// displacement u_D loads the free dofs; the full solution is u_D plus the free part), with u_D

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "signorini/contact/distributed_engine.hpp"
+#include "signorini/contact/method_table.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/core/peak_memory.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
@@ -220,10 +221,10 @@ namespace {
 std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const Mesh& mesh,
                                                  const DofMap& dofs,
                                                  const std::vector<Index>& starts,
-                                                 ContactSet& contact) {
+                                                 ContactSet& contact, bool distributed) {
   std::shared_ptr<const FrictionLaw> law = contact_friction_law(
       spec, mesh.dim(), starts,
-      [&](Index j) { return mesh.point(contact.nodes[static_cast<std::size_t>(j)]); });
+      [&](Index j) { return mesh.point(contact.nodes[static_cast<std::size_t>(j)]); }, distributed);
   if (law) add_tangential_rows(contact, tangential_operator(contact, dofs));
   return law;
 }
@@ -249,13 +250,14 @@ void add_surface_and_body_loads(
                     into(spec.body_force_factors, "body_force"));
 }
 
-std::shared_ptr<const FrictionLaw> contact_friction_law(
-    const ProblemSpec& spec, int dim, const std::vector<Index>& starts,
-    const std::function<Point(Index j)>& point) {
+std::shared_ptr<const FrictionLaw> contact_friction_law(const ProblemSpec& spec, int dim,
+                                                        const std::vector<Index>& starts,
+                                                        const std::function<Point(Index j)>& point,
+                                                        bool distributed) {
   bool any = false;
   for (const ContactSpec& c : spec.contacts) any = any || c.friction != FrictionModel::None;
   if (!any) return nullptr;
-  if (spec.solver.method == ContactMethod::SemismoothNewton && distributed_path(spec.solver))
+  if (spec.solver.method == ContactMethod::SemismoothNewton && distributed)
     throw InputError(
         "solver.method = \"semismooth_newton\" with contact.friction runs in one process (it "
         "factorises the whole KKT system): use \"uzawa_gnm\" on the distributed path, or run "
@@ -322,14 +324,15 @@ bool uses_multigrid(const ContactSolverOptions& options) {
          options.linear.preconditioner == PreconditionerType::Multigrid;
 }
 
-SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size, bool distributed) {
+SolverPlan plan_model_solver(const ProblemSpec& spec, const ProblemSize& size,
+                             const DistributedEngine* distributed) {
   SolverPlan plan = plan_solver(spec.solver, size);
   // On the distributed path the plan's choice names how the Newton systems are solved there
   // (docs/distributed.md: a direct choice becomes MUMPS, the multigrid GAMG), not the path.
-  if (distributed)
+  if (distributed != nullptr)
     plan.reason =
         fmt::format("distributed on {} MPI ranks; the Newton systems as the serial plan chose: {}",
-                    required_distributed_engine().size(), plan.reason);
+                    distributed->size(), plan.reason);
   return plan;
 }
 
@@ -355,13 +358,24 @@ ElasticityOptions region_elasticity(const ProblemSpec& spec,
 
 namespace {
 
-Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts);
+Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts,
+                        DistributedEngine* engine);
+Model build_model_on(const ProblemSpec& spec, DistributedEngine* engine);
 
 }  // namespace
 
-Model build_model(const ProblemSpec& spec) {
+Model build_model(const ProblemSpec& spec, DistributedEngine* engine) {
+  Model model = build_model_on(spec, engine);
+  model.problem.engine = engine;  // (the problem's ranks, for its solver: contact_problem.hpp)
+  return model;
+}
+
+namespace {
+
+Model build_model_on(const ProblemSpec& spec, DistributedEngine* engine_or_null) {
   validate(spec.elasticity.material);
   validate(spec.solver);
+  validate_path(spec.solver, engine_or_null);
   if (spec.clamps.empty() && spec.displacements.empty())
     throw InputError(
         "no clamped boundary: the stiffness would be singular (add a [[clamp]] or "
@@ -371,25 +385,23 @@ Model build_model(const ProblemSpec& spec) {
   // The distributed path (docs/distributed.md) is the options' choice alone: the size-based plan
   // never changes it. On more than one rank, rank 0 alone reads the mesh and sends each other
   // rank its part (problem/distributed_model.hpp).
-  if (distributed_path(spec.solver)) {
-    DistributedEngine& engine = required_distributed_engine();
+  if (distributed_path(engine_or_null, spec.solver)) {
+    DistributedEngine& engine = *engine_or_null;  // (distributed_path: not null)
     if (engine.size() > 1) {
       // A box is made in parts, each rank its own (problem/box_model_in_parts.hpp).
       if (box_in_parts(spec, engine.size())) return build_box_model_in_parts(spec, engine);
       if (engine.rank() != 0) return receive_model_part(spec, engine);
       RootAnnouncements parts(engine);
       try {
-        return build_whole_model(spec, &parts);
+        return build_whole_model(spec, &parts, engine_or_null);
       } catch (const std::exception& e) {
         parts.failed(e.what());
         throw;
       }
     }
   }
-  return build_whole_model(spec, nullptr);
+  return build_whole_model(spec, nullptr, engine_or_null);
 }
-
-namespace {
 
 // Model::contact_gap_shift and its groups, from the whole mesh's numbering.
 std::pair<Eigen::MatrixXd, std::vector<int>> contact_gap_shift(
@@ -415,7 +427,8 @@ std::pair<Eigen::MatrixXd, std::vector<int>> contact_gap_shift(
 
 // The model of a serial run, or rank 0's of a distributed one (`parts`: then whole but for the
 // stiffness, and the others' parts sent).
-Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
+Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts,
+                        DistributedEngine* engine_or_null) {
   TimingTable timings;
   ScopedTimer mesh_timer(timings, "mesh");
   if (spec.mesh_type == MeshType::Given && !spec.given_mesh)
@@ -440,10 +453,11 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
   require_no_free_rigid_motion(mesh, dofs);
   if (parts != nullptr) parts->ok();
 
-  const bool distributed = distributed_path(spec.solver);
+  const bool distributed = distributed_path(engine_or_null, spec.solver);
   ContactProblem problem;
+  problem.engine = engine_or_null;
   if (distributed) {
-    DistributedEngine& engine = required_distributed_engine();
+    DistributedEngine& engine = *engine_or_null;
     // The nodes partitioned by the engine's graph partitioner (parallel/node_partition.hpp),
     // and the unknowns numbered again rank by rank; the even split of the numbering where the
     // partitioner leaves a rank without unknowns (or on one rank). Rank 0 makes each rank's
@@ -473,7 +487,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
     // it checks the cells for all (an inverted one stops every rank with its one message),
     // sends each rank its part of the mesh and that part's numbering, lets the whole go, and
     // builds its own model from its part, as the others do.
-    DistributedEngine& engine = required_distributed_engine();
+    DistributedEngine& engine = *engine_or_null;
     {
       ScopedTimer t(timings, "assembly");
       require_valid_cells(mesh, elasticity);
@@ -501,7 +515,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
   } else {
     ScopedTimer t(timings, "assembly");
     if (distributed) {
-      const DistributedEngine& engine = required_distributed_engine();
+      const DistributedEngine& engine = *engine_or_null;
       // A distributed run (docs/distributed.md): each rank assembles only the columns of the
       // unknowns it owns (by symmetry its rows), from the cells that touch its nodes; the
       // partition keeps each node's unknowns on one rank.
@@ -591,7 +605,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
   }
   // Friction: the tangential rows in N and the law per node (friction_law.hpp).
   std::shared_ptr<const FrictionLaw> friction =
-      make_friction(spec, mesh, dofs, contact_starts, problem.contact);
+      make_friction(spec, mesh, dofs, contact_starts, problem.contact, distributed);
   // The solver path from the problem's size (solver_plan.hpp), before the hierarchy that it may
   // call for.
   const ProblemSize size{mesh.dim(),
@@ -601,7 +615,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
                          physical_memory_bytes(),
                          friction != nullptr};
   problem.law = friction;  // (the problem owns its law: contact_law.hpp)
-  const SolverPlan plan = plan_model_solver(spec, size, distributed);
+  const SolverPlan plan = plan_model_solver(spec, size, distributed ? engine_or_null : nullptr);
   MultigridHierarchy multigrid;
   const bool multigrid_cg = uses_multigrid(plan.options);
   if (distributed) {
@@ -645,7 +659,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
   if (parts == nullptr) return whole_model();
   // Rank 0 of several: the others' parts sent, its own model is its part too, as theirs are;
   // the whole model goes before rank 0 builds its part.
-  const DistributedEngine& engine = required_distributed_engine();
+  const DistributedEngine& engine = *engine_or_null;
   std::vector<char> everyone, own;
   TimingTable so_far;
   std::vector<PlacedPointLoad> point_loads;
@@ -661,7 +675,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts) {
   owner = {};
   // (A failure from here is rank 0's alone, as on the other ranks: receive_model_part.)
   try {
-    Model part = model_from_part(spec, std::move(own), std::move(everyone), engine.rank(),
+    Model part = model_from_part(spec, std::move(own), std::move(everyone), *engine_or_null,
                                  std::move(so_far));
     part.point_loads = std::move(point_loads);
     return part;

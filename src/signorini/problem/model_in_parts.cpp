@@ -277,6 +277,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   }
 
   ContactProblem problem;
+  problem.engine = &engine;
   problem.row_starts = std::move(part.row_starts);
   problem.rank = rank;
   problem.node_of_unknown = std::move(part.node_of_unknown);
@@ -479,12 +480,14 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
     if (!in.done()) throw std::logic_error("model in parts: the contact rows' bytes do not add up");
   // Friction: the law per node and the tangential rows in N (model.cpp, make_friction), from the
   // gathered rows' points and tangential entries, on every rank alike.
-  const std::shared_ptr<const FrictionLaw> friction =
-      contact_friction_law(spec, dim, contact_starts, [&](Index j) {
+  const std::shared_ptr<const FrictionLaw> friction = contact_friction_law(
+      spec, dim, contact_starts,
+      [&](Index j) {
         Point x = Point::Zero();
         x.head(dim) = all_rows[static_cast<std::size_t>(j)].point;
         return x;
-      });
+      },
+      /*distributed=*/true);
   if (friction) {
     std::vector<Eigen::Triplet<double, int>> triplets;
     for (std::size_t j = 0; j < all_rows.size(); ++j)
@@ -546,7 +549,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
                          values_of_ranks(engine, physical_memory_bytes()).front(),
                          friction != nullptr};
   problem.law = friction;  // (the problem owns its law: contact_law.hpp)
-  const SolverPlan plan = plan_model_solver(spec, size, /*distributed=*/true);
+  const SolverPlan plan = plan_model_solver(spec, size, &engine);
   {
     ScopedTimer t(timings, "assembly");
     // The columns of the rank's unknowns (by symmetry its rows), from the cells around its
