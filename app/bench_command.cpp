@@ -14,7 +14,7 @@
 #include "signorini/backend/cuda_backend.hpp"
 #include "signorini/benchmark/paper_benchmark_suite.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/atomic_file.hpp"
+#include "signorini/output/atomic_file.hpp"
 #include "timing_report.hpp"
 #include "whole_process_bench.hpp"
 

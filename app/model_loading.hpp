@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini::app {

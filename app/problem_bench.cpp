@@ -12,11 +12,11 @@
 #include "signorini/backend/host_backend.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/atomic_file.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/iterative/pcg.hpp"
 #include "signorini/linalg/iterative_options.hpp"
 #include "signorini/linalg/linear_solver.hpp"
+#include "signorini/output/atomic_file.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini::app {

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "signorini/io/summary_json.hpp"
+#include "signorini/output/summary_json.hpp"
 
 namespace signorini::app {
 

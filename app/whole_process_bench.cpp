@@ -21,9 +21,9 @@
 #include "data_files.hpp"
 #include "signorini/core/digit_groups.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/atomic_file.hpp"
-#include "signorini/io/effective_settings.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/effective_settings.hpp"
+#include "signorini/input/problem_file.hpp"
+#include "signorini/output/atomic_file.hpp"
 #include "signorini/problem/problem_spec.hpp"
 
 namespace signorini::app {

@@ -21,7 +21,7 @@
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace {

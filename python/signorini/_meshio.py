@@ -18,7 +18,7 @@ _CELLS = {
     "hexahedron": "hex8",
     "hexahedron27": "hex27",
 }
-# VTK's node k is our node ORDER[k] (the tables of io/vtu_file.cpp).
+# VTK's node k is our node ORDER[k] (the tables of output/vtu_file.cpp).
 _VTK_ORDER = {
     "tet10": [0, 1, 2, 3, 4, 5, 6, 7, 9, 8],
     "hex27": [0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 13, 9, 16, 18, 19, 17, 10, 12, 14, 15, 22, 23, 21,

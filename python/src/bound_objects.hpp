@@ -12,7 +12,7 @@
 
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/fem/nodal_stress.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini::python {

@@ -6,7 +6,7 @@
 #include "bindings.hpp"
 #include "python_to_toml.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_table.hpp"
+#include "signorini/input/problem_table.hpp"
 
 namespace signorini::python {
 

@@ -11,9 +11,9 @@
 #include "bindings.hpp"
 #include "numpy_views.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/contact_csv.hpp"
-#include "signorini/io/result_writer.hpp"
-#include "signorini/io/summary_json.hpp"
+#include "signorini/output/contact_csv.hpp"
+#include "signorini/output/result_writer.hpp"
+#include "signorini/output/summary_json.hpp"
 #include "signorini/problem/resultants.hpp"
 
 namespace signorini::python {
@@ -38,7 +38,7 @@ const NodalStress& stress_of(PyResult& r) {
   return *r.stress;
 }
 
-// contact.csv's columns (io/contact_csv.hpp), each a numpy array (a list of str for the text
+// contact.csv's columns (output/contact_csv.hpp), each a numpy array (a list of str for the text
 // columns): the file's numbers have 17 digits, so they read back exactly.
 py::dict contact_table(const PyResult& r) {
   const std::string csv = contact_csv(r.result, r.data->model);

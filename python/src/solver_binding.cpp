@@ -9,7 +9,7 @@
 #include "blas_threads.hpp"
 #include "numpy_views.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/result_writer.hpp"
+#include "signorini/output/result_writer.hpp"
 #include "signorini/problem/load_stepping.hpp"
 #include "signorini/problem/resultants.hpp"
 

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "app/tool_run.hpp"
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 
 namespace signorini {
 namespace {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/tool_run.hpp"
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 
 namespace signorini {
 namespace {

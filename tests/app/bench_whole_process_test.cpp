@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "app/tool_run.hpp"
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 
 namespace signorini {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 
 namespace signorini::app {
 namespace {

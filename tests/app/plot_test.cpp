@@ -15,7 +15,7 @@
 #include <regex>
 
 #include "app/tool_run.hpp"
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 #include "problem/ball_on_block.hpp"
 #include "signorini/signorini.hpp"
 

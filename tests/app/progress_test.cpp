@@ -12,7 +12,7 @@
 #include <sstream>
 #include <thread>
 
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 
 namespace signorini::app {
 namespace {

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/tool_run.hpp"
-#include "io/expect_contains.hpp"
-#include "io/summary_keys.hpp"
+#include "expect_contains.hpp"
+#include "output/summary_keys.hpp"
 #include "signorini/backend/cuda_backend.hpp"
 #include "signorini/config.hpp"
 
@@ -121,7 +121,7 @@ TEST(SignoriniApp, SolvesTheSmallPaperExample) {
   const std::string csv = read(out / "contact.csv");
   EXPECT_EQ(count_lines(csv), 62U);  // header + 61 contact nodes
   EXPECT_EQ(csv.rfind("x,y,u_n,u_t,pressure,gap,n_x,n_y,s,boundary\n", 0), 0U);
-  // The ParaView files (their contents: tests/io/solution_vtu_test.cpp).
+  // The ParaView files (their contents: tests/output/solution_vtu_test.cpp).
   for (const char* vtu : {"solution.vtu", "contact.vtu"})
     EXPECT_EQ(
         read(out / vtu).rfind("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\"", 0), 0U)

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/temporary_folder.hpp"
+#include "temporary_folder.hpp"
 
 namespace signorini::testing {
 

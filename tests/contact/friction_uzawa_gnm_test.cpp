@@ -11,8 +11,8 @@
 #include "signorini/contact/friction_law.hpp"
 #include "signorini/contact/friction_ssn.hpp"
 #include "signorini/core/error.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/interface/contact_tangents.hpp"
-#include "signorini/io/problem_file.hpp"
 #include "signorini/problem/model.hpp"
 
 namespace signorini {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "signorini/core/error.hpp"
-#include "signorini/io/expression.hpp"
+#include "signorini/input/expression.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 
 namespace {
 

@@ -31,21 +31,22 @@ flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer
        -DTOML_HEADER_ONLY=1  # toml++ compiled here, so that its parser is instrumented too
        # ... but with its assertions off, as in the library the tool links (Debian's, built with
        # NDEBUG): toml++ 3.3.0 asserts in parse_key() on input its caller lets through ("[[" and a
-       # line break), which it then reports as a syntax error (tests/io/problem_file_test.cpp).
+       # line break), which it then reports as a syntax error (tests/input/problem_file_test.cpp).
        "-DTOML_ASSERT(expr)=((void)0)"
        -DEIGEN_SPARSEMATRIX_PLUGIN='"signorini/core/eigen_sparse_move.hpp"'
        -Iinclude -I"$build/include" -Isrc -I/usr/include/eigen3 -I/usr/include/suitesparse)
 # Every UBSan check but "unreachable": toml++ 3.3.0 reaches __builtin_unreachable() in
 # is_non_ascii_horizontal_whitespace() for code points U+00A1-U+0499 and U+FB07-U+FEFE where it
 # tests for whitespace (marzer/tomlplusplus#190, #295; fixed upstream by #305, after 3.4.0). g++
-# and clang both compile it to "not whitespace", which is right, and tests/io/problem_file_test.cpp
+# and clang both compile it to "not whitespace", which is right, and tests/input/problem_file_test.cpp
 # checks the outcome; the check would otherwise stop every run at the first such character.
 sanitizers=(-fsanitize=address,undefined -fno-sanitize=unreachable -fno-sanitize-recover=undefined)
-# What the targets exercise, instrumented for coverage: the io and mesh modules and the
+# What the targets exercise, instrumented for coverage: the input, output and mesh modules and the
 # validate() functions of the options. The rest of the library is only linked (linear_solver.cpp also makes
 # the solvers), so it goes uninstrumented into an archive, from which the link takes what it needs.
 instrumented=(
-  src/signorini/io/*.cpp src/signorini/mesh/*.cpp src/signorini/fem/material.cpp
+  src/signorini/input/*.cpp src/signorini/output/*.cpp src/signorini/mesh/*.cpp
+  src/signorini/fem/material.cpp
   src/signorini/contact/contact_solver_options.cpp src/signorini/linalg/linear_solver.cpp
 )
 libraries=(-lcholmod -lumfpack -lsuitesparseconfig -lmuparser -lfmt -lopenblas)

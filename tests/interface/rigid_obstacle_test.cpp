@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 
 namespace signorini {
 namespace {

@@ -17,7 +17,6 @@
 #include <sstream>
 
 #include "fem/uniaxial_tension.hpp"
-#include "io/temporary_folder.hpp"
 #include "mesh/cell_geometry.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/elasticity_assembly.hpp"
@@ -25,6 +24,7 @@
 #include "signorini/fem/nodal_stress.hpp"
 #include "signorini/linalg/linear_solver.hpp"
 #include "signorini/problem/model.hpp"
+#include "temporary_folder.hpp"
 
 namespace signorini {
 namespace {

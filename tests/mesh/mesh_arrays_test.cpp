@@ -11,10 +11,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/problem/model.hpp"
 

@@ -17,7 +17,7 @@
 #include "../problem/hertz_ball.hpp"
 #include "mpi_test_problems.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/contact_node_values.hpp"
 #include "signorini/problem/resultants.hpp"

@@ -11,14 +11,14 @@
 #include <numbers>
 #include <sstream>
 
-#include "io/expect_contains.hpp"
-#include "io/temporary_folder.hpp"
+#include "expect_contains.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/load_assembly.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/interface/contact_boundary.hpp"
-#include "signorini/io/problem_file.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/problem/resultants.hpp"
+#include "temporary_folder.hpp"
 #include "test_problems.hpp"
 
 namespace signorini {

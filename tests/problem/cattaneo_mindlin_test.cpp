@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "signorini/contact/contact_solver.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/problem/load_stepping.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/resultants.hpp"

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 
 namespace signorini {
 namespace {

@@ -14,15 +14,15 @@
 #include <string>
 #include <utility>
 
-#include "io/expect_contains.hpp"
-#include "io/temporary_folder.hpp"
+#include "expect_contains.hpp"
 #include "signorini/core/error.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 #include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
 #include "signorini/problem/model.hpp"
 #include "signorini/problem/resultants.hpp"
+#include "temporary_folder.hpp"
 
 namespace signorini {
 namespace {

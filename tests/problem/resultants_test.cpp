@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "signorini/contact/contact_solver.hpp"
-#include "signorini/io/problem_file.hpp"
+#include "signorini/input/problem_file.hpp"
 
 namespace signorini {
 namespace {

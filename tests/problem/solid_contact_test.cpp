@@ -18,14 +18,14 @@
 #include <sstream>
 
 #include "app/tool_run.hpp"
-#include "io/temporary_folder.hpp"
 #include "problem/ball_on_block.hpp"
 #include "problem/each_method.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/core/error.hpp"
 #include "signorini/fem/nodal_stress.hpp"
-#include "signorini/io/result_writer.hpp"
+#include "signorini/output/result_writer.hpp"
 #include "signorini/problem/model.hpp"
+#include "temporary_folder.hpp"
 
 namespace signorini {
 namespace {

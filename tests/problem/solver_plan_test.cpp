@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/expect_contains.hpp"
+#include "expect_contains.hpp"
 #include "problem/ball_on_block.hpp"
 #include "signorini/contact/contact_solver.hpp"
 #include "signorini/problem/model.hpp"

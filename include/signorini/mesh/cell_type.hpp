@@ -3,7 +3,7 @@
 // up each facet. Node orders are Gmsh's: corners first, counterclockwise in 2D, then the mid-edge
 // nodes in the order of the edges, then the face centres and a centre node. VTK agrees for the
 // lines, the 2D types, Tet4 and Hex8; its Tet10 and Hex27 list some nodes in another order
-// (io/vtu_file.cpp permutes them). The 3D cells: Tet4 (corners (0,0,0), (1,0,0), (0,1,0),
+// (output/vtu_file.cpp permutes them). The 3D cells: Tet4 (corners (0,0,0), (1,0,0), (0,1,0),
 // (0,0,1)); Tet10 (mid-edge nodes on 0-1, 1-2, 2-0, 0-3, 2-3, 1-3); Hex8 on [-1, 1]^3 (the bottom
 // z = -1 counterclockwise 0..3 seen from above, the top 4..7 above them); Hex27 (mid-edge nodes on
 // 0-1, 0-3, 0-4, 1-2, 1-5, 2-3, 2-6, 3-7, 4-5, 4-7, 5-6, 6-7, the centres of the faces z = -1,

@@ -1,6 +1,6 @@
 #pragma once
 // How much memory a solve of a mesh will take, roughly: enough to refuse, before any work, a mesh
-// that surely cannot fit (io/problem_file.cpp does, against the machine's memory).
+// that surely cannot fit (input/problem_file.cpp does, against the machine's memory).
 
 #include "signorini/linalg/linear_solver.hpp"
 

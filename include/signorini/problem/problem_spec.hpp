@@ -1,6 +1,6 @@
 #pragma once
 // A complete description of a contact problem, independent of any file format: what a problem
-// file says, in library terms. io/problem_file.hpp builds one from TOML; C++ users fill it in
+// file says, in library terms. input/problem_file.hpp builds one from TOML; C++ users fill it in
 // directly.
 
 #include <array>

@@ -7,7 +7,7 @@
 // ranges from them (as deal.II's ParameterHandler::declare_entry and MFEM's OptionsParser do), so
 // that adding an option means its member, its entry here and its use.
 //
-// Private to the library: no file format here (io/ reads and writes TOML through the tables),
+// Private to the library: no file format here (input/ reads and writes TOML through the tables),
 // only what an option is.
 
 #include <array>

@@ -11,7 +11,7 @@ std::vector<std::string> mesh_warnings(const ProblemSpec& spec, const Mesh& mesh
     if (cell_order(t) == 1)
       linear += (linear.empty() ? "" : ", ") + std::string(enum_to_string(kCellTypeNames, t));
   if (linear.empty()) return {};  // quadratic cells lock far less
-  // As io/problem_file.cpp says of the other meshes: linear elements lock as nu approaches 1/2,
+  // As input/problem_file.cpp says of the other meshes: linear elements lock as nu approaches 1/2,
   // and the solver cannot detect it.
   std::vector<std::string> out;
   const auto warn = [&](const std::string& key, double nu) {
