@@ -479,26 +479,26 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
         rigid_body_modes(mesh, dofs, problem.first_row(), problem.end_row(), &whole.centroid);
   // The solution comes back as the part's unknowns only (no vector of all n on any rank).
   problem.solution_unknowns = part_unknowns(dofs);
-  Model model{std::move(mesh),
-              std::move(dofs),
-              std::move(problem),
-              MultigridHierarchy{},
-              plan.options,
-              plan.reason,
-              std::move(timings),
-              elasticity,
-              std::move(loads),
-              std::move(clamps),
-              {},
-              std::move(contact_boundaries),
-              std::move(contact_starts),
-              std::move(friction),
-              std::move(groups),
-              std::move(gap_shift),
-              std::move(gap_shift_group),
-              std::move(global_nodes),
-              std::move(whole),
-              {}};
+  Model model{.mesh = std::move(mesh),
+              .dofs = std::move(dofs),
+              .problem = std::move(problem),
+              .multigrid = {},
+              .solver = plan.options,
+              .solver_reason = plan.reason,
+              .timings = std::move(timings),
+              .elasticity = elasticity,
+              .loads = std::move(loads),
+              .clamped_parts = std::move(clamps),
+              .point_loads = {},
+              .contact_boundaries = std::move(contact_boundaries),
+              .contact_starts = std::move(contact_starts),
+              .friction = std::move(friction),
+              .load_groups = std::move(groups),
+              .contact_gap_shift = std::move(gap_shift),
+              .contact_gap_shift_group = std::move(gap_shift_group),
+              .global_nodes = std::move(global_nodes),
+              .whole = std::move(whole),
+              .node_ranks = {}};
   return model;
 }
 

@@ -565,26 +565,26 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
   part.entry = {};
   // The solution comes back as the part's unknowns only (no vector of all n on any rank).
   problem.solution_unknowns = part_unknowns(part.dofs);
-  return Model{std::move(part.mesh),
-               std::move(part.dofs),
-               std::move(problem),
-               MultigridHierarchy{},
-               plan.options,
-               plan.reason,
-               std::move(timings),
-               elasticity,
-               std::move(loads),
-               std::move(clamps),
-               std::move(placed),
-               std::move(contact_boundaries),
-               std::move(contact_starts),
-               friction,
-               std::move(groups),
-               std::move(gap_shift),
-               std::move(gap_shift_group),
-               std::move(part.global_nodes),
-               std::move(whole),
-               std::move(part.node_ranks)};
+  return Model{.mesh = std::move(part.mesh),
+               .dofs = std::move(part.dofs),
+               .problem = std::move(problem),
+               .multigrid = {},
+               .solver = plan.options,
+               .solver_reason = plan.reason,
+               .timings = std::move(timings),
+               .elasticity = elasticity,
+               .loads = std::move(loads),
+               .clamped_parts = std::move(clamps),
+               .point_loads = std::move(placed),
+               .contact_boundaries = std::move(contact_boundaries),
+               .contact_starts = std::move(contact_starts),
+               .friction = friction,
+               .load_groups = std::move(groups),
+               .contact_gap_shift = std::move(gap_shift),
+               .contact_gap_shift_group = std::move(gap_shift_group),
+               .global_nodes = std::move(part.global_nodes),
+               .whole = std::move(whole),
+               .node_ranks = std::move(part.node_ranks)};
 }
 
 }  // namespace signorini
