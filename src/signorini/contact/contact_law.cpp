@@ -35,13 +35,16 @@ NodeProjection ContactLaw::project_node(Index /*j*/, const Eigen::VectorXd& zj) 
 
 LawViolations ContactLaw::violations(const Vector& l, const Vector& rows,
                                      const std::vector<bool>& movable) const {
-  // One component per node: l_j >= 0, (N u - g)_j <= 0, l_j (N u - g)_j = 0.
+  // The normal row of each node (the first of its components() rows): l_n >= 0,
+  // (N u - g)_n <= 0, l_n (N u - g)_n = 0.
+  const Index m = components();
   LawViolations v;
-  for (Index j = 0; j < l.size(); ++j) {
+  for (Index j = 0; j < l.size() / m; ++j) {
     if (!movable[static_cast<std::size_t>(j)]) continue;
-    v.penetration = std::max(v.penetration, rows(j));
-    v.sign = std::max(v.sign, -l(j));
-    v.complementarity = std::max(v.complementarity, std::abs(l(j) * rows(j)));
+    const double ln = l(m * j), gap = rows(m * j);
+    v.penetration = std::max(v.penetration, gap);
+    v.sign = std::max(v.sign, -ln);
+    v.complementarity = std::max(v.complementarity, std::abs(ln * gap));
   }
   return v;
 }

@@ -29,8 +29,6 @@ double relative_change(const Vector& l_new, const Vector& l_old) {
   return diff == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
 }
 
-namespace {}  // namespace
-
 namespace {
 
 std::string residual_list(const KktResiduals& k) {

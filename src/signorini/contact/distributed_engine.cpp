@@ -11,7 +11,9 @@ namespace signorini {
 
 DistributedEngine& required_engine(const ContactProblem& problem) {
   if (problem.engine == nullptr)
-    throw InputError("the distributed path needs the PETSc engine of the problem's ranks");
+    throw InputError(
+        "a partitioned problem, or a solve on the distributed path, needs the PETSc engine of "
+        "the problem's ranks (build_model(spec, &engine))");
   return *problem.engine;
 }
 
@@ -22,10 +24,7 @@ void record_distributed(SolveSummary& summary, const DistributedEngine& engine,
 }
 
 void sum_over_ranks(const ContactProblem& problem, double* values, Index count) {
-  if (!problem.partitioned()) return;
-  if (problem.engine == nullptr)
-    throw InputError("a partitioned contact problem needs the distributed engine that made it");
-  problem.engine->sum(values, count);
+  if (problem.partitioned()) required_engine(problem).sum(values, count);
 }
 
 Vector held_stiffness_rows(const ContactProblem& problem, const Vector& u) {

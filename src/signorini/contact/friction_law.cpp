@@ -49,9 +49,7 @@ Vector FrictionLaw::project(const Vector& z) const {
   Vector p = Vector::Zero(z.size());
   for (Index j = 0; j < s_.size(); ++j) {
     const Eigen::VectorXd zj = z.segment(dim_ * j, dim_);
-    if (!zj.allFinite()) continue;
-    p.segment(dim_ * j, dim_) =
-        mu_(j) > 0.0 ? project_coulomb(zj, mu_(j)).force : project_tresca(zj, s_(j)).force;
+    if (zj.allFinite()) p.segment(dim_ * j, dim_) = project_node(j, zj).force;
   }
   return p;
 }
@@ -143,23 +141,18 @@ double FrictionLaw::potential_change(Index j, const double* z0, const double* dz
 }
 
 NodeProjection FrictionLaw::project_node(Index j, const Eigen::VectorXd& zj) const {
-  const FrictionProjection pj =
-      mu_(j) > 0.0 ? project_coulomb(zj, mu_(j)) : project_tresca(zj, s_(j));
-  return {pj.force, pj.derivative, pj.in_contact, pj.sliding};
+  return mu_(j) > 0.0 ? project_coulomb(zj, mu_(j)) : project_tresca(zj, s_(j));
 }
 
 LawViolations FrictionLaw::violations(const Vector& l, const Vector& rows,
                                       const std::vector<bool>& movable) const {
-  // Rows per node: the normal, then the tangents; rows(m j + 1 ..) is the slip v_j.
-  const Index m = dim_, nc = s_.size();
+  // The normal conditions as every law's; then, rows m j + 1 .. being the slip v_j, the bound
+  // |l_t| <= s_j and the slip's direction against the tangential force.
+  LawViolations v = ContactLaw::violations(l, rows, movable);
+  const Index m = dim_;
   const Vector bounds = slip_bounds(l);
-  LawViolations v;
-  for (Index j = 0; j < nc; ++j) {
+  for (Index j = 0; j < s_.size(); ++j) {
     if (!movable[static_cast<std::size_t>(j)]) continue;
-    const double ln = l(m * j), gap = rows(m * j);
-    v.penetration = std::max(v.penetration, gap);
-    v.sign = std::max(v.sign, -ln);
-    v.complementarity = std::max(v.complementarity, std::abs(ln * gap));
     const Eigen::VectorXd lt = l.segment(m * j + 1, m - 1), vt = rows.segment(m * j + 1, m - 1);
     v.friction_bound = std::max(v.friction_bound, lt.norm() - bounds(j));
     v.slip = std::max(v.slip, bounds(j) * vt.norm() - lt.dot(vt));

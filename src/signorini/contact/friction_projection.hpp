@@ -13,23 +13,21 @@
 // per-node blocks): Tresca's is symmetric, diag(H(z_n), I or (s / |z_t|)(I - t t^T)); Coulomb's
 // couples the tangential force to z_n (mu t) when sliding, so it is not symmetric.
 //
-// Status: the projections and derivatives exist and are tested
-// (tests/contact/friction_projection_test.cpp); no solver uses them yet.
+// FrictionLaw (friction_law.hpp) projects with them; tests/contact/friction_projection_test.cpp.
 
 #include <Eigen/Dense>
 
+#include "signorini/contact/contact_law.hpp"
+
 namespace signorini {
 
-/// A node's contact force and its derivative for one z.
-struct FrictionProjection {
-  Eigen::VectorXd force;       ///< P(z): the normal force, then the tangential force
-  Eigen::MatrixXd derivative;  ///< a generalised derivative dP/dz (d x d)
+/// A node's contact force and its derivative for one z (NodeProjection: force, derivative,
+/// in_contact, sliding), and Tresca's potential.
+struct FrictionProjection : NodeProjection {
   /// Tresca only: psi(z) = (|z|^2 - dist(z, K)^2) / 2, K the admissible forces, whose gradient
   /// is P(z): the node's term of the merit function Phi (16) with friction, as max(z, 0)^2 / 2
   /// is without. (Coulomb's K moves with z_n: no such potential; NaN.)
   double potential = 0.0;
-  bool in_contact = false;  ///< z_n > 0: the normal force is active
-  bool sliding = false;     ///< z_t at or beyond the slip bound: the tangential force on it
 };
 
 /// Tresca friction with slip bound `slip_bound` (>= 0): the tangential force is bounded by it

@@ -41,10 +41,8 @@ KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vecto
   k.penetration = length > 0.0 ? v.penetration / length : 0.0;
   k.sign = l_max > 0.0 ? v.sign / l_max : 0.0;
   k.complementarity = (l_max > 0.0 && length > 0.0) ? v.complementarity / (l_max * length) : 0.0;
-  if (c.components > 1) {
-    k.friction_bound = l_max > 0.0 ? std::max(v.friction_bound, 0.0) / l_max : 0.0;
-    k.slip = (l_max > 0.0 && length > 0.0) ? std::max(v.slip, 0.0) / (l_max * length) : 0.0;
-  }
+  k.friction_bound = l_max > 0.0 ? std::max(v.friction_bound, 0.0) / l_max : 0.0;  // (0: none)
+  k.slip = (l_max > 0.0 && length > 0.0) ? std::max(v.slip, 0.0) / (l_max * length) : 0.0;
   return k;
 }
 

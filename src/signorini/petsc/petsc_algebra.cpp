@@ -427,9 +427,13 @@ std::size_t attach_near_null_space(Mat M, const Matrix& near_null_space) {
 }
 
 void insert_petsc_options(const ContactSolverOptions& o) {
-  if (!o.petsc_options.empty())
-    check(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()),
-          fmt::format("solver.petsc_options = \"{}\"", o.petsc_options).c_str());
+  insert_petsc_options(o.petsc_options);
+}
+
+void insert_petsc_options(const std::string& petsc_options) {
+  if (!petsc_options.empty())
+    check(PetscOptionsInsertString(nullptr, petsc_options.c_str()),
+          fmt::format("solver.petsc_options = \"{}\"", petsc_options).c_str());
 }
 
 bool keeps_multigrid_levels(const ContactSolverOptions& o) {

@@ -104,6 +104,8 @@ struct KspChoice {
 
 /// solver.petsc_options into PETSc's options database.
 void insert_petsc_options(const ContactSolverOptions& options);
+/// The same for an option string alone (solver.petsc_options; empty: nothing).
+void insert_petsc_options(const std::string& petsc_options);
 
 /// Whether Uzawa-GNM's CG keeps its multigrid levels (ContactMultigrid): "cg" with "multigrid"
 /// on "gamg" or "aggregation", and no -pc_type among the PETSc options.

@@ -71,10 +71,7 @@ std::string PetscEngine::description() const {
 }
 
 std::vector<int> PetscEngine::partition(const NodeGraph& graph, const std::string& engine_options) {
-  // -mat_partitioning_type may name another partitioner.
-  if (!engine_options.empty())
-    petsc::check(PetscOptionsInsertString(nullptr, engine_options.c_str()),
-                 fmt::format("solver.petsc_options = \"{}\"", engine_options).c_str());
+  petsc::insert_petsc_options(engine_options);  // -mat_partitioning_type may name another one
   const auto local = static_cast<PetscInt>(graph.last - graph.first);
   // MatCreateMPIAdj and the vertex weights take arrays from PetscMalloc, and free them.
   PetscInt* ia = nullptr;

@@ -360,19 +360,11 @@ namespace {
 
 Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts,
                         DistributedEngine* engine);
-Model build_model_on(const ProblemSpec& spec, DistributedEngine* engine);
 
 }  // namespace
 
-Model build_model(const ProblemSpec& spec, DistributedEngine* engine) {
-  Model model = build_model_on(spec, engine);
-  model.problem.engine = engine;  // (the problem's ranks, for its solver: contact_problem.hpp)
-  return model;
-}
-
-namespace {
-
-Model build_model_on(const ProblemSpec& spec, DistributedEngine* engine_or_null) {
+// Every builder below gives the problem its engine (ContactProblem::engine), where it makes it.
+Model build_model(const ProblemSpec& spec, DistributedEngine* engine_or_null) {
   validate(spec.elasticity.material);
   validate(spec.solver);
   validate_path(spec.solver, engine_or_null);
@@ -402,6 +394,8 @@ Model build_model_on(const ProblemSpec& spec, DistributedEngine* engine_or_null)
   }
   return build_whole_model(spec, nullptr, engine_or_null);
 }
+
+namespace {
 
 // Model::contact_gap_shift and its groups, from the whole mesh's numbering.
 std::pair<Eigen::MatrixXd, std::vector<int>> contact_gap_shift(
