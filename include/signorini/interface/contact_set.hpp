@@ -12,14 +12,28 @@
 
 namespace signorini {
 
+/// What the constraint rows of an interface touch, which decides where they can be solved
+/// (contact/method_table.hpp).
+enum class InterfaceKind {
+  /// Each row on the free dofs of its own node: a body against a rigid obstacle.
+  Obstacle,
+  /// Rows that also touch the dofs of other nodes, of the same body or of another: a node of
+  /// one body against its partner's face (contact between deformable bodies).
+  BetweenBodies,
+};
+
 struct ContactSet {
   std::vector<Index> nodes;  ///< mesh node numbers, in order along the boundary part
   Eigen::MatrixXd normals;   ///< dim x size(): outward unit normal nu_j
   /// h_j = int N_j ds over the contact facets: half the lengths of the straight two-node facets
   /// that touch node j; on quadratic facets the integrals of the quadratic shape functions.
   Vector weights;
-  Vector gaps;     ///< g_j = g(x_j), the initial gap to the foundation
-  SparseMatrix N;  ///< size() x num_free; (components size()) x num_free with friction
+  Vector gaps;  ///< g_j = g(x_j), the initial gap to the foundation
+  /// size() x num_free; (components size()) x num_free with friction. Row j holds the
+  /// components of nu_j on node j's free dofs, and (BetweenBodies) minus their combination on
+  /// the partner's dofs: (N x)_j is then the normal displacement of node j relative to its
+  /// partner.
+  SparseMatrix N;
   /// Rows of N per node: 1 (the normal), or d for frictional contact, where rows d j + 1 ..
   /// are node j's tangential directions (add_tangential_rows below).
   int components = 1;
@@ -33,6 +47,11 @@ struct ContactSet {
   /// middle node of a quadratic facet): what the result
   /// files draw (contact.vtu). Empty for a contact set made by hand without facets.
   std::vector<std::vector<Index>> facets;
+
+  /// Obstacle unless a row touches other nodes' dofs than its own (set by whoever makes such
+  /// rows; append_contact_set keeps BetweenBodies). Row j is still node j's: its normal, weight
+  /// and gap, and its multipliers, are those of `nodes[j]`.
+  InterfaceKind kind = InterfaceKind::Obstacle;
 
   [[nodiscard]] Index size() const { return static_cast<Index>(nodes.size()); }
   [[nodiscard]] Index num_movable() const;

@@ -178,7 +178,7 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   // the whole KKT system (the full problem's, in one process). The table says it all.
   const LawKind kind = law_kind(law);
   m.path = table_path(m.path, m.options.method, kind);
-  m.row = &method_row(m.path, m.options.method, kind, law.name(), m.options);
+  m.row = &method_row(m.path, m.options.method, kind, law.name(), m.options, problem.contact.kind);
   if (problem.partitioned() && m.path != SolvePath::Distributed)
     throw InputError(
         "a partitioned contact problem (each rank holding its part of A) is solved on the "

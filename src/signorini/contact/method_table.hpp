@@ -1,9 +1,9 @@
 #pragma once
 // What runs where, in one table: each way a solve runs is a row (the path × the method × the
-// kind of contact law) with the function that runs it. ContactSolver looks its configuration
-// up here and runs the row's function; a configuration without a row is refused, with the
-// reason and what to use instead, by the same lookup (docs/solvers.md). Adding a way to run
-// (a method on a new backend, a law on a new path) is adding a row.
+// kinds of contact law and of interface it takes) with the function that runs it. ContactSolver
+// looks its configuration up here and runs the row's function; a configuration without a row is
+// refused, with the reason and what to use instead, by the same lookup (docs/solvers.md). Adding a
+// way to run (a method on a new backend, a law on a new path) is adding a row.
 
 #include "signorini/contact/contact_methods.hpp"
 
@@ -28,6 +28,9 @@ struct MethodRow {
   SolvePath path;
   ContactMethod method;
   bool unilateral, other_scalar, frictional;  // the law kinds it takes
+  /// Whether it takes rows between bodies (InterfaceKind::BetweenBodies), which touch other
+  /// nodes' dofs than their own; every row takes rows against obstacles.
+  bool between_bodies;
   MethodRunner run;
   [[nodiscard]] bool takes(LawKind kind) const {
     return kind == LawKind::Unilateral    ? unilateral
@@ -42,11 +45,12 @@ struct MethodRow {
 /// condensed one).
 [[nodiscard]] SolvePath table_path(SolvePath planned, ContactMethod method, LawKind kind);
 
-/// The row of the table for this path, method and law; InputError naming the law
+/// The row of the table for this path, method, law and interface; InputError naming the law
 /// (`law_name`) and saying what runs there instead where there is none.
 [[nodiscard]] const MethodRow& method_row(SolvePath path, ContactMethod method, LawKind kind,
                                           std::string_view law_name,
-                                          const ContactSolverOptions& options);
+                                          const ContactSolverOptions& options,
+                                          InterfaceKind interface = InterfaceKind::Obstacle);
 
 /// Throws InputError where the options cannot run on the path they take with `engine` (null:
 /// none), whatever the law: the table's check before there is a problem (build_model).

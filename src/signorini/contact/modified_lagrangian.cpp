@@ -43,13 +43,72 @@ ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r,
   set_multipliers(Vector::Zero(m_ * p_.contact.size()));
 }
 
+namespace {
+// The free dofs that the rows of each contact node touch (all m of them), increasing.
+std::vector<std::vector<Index>> node_dofs(const ContactSet& c, Index m) {
+  const SparseMatrix Nt = c.N.transpose();  // column i = row i of N
+  std::vector<std::vector<Index>> dofs(static_cast<std::size_t>(c.size()));
+  for (Index j = 0; j < c.size(); ++j) {
+    auto& d = dofs[static_cast<std::size_t>(j)];
+    for (Index a = 0; a < m; ++a)
+      for (SparseMatrix::InnerIterator it(Nt, m * j + a); it; ++it) d.push_back(it.row());
+    std::sort(d.begin(), d.end());
+    d.erase(std::unique(d.begin(), d.end()), d.end());
+  }
+  return dofs;
+}
+}  // namespace
+
+// N^T D N adds to H the pairs of dofs that one contact node's rows touch (method.md, the
+// generalised Hessian of (17)). Against an obstacle these are the node's own dofs, which A
+// couples: H has A's pattern. A row between two bodies also touches the partner's dofs, which A
+// does not couple with the node's: those pairs are added, once, as explicit zeros.
+const SparseMatrix& ModifiedLagrangian::hessian_pattern() const {
+  if (pattern_ready_) return pattern_.nonZeros() == 0 ? p_.A : pattern_;
+  const std::vector<std::vector<Index>> dofs = node_dofs(p_.contact, m_);
+  std::vector<Eigen::Triplet<double, int>> missing;
+  for (const auto& d : dofs)
+    for (const Index p : d)
+      for (const Index q : d)
+        if (find_entry(p_.A, p, q) < 0)
+          missing.emplace_back(static_cast<int>(p), static_cast<int>(q), 0.0);
+  pattern_ready_ = true;
+  if (missing.empty()) return p_.A;
+  std::vector<Eigen::Triplet<double, int>> entries = std::move(missing);
+  for (Index col = 0; col < p_.A.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(p_.A, col); it; ++it)
+      entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(col), it.value());
+  pattern_.resize(p_.A.rows(), p_.A.cols());
+  pattern_.setFromTriplets(entries.begin(), entries.end());  // (explicit zeros are kept)
+  pattern_.makeCompressed();
+  a_positions_.reserve(static_cast<std::size_t>(p_.A.nonZeros()));
+  for (Index col = 0; col < p_.A.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(p_.A, col); it; ++it)
+      a_positions_.push_back(find_entry(pattern_, it.row(), col));
+  return pattern_;
+}
+
+void ModifiedLagrangian::start_hessian(SparseMatrix& H) const {
+  const SparseMatrix& pattern = hessian_pattern();
+  if (H.nonZeros() != pattern.nonZeros()) H = pattern;
+  if (a_positions_.empty()) {
+    std::copy(p_.A.valuePtr(), p_.A.valuePtr() + p_.A.nonZeros(), H.valuePtr());
+    return;
+  }
+  double* v = H.valuePtr();
+  std::fill(v, v + H.nonZeros(), 0.0);
+  for (std::size_t k = 0; k < a_positions_.size(); ++k) v[a_positions_[k]] = p_.A.valuePtr()[k];
+}
+
 // Made at the first hessian(): only the host's sparse Newton systems need it, not the backend
-// path or the condensed problems' dense systems. Rows a and b of node j list its free dofs with
-// the components of its normal (and tangents); N^T D N adds D_ab (N_a)_p (N_b)_q to the (p, q)
-// entries of node j's block, which A has since the dofs of one node always couple.
+// path or the condensed problems' dense systems. Rows a and b of node j list the free dofs they
+// touch with their coefficients (the components of its normal and tangents, and between bodies
+// the partner's weights); N^T D N adds D_ab (N_a)_p (N_b)_q to the (p, q) entries of node j's
+// block, which hessian_pattern() has.
 const std::vector<std::vector<ModifiedLagrangian::BlockEntry>>& ModifiedLagrangian::node_entries()
     const {
   if (node_entries_ready_) return node_entries_;
+  const SparseMatrix& H = hessian_pattern();
   const SparseMatrix Nt = p_.contact.N.transpose();  // column i = row i of N
   node_entries_.resize(static_cast<std::size_t>(p_.contact.size()));
   for (Index j = 0; j < p_.contact.size(); ++j)
@@ -57,9 +116,9 @@ const std::vector<std::vector<ModifiedLagrangian::BlockEntry>>& ModifiedLagrangi
       for (Index b = 0; b < m_; ++b)
         for (SparseMatrix::InnerIterator ia(Nt, m_ * j + a); ia; ++ia)
           for (SparseMatrix::InnerIterator ib(Nt, m_ * j + b); ib; ++ib) {
-            const Index pos = find_entry(p_.A, ia.row(), ib.row());
+            const Index pos = find_entry(H, ia.row(), ib.row());
             if (pos < 0)
-              throw NumericalError("contact node block missing from the stiffness pattern");
+              throw NumericalError("contact node block missing from the Hessian's pattern");
             node_entries_[static_cast<std::size_t>(j)].push_back(
                 {pos, static_cast<int>(a + m_ * b), ia.value() * ib.value()});
           }
@@ -113,8 +172,7 @@ Vector ModifiedLagrangian::gradient(const Vector& residual, const Vector& Nx) co
 }
 
 void ModifiedLagrangian::hessian(const ActiveSet& active, SparseMatrix& H) const {
-  if (H.nonZeros() != p_.A.nonZeros()) H = p_.A;
-  std::copy(p_.A.valuePtr(), p_.A.valuePtr() + p_.A.nonZeros(), H.valuePtr());
+  start_hessian(H);
   double* v = H.valuePtr();
   for (std::size_t i = 0; i < active.size(); ++i) {
     if (!active[i]) continue;
@@ -131,8 +189,7 @@ void ModifiedLagrangian::hessian(const Linearization& lin, SparseMatrix& H) cons
     hessian(lin.active, H);
     return;
   }
-  if (H.nonZeros() != p_.A.nonZeros()) H = p_.A;
-  std::copy(p_.A.valuePtr(), p_.A.valuePtr() + p_.A.nonZeros(), H.valuePtr());
+  start_hessian(H);
   double* v = H.valuePtr();
   // H = A + r sum_j h_j N_j^T D_j N_j: node j's d x d block gains r h_j (N_j^T D_j N_j). D_j is
   // symmetric for Tresca's projection (friction_projection.hpp), so H stays symmetric.

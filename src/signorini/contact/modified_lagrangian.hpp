@@ -51,8 +51,14 @@ class ModifiedLagrangian {
   [[nodiscard]] Vector contact_forces(const Vector& Nx) const;
   /// h P(z) for given shifted multipliers z (the Armijo rule's slope).
   [[nodiscard]] Vector forces_of(const Vector& z) const;
-  /// Writes H = A + r N^T diag(h on the active set) N into `H`, which must have A's pattern
-  /// (the node blocks of contact nodes are in it), so one symbolic analysis serves every H.
+  /// The pattern of every H below, with A's values (0 at the entries A lacks): A itself where
+  /// each contact node's rows touch dofs that A couples (a body against an obstacle: the node's
+  /// own dofs); otherwise A's pattern and the pairs of dofs that one node's rows touch (the
+  /// node and its partner's face, InterfaceKind::BetweenBodies), which N^T D N fills. One
+  /// symbolic analysis of it serves every H.
+  [[nodiscard]] const SparseMatrix& hessian_pattern() const;
+  /// Writes H = A + r N^T diag(h on the active set) N into `H`, which takes hessian_pattern()'s
+  /// pattern (it is given it when it has another number of entries).
   void hessian(const ActiveSet& active, SparseMatrix& H) const;
   /// The same for any law: H = A + r N^T diag(h D_j) N.
   void hessian(const Linearization& lin, SparseMatrix& H) const;
@@ -98,7 +104,14 @@ class ModifiedLagrangian {
   // sum_j h_j 2 (psi(z0_j + dz_j) - psi(z0_j)) over the movable nodes (the law's potential with
   // the step's parameters), without cancellation where both points are on one smooth piece.
   [[nodiscard]] double penalty_change(const Vector& z0, const Vector& dz) const;
-  // Per contact node j, the positions in A's value array of its node block, which entry (a, b)
+  // H's pattern where it is not A's (hessian_pattern), and the position there of each of A's
+  // entries; both empty where it is A's.
+  mutable SparseMatrix pattern_;
+  mutable std::vector<Index> a_positions_;
+  mutable bool pattern_ready_ = false;
+  // H = A with hessian_pattern()'s pattern: the start of both hessian()s.
+  void start_hessian(SparseMatrix& H) const;
+  // Per contact node j, the positions in H's value array of its node block, which entry (a, b)
   // of D_j (column-major; 0 without friction) they take, and (N_a)_p (N_b)_q there.
   struct BlockEntry {
     Index pos;

@@ -19,9 +19,9 @@ class SparseNewtonSystem final : public NewtonSystem {
       : p_(problem),
         phi_(phi),
         solver_(make_linear_solver(options)),
-        H_(problem.A),
+        H_(phi.hessian_pattern()),
         Nt_(problem.contact.N.transpose()) {
-    solver_->analyze(problem.A);  // one symbolic analysis: every H(P) has A's pattern
+    solver_->analyze(H_);  // one symbolic analysis: every H(P) has this pattern
     if (options.factor_updates != FactorUpdates::Never)
       cholmod_ = dynamic_cast<CholmodSolver*>(solver_.get());
     always_update_ = options.factor_updates == FactorUpdates::Always;

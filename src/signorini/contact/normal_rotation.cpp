@@ -43,7 +43,14 @@ bool rows_share_dofs(const ContactSet& c) {
 }
 
 NormalRotation make_normal_rotation(const ContactSet& c, Index num_free) {
-  if (const Index node = node_of_a_shared_dof(c); node >= 0)
+  if (const Index node = node_of_a_shared_dof(c);
+      node >= 0 && c.kind == InterfaceKind::BetweenBodies)
+    throw InputError(fmt::format(
+        "the contact rows of node {} and of another node touch the same dofs (their partners' "
+        "faces share a node): this method needs one normal displacement per node; use "
+        "solver.method = \"uzawa_gnm\" (or \"classical_uzawa\"), which take any constraint rows",
+        node));
+  else if (node >= 0)
     throw InputError(fmt::format(
         "contact node {} is in two contact boundaries, each with its own normal: this method "
         "needs one normal displacement per node; use solver.method = \"uzawa_gnm\" (or "

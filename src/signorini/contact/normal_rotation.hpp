@@ -26,7 +26,9 @@ struct NormalRotation {
 };
 
 /// Throws InputError where two movable rows share a free dof (a node in two contact parts, as a
-/// corner against two obstacles): one unknown per row cannot then be had by a rotation.
+/// corner against two obstacles; rows between bodies whose partners share a node): one unknown
+/// per row cannot then be had by a rotation. Rows between bodies that share no dof (matching
+/// nodes) are rotated on the dofs of both of their nodes.
 NormalRotation make_normal_rotation(const ContactSet& contact, Index num_free);
 
 /// Whether two movable rows of the contact set touch the same free dof.

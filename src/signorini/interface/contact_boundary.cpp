@@ -379,6 +379,7 @@ void append_contact_set(ContactSet& into, const ContactSet& more) {
     into = more;
     return;
   }
+  if (more.kind == InterfaceKind::BetweenBodies) into.kind = InterfaceKind::BetweenBodies;
   const Index n0 = into.size();
   const Index n = n0 + more.size();
   into.nodes.insert(into.nodes.end(), more.nodes.begin(), more.nodes.end());
