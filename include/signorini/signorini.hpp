@@ -13,6 +13,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/input/problem_file.hpp"
 #include "signorini/interface/contact_boundary.hpp"
+#include "signorini/interface/obstacle_parameters.hpp"
 #include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/gmsh_reader.hpp"
 #include "signorini/mesh/mesh.hpp"

@@ -13,6 +13,7 @@
 #include "signorini/core/error.hpp"
 #include "signorini/input/problem_schema.hpp"
 #include "signorini/input/toml_emitter.hpp"
+#include "signorini/interface/obstacle_parameters.hpp"
 #include "signorini/problem/model.hpp"
 #include "temporary_folder.hpp"
 
@@ -758,6 +759,74 @@ TEST(ProblemFile3D, EffectiveSettingsRoundTrip) {
   EXPECT_CONTAINS(p.effective_toml, "components = [\"x\", \"z\"]\n");
   EXPECT_CONTAINS(p.effective_toml, "at = [1.0, 1.0, 0.5]\n");
   EXPECT_CONTAINS(p.effective_toml, "axis = [0.0, 1.0, 0.0]\n");
+}
+
+// Every obstacle shape is read and written from its row of the shapes' table
+// (interface/obstacle_parameters.hpp): a problem file made from the row's keys reads into the
+// fields the row names and writes back the same keys in the same order; the reference lists
+// each key, and a key of another shape is refused naming the shapes that have it.
+TEST(ProblemFile3D, EveryObstacleShapeIsReadAndWrittenFromItsRow) {
+  const std::string plane =
+      "obstacle = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n";
+  for (const ObstacleShapeRow& row : obstacle_shapes()) {
+    const std::string name(enum_to_string(kObstacleShapeNames, row.shape));
+    SCOPED_TRACE(name);
+    if (row.shape == ObstacleShape::Gap) continue;  // (the paper's formula: its own tests)
+    std::string section = "obstacle = \"" + name + "\"\n";
+    for (const ObstacleParameter& p : row.parameters) switch (p.kind) {
+        case ObstacleParameterKind::Formula:
+          break;
+        case ObstacleParameterKind::Position:
+          section += std::string(p.key) + " = [0.25, 0.5, -3.0]\n";
+          break;
+        case ObstacleParameterKind::Direction:
+        case ObstacleParameterKind::Axis:
+          section += std::string(p.key) + " = [0.0, 1.0, 2.0]\n";
+          break;
+        case ObstacleParameterKind::Positive:
+          section += std::string(p.key) + " = 2.5\n";
+          break;
+        case ObstacleParameterKind::Flag:
+          section += std::string(p.key) + " = true\n";
+          break;
+      }
+    const LoadedProblem loaded = parse_problem_string(replaced(kBox, plane, section), "box.toml");
+    const ContactSpec& c = loaded.spec.contacts.at(0);
+    EXPECT_EQ(c.obstacle.shape, row.shape);
+    std::vector<std::string> written;
+    for (const auto& [key, value] : contact_values(c, c.description, 3)) written.push_back(key);
+    std::vector<std::string> expected{"boundary", "obstacle"};
+    for (const ObstacleParameter& p : row.parameters) {
+      expected.emplace_back(p.key);
+      const auto& keys = contact_options().options;
+      EXPECT_TRUE(std::any_of(keys.begin(), keys.end(), [&](const OptionInfo& o) {
+        return o.key == p.key;
+      })) << p.key;
+      if (p.vector != nullptr) {
+        EXPECT_EQ(c.obstacle.*p.vector, p.kind == ObstacleParameterKind::Position
+                                            ? Eigen::Vector3d(0.25, 0.5, -3.0)
+                                            : Eigen::Vector3d(0.0, 1.0, 2.0));
+      }
+      if (p.number != nullptr) {
+        EXPECT_EQ(c.obstacle.*p.number, 2.5);
+      }
+      if (p.flag != nullptr) {
+        EXPECT_TRUE(c.obstacle.*p.flag);
+      }
+    }
+    EXPECT_EQ(written, expected);
+    // A key that this shape lacks and another has.
+    for (const ObstacleShapeRow& other : obstacle_shapes())
+      for (const ObstacleParameter& p : other.parameters)
+        if (std::none_of(
+                row.parameters.begin(), row.parameters.end(),
+                [&](const ObstacleParameter& q) { return std::string_view(q.key) == p.key; })) {
+          const std::string with_other =
+              replaced(kBox, plane, section + std::string(p.key) + " = 1\n");
+          EXPECT_CONTAINS(error_of(with_other),
+                          "contact." + std::string(p.key) + " applies with obstacle = ");
+        }
+  }
 }
 
 // Each 3D example reads back from its effective settings to the same settings, and a Gmsh

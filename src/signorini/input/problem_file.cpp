@@ -24,6 +24,7 @@
 #include "signorini/input/suggestion.hpp"
 #include "signorini/input/syntax_explanations.hpp"
 #include "signorini/input/toml_reader.hpp"
+#include "signorini/interface/obstacle_parameters.hpp"
 #include "signorini/linalg/linear_solver_option_table.hpp"
 #include "signorini/problem/unit_system.hpp"
 
@@ -649,70 +650,65 @@ ContactSpec read_contact_entry(const Reader& r, const Dimension& dim, const toml
     contact.surface_normal_text = std::move(*normal);
   }
   read_friction(r, *t, path, contact);
-  // The keys of each shape; a key that only other shapes have is refused, naming them.
-  const std::map<ObstacleShape, std::vector<std::string>> keys{
-      {ObstacleShape::Gap, {"gap"}},
-      {ObstacleShape::Plane, {"point", "normal"}},
-      {ObstacleShape::Disc, {"centre", "radius", "inside"}},
-      {ObstacleShape::Cylinder, {"centre", "axis", "radius", "inside"}}};
-  const auto has = [&](ObstacleShape s, const std::string& key) {
-    const std::vector<std::string>& names = keys.at(s);
-    return std::find(names.begin(), names.end(), key) != names.end();
+  // The keys of the shape (interface/obstacle_parameters.hpp); a key that only other shapes
+  // have is refused, naming them.
+  const ObstacleShapeRow& row = obstacle_shape(o.shape);
+  const auto has = [](const ObstacleShapeRow& s, std::string_view key) {
+    return std::any_of(s.parameters.begin(), s.parameters.end(),
+                       [&](const ObstacleParameter& p) { return key == p.key; });
   };
-  for (const std::string key : {"gap", "point", "normal", "centre", "axis", "radius", "inside"}) {
-    if (!t->contains(key) || has(o.shape, key)) continue;
-    std::string shapes;
-    for (const auto& [other, names] : keys)
-      if (has(other, key))
-        shapes += std::string(shapes.empty() ? "" : " or ") + "\"" +
-                  std::string(enum_to_string(kObstacleShapeNames, other)) + "\"";
-    r.fail_at(t->get(key)->source(), join(path, key) + " applies with obstacle = " + shapes +
-                                         " only; this obstacle is \"" + shape + "\"");
-  }
-  const auto point = [&](const char* key, const char* what) {
-    return required_point(r, dim, *t, path, key, what);
-  };
-  // A non-zero direction (a plane's normal, a cylinder's axis), any length.
-  const auto direction = [&](const char* key, const Eigen::Vector3d& v, int count,
-                             const char* what) {
-    if (!(v.norm() > 0.0))
-      r.fail_at(t->get(key)->source(), join(path, key) + " = " + vector_text(v, count) +
-                                           ": expected a non-zero vector " + what);
-  };
-  if (o.shape == ObstacleShape::Plane) {
-    o.point = point("point", "[x, y] ([x, y, z] in 3D): a point of the plane");
-    o.normal =
-        point("normal", "[nx, ny] ([nx, ny, nz] in 3D): the plane's normal, towards the body");
-    direction("normal", o.normal, dim.stated(), "pointing from the obstacle towards the body");
-    return contact;
-  }
-  if (o.shape == ObstacleShape::Disc || o.shape == ObstacleShape::Cylinder) {
-    if (o.shape == ObstacleShape::Cylinder) {
-      // In 2D a disc is the cylinder's section.
-      dim.imply(*t->get("obstacle"), join(path, "obstacle"), 3, "a cylinder",
-                "obstacle = \"disc\" (the cylinder's section)");
-      o.centre = point("centre", "[x, y, z]: a point of the cylinder's axis");
-      const std::string axis = join(path, "axis");
-      const toml::node* n = t->get("axis");
-      if (n == nullptr) r.missing(axis, "[ax, ay, az]: the direction of the cylinder's axis");
-      const std::vector<double> a = r.numbers(*n, axis, 3, "x, y and z");
-      o.axis = Eigen::Vector3d(a[0], a[1], a[2]);
-      direction("axis", o.axis, 3, "along the cylinder's axis");
-    } else {
-      o.centre = point("centre", "[x, y] ([x, y, z] in 3D): the disc's centre");
+  for (const ObstacleShapeRow& any_shape : obstacle_shapes())
+    for (const ObstacleParameter& p : any_shape.parameters) {
+      if (!t->contains(p.key) || has(row, p.key)) continue;
+      std::string shapes;
+      for (const ObstacleShapeRow& other : obstacle_shapes())
+        if (has(other, p.key))
+          shapes += std::string(shapes.empty() ? "" : " or ") + "\"" +
+                    std::string(enum_to_string(kObstacleShapeNames, other.shape)) + "\"";
+      r.fail_at(t->get(p.key)->source(), join(path, p.key) + " applies with obstacle = " + shapes +
+                                             " only; this obstacle is \"" + shape + "\"");
     }
-    const std::optional<double> radius = r.number(*t, path, "radius");
-    if (!radius) r.missing(join(path, "radius"), "a positive number");
-    if (!(*radius > 0.0))
-      r.out_of_range(join(path, "radius"), as_text(*radius), "a positive number", t->get("radius"));
-    o.radius = *radius;
-    o.body_inside = r.boolean(*t, path, "inside").value_or(false);
-    return contact;
+  if (row.only_dimension != 0)
+    dim.imply(*t->get("obstacle"), join(path, "obstacle"), row.only_dimension, "a " + shape,
+              row.instead);
+  using K = ObstacleParameterKind;
+  for (const ObstacleParameter& p : row.parameters) {
+    const std::string key = join(path, p.key);
+    const toml::node* n = t->get(p.key);
+    switch (p.kind) {
+      case K::Formula: {  // the gap formula, the paper's foundation
+        const std::string gap = r.expression(*t, path, p.key).value_or("0");
+        contact.gap = scalar_formula(r, key, gap);
+        contact.description = gap;
+        break;
+      }
+      case K::Position:
+      case K::Direction:
+        o.*p.vector = required_point(r, dim, *t, path, p.key, p.expected);
+        break;
+      case K::Axis: {
+        if (n == nullptr) r.missing(key, p.expected);
+        const std::vector<double> a = r.numbers(*n, key, 3, "x, y and z");
+        o.*p.vector = Eigen::Vector3d(a[0], a[1], a[2]);
+        break;
+      }
+      case K::Positive: {
+        const std::optional<double> v = r.number(*t, path, p.key);
+        if (!v) r.missing(key, p.expected);
+        if (!(*v > 0.0)) r.out_of_range(key, as_text(*v), p.expected, n);
+        o.*p.number = *v;
+        break;
+      }
+      case K::Flag:
+        o.*p.flag = r.boolean(*t, path, p.key).value_or(false);
+        break;
+    }
+    // A direction (a plane's normal, a cylinder's axis) may have any length, but not 0.
+    if ((p.kind == K::Direction || p.kind == K::Axis) && !((o.*p.vector).norm() > 0.0))
+      r.fail_at(n->source(), key + " = " +
+                                 vector_text(o.*p.vector, p.kind == K::Axis ? 3 : dim.stated()) +
+                                 ": expected a non-zero vector " + p.direction_words);
   }
-  const std::string gap = r.expression(*t, path, "gap").value_or("0");
-  const std::string key = join(path, "gap");
-  contact.gap = scalar_formula(r, key, gap);
-  contact.description = gap;
   return contact;
 }
 

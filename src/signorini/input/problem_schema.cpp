@@ -1,8 +1,11 @@
 #include "signorini/input/problem_schema.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "signorini/contact/contact_solver_option_table.hpp"
+#include "signorini/interface/obstacle_parameters.hpp"
 #include "signorini/linalg/linear_solver_option_table.hpp"
 #include "signorini/mesh/box_mesh.hpp"
 #include "signorini/mesh/rectangle_mesh.hpp"
@@ -385,6 +388,77 @@ const OptionTable<P>& body_force_options() {
   return table;
 }
 
+// [contact]'s obstacle key and the keys of every shape's parameters, from the shapes' table
+// (interface/obstacle_parameters.hpp): a key that several shapes have says what it is for each.
+void add_obstacle_keys(OptionTable<P>& t) {
+  using K = ObstacleParameterKind;
+  const auto shapes = obstacle_shapes();
+  const auto name = [](const ObstacleShapeRow& row) {
+    return std::string(enum_to_string(kObstacleShapeNames, row.shape));
+  };
+  // "a, b or c": the items joined (`between`: ", "; "; " where items have commas of their own).
+  const auto list = [](const std::vector<std::string>& items, const char* last,
+                       const char* between = ", ") {
+    std::string out;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (i > 0) out += i + 1 == items.size() ? last : between;
+      out += items[i];
+    }
+    return out;
+  };
+  std::vector<std::string> choices, partners;
+  for (const ObstacleShapeRow& row : shapes) {
+    choices.push_back(fmt::format("`\"{}\"`{}", name(row), row.only_dimension == 3 ? " (3D)" : ""));
+    std::vector<std::string> keys;
+    for (const ObstacleParameter& p : row.parameters)
+      if (p.kind != K::Formula) keys.push_back(fmt::format("`{}`", p.key));
+    partners.push_back(row.doc + (keys.empty() ? "" : " with " + list(keys, ", ")));
+  }
+  t.custom("obstacle", list(choices, " or "),
+           "the rigid partner: " + list(partners, "; or ", "; ") +
+               ". Against a shape the constraint at each contact node acts along the "
+               "obstacle's normal at the node's closest point of its surface and the gap is the "
+               "exact distance to it; a node whose outward normal points away from the obstacle "
+               "never touches it. A body that starts more than a tenth of its smallest extent "
+               "inside the obstacle is refused")
+      .default_text(fmt::format("`\"{}\"`", name(shapes.front())));
+  std::vector<std::string> done{"gap"};  // (the gap formula: its own entry above)
+  for (const ObstacleShapeRow& row : shapes)
+    for (const ObstacleParameter& p : row.parameters) {
+      if (std::find(done.begin(), done.end(), p.key) != done.end()) continue;
+      done.emplace_back(p.key);
+      // Per distinct meaning, the shapes that give it: "disc, cylinder: the radius".
+      std::vector<std::pair<std::string, std::string>> meanings;  // (doc, shapes)
+      std::vector<std::string> with;
+      for (const ObstacleShapeRow& other : shapes)
+        for (const ObstacleParameter& q : other.parameters)
+          if (std::string_view(q.key) == p.key) {
+            with.push_back(fmt::format("\"{}\"", name(other)));
+            auto it = std::find_if(meanings.begin(), meanings.end(),
+                                   [&](const auto& m) { return m.first == q.doc; });
+            if (it == meanings.end())
+              meanings.emplace_back(q.doc, name(other));
+            else
+              it->second += ", " + name(other);
+          }
+      std::string doc;
+      for (const auto& [meaning, which] : meanings) {
+        if (!doc.empty()) doc += "; ";
+        doc += which;
+        doc += ": ";
+        doc += meaning;
+      }
+      const char* type = p.kind == K::Positive ? "number > 0"
+                         : p.kind == K::Flag   ? "boolean"
+                         : p.kind == K::Axis   ? "array of 3 numbers"
+                                               : "array of 2 (3 in 3D) numbers";
+      auto& entry = t.custom(p.key, type, doc);
+      if (*p.unit != '\0') entry.unit(p.unit);
+      entry.default_text(p.kind == K::Flag ? "`false`"
+                                           : "required with obstacle = " + list(with, " or "));
+    }
+}
+
 const OptionTable<P>& contact_options() {
   static const OptionTable<P> table = [] {
     OptionTable<P> t("contact");
@@ -399,31 +473,7 @@ const OptionTable<P>& contact_options() {
         .unit("L")
         .default_text("`\"0\"`")
         .synonyms({"clearance", "initial_gap", "g"});
-    t.custom("obstacle", "`\"gap\"`, `\"plane\"`, `\"disc\"` or `\"cylinder\"` (3D)",
-             "the rigid partner: the foundation of `gap` (the paper's), a half-plane (a "
-             "half-space in 3D: `point`, `normal`), a disc (a ball in 3D: `centre`, `radius`, "
-             "`inside`) or, in 3D, a cylinder (`centre` a point of its axis, `axis`, `radius`, "
-             "`inside`). Against these the constraint at each contact node acts along the "
-             "obstacle's normal at the node's closest point of its surface and the gap is the "
-             "exact distance to it; a node whose outward normal points away from the obstacle "
-             "never touches it. A body that starts more than a tenth of its smallest extent "
-             "inside the obstacle is refused")
-        .default_text("`\"gap\"`");
-    t.custom("point", "array of 2 (3 in 3D) numbers", "plane: a point of the plane's surface")
-        .unit("L")
-        .default_text("required with obstacle = \"plane\"");
-    t.custom("normal", "array of 2 (3 in 3D) numbers",
-             "plane: its normal, pointing out of the obstacle towards the body (any length)")
-        .default_text("required with obstacle = \"plane\"");
-    t.custom("centre", "array of 2 (3 in 3D) numbers",
-             "disc: its centre; cylinder: a point of its axis")
-        .unit("L")
-        .default_text("required with obstacle = \"disc\" or \"cylinder\"");
-    t.custom("axis", "array of 3 numbers", "cylinder: the direction of its axis (any length)")
-        .default_text("required with obstacle = \"cylinder\"");
-    t.custom("radius", "number > 0", "disc, cylinder: the radius")
-        .unit("L")
-        .default_text("required with obstacle = \"disc\" or \"cylinder\"");
+    add_obstacle_keys(t);
     t.custom("surface_normal", "array of 2 (3 in 3D) expressions of x, y, z",
              "the body's outward normal on this boundary where its geometry is known, e.g. "
              "`[\"x\", \"y\", \"z - 1\"]` on a ball of centre (0, 0, 1): its value at each "
@@ -433,10 +483,6 @@ const OptionTable<P>& contact_options() {
              "normal then tells which nodes face it. It must point out of the body (within 100 "
              "degrees of the facets' normal) and not vanish")
         .default_text("the facets' average");
-    t.custom("inside", "boolean",
-             "disc, cylinder: true when the body lies inside it (a shaft in a bore), false when "
-             "outside (a roller or a punch pressing on it)")
-        .default_text("`false`");
     t.custom("friction", "`\"none\"`, `\"tresca\"` or `\"coulomb\"`",
              "friction on this boundary: none (the paper's frictionless contact); Tresca's, the "
              "tangential traction bounded by `slip_bound`; Coulomb's, bounded by `mu` times the "
@@ -498,30 +544,28 @@ std::vector<std::pair<std::string, OptionValue>> contact_values(const ContactSpe
   const auto coordinates = [](const Eigen::Vector3d& v, int n) {
     return std::vector<double>(v.data(), v.data() + n);
   };
-  const std::string shape(enum_to_string(kObstacleShapeNames, o.shape));
-  switch (o.shape) {
-    case ObstacleShape::Gap:
-      out.emplace_back("gap", gap_text);
-      break;
-    case ObstacleShape::Plane:
-      out.insert(out.end(), {{"obstacle", shape},
-                             {"point", coordinates(o.point, dim)},
-                             {"normal", coordinates(o.normal, dim)}});
-      break;
-    case ObstacleShape::Disc:
-      out.insert(out.end(), {{"obstacle", shape},
-                             {"centre", coordinates(o.centre, dim)},
-                             {"radius", o.radius},
-                             {"inside", o.body_inside}});
-      break;
-    case ObstacleShape::Cylinder:
-      out.insert(out.end(), {{"obstacle", shape},
-                             {"centre", coordinates(o.centre, 3)},
-                             {"axis", coordinates(o.axis, 3)},
-                             {"radius", o.radius},
-                             {"inside", o.body_inside}});
-      break;
-  }
+  // The shape's parameters in its row's order (interface/obstacle_parameters.hpp); the gap
+  // formula, the default, without the obstacle key.
+  if (o.shape != ObstacleShape::Gap)
+    out.emplace_back("obstacle", std::string(enum_to_string(kObstacleShapeNames, o.shape)));
+  for (const ObstacleParameter& p : obstacle_shape(o.shape).parameters) switch (p.kind) {
+      case ObstacleParameterKind::Formula:
+        out.emplace_back(p.key, gap_text);
+        break;
+      case ObstacleParameterKind::Position:
+      case ObstacleParameterKind::Direction:
+        out.emplace_back(p.key, coordinates(o.*p.vector, dim));
+        break;
+      case ObstacleParameterKind::Axis:
+        out.emplace_back(p.key, coordinates(o.*p.vector, 3));
+        break;
+      case ObstacleParameterKind::Positive:
+        out.emplace_back(p.key, o.*p.number);
+        break;
+      case ObstacleParameterKind::Flag:
+        out.emplace_back(p.key, o.*p.flag);
+        break;
+    }
   if (contact.friction != FrictionModel::None)
     out.emplace_back("friction",
                      std::string(enum_to_string(kFrictionModelNames, contact.friction)));

@@ -2,12 +2,76 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "signorini/core/error.hpp"
+#include "signorini/interface/obstacle_parameters.hpp"
 
 namespace signorini {
+
+namespace {
+
+using K = ObstacleParameterKind;
+using O = RigidObstacle;
+
+// The parameters of each shape (obstacle_parameters.hpp), in the order a problem file's writer
+// gives them.
+constexpr std::array kGapParameters{
+    ObstacleParameter{"gap", K::Formula, "an expression of x, y, z", "the gap formula", "L",
+                      nullptr, nullptr, nullptr, ""},
+};
+constexpr std::array kPlaneParameters{
+    ObstacleParameter{"point", K::Position, "[x, y] ([x, y, z] in 3D): a point of the plane",
+                      "a point of the plane's surface", "L", &O::point, nullptr, nullptr, ""},
+    ObstacleParameter{"normal", K::Direction,
+                      "[nx, ny] ([nx, ny, nz] in 3D): the plane's normal, towards the body",
+                      "its normal, pointing out of the obstacle towards the body (any length)", "",
+                      &O::normal, nullptr, nullptr, "pointing from the obstacle towards the body"},
+};
+constexpr std::array kDiscParameters{
+    ObstacleParameter{"centre", K::Position, "[x, y] ([x, y, z] in 3D): the disc's centre",
+                      "its centre", "L", &O::centre, nullptr, nullptr, ""},
+    ObstacleParameter{"radius", K::Positive, "a positive number", "the radius", "L", nullptr,
+                      &O::radius, nullptr, ""},
+    ObstacleParameter{"inside", K::Flag, "true or false",
+                      "true when the body lies inside it (a shaft in a bore), false when outside "
+                      "(a roller or a punch pressing on it)",
+                      "", nullptr, nullptr, &O::body_inside, ""},
+};
+constexpr std::array kCylinderParameters{
+    ObstacleParameter{"centre", K::Position, "[x, y, z]: a point of the cylinder's axis",
+                      "a point of its axis", "L", &O::centre, nullptr, nullptr, ""},
+    ObstacleParameter{"axis", K::Axis, "[ax, ay, az]: the direction of the cylinder's axis",
+                      "the direction of its axis (any length)", "", &O::axis, nullptr, nullptr,
+                      "along the cylinder's axis"},
+    kDiscParameters[1],
+    kDiscParameters[2],
+};
+constexpr std::array kShapes{
+    ObstacleShapeRow{ObstacleShape::Gap, 0, "", "the foundation of `gap` (the paper's)",
+                     kGapParameters},
+    ObstacleShapeRow{ObstacleShape::Plane, 0, "", "a half-plane (a half-space in 3D)",
+                     kPlaneParameters},
+    ObstacleShapeRow{ObstacleShape::Disc, 0, "", "a disc (a ball in 3D)", kDiscParameters},
+    ObstacleShapeRow{ObstacleShape::Cylinder, 3, "obstacle = \"disc\" (the cylinder's section)",
+                     "a cylinder, in 3D only,", kCylinderParameters},
+};
+
+static_assert(kShapes.size() == kObstacleShapeNames.size(), "a row for every obstacle shape");
+
+}  // namespace
+
+std::span<const ObstacleShapeRow> obstacle_shapes() {
+  return kShapes;
+}
+
+const ObstacleShapeRow& obstacle_shape(ObstacleShape shape) {
+  for (const ObstacleShapeRow& row : kShapes)
+    if (row.shape == shape) return row;
+  throw std::logic_error("obstacle_shape: a shape without a row");
+}
 
 void validate(const RigidObstacle& o) {
   switch (o.shape) {
