@@ -311,7 +311,8 @@ TEST(ContactVtu, FrictionArrays) {
   const ContactResult r = solve_contact(model.problem, model.solver);
   ASSERT_TRUE(r.summary.converged()) << r.summary.message;
   const testing::VtuContents v = testing::read_vtu_text(contact_vtu(r, model));
-  const std::vector<FrictionState> states = friction_states(*model.friction, r.l, r.tangential);
+  const std::vector<FrictionState> states =
+      friction_states(contact_law(model.problem), r.l, r.tangential);
   int sticking = 0;
   for (Index j = 0; j < model.problem.contact.size(); ++j) {
     const auto k = static_cast<std::size_t>(j);

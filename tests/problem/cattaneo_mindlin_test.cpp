@@ -47,7 +47,8 @@ Model cylinder(double shift, double mu) {
 // outside it, towards the edges of the contact zone.
 std::pair<double, double> stick_zone(const Model& model, const ContactResult& r) {
   const ContactSet& c = model.problem.contact;
-  const std::vector<FrictionState> states = friction_states(*model.friction, r.l, r.tangential);
+  const std::vector<FrictionState> states =
+      friction_states(contact_law(model.problem), r.l, r.tangential);
   double lo = 1.0, hi = -1.0;
   for (Index j = 0; j < c.size(); ++j)
     if (states[static_cast<std::size_t>(j)] == FrictionState::Sticking) {

@@ -75,7 +75,7 @@ TEST(LoadStepping, CoulombDependsOnThePathAndAccumulatesSlip) {
   spec.contacts[0].friction = FrictionModel::Coulomb;
   spec.contacts[0].mu = 0.5;
   const Model model = build_model(spec);
-  ASSERT_TRUE(model.friction);
+  ASSERT_TRUE(contact_law(model.problem).has_friction());
   std::vector<ContactResult> steps;
   const ContactResult back =
       solve_load_steps(model, tight(model), {0.5, 1.0, 0.5},

@@ -80,6 +80,11 @@ class ContactLaw {
   [[nodiscard]] virtual Index nodes() const { return -1; }
   /// Whether some node has friction (a nonzero slip bound or coefficient).
   [[nodiscard]] virtual bool has_friction() const { return false; }
+  /// The tangential traction at which each node slides, at multipliers l (components() values
+  /// per node): what tells a sliding node from a sticking one in the results
+  /// (friction_law.hpp, friction_states). Empty for a law of one component, which has no
+  /// tangential rows.
+  [[nodiscard]] virtual Vector slip_bounds(const Vector& /*l*/) const { return {}; }
 
   // Step (i) of Uzawa minimises Phi (16) with what the law holds fixed at the multipliers l of
   // the step: Coulomb's slip bound mu (l_n)_+, so that Phi is convex (method.md, "Friction").

@@ -47,7 +47,7 @@ class FrictionLaw final : public ContactLaw {
 
   /// The slip bounds that step (i) of Uzawa uses with multipliers l (d per node):
   /// s_j + mu_j max(l_n, 0), Tresca's own or Coulomb's with the pressure of l.
-  [[nodiscard]] Vector slip_bounds(const Vector& l) const;
+  [[nodiscard]] Vector slip_bounds(const Vector& l) const override;
 
   /// P(z) node by node with Coulomb's true radius mu_j max(z_n, 0) (classical Uzawa's update and
   /// the KKT check); non-finite components give 0.
@@ -99,7 +99,8 @@ inline constexpr EnumNames<FrictionState, 3> kFrictionStateNames{{
 /// separated node may still carry a tangential traction up to it: method.md, "Friction"); of
 /// the nodes in contact, sliding where |l_t| reaches the slip bound (to 1e-6 relative, above the
 /// solver's tolerances; a zero bound slides freely), sticking otherwise.
-[[nodiscard]] std::vector<FrictionState> friction_states(const FrictionLaw& law,
+/// `law`: the problem's law, with tangential rows (components() > 1: a friction law).
+[[nodiscard]] std::vector<FrictionState> friction_states(const ContactLaw& law,
                                                          const Vector& pressure,
                                                          const Matrix& tangential);
 

@@ -79,9 +79,6 @@ struct Model {
   /// the contact set's rows: part i has rows contact_starts[i] to contact_starts[i + 1] - 1.
   std::vector<std::string> contact_boundaries;
   std::vector<Index> contact_starts;
-  /// The friction law when a contact boundary has friction (null otherwise): problem.contact
-  /// then has the tangential rows in N, and solver.law points to this law.
-  std::shared_ptr<const FrictionLaw> friction;
   /// The entries with load factors of their own (empty without).
   std::vector<LoadGroup> load_groups;
   /// What prescribed displacements take off the contact gaps (contact_gaps): per contact row j

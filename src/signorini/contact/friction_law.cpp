@@ -160,7 +160,7 @@ LawViolations FrictionLaw::violations(const Vector& l, const Vector& rows,
   return v;
 }
 
-std::vector<FrictionState> friction_states(const FrictionLaw& law, const Vector& pressure,
+std::vector<FrictionState> friction_states(const ContactLaw& law, const Vector& pressure,
                                            const Matrix& tangential) {
   const Index nc = pressure.size();
   const Vector bound = law.slip_bounds(node_multipliers(pressure, tangential));

@@ -28,12 +28,13 @@ struct FrictionColumns {
   FrictionColumns(const Model& m, const ContactResult& r)
       : model(m),
         result(r),
-        states(m.friction ? friction_states(*m.friction, r.l, r.tangential)
-                          : std::vector<FrictionState>{}),
-        cartesian(m.friction && m.mesh.dim() == 3
+        states(on() ? friction_states(contact_law(m.problem), r.l, r.tangential)
+                    : std::vector<FrictionState>{}),
+        cartesian(on() && m.mesh.dim() == 3
                       ? cartesian_tangential(m.problem.contact.normals, r.tangential)
                       : Matrix()) {}
-  [[nodiscard]] bool on() const { return model.friction != nullptr; }
+  /// Whether the law has tangential rows (friction).
+  [[nodiscard]] bool on() const { return contact_law(model.problem).components() > 1; }
   [[nodiscard]] std::string header() const {
     if (!on()) return "";
     return model.mesh.dim() == 2 ? ",tangential,slip,state"

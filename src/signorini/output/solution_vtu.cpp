@@ -211,12 +211,11 @@ std::string contact_vtu(const ContactResult& result, const Model& model,
   vtu.add_point_data("gap", 1, gap);
   vtu.add_point_data("deformed_gap", 1, deformed_gap);
   vtu.add_point_data("contact_active", active);
-  if (model.friction) {
+  if (const ContactLaw& law = contact_law(model.problem); law.components() > 1) {
     // Friction: the tangential traction as a Cartesian vector (the tangential part of -sigma n,
     // as contact_pressure is its normal part) and the state (0 separated, 1 sticking, 2
     // sliding), as contact.csv has them.
-    const std::vector<FrictionState> states =
-        friction_states(*model.friction, result.l, result.tangential);
+    const std::vector<FrictionState> states = friction_states(law, result.l, result.tangential);
     const Matrix t = cartesian_tangential(c.normals, result.tangential);
     std::vector<double> traction(static_cast<std::size_t>(3 * m), 0.0);
     std::vector<std::uint8_t> state(static_cast<std::size_t>(m));

@@ -178,12 +178,12 @@ nlohmann::json summary_to_json(const ContactResult& result, const Model& model,
               {"penetration", summary.kkt.penetration},
               {"sign", summary.kkt.sign},
               {"complementarity", summary.kkt.complementarity}};
-  if (model.friction) {
+  if (const ContactLaw& law = contact_law(model.problem); law.components() > 1) {
     j["kkt"]["friction_bound"] = summary.kkt.friction_bound;
     j["kkt"]["slip"] = summary.kkt.slip;
-    j["friction"] = {{"law", std::string(model.friction->name())}};
+    j["friction"] = {{"law", std::string(law.name())}};
     std::array<Index, 3> counts{};
-    for (const FrictionState s : friction_states(*model.friction, result.l, result.tangential))
+    for (const FrictionState s : friction_states(law, result.l, result.tangential))
       ++counts[static_cast<std::size_t>(s)];
     for (const FrictionState s :
          {FrictionState::Separated, FrictionState::Sticking, FrictionState::Sliding})

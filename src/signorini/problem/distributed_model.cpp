@@ -77,8 +77,8 @@ std::vector<Index> part_dofs(const std::vector<Index>& dofs, const std::vector<I
 
 }  // namespace
 
-std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
-                                   const std::vector<Vector>& whole_group_b,
+std::vector<char> send_model_parts(const Model& model, const FrictionLaw* friction,
+                                   const Vector& whole_b, const std::vector<Vector>& whole_group_b,
                                    const ProblemSize& size, const DistributedEngine& engine,
                                    std::vector<char>& everyone) {
   const Mesh& mesh = model.mesh;
@@ -141,10 +141,10 @@ std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
   pack(out, p.contact);
   out.put(model.contact_starts);
   out.put(model.contact_boundaries);
-  out.put(static_cast<std::uint8_t>(model.friction != nullptr));
-  if (model.friction) {
-    out.put(model.friction->slip_bound());
-    out.put(model.friction->mu());
+  out.put(static_cast<std::uint8_t>(friction != nullptr));
+  if (friction != nullptr) {
+    out.put(friction->slip_bound());
+    out.put(friction->mu());
   }
   out.put_matrix(model.contact_gap_shift);
   out.put(model.contact_gap_shift_group);
@@ -492,7 +492,6 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
               .point_loads = {},
               .contact_boundaries = std::move(contact_boundaries),
               .contact_starts = std::move(contact_starts),
-              .friction = std::move(friction),
               .load_groups = std::move(groups),
               .contact_gap_shift = std::move(gap_shift),
               .contact_gap_shift_group = std::move(gap_shift_group),

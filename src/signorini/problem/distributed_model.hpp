@@ -44,9 +44,11 @@ class RootAnnouncements {
 
 /// Rank 0: sends each other rank its part of `model` (whole, partitioned), with its rows of the
 /// whole b and of each load group's b, then broadcasts what every rank holds whole (kept in
-/// `everyone`). Returns rank 0's own part, for model_from_part: it accounts for the nodes
-/// without a free dof (Model::node_rank), so it has the cells around them too.
-[[nodiscard]] std::vector<char> send_model_parts(const Model& model, const Vector& whole_b,
+/// `everyone`), the parameters of its friction law (`friction`, the model's problem's law; null
+/// without friction) among them. Returns rank 0's own part, for model_from_part: it accounts for
+/// the nodes without a free dof (Model::node_rank), so it has the cells around them too.
+[[nodiscard]] std::vector<char> send_model_parts(const Model& model, const FrictionLaw* friction,
+                                                 const Vector& whole_b,
                                                  const std::vector<Vector>& whole_group_b,
                                                  const ProblemSize& size,
                                                  const DistributedEngine& engine,

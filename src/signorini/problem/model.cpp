@@ -642,7 +642,6 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts,
                  .point_loads = std::move(placed),
                  .contact_boundaries = std::move(contact_boundaries),
                  .contact_starts = std::move(contact_starts),
-                 .friction = std::move(friction),
                  .load_groups = std::move(groups),
                  .contact_gap_shift = std::move(gap_shifts.first),
                  .contact_gap_shift_group = std::move(gap_shifts.second),
@@ -660,7 +659,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts,
   {
     const Model whole = whole_model();
     parts->ok();
-    own = send_model_parts(whole, whole_b, whole_group_b, size, engine, everyone);
+    own = send_model_parts(whole, friction.get(), whole_b, whole_group_b, size, engine, everyone);
     so_far = whole.timings;
     point_loads = whole.point_loads;
   }

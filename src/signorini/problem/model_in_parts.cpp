@@ -578,7 +578,6 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
                .point_loads = std::move(placed),
                .contact_boundaries = std::move(contact_boundaries),
                .contact_starts = std::move(contact_starts),
-               .friction = friction,
                .load_groups = std::move(groups),
                .contact_gap_shift = std::move(gap_shift),
                .contact_gap_shift_group = std::move(gap_shift_group),
