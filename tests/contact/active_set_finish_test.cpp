@@ -191,7 +191,7 @@ TEST(ActiveSetFinish, TightensTheSolvesInThreeSteps) {
   BackendNewtonSpace inner(p, b.iterative, &b.model.multigrid, backend, timings,
                            Vector::Zero(p.A.rows()));
   RecordingSpace space(inner, p.contact);
-  ModifiedLagrangian phi(p, augmentation_parameter(p, b.iterative), contact_law(p));
+  ModifiedLagrangian phi(p, augmentation_parameter(p, b.iterative));
   ContactResult out;
   run_uzawa_iteration(p, b.iterative, phi, space, Vector::Zero(p.contact.size()), out);
   ASSERT_TRUE(out.summary.converged()) << out.summary.message;

@@ -83,4 +83,9 @@ struct ContactProblem {
   return problem.law != nullptr ? *problem.law : unilateral_contact_law();
 }
 
+/// Throws InputError where the problem's law does not fit its contact set: another number of
+/// components per node than the set's rows of N per node, or parameters for another number of
+/// nodes.
+void require_law_fits(const ContactProblem& problem);
+
 }  // namespace signorini

@@ -1,7 +1,12 @@
 #include "signorini/contact/contact_law.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+
+#include "signorini/contact/contact_problem.hpp"
+#include "signorini/core/error.hpp"
 
 namespace signorini {
 
@@ -47,6 +52,20 @@ LawViolations ContactLaw::violations(const Vector& l, const Vector& rows,
     v.complementarity = std::max(v.complementarity, std::abs(ln * gap));
   }
   return v;
+}
+
+void require_law_fits(const ContactProblem& problem) {
+  const ContactLaw& law = contact_law(problem);
+  const ContactSet& c = problem.contact;
+  if (c.components != law.components())
+    throw InputError(fmt::format(
+        "the contact law \"{}\" has {} value(s) per contact node, the contact set {} row(s) of "
+        "N per node",
+        law.name(), law.components(), c.components));
+  if (law.nodes() >= 0 && law.nodes() != c.size())
+    throw InputError(
+        fmt::format("the contact law \"{}\" has parameters for {} nodes, the contact set {} nodes",
+                    law.name(), law.nodes(), c.size()));
 }
 
 const ContactLaw& unilateral_contact_law() {

@@ -166,12 +166,8 @@ ContactSolver::ContactSolver(const ContactProblem& problem, const ContactSolverO
   m.r_auto = automatic_r(problem, given.auto_r_factor);
   m.options.r = given.r ? *given.r : m.r_auto;
   m.path = choose_path(problem, m.options);
+  require_law_fits(problem);
   const ContactLaw& law = contact_law(problem);
-  if (problem.contact.components != law.components())
-    throw InputError(fmt::format(
-        "the contact law \"{}\" has {} value(s) per contact node, the contact set {} row(s) of "
-        "N per node",
-        law.name(), law.components(), problem.contact.components));
   // Friction (method.md, "Friction"): Uzawa-GNM and classical Uzawa run condensed onto the
   // contact nodes' free dofs (CondensedProblem); the backend's and the distributed Newton
   // matrices take the nodes' blocks for Uzawa-GNM; semismooth Newton's friction solver factorises
@@ -320,10 +316,9 @@ ContactResult ContactSolver::solve() {
   s.r_automatic = !m.given.r.has_value();
   s.automatic_r = m.r_auto;
   s.kkt_tolerance = options.kkt_tolerance;
-  const ContactLaw& law = contact_law(problem);
-  s.kkt = kkt_residuals(problem, result.u, result.l, law);
+  s.kkt = kkt_residuals(problem, result.u, result.l);
   s.energy = quadratic_energy(problem, result.u);
-  s.lagrangian = ModifiedLagrangian::value(problem, *options.r, result.u, result.l, law);
+  s.lagrangian = ModifiedLagrangian::value(problem, *options.r, result.u, result.l);
   const ContactSet& c = problem.contact;
   if (c.components > 1) {
     // The methods' layout (d values per node) split into the pressure and the tangential part.

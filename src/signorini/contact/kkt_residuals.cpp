@@ -26,8 +26,7 @@ double equilibrium_residual(const ContactProblem& p, const Vector& u, const Vect
 
 }  // namespace
 
-KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vector& l,
-                           const ContactLaw& law) {
+KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vector& l) {
   // The rows of N per node (the normal, then with friction the tangents), the multipliers
   // likewise; the law says which of its conditions l and N u - g^ violate (contact_law.hpp).
   const ContactSet& c = p.contact;
@@ -37,7 +36,7 @@ KktResiduals kkt_residuals(const ContactProblem& p, const Vector& u, const Vecto
   const double length = std::max(largest_displacement(p, u),
                                  c.gaps.size() > 0 ? c.gaps.lpNorm<Eigen::Infinity>() : 0.0);
   const double l_max = l.size() > 0 ? l.lpNorm<Eigen::Infinity>() : 0.0;
-  const LawViolations v = law.violations(l, rows, c.movable);
+  const LawViolations v = contact_law(p).violations(l, rows, c.movable);
   k.penetration = length > 0.0 ? v.penetration / length : 0.0;
   k.sign = l_max > 0.0 ? v.sign / l_max : 0.0;
   k.complementarity = (l_max > 0.0 && length > 0.0) ? v.complementarity / (l_max * length) : 0.0;

@@ -9,8 +9,7 @@
 namespace signorini {
 
 /// Relative residuals as defined at KktResiduals. With friction (contact.components = d), l has
-/// d values per node; `law` (the problem's, contact_law(problem)) says what its conditions are.
-KktResiduals kkt_residuals(const ContactProblem& problem, const Vector& u, const Vector& l,
-                           const ContactLaw& law = unilateral_contact_law());
+/// d values per node; the problem's law (contact_law(problem)) says what its conditions are.
+KktResiduals kkt_residuals(const ContactProblem& problem, const Vector& u, const Vector& l);
 
 }  // namespace signorini

@@ -101,13 +101,14 @@ const MethodRow& method_row(SolvePath path, ContactMethod method, LawKind kind,
   refuse(path, method, kind, law_name, options, interface);
 }
 
-void validate_path(const ContactSolverOptions& options, const DistributedEngine* engine) {
+void validate_path(const ContactSolverOptions& options, const DistributedEngine* engine,
+                   LawKind kind, std::string_view law_name) {
   // The path as ContactSolver chooses it before its size-based choices, which never make a
   // combination the table refuses (choose_path, contact_solver.cpp).
   const SolvePath path = distributed_path(engine, options) ? SolvePath::Distributed
                          : uses_backend_path(options)      ? SolvePath::Backend
                                                            : SolvePath::SparseDirect;
-  (void)method_row(path, options.method, LawKind::Unilateral, "unilateral", options);
+  (void)method_row(path, options.method, kind, law_name, options);
 }
 
 }  // namespace signorini

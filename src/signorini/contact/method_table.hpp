@@ -53,8 +53,10 @@ struct MethodRow {
                                           InterfaceKind interface = InterfaceKind::Obstacle);
 
 /// Throws InputError where the options cannot run on the path they take with `engine` (null:
-/// none), whatever the law: the table's check before there is a problem (build_model).
-/// validate() checks the options alone, wherever they are read.
-void validate_path(const ContactSolverOptions& options, const DistributedEngine* engine);
+/// none) with a law of `kind` (named `law_name`): the table's check before there is a problem
+/// (build_model; with the law once the model has made it). validate() checks the options
+/// alone, wherever they are read.
+void validate_path(const ContactSolverOptions& options, const DistributedEngine* engine,
+                   LawKind kind = LawKind::Unilateral, std::string_view law_name = "unilateral");
 
 }  // namespace signorini

@@ -26,18 +26,9 @@ Index find_entry(const SparseMatrix& A, Index row, Index col) {
 }
 }  // namespace
 
-ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r,
-                                       const ContactLaw& law)
-    : p_(problem), r_(r), law_(law), m_(law.components()) {
-  if (p_.contact.components != m_)
-    throw InputError(fmt::format(
-        "the contact law \"{}\" has {} component(s) per node, the contact set {} row(s) of N",
-        law.name(), m_, p_.contact.components));
-  if (law.nodes() >= 0 && law.nodes() != p_.contact.size())
-    throw InputError(
-        fmt::format("the contact law \"{}\" has parameters for {} nodes, the contact "
-                    "set {} nodes",
-                    law.name(), law.nodes(), p_.contact.size()));
+ModifiedLagrangian::ModifiedLagrangian(const ContactProblem& problem, double r)
+    : p_(problem), r_(r), law_(contact_law(problem)), m_(law_.components()) {
+  require_law_fits(p_);
   g_hat_ = row_offsets(p_.contact);
   h_ = row_weights(p_.contact);
   set_multipliers(Vector::Zero(m_ * p_.contact.size()));
@@ -255,10 +246,10 @@ double ModifiedLagrangian::penalty_change(const Vector& z0, const Vector& dz) co
 }
 
 double ModifiedLagrangian::value(const ContactProblem& p, double r, const Vector& u,
-                                 const Vector& l, const ContactLaw& law) {
+                                 const Vector& l) {
   // The penalty term psi(l + r (N u - g^)) - |l|^2 / 2 = psi(z) - psi(l) for admissible l.
   const Vector Nu = contact_rows(p, u);  // (a collective call for a rank's part of the solution)
-  ModifiedLagrangian phi(p, r, law);
+  ModifiedLagrangian phi(p, r);
   phi.set_multipliers(l);
   const Vector shift = r * (Nu - phi.g_hat_);
   return quadratic_energy(p, u) + phi.penalty_change(phi.l_, shift) / (2.0 * r);

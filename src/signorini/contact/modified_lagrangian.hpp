@@ -22,10 +22,9 @@ Index count_active(const ActiveSet& active);
 
 class ModifiedLagrangian {
  public:
-  /// `law` gives P, its derivative and the penalty change per node (contact_law.hpp); it must
-  /// outlive this object.
-  ModifiedLagrangian(const ContactProblem& problem, double r,
-                     const ContactLaw& law = unilateral_contact_law());
+  /// The problem's law (contact_law(problem)) gives P, its derivative and the penalty change per
+  /// node (contact_law.hpp); the problem must outlive this object.
+  ModifiedLagrangian(const ContactProblem& problem, double r);
   [[nodiscard]] const ContactLaw& law() const { return law_; }
   /// Values per contact node in l and z (the law's components).
   [[nodiscard]] Index components() const { return m_; }
@@ -86,9 +85,9 @@ class ModifiedLagrangian {
   [[nodiscard]] double phi_change(const Direction& dir, double t) const;
 
   /// M(u, l) = J(u) + 1/(2r) sum_j h_j (((l_j + r ((N u)_j - g_j))_+)^2 - l_j^2), equation (10).
+  /// With the problem's law.
   [[nodiscard]] static double value(const ContactProblem& problem, double r, const Vector& u,
-                                    const Vector& l,
-                                    const ContactLaw& law = unilateral_contact_law());
+                                    const Vector& l);
 
  private:
   const ContactProblem& p_;

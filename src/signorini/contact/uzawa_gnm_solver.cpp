@@ -17,7 +17,7 @@ namespace signorini {
 ContactResult solve_uzawa_gnm(const ContactProblem& problem, const ContactSolverOptions& options,
                               const MethodStart& start, const MultigridHierarchy* /*multigrid*/) {
   ContactResult out;
-  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(problem));
+  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   const auto system = make_newton_system(problem, phi, options.linear);
   HostNewtonSpace space(problem, *system, start.displacement(problem.A.rows()));
   run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.N.rows()),
@@ -37,7 +37,7 @@ ContactResult solve_uzawa_gnm_on_backend(const ContactProblem& problem,
   const std::unique_ptr<Backend> backend = make_timed_backend(options, timings);
   BackendNewtonSpace space(problem, options, multigrid, *backend, timings,
                            start.displacement(problem.A.rows()));
-  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options), contact_law(problem));
+  ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
   run_uzawa_iteration(problem, options, phi, space, start.multipliers(problem.contact.N.rows()),
                       out);
   {
@@ -73,8 +73,7 @@ ContactResult solve_uzawa_gnm_distributed(const ContactProblem& problem,
                                           const MultigridHierarchy* /*multigrid: the KSP's*/) {
   return run_on_distributed_space(
       problem, options, start, [&](DistributedNewtonSpace& space, ContactResult& out) {
-        ModifiedLagrangian phi(problem, augmentation_parameter(problem, options),
-                               contact_law(problem));
+        ModifiedLagrangian phi(problem, augmentation_parameter(problem, options));
         run_uzawa_iteration(problem, options, phi, space,
                             start.multipliers(problem.contact.N.rows()), out);
       });

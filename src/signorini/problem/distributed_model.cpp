@@ -424,7 +424,8 @@ Model model_from_part(const ProblemSpec& spec, std::vector<char> part, std::vect
   if (all.get<std::uint8_t>() != 0) {
     Vector s = all.get_vector_xd();
     Vector mu = all.get_vector_xd();
-    friction = std::make_shared<const FrictionLaw>(mesh.dim(), std::move(s), std::move(mu));
+    friction = std::make_shared<const FrictionLaw>(mesh.dim(), std::move(s), std::move(mu),
+                                                   friction_kinds(spec));
   }
   Eigen::MatrixXd gap_shift = all.get_matrix();
   std::vector<int> gap_shift_group = all.get_vector<int>();

@@ -125,11 +125,14 @@ void add_surface_and_body_loads(
 /// The friction law of the contact set, node by node from the sections' laws (Tresca's slip
 /// bound at row j's point, `point(j)`), over the rows that `starts` divides among the sections
 /// (Model::contact_starts); null when no boundary has friction. InputError for a slip bound that
-/// is negative or not finite, and for semismooth Newton with friction on the distributed path
-/// (`distributed`).
+/// is negative or not finite, and where the options' path with `engine` (null: none) does not
+/// take the law (method_table.hpp: semismooth Newton with friction on the distributed path).
 [[nodiscard]] std::shared_ptr<const FrictionLaw> contact_friction_law(
     const ProblemSpec& spec, int dim, const std::vector<Index>& starts,
-    const std::function<Point(Index j)>& point, bool distributed);
+    const std::function<Point(Index j)>& point, const DistributedEngine* engine);
+/// The friction laws the contact sections state, in their order (empty: none): what names the
+/// law (FrictionLaw::name) on every rank alike, wherever its parameters come from.
+[[nodiscard]] std::vector<FrictionKind> friction_kinds(const ProblemSpec& spec);
 
 /// f - K u_D, the loads of the free dofs as a full vector (docs/method.md: a nonzero prescribed
 /// displacement u_D loads the free dofs; the full solution is u_D plus the free part), with u_D

@@ -221,10 +221,11 @@ namespace {
 std::shared_ptr<const FrictionLaw> make_friction(const ProblemSpec& spec, const Mesh& mesh,
                                                  const DofMap& dofs,
                                                  const std::vector<Index>& starts,
-                                                 ContactSet& contact, bool distributed) {
+                                                 ContactSet& contact,
+                                                 const DistributedEngine* engine) {
   std::shared_ptr<const FrictionLaw> law = contact_friction_law(
       spec, mesh.dim(), starts,
-      [&](Index j) { return mesh.point(contact.nodes[static_cast<std::size_t>(j)]); }, distributed);
+      [&](Index j) { return mesh.point(contact.nodes[static_cast<std::size_t>(j)]); }, engine);
   if (law) add_tangential_rows(contact, tangential_operator(contact, dofs));
   return law;
 }
@@ -250,26 +251,25 @@ void add_surface_and_body_loads(
                     into(spec.body_force_factors, "body_force"));
 }
 
-std::shared_ptr<const FrictionLaw> contact_friction_law(const ProblemSpec& spec, int dim,
-                                                        const std::vector<Index>& starts,
-                                                        const std::function<Point(Index j)>& point,
-                                                        bool distributed) {
-  bool any = false;
-  for (const ContactSpec& c : spec.contacts) any = any || c.friction != FrictionModel::None;
-  if (!any) return nullptr;
-  if (spec.solver.method == ContactMethod::SemismoothNewton && distributed)
-    throw InputError(
-        "solver.method = \"semismooth_newton\" with contact.friction runs in one process (it "
-        "factorises the whole KKT system): use \"uzawa_gnm\" on the distributed path, or run "
-        "without mpirun");
-  const Index size = starts.back();
-  Vector s = Vector::Zero(size), mu = Vector::Zero(size);
+std::vector<FrictionKind> friction_kinds(const ProblemSpec& spec) {
   std::vector<FrictionKind> kinds;
-  for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
-    const ContactSpec& c = spec.contacts[part];
+  for (const ContactSpec& c : spec.contacts)
     if (c.friction != FrictionModel::None)
       kinds.push_back(c.friction == FrictionModel::Tresca ? FrictionKind::Tresca
                                                           : FrictionKind::Coulomb);
+  return kinds;
+}
+
+std::shared_ptr<const FrictionLaw> contact_friction_law(const ProblemSpec& spec, int dim,
+                                                        const std::vector<Index>& starts,
+                                                        const std::function<Point(Index j)>& point,
+                                                        const DistributedEngine* engine) {
+  std::vector<FrictionKind> kinds = friction_kinds(spec);
+  if (kinds.empty()) return nullptr;
+  const Index size = starts.back();
+  Vector s = Vector::Zero(size), mu = Vector::Zero(size);
+  for (std::size_t part = 0; part < spec.contacts.size(); ++part) {
+    const ContactSpec& c = spec.contacts[part];
     const std::string where =
         spec.contacts.size() == 1 ? "contact" : fmt::format("contact[{}]", part);
     for (Index j = starts[part]; j < starts[part + 1]; ++j) {
@@ -283,7 +283,12 @@ std::shared_ptr<const FrictionLaw> contact_friction_law(const ProblemSpec& spec,
             where, c.slip_bound_text, s(j), x(0), x(1), x(2)));
     }
   }
-  return std::make_shared<const FrictionLaw>(dim, std::move(s), std::move(mu), std::move(kinds));
+  auto law =
+      std::make_shared<const FrictionLaw>(dim, std::move(s), std::move(mu), std::move(kinds));
+  // Where the options' path takes this law (semismooth Newton's friction solver runs in one
+  // process): the table's refusal, before the solve (method_table.hpp).
+  validate_path(spec.solver, engine, law_kind(*law), law->name());
+  return law;
 }
 
 Vector free_loads(const Mesh& mesh, const DofMap& dofs, const ElasticityOptions& elasticity,
@@ -599,7 +604,7 @@ Model build_whole_model(const ProblemSpec& spec, RootAnnouncements* parts,
   }
   // Friction: the tangential rows in N and the law per node (friction_law.hpp).
   std::shared_ptr<const FrictionLaw> friction =
-      make_friction(spec, mesh, dofs, contact_starts, problem.contact, distributed);
+      make_friction(spec, mesh, dofs, contact_starts, problem.contact, engine_or_null);
   // The solver path from the problem's size (solver_plan.hpp), before the hierarchy that it may
   // call for.
   const ProblemSize size{mesh.dim(),

@@ -487,7 +487,7 @@ Model model_from_own_part(const ProblemSpec& spec, OwnPart part, DistributedEngi
         x.head(dim) = all_rows[static_cast<std::size_t>(j)].point;
         return x;
       },
-      /*distributed=*/true);
+      &engine);
   if (friction) {
     std::vector<Eigen::Triplet<double, int>> triplets;
     for (std::size_t j = 0; j < all_rows.size(); ++j)
